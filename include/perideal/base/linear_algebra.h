@@ -1,0 +1,22 @@
+// ---------------------------------------------------------------------
+// PeriDeal: the one place that names the linear-algebra types.
+// ---------------------------------------------------------------------
+#ifndef perideal_base_linear_algebra_h
+#define perideal_base_linear_algebra_h
+
+#include <deal.II/base/partitioner.h>
+#include <deal.II/lac/la_parallel_vector.h>
+
+namespace perideal
+{
+  /**
+   * A distributed vector of particle data: locally owned entries first, then ghost entries
+   * ordered by global index, so that local element i*n_components + c belongs to local
+   * particle i. Ghost values are imported with update_ghost_values().
+   */
+  using ParticleVector = dealii::LinearAlgebra::distributed::Vector<double>;
+
+  using Partitioner = dealii::Utilities::MPI::Partitioner;
+} // namespace perideal
+
+#endif

@@ -1,0 +1,55 @@
+// ---------------------------------------------------------------------
+// PeriDeal: small helpers to read parameter files.
+// ---------------------------------------------------------------------
+#ifndef perideal_base_parameter_utilities_h
+#define perideal_base_parameter_utilities_h
+
+#include <deal.II/base/parameter_handler.h>
+#include <deal.II/base/point.h>
+#include <deal.II/base/tensor.h>
+
+#include <string>
+#include <vector>
+
+namespace perideal
+{
+  namespace ParameterUtilities
+  {
+    /**
+     * @brief Parse a comma-separated list of @p dim numbers into a point; the error names
+     * @p entry.
+     */
+    template <int dim>
+    dealii::Point<dim>
+    parse_point(const std::string &text, const std::string &entry);
+
+    /**
+     * @brief Split a comma-separated list of names, trimming white space; empty items dropped.
+     */
+    std::vector<std::string>
+    split_names(const std::string &text);
+
+    /**
+     * @brief Throw, naming @p entry, unless @p value > 0.
+     */
+    void
+    require_positive(const double value, const std::string &entry);
+
+    /**
+     * @brief Read only the entries declared by @p declare from @p filename, ignoring all others.
+     *
+     * Used for the first pass over a parameter file: the dimension and the lists of names that
+     * decide which subsections exist are read before the full declaration.
+     */
+    void
+    parse_partially(dealii::ParameterHandler &prm, const std::string &filename);
+
+    /**
+     * @brief Parse @p filename into @p prm (fully declared); errors name the file and entry.
+     */
+    void
+    parse_file(dealii::ParameterHandler &prm, const std::string &filename);
+  } // namespace ParameterUtilities
+} // namespace perideal
+
+#endif

@@ -1,0 +1,81 @@
+#ifndef perideal_base_statistics_file_h
+#define perideal_base_statistics_file_h
+
+#include <deal.II/base/mpi.h>
+
+#include <fstream>
+#include <map>
+#include <string>
+#include <vector>
+
+namespace perideal
+{
+  /**
+   * A CSV table with one row per call of end_row(), e.g. one row per time
+   * step with energies, reaction forces and the number of broken bonds.
+   *
+   * Columns are created by add_value(); their order in the file is the order
+   * in which their names were first seen. The header line is written once,
+   * right before the first row, so all columns must be known by the first
+   * end_row(); a column first seen later is an error. A row in which a known
+   * column received no value has an empty entry there. Values are written in
+   * scientific notation with 10 significant digits.
+   *
+   * All ranks may call every function (values passed on ranks other than 0
+   * are ignored); only rank 0 opens and writes the file. The file is opened
+   * (and truncated) at the first end_row() and flushed after every row, so it
+   * can be inspected while the simulation runs.
+   */
+  class StatisticsFile
+  {
+  public:
+    /**
+     * @brief Set up the table; the file @p filename is created at the first
+     * end_row().
+     */
+    StatisticsFile(MPI_Comm comm, const std::string &filename);
+
+    /**
+     * @brief Set the value of column @p column in the current row, creating
+     * the column if its name is new (only before the first end_row()).
+     */
+    void
+    add_value(const std::string &column, const double value);
+
+    /**
+     * @brief Finish the current row: rank 0 writes it (after the header, on
+     * the first call) and flushes the file; then start a new, empty row.
+     */
+    void
+    end_row();
+
+    /**
+     * @brief The name of the file written.
+     */
+    const std::string &
+    get_filename() const;
+
+  private:
+    std::string filename;
+    bool        is_root;
+
+    /**
+     * Column names in first-seen order.
+     */
+    std::vector<std::string> columns;
+
+    /**
+     * Values of the current row, keyed by column name.
+     */
+    std::map<std::string, double> current_row;
+
+    /**
+     * Whether the header was written (and the columns are fixed).
+     */
+    bool header_written;
+
+    std::ofstream file;
+  };
+} // namespace perideal
+
+#endif

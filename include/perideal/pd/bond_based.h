@@ -1,0 +1,82 @@
+// ---------------------------------------------------------------------
+// PeriDeal: the prototype microelastic brittle (PMB) bond-based model.
+// ---------------------------------------------------------------------
+#ifndef perideal_pd_bond_based_h
+#define perideal_pd_bond_based_h
+
+#include <perideal/pd/material_model.h>
+
+namespace perideal
+{
+  /**
+   * @brief Bond-based PMB model (Silling & Askari 2005, Comput. Struct. 83, eqs. 4–6).
+   *
+   * Pairwise force density f = c G s (xi + eta)/|xi + eta| with stretch
+   * s = (|xi + eta| - |xi|)/|xi| and G the surface-correction factor of the bond; the force on
+   * particle i is sum_j f V_j beta_ij (beta the partial-volume factor). Strain-energy density
+   * W_i = 1/4 sum_j c G s^2 |xi| V_j beta_ij. The micromodulus follows from the Young's modulus
+   * by energy matching (seed 002, eqs. 4.107 and 5.164; seed note 002, sec. 2.3):
+   *  - 3D: c = 18 K / (pi delta^4) = 12 E / (pi delta^4), implied nu = 1/4;
+   *  - 2D plane stress: c = 9 E / (pi h delta^3), implied nu = 1/3;
+   *  - 2D plane strain: c = 48 E / (5 pi h delta^3), implied nu = 1/4.
+   * Critical stretch from the fracture energy G0 (Silling & Askari 2005; 2D by the same
+   * integral over a disk, seed note 002, sec. 4.2): 3D s0 = sqrt(5 G0 / (6 E delta)); plane
+   * stress s0 = sqrt(4 pi G0 / (9 E delta)); plane strain s0 = sqrt(5 pi G0 / (12 E delta)).
+   */
+  template <int dim>
+  class BondBased : public MaterialModel<dim>
+  {
+  public:
+    /**
+     * @brief Declare "Young's modulus".
+     */
+    static void
+    declare_parameters(dealii::ParameterHandler &prm);
+
+    void
+    parse_parameters(dealii::ParameterHandler &prm) override;
+
+    void
+    initialize(ParticleSystem<dim> &particles, const ModelContext &context) override;
+
+    void
+    compute_forces(ParticleSystem<dim>  &particles,
+                   const ParticleVector &u,
+                   ParticleVector       &force,
+                   std::vector<double>  *energy_density,
+                   const double          critical_stretch) override;
+
+    double
+    stable_time_step(const ParticleSystem<dim> &particles, const double density) const override;
+
+    dealii::SymmetricTensor<4, dim>
+    elasticity_tensor() const override;
+
+    double
+    critical_stretch(const double fracture_energy) const override;
+
+    std::string
+    summary() const override;
+
+    /**
+     * @brief The micromodulus c [N/m^6].
+     */
+    double
+    micromodulus() const;
+
+    /**
+     * @brief The Poisson ratio that the model implies (Cauchy relations).
+     */
+    double
+    implied_poisson_ratio() const;
+
+  private:
+    double       youngs_modulus = 0.;
+    ModelContext context;
+    double       c = 0.;
+    /// c G beta per bond.
+    std::vector<double> bond_modulus;
+  };
+} // namespace perideal
+
+#endif

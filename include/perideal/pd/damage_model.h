@@ -1,0 +1,98 @@
+// ---------------------------------------------------------------------
+// PeriDeal: damage models (when bonds break) and the damage index.
+// ---------------------------------------------------------------------
+#ifndef perideal_pd_damage_model_h
+#define perideal_pd_damage_model_h
+
+#include <deal.II/base/parameter_handler.h>
+
+#include <perideal/base/plugin_registry.h>
+#include <perideal/pd/material_model.h>
+#include <perideal/pd/particle_system.h>
+
+#include <vector>
+
+namespace perideal
+{
+  /**
+   * @brief Interface of a damage model: the stretch at which a bond breaks irreversibly.
+   */
+  template <int dim>
+  class DamageModel
+  {
+  public:
+    virtual ~DamageModel() = default;
+
+    /**
+     * @brief Read the model's own subsection (the caller has entered it).
+     */
+    virtual void
+    parse_parameters(dealii::ParameterHandler &prm) = 0;
+
+    /**
+     * @brief The critical stretch for @p material (infinite: bonds never break).
+     */
+    virtual double
+    critical_stretch(const MaterialModel<dim> &material) const = 0;
+  };
+
+  /**
+   * @brief Bonds never break.
+   */
+  template <int dim>
+  class NoDamage : public DamageModel<dim>
+  {
+  public:
+    /// Nothing to declare.
+    static void
+    declare_parameters(dealii::ParameterHandler &)
+    {}
+    void
+    parse_parameters(dealii::ParameterHandler &) override
+    {}
+    double
+    critical_stretch(const MaterialModel<dim> &material) const override;
+  };
+
+  /**
+   * @brief A bond breaks for good once its stretch exceeds s0 (Silling & Askari 2005), with s0
+   * given directly or from the fracture energy through the material model's formula.
+   */
+  template <int dim>
+  class CriticalStretch : public DamageModel<dim>
+  {
+  public:
+    /// Declare "Fracture energy" and "Critical stretch".
+    static void
+    declare_parameters(dealii::ParameterHandler &prm);
+    void
+    parse_parameters(dealii::ParameterHandler &prm) override;
+    double
+    critical_stretch(const MaterialModel<dim> &material) const override;
+
+  private:
+    double fracture_energy = 0.;
+    double given_stretch   = 0.;
+  };
+
+  /**
+   * @brief Damage index of each owned particle: phi_i = 1 - sum_j mu_ij V_j beta / sum_j V_j beta
+   * with mu_ij = 1 for intact bonds (seed note 002, sec. 4.2).
+   */
+  template <int dim>
+  std::vector<double>
+  damage_index(const ParticleSystem<dim> &particles);
+
+  /**
+   * @brief Number of broken bonds on all ranks, each bond counted once.
+   */
+  template <int dim>
+  std::uint64_t
+  n_broken_bonds(const ParticleSystem<dim> &particles);
+
+#define PERIDEAL_REGISTER_DAMAGE_MODEL(classname, name, description)                    \
+  PERIDEAL_REGISTER_PLUGIN(::perideal::DamageModel<2>, classname<2>, name, description) \
+  PERIDEAL_REGISTER_PLUGIN(::perideal::DamageModel<3>, classname<3>, name, description)
+} // namespace perideal
+
+#endif

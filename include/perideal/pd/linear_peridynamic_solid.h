@@ -1,0 +1,94 @@
+// ---------------------------------------------------------------------
+// PeriDeal: the ordinary state-based linear peridynamic solid (LPS).
+// ---------------------------------------------------------------------
+#ifndef perideal_pd_linear_peridynamic_solid_h
+#define perideal_pd_linear_peridynamic_solid_h
+
+#include <perideal/pd/influence_function.h>
+#include <perideal/pd/material_model.h>
+
+#include <memory>
+
+namespace perideal
+{
+  /**
+   * @brief The linear peridynamic solid (Silling, Epton, Weckner, Xu & Askari 2007,
+   * J. Elasticity 88, sec. 15), in 3D and in 2D plane stress and plane strain.
+   *
+   * With extension e = |xi + eta| - |xi|, weighted volume m_i = sum_j omega |xi|^2 V_j beta and
+   * dilatation theta_i = (n/m_i) sum_j omega |xi| e V_j beta (n = dim), the energy density is
+   * W_i = k theta_i^2 / 2 + (alpha_i / 2) sum_j omega (e - theta_i |xi| / n)^2 V_j beta with
+   * alpha_i = mu n (n + 2) / m_i. The scalar force state is
+   * t_ij = (n k - (n + 2) mu) omega |xi| theta_i / m_i + alpha_i omega e, and the force density
+   * on i is sum_j (t_ij + t_ji) (xi + eta)/|xi + eta| V_j beta. Here k is the bulk modulus of the
+   * represented dimension: K = E / (3 (1 - 2 nu)) in 3D, lambda + mu in plane strain and
+   * E / (2 (1 - nu)) in plane stress; these reduce to Silling et al. (3 K, 15 mu / m) in 3D and
+   * reproduce W = k (tr eps)^2 / 2 + mu eps_dev : eps_dev for any homogeneous strain inside
+   * the body (derivation in doc/theory/lps.md).
+   *
+   * Surface correction: m_i is the discrete sum over the actual family, so theta is exact for
+   * any isotropic expansion at every particle; without correction the continuum m of a full
+   * horizon is used. Critical stretch from the fracture energy G0 for the inverse-distance
+   * influence function (Madenci & Oterkus 2014, Peridynamic Theory and Its Applications,
+   * ordinary state-based critical stretch, 2D and 3D):
+   * 3D s0 = sqrt(G0 / ((3 mu + (3/4)^4 (K - 5 mu / 3)) delta)),
+   * 2D s0 = sqrt(G0 / ((6 mu / pi + 16 / (9 pi^2) (k - 2 mu)) delta)).
+   */
+  template <int dim>
+  class LinearPeridynamicSolid : public MaterialModel<dim>
+  {
+  public:
+    /**
+     * @brief Declare "Young's modulus", "Poisson's ratio" and "Influence function".
+     */
+    static void
+    declare_parameters(dealii::ParameterHandler &prm);
+
+    void
+    parse_parameters(dealii::ParameterHandler &prm) override;
+
+    void
+    initialize(ParticleSystem<dim> &particles, const ModelContext &context) override;
+
+    void
+    compute_forces(ParticleSystem<dim>  &particles,
+                   const ParticleVector &u,
+                   ParticleVector       &force,
+                   std::vector<double>  *energy_density,
+                   const double          critical_stretch) override;
+
+    double
+    stable_time_step(const ParticleSystem<dim> &particles, const double density) const override;
+
+    dealii::SymmetricTensor<4, dim>
+    elasticity_tensor() const override;
+
+    double
+    critical_stretch(const double fracture_energy) const override;
+
+    std::string
+    summary() const override;
+
+    /**
+     * @brief Dilatation of the owned particles from the last force computation.
+     */
+    const ParticleVector &
+    dilatation() const;
+
+  private:
+    double                             youngs_modulus = 0.;
+    double                             poisson_ratio  = 0.;
+    std::unique_ptr<InfluenceFunction> influence;
+    std::string                        influence_name;
+    ModelContext                       context;
+    double                             bulk_modulus  = 0.;
+    double                             shear_modulus = 0.;
+    /// omega beta per bond.
+    std::vector<double> bond_weight;
+    /// Weighted volume per local particle (owned and ghost).
+    ParticleVector weighted_volume;
+    ParticleVector theta;
+  };
+} // namespace perideal
+
+#endif

@@ -1,0 +1,137 @@
+// ---------------------------------------------------------------------
+// PeriDeal: interface of peridynamic material models.
+// ---------------------------------------------------------------------
+#ifndef perideal_pd_material_model_h
+#define perideal_pd_material_model_h
+
+#include <deal.II/base/parameter_handler.h>
+#include <deal.II/base/symmetric_tensor.h>
+
+#include <perideal/base/linear_algebra.h>
+#include <perideal/base/plugin_registry.h>
+#include <perideal/pd/particle_system.h>
+
+#include <string>
+#include <vector>
+
+namespace perideal
+{
+  /**
+   * @brief How a 2D model represents the third direction.
+   */
+  enum class PlanarAssumption
+  {
+    plane_stress,
+    plane_strain,
+    three_dimensional
+  };
+
+  /**
+   * @brief Isotropic elasticity tensor for (E, nu) under a planar assumption (plane stress:
+   * lambda* = E nu / (1 - nu^2)).
+   */
+  template <int dim>
+  dealii::SymmetricTensor<4, dim>
+  isotropic_elasticity_tensor(const double           youngs_modulus,
+                              const double           poisson_ratio,
+                              const PlanarAssumption planar);
+
+  /**
+   * @brief Data every material model needs besides its own parameters.
+   */
+  struct ModelContext
+  {
+    /// Horizon delta [m].
+    double horizon = 0.;
+    /// Thickness h of a 2D body [m].
+    double thickness = 1.;
+    /// Planar assumption in 2D; three_dimensional in 3D.
+    PlanarAssumption planar = PlanarAssumption::three_dimensional;
+    /// Whether to apply the model's surface correction.
+    bool surface_correction = true;
+  };
+
+  /**
+   * @brief Interface of a peridynamic material model (a plugin, chosen per region by name).
+   *
+   * The plugin boundary is per region: one virtual call computes the forces of all particles
+   * with a tight loop over the bonds inside; no call per bond. The number of field components
+   * per particle is a property of the model (dim for the in-plane and 3D models here).
+   */
+  template <int dim>
+  class MaterialModel
+  {
+  public:
+    virtual ~MaterialModel() = default;
+
+    /**
+     * @brief Read the model's own subsection (the caller has entered it).
+     */
+    virtual void
+    parse_parameters(dealii::ParameterHandler &prm) = 0;
+
+    /**
+     * @brief Compute the per-bond and per-particle constants (micromoduli, weighted volumes,
+     * surface corrections); called once the particles and bonds exist.
+     */
+    virtual void
+    initialize(ParticleSystem<dim> &particles, const ModelContext &context) = 0;
+
+    /**
+     * @brief Number of field components per particle.
+     */
+    virtual unsigned int
+    n_components() const
+    {
+      return dim;
+    }
+
+    /**
+     * @brief Force density on each owned particle [N/m^3] for the displacement @p u (ghost
+     * values must be current). Bonds stretched beyond @p critical_stretch break first. If
+     * @p energy_density is given, it receives the strain-energy density of each owned particle
+     * [J/m^3].
+     */
+    virtual void
+    compute_forces(ParticleSystem<dim>  &particles,
+                   const ParticleVector &u,
+                   ParticleVector       &force,
+                   std::vector<double>  *energy_density,
+                   const double          critical_stretch) = 0;
+
+    /**
+     * @brief The largest stable explicit time step for density @p density [kg/m^3]: the
+     * Silling–Askari bound dt = min_i sqrt(2 rho / sum_j V_j C_ij) (Silling & Askari 2005,
+     * Comput. Struct. 83, eq. 31) with the model's bond stiffness C_ij. Same on every rank.
+     */
+    virtual double
+    stable_time_step(const ParticleSystem<dim> &particles, const double density) const = 0;
+
+    /**
+     * @brief The classical elasticity tensor the model reproduces for homogeneous deformation.
+     */
+    virtual dealii::SymmetricTensor<4, dim>
+    elasticity_tensor() const = 0;
+
+    /**
+     * @brief The critical stretch that dissipates @p fracture_energy [J/m^2] per unit crack area.
+     */
+    virtual double
+    critical_stretch(const double fracture_energy) const = 0;
+
+    /**
+     * @brief A few lines for the log: the model's constants, including implied ones.
+     */
+    virtual std::string
+    summary() const = 0;
+  };
+
+  /**
+   * @brief Register a material model for dim = 2 and 3.
+   */
+#define PERIDEAL_REGISTER_MATERIAL_MODEL(classname, name, description)                    \
+  PERIDEAL_REGISTER_PLUGIN(::perideal::MaterialModel<2>, classname<2>, name, description) \
+  PERIDEAL_REGISTER_PLUGIN(::perideal::MaterialModel<3>, classname<3>, name, description)
+} // namespace perideal
+
+#endif

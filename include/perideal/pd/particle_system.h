@@ -1,0 +1,177 @@
+// ---------------------------------------------------------------------
+// PeriDeal: distributed particles on a lattice and their bonds.
+// ---------------------------------------------------------------------
+#ifndef perideal_pd_particle_system_h
+#define perideal_pd_particle_system_h
+
+#include <deal.II/base/bounding_box.h>
+#include <deal.II/base/mpi.h>
+#include <deal.II/base/point.h>
+
+#include <perideal/base/linear_algebra.h>
+#include <perideal/pd/pre_crack.h>
+
+#include <cstdint>
+#include <functional>
+#include <map>
+#include <memory>
+#include <vector>
+
+namespace perideal
+{
+  /**
+   * @brief The bonds of the locally owned particles in compressed-row form (structure of arrays).
+   *
+   * Row i (a locally owned particle) lists each bond once: to owned particles j > i, and to every
+   * ghost particle within the horizon. A loop over rows therefore visits each bond between two
+   * owned particles once (apply the force to both ends) and each bond to a ghost once on each of
+   * the two ranks (apply the force to the owned end only). Use neighbor_is_owned() to tell.
+   */
+  struct BondList
+  {
+    /// Row pointers, size n_owned + 1.
+    std::vector<unsigned int> row_start;
+    /// Local index of the other end (owned < n_owned <= ghost).
+    std::vector<unsigned int> neighbor;
+    /// Reference bond length |xi| [m].
+    std::vector<double> length;
+    /// Partial-volume factor of the bond (1 inside delta - dx/2, then linear to 1/2 at delta).
+    std::vector<double> volume_factor;
+    /// Surface-correction factor (1 until a model computes it).
+    std::vector<double> surface_factor;
+    /// 1 while the bond carries force, 0 once broken (pre-cracks start at 0).
+    std::vector<std::uint8_t> intact;
+
+    /// Number of locally stored bonds.
+    std::size_t
+    size() const
+    {
+      return neighbor.size();
+    }
+  };
+
+  /**
+   * @brief Particles on a lattice, distributed over MPI ranks, with ghosts and bonds.
+   *
+   * Particles sit at the centres of the cells of a lattice of spacing dx covering the bounding
+   * box of the body. Ownership follows a distributed background mesh
+   * (parallel::distributed::Triangulation) whose cells are at least a horizon wide, so that all
+   * neighbours of an owned particle lie in owned or ghost cells. Global indices are contiguous
+   * per rank; the owners' indices of ghost particles are brought by
+   * GridTools::exchange_cell_data_to_ghosts, and field values of ghost particles by the ghost
+   * exchange of ParticleVector. The result does not depend on the number of ranks.
+   */
+  template <int dim>
+  class ParticleSystem
+  {
+  public:
+    struct Settings
+    {
+      /// Lattice spacing dx [m].
+      double spacing = 0.;
+      /// Horizon delta [m].
+      double horizon = 0.;
+      /// Thickness of a 2D body [m] (particle volume dx^2 h); ignored in 3D.
+      double thickness = 1.;
+      /// Scale the volume of neighbours that the horizon cuts (delta - dx/2 < |xi| <= delta).
+      bool partial_volume = true;
+    };
+
+    /**
+     * @brief An empty system on communicator @p comm.
+     */
+    explicit ParticleSystem(const MPI_Comm comm);
+
+    /**
+     * @brief Fill the lattice points of @p box that satisfy @p in_body, distribute them, import
+     * ghosts and find the bonds; bonds that cross a pre-crack start broken.
+     */
+    void
+    generate(const Settings                                        &settings,
+             const dealii::BoundingBox<dim>                        &box,
+             const std::function<bool(const dealii::Point<dim> &)> &in_body,
+             const std::vector<PreCrack<dim>>                      &pre_cracks);
+
+    /// Communicator.
+    MPI_Comm
+    get_communicator() const;
+    /// Number of locally owned particles.
+    unsigned int
+    n_owned() const;
+    /// Number of owned plus ghost particles.
+    unsigned int
+    n_local() const;
+    /// Number of particles on all ranks.
+    dealii::types::global_dof_index
+    n_global() const;
+    /// Number of bonds on all ranks, each counted once.
+    std::uint64_t
+    n_global_bonds() const;
+    /// Reference positions of owned then ghost particles.
+    const std::vector<dealii::Point<dim>> &
+    positions() const;
+    /// Volumes of owned then ghost particles [m^3].
+    const std::vector<double> &
+    volumes() const;
+    /// Global index of local particle @p i.
+    dealii::types::global_dof_index
+    global_index(const unsigned int i) const;
+    /// The bonds.
+    const BondList &
+    bonds() const;
+    /// The bonds, for models that set per-bond factors and for damage.
+    BondList &
+    bonds();
+    /// The settings used by generate().
+    const Settings &
+    settings() const;
+
+    /**
+     * @brief The partitioner of a field with @p n_components values per particle (cached).
+     */
+    std::shared_ptr<const Partitioner>
+    partitioner(const unsigned int n_components) const;
+
+    /**
+     * @brief Size @p v for @p n_components values per particle, with ghosts, zeroed.
+     */
+    void
+    reinit_vector(ParticleVector &v, const unsigned int n_components) const;
+
+    /**
+     * @brief Whether the bond @p b joins two owned particles, i.e. the loop visits it once for
+     * both ends.
+     */
+    bool
+    neighbor_is_owned(const std::size_t b) const
+    {
+      return bond_list.neighbor[b] < n_owned_particles;
+    }
+
+    /**
+     * @brief Weight of bond @p b in sums over unique bonds: 1 for owned pairs, 1/2 for bonds to
+     * ghosts (seen on two ranks).
+     */
+    double
+    bond_share(const std::size_t b) const
+    {
+      return neighbor_is_owned(b) ? 1.0 : 0.5;
+    }
+
+  private:
+    MPI_Comm                                                           communicator;
+    Settings                                                           parameters;
+    unsigned int                                                       n_owned_particles  = 0;
+    dealii::types::global_dof_index                                    n_global_particles = 0;
+    std::vector<dealii::Point<dim>>                                    reference_positions;
+    std::vector<double>                                                particle_volumes;
+    std::vector<dealii::types::global_dof_index>                       global_indices;
+    BondList                                                           bond_list;
+    mutable std::map<unsigned int, std::shared_ptr<const Partitioner>> partitioners;
+
+    void
+    find_bonds(const std::vector<PreCrack<dim>> &pre_cracks);
+  };
+} // namespace perideal
+
+#endif

@@ -1,0 +1,124 @@
+// ---------------------------------------------------------------------
+// PeriDeal: a peridynamic problem driven by a parameter file.
+// ---------------------------------------------------------------------
+#ifndef perideal_pd_pd_problem_h
+#define perideal_pd_pd_problem_h
+
+#include <deal.II/base/function_parser.h>
+#include <deal.II/base/parameter_handler.h>
+
+#include <perideal/base/linear_algebra.h>
+#include <perideal/base/particle_output.h>
+#include <perideal/base/region.h>
+#include <perideal/base/statistics_file.h>
+#include <perideal/pd/boundary_conditions.h>
+#include <perideal/pd/damage_model.h>
+#include <perideal/pd/material_model.h>
+#include <perideal/pd/particle_system.h>
+
+#include <memory>
+#include <ostream>
+#include <string>
+#include <vector>
+
+namespace perideal
+{
+  /**
+   * @brief A peridynamic problem: particles, a material and damage model, boundary conditions,
+   * explicit time stepping and output, all read from a parameter file.
+   *
+   * Use: declare_parameters() with the region and boundary-condition names of a first pass,
+   * parse the file, parse_parameters() (checks every entry), setup() (particles, bonds, model
+   * constants, stable time step; checks the time step), run().
+   */
+  template <int dim>
+  class PDProblem
+  {
+  public:
+    /**
+     * @brief A problem on @p comm that prints its log to @p log (rank 0 only).
+     */
+    PDProblem(const MPI_Comm comm, std::ostream &log);
+
+    /**
+     * @brief Declare every entry; the subsections of regions and boundary conditions are those
+     * named in @p region_names and @p condition_names.
+     */
+    static void
+    declare_parameters(dealii::ParameterHandler       &prm,
+                       const std::vector<std::string> &region_names,
+                       const std::vector<std::string> &condition_names);
+
+    /**
+     * @brief Read and check all parameters; creates nothing on disk.
+     */
+    void
+    parse_parameters(dealii::ParameterHandler &prm);
+
+    /**
+     * @brief Generate the particles and bonds, initialize the model, choose the time step.
+     */
+    void
+    setup();
+
+    /**
+     * @brief Integrate to the end time, writing statistics and particle output.
+     */
+    void
+    run();
+
+    /// The particles.
+    const ParticleSystem<dim> &
+    particles() const;
+    /// The displacement (owned and ghost values).
+    const ParticleVector &
+    displacement() const;
+    /// The time step in use [s].
+    double
+    time_step() const;
+
+  private:
+    void
+    compute_acceleration(const double time, ParticleVector &u, ParticleVector &a);
+    void
+    write_statistics(const unsigned int step, const double time, StatisticsFile &file);
+    void
+    write_particles(const unsigned int step, const double time, ParticleOutput<dim> &output);
+
+    MPI_Comm      communicator;
+    std::ostream &log;
+    bool          is_root;
+
+    // Parameters.
+    typename ParticleSystem<dim>::Settings       discretization;
+    double                                       horizon_factor     = 0.;
+    bool                                         surface_correction = true;
+    PlanarAssumption                             planar = PlanarAssumption::three_dimensional;
+    RegionCollection<dim>                        regions;
+    std::vector<std::string>                     body_regions;
+    std::vector<PreCrack<dim>>                   pre_cracks;
+    std::unique_ptr<MaterialModel<dim>>          material;
+    std::unique_ptr<DamageModel<dim>>            damage;
+    double                                       density = 0.;
+    BoundaryConditions<dim>                      boundary_conditions;
+    std::unique_ptr<dealii::FunctionParser<dim>> initial_displacement, initial_velocity;
+    double                                       end_time = 0., requested_time_step = 0.;
+    double                                       safety_factor = 0.8, damping = 0.;
+    std::string                                  output_directory, base_name;
+    unsigned int                                 particle_interval = 0, statistics_interval = 1;
+    bool write_hdf5 = true, write_vtu = false, show_progress = true;
+
+    // State.
+    ParticleSystem<dim> particle_system;
+    double              critical_stretch = 0.;
+    double              dt               = 0.;
+    double              stable_dt        = 0.;
+    ParticleVector      u, v, a, internal_force, external_force;
+    std::vector<double> energy_density;
+    double              external_work  = 0.;
+    double              initial_energy = 0.;
+    ParticleVector      previous_u, previous_load;
+  };
+} // namespace perideal
+
+#endif

@@ -1,0 +1,81 @@
+// ---------------------------------------------------------------------
+// PeriDeal: small helpers to read parameter files.
+// ---------------------------------------------------------------------
+#include <deal.II/base/exceptions.h>
+#include <deal.II/base/utilities.h>
+
+#include <perideal/base/parameter_utilities.h>
+
+#include <filesystem>
+#include <fstream>
+
+namespace perideal
+{
+  namespace ParameterUtilities
+  {
+    template <int dim>
+    dealii::Point<dim>
+    parse_point(const std::string &text, const std::string &entry)
+    {
+      const std::vector<std::string> items = dealii::Utilities::split_string_list(text, ',');
+      AssertThrow(items.size() == dim,
+                  dealii::ExcMessage("The parameter <" + entry + "> = <" + text + "> must hold " +
+                                     std::to_string(dim) +
+                                     " comma-separated numbers (one per coordinate)."));
+      dealii::Point<dim> p;
+      for (unsigned int d = 0; d < dim; ++d)
+        {
+          try
+            {
+              p[d] = dealii::Utilities::string_to_double(items[d]);
+            }
+          catch (...)
+            {
+              AssertThrow(false,
+                          dealii::ExcMessage("The parameter <" + entry + "> = <" + text +
+                                             "> holds <" + items[d] + ">, which is not a number."));
+            }
+        }
+      return p;
+    }
+
+    std::vector<std::string>
+    split_names(const std::string &text)
+    {
+      std::vector<std::string> result;
+      for (const std::string &item : dealii::Utilities::split_string_list(text, ','))
+        if (!item.empty())
+          result.push_back(item);
+      return result;
+    }
+
+    void
+    require_positive(const double value, const std::string &entry)
+    {
+      AssertThrow(value > 0.,
+                  dealii::ExcMessage("The parameter <" + entry + "> is " + std::to_string(value) +
+                                     ", but it must be a number greater than zero."));
+    }
+
+    void
+    parse_partially(dealii::ParameterHandler &prm, const std::string &filename)
+    {
+      AssertThrow(std::filesystem::exists(filename),
+                  dealii::ExcMessage("The parameter file <" + filename + "> does not exist."));
+      prm.parse_input(filename, "", /*skip_undefined=*/true);
+    }
+
+    void
+    parse_file(dealii::ParameterHandler &prm, const std::string &filename)
+    {
+      AssertThrow(std::filesystem::exists(filename),
+                  dealii::ExcMessage("The parameter file <" + filename + "> does not exist."));
+      prm.parse_input(filename, "", /*skip_undefined=*/false, /*assert_mandatory=*/true);
+    }
+
+    template dealii::Point<2>
+    parse_point<2>(const std::string &, const std::string &);
+    template dealii::Point<3>
+    parse_point<3>(const std::string &, const std::string &);
+  } // namespace ParameterUtilities
+} // namespace perideal

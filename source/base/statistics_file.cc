@@ -1,0 +1,92 @@
+#include <deal.II/base/exceptions.h>
+#include <deal.II/base/utilities.h>
+
+#include <perideal/base/statistics_file.h>
+
+#include <algorithm>
+#include <iomanip>
+#include <sstream>
+
+namespace perideal
+{
+  StatisticsFile::StatisticsFile(MPI_Comm comm, const std::string &filename)
+    : filename(filename)
+    , is_root(dealii::Utilities::MPI::this_mpi_process(comm) == 0)
+    , header_written(false)
+  {
+    AssertThrow(!filename.empty(),
+                dealii::ExcMessage("The statistics file name must not be empty."));
+  }
+
+
+
+  void
+  StatisticsFile::add_value(const std::string &column, const double value)
+  {
+    if (std::find(columns.begin(), columns.end(), column) == columns.end())
+      {
+        AssertThrow(!column.empty() && column.find_first_of(",\"\n\r") == std::string::npos,
+                    dealii::ExcMessage("The statistics column name <" + column +
+                                       "> must be non-empty and must not "
+                                       "contain commas, quotes or newlines."));
+        AssertThrow(!header_written,
+                    dealii::ExcMessage("The statistics column <" + column +
+                                       "> appeared after the header of <" + filename +
+                                       "> was written; all columns must receive a value "
+                                       "before the first end_row()."));
+        columns.push_back(column);
+      }
+    current_row[column] = value;
+  }
+
+
+
+  void
+  StatisticsFile::end_row()
+  {
+    if (is_root)
+      {
+        if (!file.is_open())
+          {
+            file.open(filename, std::ios::out | std::ios::trunc);
+            AssertThrow(file, dealii::ExcFileNotOpen(filename));
+          }
+
+        std::ostringstream line;
+        if (!header_written)
+          {
+            for (unsigned int c = 0; c < columns.size(); ++c)
+              line << (c > 0 ? "," : "") << columns[c];
+            line << '\n';
+          }
+
+        line << std::scientific << std::setprecision(9);
+        for (unsigned int c = 0; c < columns.size(); ++c)
+          {
+            if (c > 0)
+              line << ',';
+            const auto value = current_row.find(columns[c]);
+            if (value != current_row.end())
+              line << value->second;
+          }
+        line << '\n';
+
+        file << line.str();
+        file.flush();
+        AssertThrow(file,
+                    dealii::ExcMessage("Writing to the statistics file <" + filename +
+                                       "> failed."));
+      }
+
+    header_written = true;
+    current_row.clear();
+  }
+
+
+
+  const std::string &
+  StatisticsFile::get_filename() const
+  {
+    return filename;
+  }
+} // namespace perideal

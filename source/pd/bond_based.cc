@@ -1,0 +1,224 @@
+// ---------------------------------------------------------------------
+// PeriDeal: the prototype microelastic brittle (PMB) bond-based model.
+// ---------------------------------------------------------------------
+#include <deal.II/base/numbers.h>
+
+#include <perideal/base/parameter_utilities.h>
+#include <perideal/pd/bond_based.h>
+#include <perideal/pd/surface_correction.h>
+
+#include <cmath>
+#include <limits>
+#include <sstream>
+
+namespace perideal
+{
+  using namespace dealii;
+
+  template <int dim>
+  void
+  BondBased<dim>::declare_parameters(ParameterHandler &prm)
+  {
+    prm.declare_entry("Young's modulus",
+                      "0",
+                      Patterns::Double(0.),
+                      "Young's modulus E [Pa]. The model implies nu = 1/4 in 3D and plane strain, "
+                      "nu = 1/3 in plane stress.");
+  }
+
+  template <int dim>
+  void
+  BondBased<dim>::parse_parameters(ParameterHandler &prm)
+  {
+    youngs_modulus = prm.get_double("Young's modulus");
+    ParameterUtilities::require_positive(youngs_modulus, "Material/bond based/Young's modulus");
+  }
+
+  template <int dim>
+  double
+  BondBased<dim>::implied_poisson_ratio() const
+  {
+    return context.planar == PlanarAssumption::plane_stress ? 1. / 3. : 0.25;
+  }
+
+  template <int dim>
+  double
+  BondBased<dim>::micromodulus() const
+  {
+    return c;
+  }
+
+  template <int dim>
+  void
+  BondBased<dim>::initialize(ParticleSystem<dim> &particles, const ModelContext &model_context)
+  {
+    context            = model_context;
+    const double delta = context.horizon, E = youngs_modulus, pi = numbers::PI;
+    switch (context.planar)
+      {
+        case PlanarAssumption::three_dimensional:
+          c = 12. * E / (pi * std::pow(delta, 4));
+          break;
+        case PlanarAssumption::plane_stress:
+          c = 9. * E / (pi * context.thickness * std::pow(delta, 3));
+          break;
+        case PlanarAssumption::plane_strain:
+          c = 48. * E / (5. * pi * context.thickness * std::pow(delta, 3));
+          break;
+      }
+    BondList &bonds = particles.bonds();
+    if (context.surface_correction)
+      {
+        const auto energy = [&](const ParticleVector &u, std::vector<double> &w) {
+          ParticleVector force;
+          particles.reinit_vector(force, dim);
+          bond_modulus.resize(bonds.size());
+          for (std::size_t b = 0; b < bonds.size(); ++b)
+            bond_modulus[b] = c * bonds.volume_factor[b];
+          // Pre-cracked bonds take part: the correction describes the uncracked geometry.
+          const std::vector<std::uint8_t> intact = bonds.intact;
+          std::fill(bonds.intact.begin(), bonds.intact.end(), 1);
+          compute_forces(particles, u, force, &w, std::numeric_limits<double>::infinity());
+          bonds.intact = intact;
+        };
+        apply_energy_surface_correction<dim>(particles, elasticity_tensor(), energy);
+      }
+    bond_modulus.resize(bonds.size());
+    for (std::size_t b = 0; b < bonds.size(); ++b)
+      bond_modulus[b] = c * bonds.surface_factor[b] * bonds.volume_factor[b];
+  }
+
+  template <int dim>
+  void
+  BondBased<dim>::compute_forces(ParticleSystem<dim>  &particles,
+                                 const ParticleVector &u,
+                                 ParticleVector       &force,
+                                 std::vector<double>  *energy_density,
+                                 const double          critical_stretch)
+  {
+    BondList                      &bonds   = particles.bonds();
+    const std::vector<Point<dim>> &x       = particles.positions();
+    const std::vector<double>     &volume  = particles.volumes();
+    const unsigned int             n_owned = particles.n_owned();
+    const double                  *uu      = u.begin();
+    double                        *f       = force.begin();
+    const unsigned int            *nbr     = bonds.neighbor.data();
+    const double                  *length  = bonds.length.data();
+    const double                  *modulus = bond_modulus.data();
+    std::uint8_t                  *intact  = bonds.intact.data();
+    const bool                     energy  = (energy_density != nullptr);
+    if (energy)
+      energy_density->assign(n_owned, 0.);
+
+    std::fill(f, f + std::size_t(n_owned) * dim, 0.);
+    for (unsigned int i = 0; i < n_owned; ++i)
+      {
+        double fi[dim] = {};
+        double wi      = 0.;
+        for (unsigned int b = bonds.row_start[i]; b < bonds.row_start[i + 1]; ++b)
+          {
+            if (!intact[b])
+              continue;
+            const unsigned int j = nbr[b];
+            double             y[dim];
+            double             len2 = 0.;
+            for (unsigned int d = 0; d < dim; ++d)
+              {
+                y[d] = x[j][d] - x[i][d] + uu[j * dim + d] - uu[i * dim + d];
+                len2 += y[d] * y[d];
+              }
+            const double len = std::sqrt(len2);
+            const double s   = (len - length[b]) / length[b];
+            if (s > critical_stretch)
+              {
+                intact[b] = 0;
+                continue;
+              }
+            const double t = modulus[b] * s / len;
+            for (unsigned int d = 0; d < dim; ++d)
+              fi[d] += t * y[d] * volume[j];
+            const double w = 0.25 * modulus[b] * s * s * length[b];
+            wi += w * volume[j];
+            if (j < n_owned)
+              {
+                for (unsigned int d = 0; d < dim; ++d)
+                  f[j * dim + d] -= t * y[d] * volume[i];
+                if (energy)
+                  (*energy_density)[j] += w * volume[i];
+              }
+          }
+        for (unsigned int d = 0; d < dim; ++d)
+          f[i * dim + d] += fi[d];
+        if (energy)
+          (*energy_density)[i] += wi;
+      }
+  }
+
+  template <int dim>
+  double
+  BondBased<dim>::stable_time_step(const ParticleSystem<dim> &particles, const double density) const
+  {
+    const BondList     &bonds   = particles.bonds();
+    const auto         &volume  = particles.volumes();
+    const unsigned int  n_owned = particles.n_owned();
+    std::vector<double> stiffness(n_owned, 0.);
+    for (unsigned int i = 0; i < n_owned; ++i)
+      for (unsigned int b = bonds.row_start[i]; b < bonds.row_start[i + 1]; ++b)
+        {
+          const unsigned int j = bonds.neighbor[b];
+          const double       k = bond_modulus[b] / bonds.length[b];
+          stiffness[i] += k * volume[j];
+          if (j < n_owned)
+            stiffness[j] += k * volume[i];
+        }
+    double dt = std::numeric_limits<double>::max();
+    for (const double k : stiffness)
+      if (k > 0.)
+        dt = std::min(dt, std::sqrt(2. * density / k));
+    return Utilities::MPI::min(dt, particles.get_communicator());
+  }
+
+  template <int dim>
+  SymmetricTensor<4, dim>
+  BondBased<dim>::elasticity_tensor() const
+  {
+    return isotropic_elasticity_tensor<dim>(youngs_modulus,
+                                            implied_poisson_ratio(),
+                                            context.planar);
+  }
+
+  template <int dim>
+  double
+  BondBased<dim>::critical_stretch(const double fracture_energy) const
+  {
+    const double G = fracture_energy, E = youngs_modulus, delta = context.horizon, pi = numbers::PI;
+    switch (context.planar)
+      {
+        case PlanarAssumption::three_dimensional:
+          return std::sqrt(5. * G / (6. * E * delta));
+        case PlanarAssumption::plane_stress:
+          return std::sqrt(4. * pi * G / (9. * E * delta));
+        case PlanarAssumption::plane_strain:
+          return std::sqrt(5. * pi * G / (12. * E * delta));
+      }
+    return 0.;
+  }
+
+  template <int dim>
+  std::string
+  BondBased<dim>::summary() const
+  {
+    std::ostringstream out;
+    out << "bond based (PMB): E = " << youngs_modulus << " Pa, implied Poisson ratio "
+        << implied_poisson_ratio() << ", micromodulus c = " << c << " N/m^6";
+    return out.str();
+  }
+
+  template class BondBased<2>;
+  template class BondBased<3>;
+} // namespace perideal
+
+PERIDEAL_REGISTER_MATERIAL_MODEL(perideal::BondBased,
+                                 "bond based",
+                                 "prototype microelastic brittle (PMB) bond-based model; "
+                                 "nu = 1/4 (3D, plane strain) or 1/3 (plane stress).")

@@ -1,0 +1,112 @@
+// ---------------------------------------------------------------------
+// PeriDeal: damage models (when bonds break) and the damage index.
+// ---------------------------------------------------------------------
+#include <perideal/pd/damage_model.h>
+
+#include <cmath>
+#include <limits>
+
+namespace perideal
+{
+  using namespace dealii;
+
+  template <int dim>
+  double
+  NoDamage<dim>::critical_stretch(const MaterialModel<dim> &) const
+  {
+    return std::numeric_limits<double>::infinity();
+  }
+
+  template <int dim>
+  void
+  CriticalStretch<dim>::declare_parameters(ParameterHandler &prm)
+  {
+    prm.declare_entry("Fracture energy",
+                      "0",
+                      Patterns::Double(0.),
+                      "Critical energy release rate G0 [J/m^2]; the critical stretch follows from "
+                      "the material model's formula.");
+    prm.declare_entry("Critical stretch",
+                      "0",
+                      Patterns::Double(0.),
+                      "Critical stretch s0 [-]; when greater than zero it is used as given and "
+                      "'Fracture energy' is ignored.");
+  }
+
+  template <int dim>
+  void
+  CriticalStretch<dim>::parse_parameters(ParameterHandler &prm)
+  {
+    fracture_energy = prm.get_double("Fracture energy");
+    given_stretch   = prm.get_double("Critical stretch");
+    AssertThrow(fracture_energy > 0. || given_stretch > 0.,
+                ExcMessage("The damage model 'critical stretch' needs <Material/critical "
+                           "stretch/Fracture energy> > 0 [J/m^2] or <Material/critical "
+                           "stretch/Critical stretch> > 0."));
+  }
+
+  template <int dim>
+  double
+  CriticalStretch<dim>::critical_stretch(const MaterialModel<dim> &material) const
+  {
+    return given_stretch > 0. ? given_stretch : material.critical_stretch(fracture_energy);
+  }
+
+  template <int dim>
+  std::vector<double>
+  damage_index(const ParticleSystem<dim> &particles)
+  {
+    const BondList     &bonds   = particles.bonds();
+    const auto         &volume  = particles.volumes();
+    const unsigned int  n_owned = particles.n_owned();
+    std::vector<double> total(n_owned, 0.), broken(n_owned, 0.);
+    for (unsigned int i = 0; i < n_owned; ++i)
+      for (unsigned int b = bonds.row_start[i]; b < bonds.row_start[i + 1]; ++b)
+        {
+          const unsigned int j     = bonds.neighbor[b];
+          const double       lost  = bonds.intact[b] ? 0. : 1.;
+          const double       share = bonds.volume_factor[b];
+          total[i] += share * volume[j];
+          broken[i] += lost * share * volume[j];
+          if (j < n_owned)
+            {
+              total[j] += share * volume[i];
+              broken[j] += lost * share * volume[i];
+            }
+        }
+    for (unsigned int i = 0; i < n_owned; ++i)
+      broken[i] = (total[i] > 0. ? broken[i] / total[i] : 1.);
+    return broken;
+  }
+
+  template <int dim>
+  std::uint64_t
+  n_broken_bonds(const ParticleSystem<dim> &particles)
+  {
+    const BondList &bonds = particles.bonds();
+    double          local = 0.;
+    for (std::size_t b = 0; b < bonds.size(); ++b)
+      if (!bonds.intact[b])
+        local += particles.bond_share(b);
+    return static_cast<std::uint64_t>(
+      std::llround(Utilities::MPI::sum(local, particles.get_communicator())));
+  }
+
+  template class NoDamage<2>;
+  template class NoDamage<3>;
+  template class CriticalStretch<2>;
+  template class CriticalStretch<3>;
+  template std::vector<double>
+  damage_index<2>(const ParticleSystem<2> &);
+  template std::vector<double>
+  damage_index<3>(const ParticleSystem<3> &);
+  template std::uint64_t
+  n_broken_bonds<2>(const ParticleSystem<2> &);
+  template std::uint64_t
+  n_broken_bonds<3>(const ParticleSystem<3> &);
+} // namespace perideal
+
+PERIDEAL_REGISTER_DAMAGE_MODEL(perideal::NoDamage, "none", "bonds never break.")
+PERIDEAL_REGISTER_DAMAGE_MODEL(perideal::CriticalStretch,
+                               "critical stretch",
+                               "a bond breaks for good when its stretch exceeds s0.")

@@ -1,0 +1,459 @@
+// ---------------------------------------------------------------------
+// PeriDeal: distributed particles on a lattice and their bonds.
+// ---------------------------------------------------------------------
+#include <deal.II/base/index_set.h>
+#include <deal.II/distributed/tria.h>
+#include <deal.II/grid/grid_generator.h>
+#include <deal.II/grid/grid_tools.h>
+
+#include <perideal/pd/particle_system.h>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <numeric>
+
+namespace perideal
+{
+  using namespace dealii;
+
+  template <>
+  bool
+  PreCrack<2>::cuts(const Point<2> &x, const Point<2> &y) const
+  {
+    const Tensor<1, 2> r     = y - x;
+    const Tensor<1, 2> s     = vertices[1] - vertices[0];
+    const double       denom = r[0] * s[1] - r[1] * s[0];
+    if (std::abs(denom) <= 1e-14 * r.norm() * s.norm())
+      return false; // parallel: a bond along the crack line does not cross it
+    const Tensor<1, 2> q = vertices[0] - x;
+    const double       t = (q[0] * s[1] - q[1] * s[0]) / denom;
+    const double       u = (q[0] * r[1] - q[1] * r[0]) / denom;
+    return t >= 0. && t <= 1. && u >= 0. && u <= 1.;
+  }
+
+  template <>
+  bool
+  PreCrack<3>::cuts(const Point<3> &x, const Point<3> &y) const
+  {
+    const Tensor<1, 3> e1 = vertices[1] - vertices[0];
+    const Tensor<1, 3> e2 = vertices[2] - vertices[0];
+    const Tensor<1, 3> n  = cross_product_3d(e1, e2);
+    const double       dx = (x - vertices[0]) * n;
+    const double       dy = (y - vertices[0]) * n;
+    if (dx * dy > 0. || dx == dy)
+      return false;
+    const Point<3>     p = x + (dx / (dx - dy)) * (y - x);
+    const Tensor<1, 3> q = p - vertices[0];
+    // Solve q = a e1 + b e2 in the least-squares sense (exact in the plane).
+    const double g11 = e1 * e1, g12 = e1 * e2, g22 = e2 * e2;
+    const double det = g11 * g22 - g12 * g12;
+    const double a   = ((q * e1) * g22 - (q * e2) * g12) / det;
+    const double b   = ((q * e2) * g11 - (q * e1) * g12) / det;
+    return a >= 0. && a <= 1. && b >= 0. && b <= 1.;
+  }
+
+  template <int dim>
+  ParticleSystem<dim>::ParticleSystem(const MPI_Comm comm)
+    : communicator(comm)
+  {}
+
+  template <int dim>
+  void
+  ParticleSystem<dim>::generate(const Settings                                &settings,
+                                const BoundingBox<dim>                        &box,
+                                const std::function<bool(const Point<dim> &)> &in_body,
+                                const std::vector<PreCrack<dim>>              &pre_cracks)
+  {
+    parameters = settings;
+    partitioners.clear();
+    const double dx = settings.spacing;
+
+    // Lattice and background bins, identical on every rank.
+    std::array<unsigned int, dim> n_points, n_bins;
+    Point<dim>                    lower = box.get_boundary_points().first, upper;
+    std::array<double, dim>       bin_width;
+    for (unsigned int d = 0; d < dim; ++d)
+      {
+        n_points[d] = std::max(1, static_cast<int>(std::ceil(box.side_length(d) / dx - 1e-8)));
+        upper[d]    = lower[d] + n_points[d] * dx;
+        n_bins[d] =
+          std::max(1, static_cast<int>(std::floor((upper[d] - lower[d]) / settings.horizon)));
+        bin_width[d] = (upper[d] - lower[d]) / n_bins[d];
+      }
+    // first_point[d][k]: first lattice index in bin k along d (bins are monotone in the index).
+    std::array<std::vector<unsigned int>, dim> first_point;
+    for (unsigned int d = 0; d < dim; ++d)
+      {
+        first_point[d].assign(n_bins[d] + 1, n_points[d]);
+        for (unsigned int i = n_points[d]; i-- > 0;)
+          {
+            const unsigned int bin =
+              std::min<unsigned int>(n_bins[d] - 1,
+                                     static_cast<unsigned int>(((i + 0.5) * dx) / bin_width[d]));
+            first_point[d][bin] = i;
+          }
+        for (unsigned int k = n_bins[d]; k-- > 0;)
+          first_point[d][k] = std::min(first_point[d][k], first_point[d][k + 1]);
+      }
+
+    parallel::distributed::Triangulation<dim> background(communicator);
+    std::vector<unsigned int>                 repetitions(n_bins.begin(), n_bins.end());
+    GridGenerator::subdivided_hyper_rectangle(background, repetitions, lower, upper);
+
+    // The lattice points of the bin of one cell, in a fixed order.
+    const auto points_of_cell = [&](const typename Triangulation<dim>::active_cell_iterator &cell,
+                                    std::vector<Point<dim>> &points) {
+      points.clear();
+      std::array<unsigned int, dim> bin;
+      for (unsigned int d = 0; d < dim; ++d)
+        bin[d] = static_cast<unsigned int>((cell->center()[d] - lower[d]) / bin_width[d]);
+      Point<dim> p;
+      if (dim == 2)
+        for (unsigned int j = first_point[1][bin[1]]; j < first_point[1][bin[1] + 1]; ++j)
+          for (unsigned int i = first_point[0][bin[0]]; i < first_point[0][bin[0] + 1]; ++i)
+            {
+              p[0] = lower[0] + (i + 0.5) * dx;
+              p[1] = lower[1] + (j + 0.5) * dx;
+              if (in_body(p))
+                points.push_back(p);
+            }
+      else
+        for (unsigned int k = first_point[dim - 1][bin[dim - 1]];
+             k < first_point[dim - 1][bin[dim - 1] + 1];
+             ++k)
+          for (unsigned int j = first_point[1][bin[1]]; j < first_point[1][bin[1] + 1]; ++j)
+            for (unsigned int i = first_point[0][bin[0]]; i < first_point[0][bin[0] + 1]; ++i)
+              {
+                p[0]       = lower[0] + (i + 0.5) * dx;
+                p[1]       = lower[1] + (j + 0.5) * dx;
+                p[dim - 1] = lower[dim - 1] + (k + 0.5) * dx;
+                if (in_body(p))
+                  points.push_back(p);
+              }
+    };
+
+    // Owned particles, cell by cell.
+    std::vector<Point<dim>>              owned, ghost_candidates, cell_points;
+    std::vector<types::global_dof_index> first_of_cell(background.n_active_cells(), 0);
+    std::vector<std::pair<unsigned int, unsigned int>> ghost_range(background.n_active_cells());
+    for (const auto &cell : background.active_cell_iterators())
+      if (cell->is_locally_owned())
+        {
+          points_of_cell(cell, cell_points);
+          first_of_cell[cell->active_cell_index()] = owned.size();
+          owned.insert(owned.end(), cell_points.begin(), cell_points.end());
+        }
+      else if (cell->is_ghost())
+        {
+          points_of_cell(cell, cell_points);
+          ghost_range[cell->active_cell_index()] = {ghost_candidates.size(), cell_points.size()};
+          ghost_candidates.insert(ghost_candidates.end(), cell_points.begin(), cell_points.end());
+        }
+
+    n_owned_particles      = owned.size();
+    std::uint64_t n_before = 0, n_mine = n_owned_particles;
+    const int     ierr = MPI_Exscan(&n_mine, &n_before, 1, MPI_UINT64_T, MPI_SUM, communicator);
+    AssertThrowMPI(ierr);
+    if (Utilities::MPI::this_mpi_process(communicator) == 0)
+      n_before = 0;
+    const std::uint64_t n_total = Utilities::MPI::sum(n_mine, communicator);
+    AssertThrow(n_total * 4 < std::numeric_limits<types::global_dof_index>::max(),
+                ExcMessage("Too many particles (" + std::to_string(n_total) +
+                           ") for the index type of this deal.II build; use a deal.II configured "
+                           "with DEAL_II_WITH_64BIT_INDICES=ON."));
+    n_global_particles = n_total;
+
+    for (auto &first : first_of_cell)
+      first += n_before;
+    std::vector<types::global_dof_index> ghost_candidate_index(ghost_candidates.size());
+    GridTools::exchange_cell_data_to_ghosts<types::global_dof_index,
+                                            parallel::distributed::Triangulation<dim>>(
+      background,
+      [&](const typename Triangulation<dim>::active_cell_iterator &cell) {
+        return std::optional<types::global_dof_index>(first_of_cell[cell->active_cell_index()]);
+      },
+      [&](const typename Triangulation<dim>::active_cell_iterator &cell,
+          const types::global_dof_index                           &first) {
+        const auto range = ghost_range[cell->active_cell_index()];
+        for (unsigned int k = 0; k < range.second; ++k)
+          ghost_candidate_index[range.first + k] = first + k;
+      });
+
+    reference_positions = owned;
+    reference_positions.insert(reference_positions.end(),
+                               ghost_candidates.begin(),
+                               ghost_candidates.end());
+    global_indices.resize(reference_positions.size());
+    std::iota(global_indices.begin(), global_indices.begin() + n_owned_particles, n_before);
+    std::copy(ghost_candidate_index.begin(),
+              ghost_candidate_index.end(),
+              global_indices.begin() + n_owned_particles);
+
+    find_bonds(pre_cracks);
+
+    const double volume = (dim == 2 ? dx * dx * settings.thickness : dx * dx * dx);
+    particle_volumes.assign(reference_positions.size(), volume);
+  }
+
+  template <int dim>
+  void
+  ParticleSystem<dim>::find_bonds(const std::vector<PreCrack<dim>> &pre_cracks)
+  {
+    const double delta = parameters.horizon;
+    const double dx    = parameters.spacing;
+    const double reach = delta * (1. + 1e-10);
+    const auto   n_all = static_cast<unsigned int>(reference_positions.size());
+
+    // Cell list of all local particles (owned and ghost candidates): O(N).
+    BoundingBox<dim> local_box(reference_positions.empty() ?
+                                 std::make_pair(Point<dim>(), Point<dim>()) :
+                                 std::make_pair(reference_positions[0], reference_positions[0]));
+    for (const auto &p : reference_positions)
+      local_box.merge_with(BoundingBox<dim>(std::make_pair(p, p)));
+    std::array<unsigned int, dim> n_cells;
+    std::size_t                   n_total_cells = 1;
+    for (unsigned int d = 0; d < dim; ++d)
+      {
+        n_cells[d] = 1 + static_cast<unsigned int>(local_box.side_length(d) / reach);
+        n_total_cells *= n_cells[d];
+      }
+    const Point<dim> origin  = local_box.get_boundary_points().first;
+    const auto       cell_of = [&](const Point<dim> &p) {
+      std::array<unsigned int, dim> c;
+      for (unsigned int d = 0; d < dim; ++d)
+        c[d] = std::min(n_cells[d] - 1, static_cast<unsigned int>((p[d] - origin[d]) / reach));
+      return c;
+    };
+    const auto linear = [&](const std::array<unsigned int, dim> &c) {
+      std::size_t index = 0;
+      for (unsigned int d = dim; d-- > 0;)
+        index = index * n_cells[d] + c[d];
+      return index;
+    };
+    std::vector<unsigned int> cell_start(n_total_cells + 1, 0), cell_particles(n_all);
+    for (unsigned int i = 0; i < n_all; ++i)
+      ++cell_start[linear(cell_of(reference_positions[i])) + 1];
+    std::partial_sum(cell_start.begin(), cell_start.end(), cell_start.begin());
+    {
+      std::vector<unsigned int> fill(cell_start.begin(), cell_start.end() - 1);
+      for (unsigned int i = 0; i < n_all; ++i)
+        cell_particles[fill[linear(cell_of(reference_positions[i]))]++] = i;
+    }
+
+    // Bonds of owned particles; ghosts are referenced by candidate index for now.
+    BondList                  found;
+    std::vector<unsigned int> row;
+    std::vector<std::uint8_t> ghost_used(n_all - n_owned_particles, 0);
+    found.row_start.push_back(0);
+    for (unsigned int i = 0; i < n_owned_particles; ++i)
+      {
+        row.clear();
+        const auto                    c = cell_of(reference_positions[i]);
+        std::array<unsigned int, dim> lo, hi;
+        for (unsigned int d = 0; d < dim; ++d)
+          {
+            lo[d] = (c[d] == 0 ? 0 : c[d] - 1);
+            hi[d] = std::min(n_cells[d] - 1, c[d] + 1);
+          }
+        std::array<unsigned int, dim> k = lo;
+        while (true)
+          {
+            const std::size_t cell = linear(k);
+            for (unsigned int q = cell_start[cell]; q < cell_start[cell + 1]; ++q)
+              {
+                const unsigned int j = cell_particles[q];
+                if (j < n_owned_particles && j <= i)
+                  continue;
+                if (reference_positions[i].distance(reference_positions[j]) <= reach)
+                  row.push_back(j);
+              }
+            unsigned int d = 0;
+            for (; d < dim; ++d)
+              {
+                if (k[d] < hi[d])
+                  {
+                    ++k[d];
+                    break;
+                  }
+                k[d] = lo[d];
+              }
+            if (d == dim)
+              break;
+          }
+        std::sort(row.begin(), row.end());
+        for (const unsigned int j : row)
+          {
+            found.neighbor.push_back(j);
+            if (j >= n_owned_particles)
+              ghost_used[j - n_owned_particles] = 1;
+          }
+        found.row_start.push_back(found.neighbor.size());
+      }
+
+    // Keep only the ghosts some bond needs, ordered by global index (the order of the ghost
+    // entries of a ParticleVector).
+    std::vector<unsigned int> kept;
+    for (unsigned int g = 0; g < ghost_used.size(); ++g)
+      if (ghost_used[g])
+        kept.push_back(n_owned_particles + g);
+    std::sort(kept.begin(), kept.end(), [&](const unsigned int a, const unsigned int b) {
+      return global_indices[a] < global_indices[b];
+    });
+    std::vector<unsigned int> new_index(n_all, numbers::invalid_unsigned_int);
+    for (unsigned int i = 0; i < n_owned_particles; ++i)
+      new_index[i] = i;
+    std::vector<Point<dim>>              positions(reference_positions.begin(),
+                                      reference_positions.begin() + n_owned_particles);
+    std::vector<types::global_dof_index> indices(global_indices.begin(),
+                                                 global_indices.begin() + n_owned_particles);
+    for (const unsigned int old : kept)
+      {
+        new_index[old] = positions.size();
+        positions.push_back(reference_positions[old]);
+        indices.push_back(global_indices[old]);
+      }
+    reference_positions.swap(positions);
+    global_indices.swap(indices);
+    for (auto &j : found.neighbor)
+      j = new_index[j];
+
+    // Per-bond data.
+    const std::size_t n_bonds = found.neighbor.size();
+    found.length.resize(n_bonds);
+    found.volume_factor.resize(n_bonds);
+    found.surface_factor.assign(n_bonds, 1.);
+    found.intact.assign(n_bonds, 1);
+    for (unsigned int i = 0; i < n_owned_particles; ++i)
+      for (unsigned int b = found.row_start[i]; b < found.row_start[i + 1]; ++b)
+        {
+          const Point<dim> &xj   = reference_positions[found.neighbor[b]];
+          const double      r    = reference_positions[i].distance(xj);
+          found.length[b]        = r;
+          found.volume_factor[b] = (!parameters.partial_volume || r <= delta - 0.5 * dx) ?
+                                     1. :
+                                     (delta + 0.5 * dx - r) / dx;
+          for (const auto &crack : pre_cracks)
+            if (crack.cuts(reference_positions[i], xj))
+              found.intact[b] = 0;
+        }
+    bond_list = std::move(found);
+  }
+
+  template <int dim>
+  MPI_Comm
+  ParticleSystem<dim>::get_communicator() const
+  {
+    return communicator;
+  }
+
+  template <int dim>
+  unsigned int
+  ParticleSystem<dim>::n_owned() const
+  {
+    return n_owned_particles;
+  }
+
+  template <int dim>
+  unsigned int
+  ParticleSystem<dim>::n_local() const
+  {
+    return reference_positions.size();
+  }
+
+  template <int dim>
+  types::global_dof_index
+  ParticleSystem<dim>::n_global() const
+  {
+    return n_global_particles;
+  }
+
+  template <int dim>
+  std::uint64_t
+  ParticleSystem<dim>::n_global_bonds() const
+  {
+    double local = 0.;
+    for (std::size_t b = 0; b < bond_list.size(); ++b)
+      local += bond_share(b);
+    return static_cast<std::uint64_t>(std::llround(Utilities::MPI::sum(local, communicator)));
+  }
+
+  template <int dim>
+  const std::vector<Point<dim>> &
+  ParticleSystem<dim>::positions() const
+  {
+    return reference_positions;
+  }
+
+  template <int dim>
+  const std::vector<double> &
+  ParticleSystem<dim>::volumes() const
+  {
+    return particle_volumes;
+  }
+
+  template <int dim>
+  types::global_dof_index
+  ParticleSystem<dim>::global_index(const unsigned int i) const
+  {
+    return global_indices[i];
+  }
+
+  template <int dim>
+  const BondList &
+  ParticleSystem<dim>::bonds() const
+  {
+    return bond_list;
+  }
+
+  template <int dim>
+  BondList &
+  ParticleSystem<dim>::bonds()
+  {
+    return bond_list;
+  }
+
+  template <int dim>
+  const typename ParticleSystem<dim>::Settings &
+  ParticleSystem<dim>::settings() const
+  {
+    return parameters;
+  }
+
+  template <int dim>
+  std::shared_ptr<const Partitioner>
+  ParticleSystem<dim>::partitioner(const unsigned int n_components) const
+  {
+    auto &cached = partitioners[n_components];
+    if (!cached)
+      {
+        IndexSet owned(n_global_particles * n_components),
+          ghosts(n_global_particles * n_components);
+        if (n_owned_particles > 0)
+          owned.add_range(global_indices[0] * n_components,
+                          (global_indices[0] + n_owned_particles) * n_components);
+        std::vector<types::global_dof_index> ghost_list;
+        ghost_list.reserve((n_local() - n_owned_particles) * n_components);
+        for (unsigned int i = n_owned_particles; i < n_local(); ++i)
+          for (unsigned int c = 0; c < n_components; ++c)
+            ghost_list.push_back(global_indices[i] * n_components + c);
+        ghosts.add_indices(ghost_list.begin(), ghost_list.end());
+        owned.compress();
+        ghosts.compress();
+        cached = std::make_shared<const Partitioner>(owned, ghosts, communicator);
+      }
+    return cached;
+  }
+
+  template <int dim>
+  void
+  ParticleSystem<dim>::reinit_vector(ParticleVector &v, const unsigned int n_components) const
+  {
+    v.reinit(partitioner(n_components));
+  }
+
+  template struct PreCrack<2>;
+  template struct PreCrack<3>;
+  template class ParticleSystem<2>;
+  template class ParticleSystem<3>;
+} // namespace perideal

@@ -1,0 +1,560 @@
+// ---------------------------------------------------------------------
+// PeriDeal: a peridynamic problem driven by a parameter file.
+// ---------------------------------------------------------------------
+#include <deal.II/base/utilities.h>
+
+#include <perideal/base/parameter_utilities.h>
+#include <perideal/base/progress_reporter.h>
+#include <perideal/pd/explicit_solver.h>
+#include <perideal/pd/pd_problem.h>
+
+#include <cmath>
+#include <filesystem>
+#include <iomanip>
+#include <limits>
+
+namespace perideal
+{
+  using namespace dealii;
+
+  namespace
+  {
+    std::string
+    zero_vector(const unsigned int dim)
+    {
+      return dim == 2 ? "0; 0" : "0; 0; 0";
+    }
+
+    template <int dim>
+    std::vector<PreCrack<dim>>
+    parse_pre_cracks(const std::string &text)
+    {
+      std::vector<PreCrack<dim>> cracks;
+      for (const auto &item : Utilities::split_string_list(text, ';'))
+        {
+          if (item.empty())
+            continue;
+          const auto vertices = Utilities::split_string_list(item, ':');
+          AssertThrow(vertices.size() == dim,
+                      ExcMessage("Each crack in <Pre-cracks/Cracks> needs " + std::to_string(dim) +
+                                 " points separated by ':' (2D: the two ends of a segment; 3D: a "
+                                 "corner and its two neighbouring corners); found <" +
+                                 item + ">."));
+          PreCrack<dim> crack;
+          for (unsigned int v = 0; v < dim; ++v)
+            crack.vertices[v] =
+              ParameterUtilities::parse_point<dim>(vertices[v], "Pre-cracks/Cracks");
+          cracks.push_back(crack);
+        }
+      return cracks;
+    }
+  } // namespace
+
+  template <int dim>
+  PDProblem<dim>::PDProblem(const MPI_Comm comm, std::ostream &log)
+    : communicator(comm)
+    , log(log)
+    , is_root(Utilities::MPI::this_mpi_process(comm) == 0)
+    , particle_system(comm)
+  {}
+
+  template <int dim>
+  void
+  PDProblem<dim>::declare_parameters(ParameterHandler               &prm,
+                                     const std::vector<std::string> &region_names,
+                                     const std::vector<std::string> &condition_names)
+  {
+    prm.enter_subsection("Discretization");
+    {
+      prm.declare_entry("Lattice spacing",
+                        "0",
+                        Patterns::Double(0.),
+                        "Distance dx between neighbouring particles of the lattice [m].");
+      prm.declare_entry("Horizon factor",
+                        "3.015",
+                        Patterns::Double(0.),
+                        "Horizon delta as a multiple of the lattice spacing [-]; must exceed 1.");
+      prm.declare_entry("Thickness",
+                        "1",
+                        Patterns::Double(0.),
+                        "2D only: thickness h of the body [m]; particle volume dx^2 h.");
+      prm.declare_entry("Partial volume correction",
+                        "true",
+                        Patterns::Bool(),
+                        "Scale the volume of neighbours cut by the horizon sphere "
+                        "(delta - dx/2 < |xi| <= delta) by (delta + dx/2 - |xi|)/dx.");
+      prm.declare_entry("Surface correction",
+                        "true",
+                        Patterns::Bool(),
+                        "Correct the stiffness near free surfaces: energy method for 'bond "
+                        "based', discrete weighted volume for 'linear peridynamic solid'.");
+      prm.declare_entry("Body",
+                        "",
+                        Patterns::Anything(),
+                        "Comma-separated names of the regions whose union is filled with "
+                        "particles (fictitious boundary layers included).");
+    }
+    prm.leave_subsection();
+
+    RegionCollection<dim>::declare_parameters(prm, region_names);
+
+    prm.enter_subsection("Pre-cracks");
+    prm.declare_entry("Cracks",
+                      "",
+                      Patterns::Anything(),
+                      "Cracks separated by ';'. 2D: 'x0, y0 : x1, y1' (a segment); 3D: "
+                      "'a : b : c' (the parallelogram with corner a and edges b - a, c - a) [m]. "
+                      "Bonds that cross a crack start broken.");
+    prm.leave_subsection();
+
+    prm.enter_subsection("Material");
+    {
+      prm.declare_entry("Model",
+                        "bond based",
+                        Patterns::Selection(PluginRegistry<MaterialModel<dim>>::pattern_string()),
+                        "The peridynamic material model. " +
+                          PluginRegistry<MaterialModel<dim>>::documentation());
+      prm.declare_entry("Planar assumption",
+                        "plane stress",
+                        Patterns::Selection("plane stress|plane strain"),
+                        "2D only: the state of the third direction.");
+      prm.declare_entry("Density", "0", Patterns::Double(0.), "Mass density rho [kg/m^3].");
+      prm.declare_entry("Damage model",
+                        "none",
+                        Patterns::Selection(PluginRegistry<DamageModel<dim>>::pattern_string()),
+                        "When bonds break. " + PluginRegistry<DamageModel<dim>>::documentation());
+      PluginRegistry<MaterialModel<dim>>::declare_parameters(prm);
+      PluginRegistry<DamageModel<dim>>::declare_parameters(prm);
+    }
+    prm.leave_subsection();
+
+    BoundaryConditions<dim>::declare_parameters(prm, condition_names);
+
+    prm.enter_subsection("Initial conditions");
+    prm.declare_entry("Displacement",
+                      zero_vector(dim),
+                      Patterns::Anything(),
+                      "Initial displacement u(x) [m], one expression of x, y, (z) per component, "
+                      "separated by ';'.");
+    prm.declare_entry("Velocity",
+                      zero_vector(dim),
+                      Patterns::Anything(),
+                      "Initial velocity v(x) [m/s], one expression per component.");
+    prm.leave_subsection();
+
+    prm.enter_subsection("Time stepping");
+    prm.declare_entry("End time", "0", Patterns::Double(0.), "Simulated time [s].");
+    prm.declare_entry("Time step",
+                      "0",
+                      Patterns::Double(0.),
+                      "Time step [s]; 0 chooses Safety factor times the stable limit. A value "
+                      "above the stable limit is refused.");
+    prm.declare_entry("Safety factor",
+                      "0.8",
+                      Patterns::Double(0.),
+                      "Fraction of the stable time step used when 'Time step' is 0, in (0, 1].");
+    prm.declare_entry("Damping",
+                      "0",
+                      Patterns::Double(0.),
+                      "Mass-proportional damping coefficient [1/s] to reach a steady state; 0 for "
+                      "dynamics.");
+    prm.leave_subsection();
+
+    prm.enter_subsection("Output");
+    prm.declare_entry("Directory", "output", Patterns::Anything(), "Where results are written.");
+    prm.declare_entry("Base name", "particles", Patterns::Anything(), "Prefix of particle files.");
+    prm.declare_entry("Particle output interval",
+                      "0",
+                      Patterns::Integer(0),
+                      "Write particle fields every this many steps (0: first and last step only).");
+    prm.declare_entry("Statistics interval",
+                      "10",
+                      Patterns::Integer(1),
+                      "Write a row of statistics.csv every this many steps.");
+    prm.declare_entry("Write HDF5", "true", Patterns::Bool(), "Particle fields as HDF5 + XDMF.");
+    prm.declare_entry("Write VTU", "false", Patterns::Bool(), "Particle fields as VTU + PVD.");
+    prm.declare_entry("Progress", "true", Patterns::Bool(), "Print progress and timing lines.");
+    prm.leave_subsection();
+  }
+
+  template <int dim>
+  void
+  PDProblem<dim>::parse_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Discretization");
+    discretization.spacing = prm.get_double("Lattice spacing");
+    ParameterUtilities::require_positive(discretization.spacing, "Discretization/Lattice spacing");
+    horizon_factor = prm.get_double("Horizon factor");
+    AssertThrow(horizon_factor > 1.,
+                ExcMessage("The parameter <Discretization/Horizon factor> is " +
+                           std::to_string(horizon_factor) +
+                           ": the horizon must be larger than the lattice spacing (accepted: > 1; "
+                           "3 to 4 is usual)."));
+    discretization.horizon   = horizon_factor * discretization.spacing;
+    discretization.thickness = (dim == 2 ? prm.get_double("Thickness") : 1.);
+    ParameterUtilities::require_positive(discretization.thickness, "Discretization/Thickness");
+    discretization.partial_volume = prm.get_bool("Partial volume correction");
+    surface_correction            = prm.get_bool("Surface correction");
+    body_regions                  = ParameterUtilities::split_names(prm.get("Body"));
+    AssertThrow(!body_regions.empty(),
+                ExcMessage("The parameter <Discretization/Body> is empty; list the regions that "
+                           "form the body."));
+    prm.leave_subsection();
+
+    regions.parse_parameters(prm);
+    for (const auto &name : body_regions)
+      regions.get(name, "Discretization/Body");
+
+    prm.enter_subsection("Pre-cracks");
+    pre_cracks = parse_pre_cracks<dim>(prm.get("Cracks"));
+    prm.leave_subsection();
+
+    prm.enter_subsection("Material");
+    {
+      planar  = (dim == 3 ? PlanarAssumption::three_dimensional :
+                 prm.get("Planar assumption") == "plane stress" ? PlanarAssumption::plane_stress :
+                                                                  PlanarAssumption::plane_strain);
+      density = prm.get_double("Density");
+      ParameterUtilities::require_positive(density, "Material/Density");
+      const std::string model_name = prm.get("Model");
+      material = PluginRegistry<MaterialModel<dim>>::create(model_name, "Material/Model");
+      prm.enter_subsection(model_name);
+      material->parse_parameters(prm);
+      prm.leave_subsection();
+      const std::string damage_name = prm.get("Damage model");
+      damage = PluginRegistry<DamageModel<dim>>::create(damage_name, "Material/Damage model");
+      prm.enter_subsection(damage_name);
+      damage->parse_parameters(prm);
+      prm.leave_subsection();
+    }
+    prm.leave_subsection();
+
+    boundary_conditions.parse_parameters(prm, regions);
+
+    prm.enter_subsection("Initial conditions");
+    for (auto [function, entry] : {std::make_pair(&initial_displacement, "Displacement"),
+                                   std::make_pair(&initial_velocity, "Velocity")})
+      {
+        const std::string expression = prm.get(entry);
+        AssertThrow(Utilities::split_string_list(expression, ';').size() == dim,
+                    ExcMessage("The parameter <Initial conditions/" + std::string(entry) +
+                               "> needs " + std::to_string(dim) +
+                               " expressions separated by ';'."));
+        *function = std::make_unique<FunctionParser<dim>>(dim);
+        (*function)->initialize(dim == 2 ? "x,y" : "x,y,z", expression, {});
+      }
+    prm.leave_subsection();
+
+    prm.enter_subsection("Time stepping");
+    end_time = prm.get_double("End time");
+    ParameterUtilities::require_positive(end_time, "Time stepping/End time");
+    requested_time_step = prm.get_double("Time step");
+    safety_factor       = prm.get_double("Safety factor");
+    AssertThrow(safety_factor > 0. && safety_factor <= 1.,
+                ExcMessage("The parameter <Time stepping/Safety factor> must lie in (0, 1]."));
+    damping = prm.get_double("Damping");
+    prm.leave_subsection();
+
+    prm.enter_subsection("Output");
+    output_directory    = prm.get("Directory");
+    base_name           = prm.get("Base name");
+    particle_interval   = prm.get_integer("Particle output interval");
+    statistics_interval = prm.get_integer("Statistics interval");
+    write_hdf5          = prm.get_bool("Write HDF5");
+    write_vtu           = prm.get_bool("Write VTU");
+    show_progress       = prm.get_bool("Progress");
+    prm.leave_subsection();
+  }
+
+  template <int dim>
+  void
+  PDProblem<dim>::setup()
+  {
+    std::vector<const Region<dim> *> body;
+    BoundingBox<dim>                 box = regions.get(body_regions[0], "").bounding_box();
+    for (const auto &name : body_regions)
+      {
+        body.push_back(&regions.get(name, "Discretization/Body"));
+        box.merge_with(body.back()->bounding_box());
+      }
+    const auto in_body = [&body](const Point<dim> &p) {
+      for (const auto *region : body)
+        if (region->contains(p))
+          return true;
+      return false;
+    };
+    particle_system.generate(discretization, box, in_body, pre_cracks);
+    AssertThrow(particle_system.n_global() > 0,
+                ExcMessage("The body (<Discretization/Body>) holds no particle: its regions are "
+                           "smaller than the lattice spacing or empty."));
+
+    ModelContext context;
+    context.horizon            = discretization.horizon;
+    context.thickness          = discretization.thickness;
+    context.planar             = planar;
+    context.surface_correction = surface_correction;
+    material->initialize(particle_system, context);
+    critical_stretch = damage->critical_stretch(*material);
+
+    boundary_conditions.setup(particle_system);
+
+    stable_dt = material->stable_time_step(particle_system, density);
+    if (requested_time_step > 0.)
+      {
+        AssertThrow(requested_time_step <= stable_dt,
+                    ExcMessage("The parameter <Time stepping/Time step> = " +
+                               Utilities::to_string(requested_time_step) +
+                               " s exceeds the stable limit " + Utilities::to_string(stable_dt) +
+                               " s of this discretization; accepted: 0 (automatic) or a value "
+                               "up to the limit."));
+        dt = requested_time_step;
+      }
+    else
+      dt = safety_factor * stable_dt;
+
+    const auto n_bonds = particle_system.n_global_bonds();
+    if (is_root)
+      log << "Particles: " << particle_system.n_global() << "\n"
+          << "Bonds: " << n_bonds << "\n"
+          << "Material: " << material->summary() << "\n"
+          << "Critical stretch: " << critical_stretch << "\n"
+          << "Stable time step: " << stable_dt << " s\n";
+  }
+
+  template <int dim>
+  void
+  PDProblem<dim>::compute_acceleration(const double    time,
+                                       ParticleVector &displacement,
+                                       ParticleVector &acceleration)
+  {
+    displacement.update_ghost_values();
+    material->compute_forces(particle_system,
+                             displacement,
+                             internal_force,
+                             energy_density.empty() ? nullptr : &energy_density,
+                             critical_stretch);
+    external_force = 0.;
+    boundary_conditions.add_loads(time, external_force);
+    acceleration = internal_force;
+    acceleration += external_force;
+    acceleration *= 1. / density;
+  }
+
+  template <int dim>
+  void
+  PDProblem<dim>::run()
+  {
+    const unsigned int n_steps =
+      std::max<unsigned int>(1, static_cast<unsigned int>(std::ceil(end_time / dt - 1e-6)));
+    dt = end_time / n_steps;
+    if (is_root)
+      log << "Time step: " << dt << " s, steps: " << n_steps << std::endl;
+
+    for (ParticleVector *vec :
+         {&u, &v, &a, &internal_force, &external_force, &previous_u, &previous_load})
+      particle_system.reinit_vector(*vec, dim);
+    const auto &x = particle_system.positions();
+    for (unsigned int i = 0; i < particle_system.n_owned(); ++i)
+      for (unsigned int d = 0; d < dim; ++d)
+        {
+          u.local_element(i * dim + d) = initial_displacement->value(x[i], d);
+          v.local_element(i * dim + d) = initial_velocity->value(x[i], d);
+        }
+
+    if (is_root)
+      std::filesystem::create_directories(output_directory);
+    StatisticsFile      statistics(communicator, output_directory + "/statistics.csv");
+    ParticleOutput<dim> particle_output(communicator,
+                                        output_directory,
+                                        base_name,
+                                        write_hdf5,
+                                        write_vtu);
+    ProgressReporter    progress(communicator, log, n_steps, end_time, show_progress && is_root);
+
+    VelocityVerlet::Operations operations;
+    operations.acceleration = [this](const double t, ParticleVector &uu, ParticleVector &aa) {
+      compute_acceleration(t, uu, aa);
+    };
+    operations.prescribe_step_velocity =
+      [this](const double t, const double step, ParticleVector &vv) {
+        boundary_conditions.prescribe_step_velocity(t, step, vv);
+      };
+    operations.prescribe_displacement = [this](const double t, ParticleVector &uu) {
+      boundary_conditions.prescribe_displacement(t, uu);
+    };
+    VelocityVerlet stepper(operations, dt, damping);
+
+    // The load that does work on the body: applied loads, and on prescribed components the
+    // force the constraint exerts (minus the internal force, neglecting the particle's inertia).
+    const auto &volume    = particle_system.volumes();
+    const auto  work_load = [&](ParticleVector &load) {
+      for (unsigned int i = 0; i < particle_system.n_owned(); ++i)
+        for (unsigned int d = 0; d < dim; ++d)
+          load.local_element(i * dim + d) =
+            volume[i] * (boundary_conditions.is_prescribed(i, d) ?
+                            -internal_force.local_element(i * dim + d) :
+                            external_force.local_element(i * dim + d));
+    };
+
+    energy_density.assign(particle_system.n_owned(), 0.);
+    stepper.initialize(0., u, a);
+    work_load(previous_load);
+    external_work  = 0.;
+    initial_energy = 0.;
+    write_statistics(0, 0., statistics);
+    write_particles(0, 0., particle_output);
+
+    ParticleVector load;
+    particle_system.reinit_vector(load, dim);
+    for (unsigned int step = 1; step <= n_steps; ++step)
+      {
+        const double time        = (step - 1) * dt;
+        const bool   write_stats = (step % statistics_interval == 0 || step == n_steps);
+        const bool   write_fields =
+          (step == n_steps || (particle_interval > 0 && step % particle_interval == 0));
+        if (write_stats || write_fields)
+          energy_density.assign(particle_system.n_owned(), 0.);
+        else
+          energy_density.clear();
+        previous_u = u;
+        stepper.step(time, u, v, a);
+        work_load(load);
+        previous_u.sadd(-1., 1., u);
+        previous_load += load;
+        external_work += 0.5 * (previous_load * previous_u);
+        previous_load = load;
+        if (write_stats)
+          write_statistics(step, step * dt, statistics);
+        if (write_fields)
+          write_particles(step, step * dt, particle_output);
+        progress.update(step, step * dt);
+      }
+  }
+
+  template <int dim>
+  void
+  PDProblem<dim>::write_statistics(const unsigned int step, const double time, StatisticsFile &file)
+  {
+    const auto &volume  = particle_system.volumes();
+    double      kinetic = 0., strain = 0., max_u = 0.;
+    for (unsigned int i = 0; i < particle_system.n_owned(); ++i)
+      {
+        double v2 = 0., u2 = 0.;
+        for (unsigned int d = 0; d < dim; ++d)
+          {
+            v2 += v.local_element(i * dim + d) * v.local_element(i * dim + d);
+            u2 += u.local_element(i * dim + d) * u.local_element(i * dim + d);
+          }
+        kinetic += 0.5 * density * v2 * volume[i];
+        strain += energy_density[i] * volume[i];
+        max_u = std::max(max_u, std::sqrt(u2));
+      }
+    kinetic = Utilities::MPI::sum(kinetic, communicator);
+    strain  = Utilities::MPI::sum(strain, communicator);
+    max_u   = Utilities::MPI::max(max_u, communicator);
+    if (step == 0)
+      initial_energy = kinetic + strain;
+    const double energy_error = kinetic + strain - external_work - initial_energy;
+    const auto   broken       = n_broken_bonds(particle_system);
+
+    AssertThrow(std::isfinite(kinetic) && std::isfinite(strain) && std::isfinite(max_u),
+                ExcMessage("The run became unstable at step " + std::to_string(step) +
+                           " (t = " + Utilities::to_string(time) +
+                           " s): non-finite displacement or energy. Reduce <Time stepping/Time "
+                           "step> or <Time stepping/Safety factor> (stable limit " +
+                           Utilities::to_string(stable_dt) + " s)."));
+    const double scale = std::abs(external_work) + initial_energy;
+    AssertThrow(step < 10 || scale == 0. || kinetic + strain < 1e3 * scale,
+                ExcMessage("The run became unstable at step " + std::to_string(step) +
+                           " (t = " + Utilities::to_string(time) + " s): the energy grew to " +
+                           Utilities::to_string(kinetic + strain) + " J against " +
+                           Utilities::to_string(scale) +
+                           " J put in. Reduce <Time stepping/Time step> or <Time stepping/Safety "
+                           "factor> (stable limit " +
+                           Utilities::to_string(stable_dt) + " s)."));
+
+    file.add_value("step", step);
+    file.add_value("time", time);
+    file.add_value("kinetic_energy", kinetic);
+    file.add_value("strain_energy", strain);
+    file.add_value("external_work", external_work);
+    file.add_value("energy_error", energy_error);
+    file.add_value("broken_bonds", broken);
+    file.add_value("max_displacement", max_u);
+    const auto reactions = boundary_conditions.reactions(internal_force);
+    const char axis[3]   = {'x', 'y', 'z'};
+    for (unsigned int k = 0; k < reactions.size(); ++k)
+      for (unsigned int d = 0; d < dim; ++d)
+        file.add_value("reaction_" + boundary_conditions.names()[k] + "_" + axis[d],
+                       reactions[k][d]);
+    file.end_row();
+
+    if (is_root && step > 0 && time >= end_time * (1 - 1e-12))
+      {
+        log << std::scientific << std::setprecision(6);
+        log << "Final time: " << time << " s\n"
+            << "Kinetic energy: " << kinetic << " J\n"
+            << "Strain energy: " << strain << " J\n"
+            << "External work: " << external_work << " J\n"
+            << "Broken bonds: " << broken << "\n"
+            << "Max displacement: " << max_u << " m\n";
+        for (unsigned int k = 0; k < reactions.size(); ++k)
+          {
+            log << "Reaction " << boundary_conditions.names()[k] << ":";
+            for (unsigned int d = 0; d < dim; ++d)
+              log << ' ' << reactions[k][d];
+            log << " N\n";
+          }
+        log << std::defaultfloat;
+      }
+  }
+
+  template <int dim>
+  void
+  PDProblem<dim>::write_particles(const unsigned int   step,
+                                  const double         time,
+                                  ParticleOutput<dim> &output)
+  {
+    if (!write_hdf5 && !write_vtu)
+      return;
+    const unsigned int      n_owned = particle_system.n_owned();
+    const auto             &x       = particle_system.positions();
+    std::vector<Point<dim>> points(x.begin(), x.begin() + n_owned);
+    const auto              owned_values = [&](const ParticleVector &vec) {
+      return std::vector<double>(vec.begin(), vec.begin() + std::size_t(n_owned) * dim);
+    };
+    output.clear_fields();
+    output.set_points(points);
+    output.add_vector_field("displacement", dim, owned_values(u));
+    output.add_vector_field("velocity", dim, owned_values(v));
+    output.add_vector_field("force_density", dim, owned_values(internal_force));
+    output.add_scalar_field("damage", damage_index(particle_system));
+    if (energy_density.size() == n_owned)
+      output.add_scalar_field("strain_energy_density", energy_density);
+    output.write(step, time);
+  }
+
+  template <int dim>
+  const ParticleSystem<dim> &
+  PDProblem<dim>::particles() const
+  {
+    return particle_system;
+  }
+
+  template <int dim>
+  const ParticleVector &
+  PDProblem<dim>::displacement() const
+  {
+    return u;
+  }
+
+  template <int dim>
+  double
+  PDProblem<dim>::time_step() const
+  {
+    return dt;
+  }
+
+  template class PDProblem<2>;
+  template class PDProblem<3>;
+} // namespace perideal

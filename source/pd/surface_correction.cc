@@ -1,0 +1,66 @@
+// ---------------------------------------------------------------------
+// PeriDeal: the energy method of surface correction for bond-based models.
+// ---------------------------------------------------------------------
+#include <perideal/pd/surface_correction.h>
+
+#include <cmath>
+
+namespace perideal
+{
+  template <int dim>
+  void
+  apply_energy_surface_correction(
+    ParticleSystem<dim>                                                      &particles,
+    const dealii::SymmetricTensor<4, dim>                                    &elasticity,
+    const std::function<void(const ParticleVector &, std::vector<double> &)> &energy_density)
+  {
+    // Small enough that the geometric nonlinearity of the stretch is below 1e-6 relative.
+    const double test_strain = 1e-6;
+    BondList    &bonds       = particles.bonds();
+    std::fill(bonds.surface_factor.begin(), bonds.surface_factor.end(), 1.);
+
+    ParticleVector u, factors;
+    particles.reinit_vector(u, dim);
+    particles.reinit_vector(factors, dim);
+    std::vector<double> energy(particles.n_owned());
+    const auto         &x = particles.positions();
+    for (unsigned int a = 0; a < dim; ++a)
+      {
+        u = 0.;
+        for (unsigned int i = 0; i < particles.n_local(); ++i)
+          u.local_element(i * dim + a) = test_strain * x[i][a];
+        energy_density(u, energy);
+        const double classical = 0.5 * elasticity[a][a][a][a] * test_strain * test_strain;
+        for (unsigned int i = 0; i < particles.n_owned(); ++i)
+          factors.local_element(i * dim + a) = classical / energy[i];
+      }
+    factors.update_ghost_values();
+
+    for (unsigned int i = 0; i < particles.n_owned(); ++i)
+      for (unsigned int b = bonds.row_start[i]; b < bonds.row_start[i + 1]; ++b)
+        {
+          const unsigned int j   = bonds.neighbor[b];
+          const auto         xi  = x[j] - x[i];
+          double             sum = 0.;
+          for (unsigned int a = 0; a < dim; ++a)
+            {
+              const double g_mean =
+                0.5 * (factors.local_element(i * dim + a) + factors.local_element(j * dim + a));
+              const double n = xi[a] / bonds.length[b];
+              sum += (n / g_mean) * (n / g_mean);
+            }
+          bonds.surface_factor[b] = 1. / std::sqrt(sum);
+        }
+  }
+
+  template void
+  apply_energy_surface_correction<2>(
+    ParticleSystem<2> &,
+    const dealii::SymmetricTensor<4, 2> &,
+    const std::function<void(const ParticleVector &, std::vector<double> &)> &);
+  template void
+  apply_energy_surface_correction<3>(
+    ParticleSystem<3> &,
+    const dealii::SymmetricTensor<4, 3> &,
+    const std::function<void(const ParticleVector &, std::vector<double> &)> &);
+} // namespace perideal

@@ -1,0 +1,47 @@
+// Test helpers shared by all unit tests, in the manner of deal.II's tests/tests.h.
+#ifndef perideal_tests_h
+#define perideal_tests_h
+
+#include <deal.II/base/logstream.h>
+#include <deal.II/base/mpi.h>
+#include <deal.II/base/utilities.h>
+
+#include <fstream>
+#include <iomanip>
+#include <string>
+
+namespace perideal_tests
+{
+  inline std::ofstream &
+  logfile()
+  {
+    static std::ofstream file;
+    return file;
+  }
+} // namespace perideal_tests
+
+/**
+ * Attach deallog to the file "output" that the deal.II test driver compares.
+ */
+inline void
+initlog()
+{
+  perideal_tests::logfile().open("output");
+  perideal_tests::logfile() << std::setprecision(6);
+  dealii::deallog.attach(perideal_tests::logfile());
+  dealii::deallog.depth_console(0);
+}
+
+/**
+ * As initlog(), on MPI rank 0 only; the other ranks write nothing.
+ */
+inline void
+mpi_initlog()
+{
+  if (dealii::Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0)
+    initlog();
+  else
+    dealii::deallog.depth_console(0);
+}
+
+#endif
