@@ -129,7 +129,7 @@ namespace perideal
               }
             const double len = std::sqrt(len2);
             const double s   = (len - length[b]) / length[b];
-            if (s > critical_stretch)
+            if (s > critical_stretch && intact[b] == 1)
               {
                 intact[b] = 0;
                 continue;

@@ -140,7 +140,7 @@ namespace perideal
           const unsigned int j = nbr[b];
           double             y[dim];
           const double       e = deformed(i, j, y) - length[b];
-          if (e > critical_stretch * length[b])
+          if (e > critical_stretch * length[b] && intact[b] == 1)
             {
               intact[b] = 0;
               continue;

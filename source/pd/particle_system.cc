@@ -63,7 +63,8 @@ namespace perideal
   ParticleSystem<dim>::generate(const Settings                                &settings,
                                 const BoundingBox<dim>                        &box,
                                 const std::function<bool(const Point<dim> &)> &in_body,
-                                const std::vector<PreCrack<dim>>              &pre_cracks)
+                                const std::vector<PreCrack<dim>>              &pre_cracks,
+                                const std::function<bool(const Point<dim> &)> &no_fail)
   {
     parameters = settings;
     partitioners.clear();
@@ -190,7 +191,7 @@ namespace perideal
               ghost_candidate_index.end(),
               global_indices.begin() + n_owned_particles);
 
-    find_bonds(pre_cracks);
+    find_bonds(pre_cracks, no_fail);
 
     const double volume = (dim == 2 ? dx * dx * settings.thickness : dx * dx * dx);
     particle_volumes.assign(reference_positions.size(), volume);
@@ -198,7 +199,8 @@ namespace perideal
 
   template <int dim>
   void
-  ParticleSystem<dim>::find_bonds(const std::vector<PreCrack<dim>> &pre_cracks)
+  ParticleSystem<dim>::find_bonds(const std::vector<PreCrack<dim>> &pre_cracks,
+                                  const std::function<bool(const Point<dim> &)> &no_fail)
   {
     const double delta = parameters.horizon;
     const double dx    = parameters.spacing;
@@ -336,6 +338,8 @@ namespace perideal
           for (const auto &crack : pre_cracks)
             if (crack.cuts(reference_positions[i], xj))
               found.intact[b] = 0;
+          if (found.intact[b] && no_fail && (no_fail(reference_positions[i]) || no_fail(xj)))
+            found.intact[b] = 2;
         }
     bond_list = std::move(found);
   }

@@ -119,6 +119,11 @@ namespace perideal
                         Patterns::Selection("plane stress|plane strain"),
                         "2D only: the state of the third direction.");
       prm.declare_entry("Density", "0", Patterns::Double(0.), "Mass density rho [kg/m^3].");
+      prm.declare_entry("No-fail regions",
+                        "",
+                        Patterns::Anything(),
+                        "Comma-separated regions in which bonds never break (a bond with an end "
+                        "there is kept), e.g. the layers that carry a traction.");
       prm.declare_entry("Damage model",
                         "none",
                         Patterns::Selection(PluginRegistry<DamageModel<dim>>::pattern_string()),
@@ -221,6 +226,9 @@ namespace perideal
       prm.enter_subsection(model_name);
       material->parse_parameters(prm);
       prm.leave_subsection();
+      no_fail_regions = ParameterUtilities::split_names(prm.get("No-fail regions"));
+      for (const auto &name : no_fail_regions)
+        regions.get(name, "Material/No-fail regions");
       const std::string damage_name = prm.get("Damage model");
       damage = PluginRegistry<DamageModel<dim>>::create(damage_name, "Material/Damage model");
       prm.enter_subsection(damage_name);
@@ -283,7 +291,21 @@ namespace perideal
           return true;
       return false;
     };
-    particle_system.generate(discretization, box, in_body, pre_cracks);
+    std::vector<const Region<dim> *> no_fail;
+    for (const auto &name : no_fail_regions)
+      no_fail.push_back(&regions.get(name, "Material/No-fail regions"));
+    const auto in_no_fail = [&no_fail](const Point<dim> &p) {
+      for (const auto *region : no_fail)
+        if (region->contains(p))
+          return true;
+      return false;
+    };
+    particle_system.generate(discretization,
+                             box,
+                             in_body,
+                             pre_cracks,
+                             no_fail.empty() ? std::function<bool(const Point<dim> &)>() :
+                                               in_no_fail);
     AssertThrow(particle_system.n_global() > 0,
                 ExcMessage("The body (<Discretization/Body>) holds no particle: its regions are "
                            "smaller than the lattice spacing or empty."));

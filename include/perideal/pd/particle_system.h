@@ -39,7 +39,8 @@ namespace perideal
     std::vector<double> volume_factor;
     /// Surface-correction factor (1 until a model computes it).
     std::vector<double> surface_factor;
-    /// 1 while the bond carries force, 0 once broken (pre-cracks start at 0).
+    /// 1 while the bond carries force, 0 once broken (pre-cracks start at 0), 2 for a bond that
+    /// never breaks (it touches a no-fail region).
     std::vector<std::uint8_t> intact;
 
     /// Number of locally stored bonds.
@@ -84,13 +85,15 @@ namespace perideal
 
     /**
      * @brief Fill the lattice points of @p box that satisfy @p in_body, distribute them, import
-     * ghosts and find the bonds; bonds that cross a pre-crack start broken.
+     * ghosts and find the bonds; bonds that cross a pre-crack start broken, bonds with an end
+     * in @p no_fail (if given) never break.
      */
     void
     generate(const Settings                                        &settings,
              const dealii::BoundingBox<dim>                        &box,
              const std::function<bool(const dealii::Point<dim> &)> &in_body,
-             const std::vector<PreCrack<dim>>                      &pre_cracks);
+             const std::vector<PreCrack<dim>>                      &pre_cracks,
+             const std::function<bool(const dealii::Point<dim> &)> &no_fail = {});
 
     /// Communicator.
     MPI_Comm
@@ -170,7 +173,8 @@ namespace perideal
     mutable std::map<unsigned int, std::shared_ptr<const Partitioner>> partitioners;
 
     void
-    find_bonds(const std::vector<PreCrack<dim>> &pre_cracks);
+    find_bonds(const std::vector<PreCrack<dim>>                      &pre_cracks,
+               const std::function<bool(const dealii::Point<dim> &)> &no_fail);
   };
 } // namespace perideal
 

@@ -96,6 +96,7 @@ namespace perideal
     PlanarAssumption                             planar = PlanarAssumption::three_dimensional;
     RegionCollection<dim>                        regions;
     std::vector<std::string>                     body_regions;
+    std::vector<std::string> no_fail_regions;
     std::vector<PreCrack<dim>>                   pre_cracks;
     std::unique_ptr<MaterialModel<dim>>          material;
     std::unique_ptr<DamageModel<dim>>            damage;
