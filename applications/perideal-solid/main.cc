@@ -39,7 +39,6 @@ namespace
     ParameterUtilities::parse_partially(first_pass, file);
 
     dealii::ParameterHandler prm;
-    prm.declare_entry("Dimension", "2", dealii::Patterns::Integer(2, 3), "2 or 3.");
     PDProblem<dim>::declare_parameters(prm,
                                        RegionCollection<dim>::parse_names(first_pass),
                                        BoundaryConditions<dim>::parse_names(first_pass));
@@ -62,10 +61,6 @@ namespace
   print_parameters()
   {
     dealii::ParameterHandler prm;
-    prm.declare_entry("Dimension",
-                      std::to_string(dim),
-                      dealii::Patterns::Integer(2, 3),
-                      "2 (in-plane: plane stress or plane strain) or 3. Read first.");
     perideal::PDProblem<dim>::declare_parameters(prm, {"body"}, {"support"});
     prm.print_parameters(std::cout, dealii::ParameterHandler::PRM);
   }

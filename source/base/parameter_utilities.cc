@@ -8,6 +8,8 @@
 
 #include <filesystem>
 #include <fstream>
+#include <iomanip>
+#include <sstream>
 
 namespace perideal
 {
@@ -49,11 +51,19 @@ namespace perideal
       return result;
     }
 
+    std::string
+    format_number(const double value)
+    {
+      std::ostringstream out;
+      out << std::setprecision(6) << value;
+      return out.str();
+    }
+
     void
     require_positive(const double value, const std::string &entry)
     {
       AssertThrow(value > 0.,
-                  dealii::ExcMessage("The parameter <" + entry + "> is " + std::to_string(value) +
+                  dealii::ExcMessage("The parameter <" + entry + "> is " + format_number(value) +
                                      ", but it must be a number greater than zero."));
     }
 

@@ -40,7 +40,8 @@ namespace perideal
     poisson_ratio = prm.get_double("Poisson's ratio");
     AssertThrow(poisson_ratio > -1. && poisson_ratio < 0.5,
                 ExcMessage("The parameter <" + prefix + "Poisson's ratio> is " +
-                           std::to_string(poisson_ratio) + "; accepted: -1 < nu < 0.5."));
+                           ParameterUtilities::format_number(poisson_ratio) +
+                           "; accepted: -1 < nu < 0.5."));
     influence_name = prm.get("Influence function");
     influence =
       PluginRegistry<InfluenceFunction>::create(influence_name, prefix + "Influence function");

@@ -199,7 +199,7 @@ namespace perideal
 
   template <int dim>
   void
-  ParticleSystem<dim>::find_bonds(const std::vector<PreCrack<dim>> &pre_cracks,
+  ParticleSystem<dim>::find_bonds(const std::vector<PreCrack<dim>>              &pre_cracks,
                                   const std::function<bool(const Point<dim> &)> &no_fail)
   {
     const double delta = parameters.horizon;

@@ -64,6 +64,10 @@ namespace perideal
                                      const std::vector<std::string> &region_names,
                                      const std::vector<std::string> &condition_names)
   {
+    prm.declare_entry("Dimension",
+                      std::to_string(dim),
+                      Patterns::Integer(2, 3),
+                      "2 (in-plane: plane stress or plane strain) or 3. Read first.");
     prm.enter_subsection("Discretization");
     {
       prm.declare_entry("Lattice spacing",
@@ -192,7 +196,7 @@ namespace perideal
     horizon_factor = prm.get_double("Horizon factor");
     AssertThrow(horizon_factor > 1.,
                 ExcMessage("The parameter <Discretization/Horizon factor> is " +
-                           std::to_string(horizon_factor) +
+                           ParameterUtilities::format_number(horizon_factor) +
                            ": the horizon must be larger than the lattice spacing (accepted: > 1; "
                            "3 to 4 is usual)."));
     discretization.horizon   = horizon_factor * discretization.spacing;
@@ -325,8 +329,9 @@ namespace perideal
       {
         AssertThrow(requested_time_step <= stable_dt,
                     ExcMessage("The parameter <Time stepping/Time step> = " +
-                               Utilities::to_string(requested_time_step) +
-                               " s exceeds the stable limit " + Utilities::to_string(stable_dt) +
+                               ParameterUtilities::format_number(requested_time_step) +
+                               " s exceeds the stable limit " +
+                               ParameterUtilities::format_number(stable_dt) +
                                " s of this discretization; accepted: 0 (automatic) or a value "
                                "up to the limit."));
         dt = requested_time_step;
@@ -481,19 +486,19 @@ namespace perideal
 
     AssertThrow(std::isfinite(kinetic) && std::isfinite(strain) && std::isfinite(max_u),
                 ExcMessage("The run became unstable at step " + std::to_string(step) +
-                           " (t = " + Utilities::to_string(time) +
+                           " (t = " + ParameterUtilities::format_number(time) +
                            " s): non-finite displacement or energy. Reduce <Time stepping/Time "
                            "step> or <Time stepping/Safety factor> (stable limit " +
-                           Utilities::to_string(stable_dt) + " s)."));
+                           ParameterUtilities::format_number(stable_dt) + " s)."));
     const double scale = std::abs(external_work) + initial_energy;
     AssertThrow(step < 10 || scale == 0. || kinetic + strain < 1e3 * scale,
-                ExcMessage("The run became unstable at step " + std::to_string(step) +
-                           " (t = " + Utilities::to_string(time) + " s): the energy grew to " +
-                           Utilities::to_string(kinetic + strain) + " J against " +
-                           Utilities::to_string(scale) +
+                ExcMessage("The run became unstable at step " + std::to_string(step) + " (t = " +
+                           ParameterUtilities::format_number(time) + " s): the energy grew to " +
+                           ParameterUtilities::format_number(kinetic + strain) + " J against " +
+                           ParameterUtilities::format_number(scale) +
                            " J put in. Reduce <Time stepping/Time step> or <Time stepping/Safety "
                            "factor> (stable limit " +
-                           Utilities::to_string(stable_dt) + " s)."));
+                           ParameterUtilities::format_number(stable_dt) + " s)."));
 
     file.add_value("step", step);
     file.add_value("time", time);

@@ -30,6 +30,12 @@ namespace perideal
     split_names(const std::string &text);
 
     /**
+     * @brief @p value with six significant digits, for messages.
+     */
+    std::string
+    format_number(const double value);
+
+    /**
      * @brief Throw, naming @p entry, unless @p value > 0.
      */
     void

@@ -1,0 +1,110 @@
+// Bad input stops before any work with a message naming the entry and the accepted values, and
+// leaves no output behind.
+#include <deal.II/base/parameter_handler.h>
+
+#include <perideal/pd/pd_problem.h>
+
+#include "../tests.h"
+
+#include <filesystem>
+#include <sstream>
+
+using namespace dealii;
+
+const std::string base = R"(
+set Dimension = 2
+subsection Discretization
+  set Lattice spacing = 1e-3
+  set Horizon factor = 3
+  set Thickness = 1e-3
+  set Body = plate
+end
+subsection Regions
+  set Names = plate, top
+  subsection plate
+    set Lower corner = 0, 0
+    set Upper corner = 0.02, 0.01
+  end
+  subsection top
+    set Lower corner = 0, 0.009
+    set Upper corner = 0.02, 0.01
+  end
+end
+subsection Material
+  set Density = 7800
+  subsection bond based
+    set Young's modulus = 200e9
+  end
+end
+subsection Boundary conditions
+  set Names = pull
+  subsection pull
+    set Region = top
+    set Type = velocity
+    set Components = y
+    set Function = 1
+  end
+end
+subsection Time stepping
+  set End time = 1e-6
+end
+subsection Output
+  set Directory = output-bad-input
+  set Progress = false
+end
+)";
+
+void
+check(const std::string &name, const std::string &changes)
+{
+  ParameterHandler prm;
+  perideal::PDProblem<2>::declare_parameters(prm, {"plate", "top"}, {"pull", "hold"});
+  std::ostringstream log;
+  try
+    {
+      prm.parse_input_from_string(base + changes);
+      perideal::PDProblem<2> problem(MPI_COMM_WORLD, log);
+      problem.parse_parameters(prm);
+      problem.setup();
+      deallog << name << ": accepted (wrong)" << std::endl;
+    }
+  catch (const ExceptionBase &exc)
+    {
+      std::ostringstream message;
+      exc.print_info(message);
+      std::string text = message.str();
+      text.erase(0, text.find_first_not_of(" \n"));
+      while (!text.empty() && (text.back() == '\n' || text.back() == ' '))
+        text.pop_back();
+      deallog << name << ": " << text << std::endl;
+    }
+  deallog << "  output written: " << std::filesystem::exists("output-bad-input") << std::endl;
+}
+
+int
+main(int argc, char **argv)
+{
+  Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
+  mpi_initlog();
+  check("negative modulus",
+        "subsection Material\n subsection bond based\n set Young's modulus = -1\n end\nend\n");
+  check("zero density", "subsection Material\n set Density = 0\nend\n");
+  check("horizon below spacing", "subsection Discretization\n set Horizon factor = 0.8\nend\n");
+  check("region without particles",
+        "subsection Regions\n subsection top\n set Lower corner = 1, 1\n set Upper corner = 2, "
+        "2\n end\nend\n");
+  check("undefined region",
+        "subsection Boundary conditions\n subsection pull\n set Region = topp\n end\nend\n");
+  check("missing mesh file",
+        "subsection Regions\n subsection top\n set Shape = mesh\n set Mesh file = none.msh\n "
+        "end\nend\n");
+  check("time step above the limit", "subsection Time stepping\n set Time step = 1e-6\nend\n");
+  check("bad function",
+        "subsection Boundary conditions\n subsection pull\n set Function = 1; 2\n end\nend\n");
+  check("conflicting conditions",
+        "subsection Boundary conditions\n set Names = pull, hold\n subsection hold\n set Region = "
+        "top\n set Type = displacement\n set Components = x, y\n set Function = 0; 0\n "
+        "end\nend\n");
+  check("damage without energy",
+        "subsection Material\n set Damage model = critical stretch\nend\n");
+}
