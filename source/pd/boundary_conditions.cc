@@ -30,13 +30,14 @@ namespace perideal
       auto function = std::make_unique<FunctionParser<dim>>(n);
       try
         {
-          function->initialize(variable_names(dim), expression, {}, /*time_dependent=*/true);
+          function->initialize(variable_names(dim), expression, {{"pi", numbers::PI}}, /*time_dependent=*/true);
         }
       catch (...)
         {
           AssertThrow(false,
                       ExcMessage("The parameter <" + entry + "> = <" + expression +
-                                 "> is not a valid expression of " + variable_names(dim) + "."));
+                                 "> is not a valid expression of " + variable_names(dim) +
+                                 " (and the constant pi)."));
         }
       return function;
     }

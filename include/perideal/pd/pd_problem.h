@@ -118,6 +118,7 @@ namespace perideal
     std::vector<double> energy_density;
     double              external_work  = 0.;
     double              initial_energy = 0.;
+    double              initial_prescribed_kinetic = 0.;
     ParticleVector      previous_u, previous_load;
   };
 } // namespace perideal

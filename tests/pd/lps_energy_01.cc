@@ -1,0 +1,339 @@
+// LPS: exact dilatation, energy under expansion and shear, reduction to PMB at the Cauchy ratio.
+
+#include <deal.II/base/bounding_box.h>
+#include <deal.II/base/mpi.h>
+#include <deal.II/base/parameter_handler.h>
+#include <deal.II/base/point.h>
+#include <deal.II/base/symmetric_tensor.h>
+#include <deal.II/base/utilities.h>
+
+#include <perideal/pd/bond_based.h>
+#include <perideal/pd/linear_peridynamic_solid.h>
+#include <perideal/pd/particle_system.h>
+
+#include "../tests.h"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstdint>
+#include <functional>
+#include <limits>
+#include <memory>
+#include <sstream>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace
+{
+  using dealii::deallog;
+  const double E  = 192e9;
+  const double h  = 1e-4;
+  const double dx = 1e-4;
+
+  std::string
+  planar_name(const perideal::PlanarAssumption planar)
+  {
+    switch (planar)
+      {
+        case perideal::PlanarAssumption::plane_stress:
+          return "plane stress";
+        case perideal::PlanarAssumption::plane_strain:
+          return "plane strain";
+        default:
+          return "3D";
+      }
+  }
+
+  // Deterministic pseudo-random number in [-1, 1] from an integer key (splitmix64).
+  double
+  random_number(std::uint64_t key)
+  {
+    key += 0x9e3779b97f4a7c15ULL;
+    key = (key ^ (key >> 30)) * 0xbf58476d1ce4e5b9ULL;
+    key = (key ^ (key >> 27)) * 0x94d049bb133111ebULL;
+    key = key ^ (key >> 31);
+    return 2. * (key >> 11) * (1. / 9007199254740992.) - 1.;
+  }
+
+  double
+  influence(const std::string &name, const double r, const double R)
+  {
+    if (name == "constant")
+      return 1.;
+    if (name == "inverse distance")
+      return R / r;
+    return std::exp(-r * r / (R * R));
+  }
+
+  // A cube lattice of n^dim particles starting at the origin.
+  template <int dim>
+  struct Body
+  {
+    Body(const int n, const double horizon_factor, const bool partial_volume)
+      : n(n)
+      , delta(horizon_factor * dx)
+      , ps(MPI_COMM_WORLD)
+    {
+      typename perideal::ParticleSystem<dim>::Settings s;
+      s.spacing        = dx;
+      s.horizon        = delta;
+      s.thickness      = h;
+      s.partial_volume = partial_volume;
+      dealii::Point<dim> upper;
+      for (unsigned int d = 0; d < dim; ++d)
+        upper[d] = n * dx;
+      ps.generate(s,
+                  dealii::BoundingBox<dim>(std::make_pair(dealii::Point<dim>(), upper)),
+                  [](const dealii::Point<dim> &) { return true; },
+                  {});
+    }
+
+    int
+    depth(const unsigned int i) const
+    {
+      int layers = n;
+      for (unsigned int d = 0; d < dim; ++d)
+        {
+          const int k = static_cast<int>(std::lround(ps.positions()[i][d] / dx - 0.5));
+          layers      = std::min({layers, k, n - 1 - k});
+        }
+      return layers;
+    }
+
+    std::uint64_t
+    lattice_index(const unsigned int i) const
+    {
+      std::uint64_t index = 0;
+      for (unsigned int d = dim; d-- > 0;)
+        index = index * n + std::lround(ps.positions()[i][d] / dx - 0.5);
+      return index;
+    }
+
+    void
+    set_field(perideal::ParticleVector                                        &u,
+              const std::function<dealii::Tensor<1, dim>(const unsigned int)> &field) const
+    {
+      ps.reinit_vector(u, dim);
+      for (unsigned int i = 0; i < ps.n_local(); ++i)
+        {
+          const auto value = field(i);
+          for (unsigned int d = 0; d < dim; ++d)
+            u.local_element(i * dim + d) = value[d];
+        }
+    }
+
+    const int                     n;
+    const double                  delta;
+    perideal::ParticleSystem<dim> ps;
+  };
+
+  template <int dim>
+  std::unique_ptr<perideal::LinearPeridynamicSolid<dim>>
+  make_lps(Body<dim>                       &body,
+           const perideal::PlanarAssumption planar,
+           const double                     nu,
+           const std::string               &omega,
+           const bool                       correction)
+  {
+    auto                     model = std::make_unique<perideal::LinearPeridynamicSolid<dim>>();
+    dealii::ParameterHandler prm;
+    perideal::LinearPeridynamicSolid<dim>::declare_parameters(prm);
+    prm.set("Young's modulus", std::to_string(E));
+    std::ostringstream poisson; // all digits: std::to_string would cut 1/3 to 0.333333
+    poisson << std::setprecision(17) << nu;
+    prm.set("Poisson's ratio", poisson.str());
+    prm.set("Influence function", omega);
+    model->parse_parameters(prm);
+    perideal::ModelContext context;
+    context.horizon            = body.delta;
+    context.thickness          = h;
+    context.planar             = planar;
+    context.surface_correction = correction;
+    model->initialize(body.ps, context);
+    return model;
+  }
+
+  // The discrete shear-energy ratio of a full family: under u_x = g y, u_y = g x the extension
+  // is e = 2 g |xi| n_x n_y (linearized) and theta = 0, so
+  // W_PD / (2 mu g^2) = n (n + 2) sum omega beta |xi|^2 n_x^2 n_y^2 / sum omega beta |xi|^2,
+  // which is 1 for the continuum (<n_x^2 n_y^2> = 1/8 on a circle, 1/15 on a sphere).
+  template <int dim>
+  double
+  lattice_shear_ratio(const double R, const bool partial_volume, const std::string &omega)
+  {
+    const int            reach = static_cast<int>(R) + 1;
+    std::array<int, dim> v;
+    v.fill(-reach);
+    double num = 0., den = 0.;
+    while (true)
+      {
+        double r2 = 0.;
+        for (unsigned int d = 0; d < dim; ++d)
+          r2 += double(v[d]) * v[d];
+        const double r = std::sqrt(r2);
+        if (r > 0. && r <= R * (1. + 1e-10))
+          {
+            const double w =
+              influence(omega, r, R) * ((!partial_volume || r <= R - 0.5) ? 1. : R + 0.5 - r);
+            num += w * v[0] * v[0] * v[1] * v[1] / r2;
+            den += w * r2;
+          }
+        unsigned int d = 0;
+        for (; d < dim; ++d)
+          if (v[d] < reach)
+            {
+              ++v[d];
+              break;
+            }
+          else
+            v[d] = -reach;
+        if (d == dim)
+          break;
+      }
+    return dim * (dim + 2.) * num / den;
+  }
+
+  template <int dim>
+  void
+  check_energy(const perideal::PlanarAssumption planar, const std::string &omega)
+  {
+    const double horizon_factor = 4.;
+    const int    R              = 4;
+    const bool   partial_volume = true;
+    const int    n              = 2 * R + 3;
+    Body<dim>    body(n, horizon_factor, partial_volume);
+    const auto   model = make_lps<dim>(body, planar, 0.3, omega, true);
+    const auto   C     = model->elasticity_tensor();
+    const auto   I     = dealii::unit_symmetric_tensor<dim>();
+
+    perideal::ParticleVector u, f;
+    body.ps.reinit_vector(f, dim);
+    std::vector<double> w;
+
+    // Isotropic expansion: e = eps |xi| exactly (no linearization), so with the discrete
+    // weighted volume theta = n eps and the deviatoric extension vanishes at every particle,
+    // near surfaces too: W = k theta^2 / 2 = eps I : C : eps I / 2 up to round-off. eps = 1e-4
+    // keeps the cancellation in |y| - |xi| at 1e-12 of e.
+    const double eps = 1e-4;
+    body.set_field(u, [&](const unsigned int i) {
+      return dealii::Tensor<1, dim>(eps * body.ps.positions()[i]);
+    });
+    model->compute_forces(body.ps, u, f, &w, std::numeric_limits<double>::infinity());
+    const double classical_iso = 0.5 * (eps * I) * (C * (eps * I));
+    double       theta_error = 0., iso_error = 0.;
+    for (unsigned int i = 0; i < body.ps.n_owned(); ++i)
+      {
+        theta_error =
+          std::max(theta_error, std::abs(model->dilatation().local_element(i) / (dim * eps) - 1.));
+        iso_error = std::max(iso_error, std::abs(w[i] / classical_iso - 1.));
+      }
+    theta_error = dealii::Utilities::MPI::max(theta_error, MPI_COMM_WORLD);
+    iso_error   = dealii::Utilities::MPI::max(iso_error, MPI_COMM_WORLD);
+
+    // Pure shear u_x = g y, u_y = g x: W = 2 mu g^2 = eps : C : eps / 2 with eps_xy = g.
+    const double g = 1e-6;
+    body.set_field(u, [&](const unsigned int i) {
+      dealii::Tensor<1, dim> v;
+      v[0] = g * body.ps.positions()[i][1];
+      v[1] = g * body.ps.positions()[i][0];
+      return v;
+    });
+    model->compute_forces(body.ps, u, f, &w, std::numeric_limits<double>::infinity());
+    dealii::SymmetricTensor<2, dim> shear;
+    shear[0][1]                  = g;
+    const double classical_shear = 0.5 * shear * (C * shear);
+    double       local           = 0.;
+    for (unsigned int i = 0; i < body.ps.n_owned(); ++i)
+      if (body.depth(i) == R + 1)
+        local = w[i] / classical_shear;
+    const double ratio   = dealii::Utilities::MPI::max(local, MPI_COMM_WORLD);
+    const double lattice = lattice_shear_ratio<dim>(horizon_factor, partial_volume, omega);
+
+    deallog << planar_name(planar) << ", nu = 0.3, '" << omega
+            << "': theta = n eps at all particles " << (theta_error < 1e-10 ? "ok" : "FAILED")
+            << ", W_iso/W_classical = 1 (< 1e-8) " << (iso_error < 1e-8 ? "ok" : "FAILED")
+            << std::endl;
+    // The interior shear ratio is the one-point quadrature of <n_x^2 n_y^2> over the family:
+    // it must equal the lattice value up to the geometric nonlinearity O(g) = 1e-6, and lie
+    // within 5 % of 1 at delta = 4 dx (the quadrature error, 1-2.5 % for these influence
+    // functions; seed note 002, sec. 8, T4 allows 3 % with partial volume).
+    deallog << "  interior W_shear/W_classical = " << std::setprecision(5) << ratio
+            << std::setprecision(6) << ", lattice value "
+            << (std::abs(ratio - lattice) < 1e-5 ? "ok" : "FAILED") << ", |ratio - 1| < 0.05 "
+            << (std::abs(ratio - 1.) < 0.05 ? "ok" : "FAILED") << std::endl;
+  }
+
+  // With omega = delta/|xi|, the continuum weighted volume (pi delta^5 in 3D, 2 pi h delta^4 / 3
+  // in 2D) and the Cauchy Poisson ratio (n k = (n + 2) mu), the LPS bond force
+  // t_ij + t_ji = 2 n (n + 2) mu omega e / m reduces to c s with the PMB micromodulus:
+  // 3D 30 mu / (pi delta^4) = 12 E / (pi delta^4); 2D 24 mu / (pi h delta^3), i.e.
+  // 9 E / (pi h delta^3) (plane stress, nu = 1/3) or 48 E / (5 pi h delta^3) (plane strain,
+  // nu = 1/4). So the force densities agree at every particle, near surfaces too.
+  template <int dim>
+  void
+  check_reduction(const perideal::PlanarAssumption planar, const double nu)
+  {
+    Body<dim>  body(dim == 2 ? 15 : 9, 3.015, false);
+    const auto lps = make_lps<dim>(body, planar, nu, "inverse distance", false);
+
+    perideal::BondBased<dim> pmb;
+    {
+      dealii::ParameterHandler prm;
+      perideal::BondBased<dim>::declare_parameters(prm);
+      prm.set("Young's modulus", std::to_string(E));
+      pmb.parse_parameters(prm);
+      perideal::ModelContext context;
+      context.horizon            = body.delta;
+      context.thickness          = h;
+      context.planar             = planar;
+      context.surface_correction = false;
+      pmb.initialize(body.ps, context);
+    }
+
+    perideal::ParticleVector u, f_lps, f_pmb;
+    body.set_field(u, [&](const unsigned int i) {
+      dealii::Tensor<1, dim> v;
+      for (unsigned int d = 0; d < dim; ++d)
+        v[d] = 1e-3 * dx * random_number(body.lattice_index(i) * dim + d);
+      return v;
+    });
+    body.ps.reinit_vector(f_lps, dim);
+    body.ps.reinit_vector(f_pmb, dim);
+    lps->compute_forces(body.ps, u, f_lps, nullptr, std::numeric_limits<double>::infinity());
+    pmb.compute_forces(body.ps, u, f_pmb, nullptr, std::numeric_limits<double>::infinity());
+    double difference = 0., size = 0.;
+    for (unsigned int k = 0; k < body.ps.n_owned() * dim; ++k)
+      {
+        difference =
+          std::max(difference, std::abs(f_lps.local_element(k) - f_pmb.local_element(k)));
+        size = std::max(size, std::abs(f_pmb.local_element(k)));
+      }
+    difference = dealii::Utilities::MPI::max(difference, MPI_COMM_WORLD);
+    size       = dealii::Utilities::MPI::max(size, MPI_COMM_WORLD);
+    deallog << planar_name(planar) << ", nu = " << std::setprecision(4) << nu
+            << std::setprecision(6)
+            << ", 'inverse distance', continuum m: max |f_LPS - f_PMB| / max |f_PMB| < 1e-10 "
+            << (difference / size < 1e-10 ? "ok" : "FAILED") << std::endl;
+  }
+} // namespace
+
+int
+main(int argc, char **argv)
+{
+  dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
+  mpi_initlog();
+
+  using P = perideal::PlanarAssumption;
+  for (const std::string omega : {"constant", "inverse distance", "gaussian"})
+    {
+      check_energy<3>(P::three_dimensional, omega);
+      check_energy<2>(P::plane_strain, omega);
+      check_energy<2>(P::plane_stress, omega);
+    }
+
+  check_reduction<3>(P::three_dimensional, 0.25);
+  check_reduction<2>(P::plane_strain, 0.25);
+  check_reduction<2>(P::plane_stress, 1. / 3.);
+}

@@ -1,0 +1,205 @@
+// PMB stable time step (thesis value) and a two-particle oscillator under velocity Verlet.
+
+#include <deal.II/base/bounding_box.h>
+#include <deal.II/base/mpi.h>
+#include <deal.II/base/numbers.h>
+#include <deal.II/base/parameter_handler.h>
+#include <deal.II/base/point.h>
+#include <deal.II/base/utilities.h>
+
+#include <perideal/pd/bond_based.h>
+#include <perideal/pd/explicit_solver.h>
+#include <perideal/pd/particle_system.h>
+
+#include "../tests.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace
+{
+  using dealii::deallog;
+  const double pi  = dealii::numbers::PI;
+  const double E   = 192e9;
+  const double rho = 7800.;
+  const double dx  = 1e-4;
+
+  template <int dim>
+  void
+  make_model(perideal::BondBased<dim>        &model,
+             perideal::ParticleSystem<dim>   &ps,
+             const perideal::PlanarAssumption planar)
+  {
+    dealii::ParameterHandler prm;
+    perideal::BondBased<dim>::declare_parameters(prm);
+    prm.set("Young's modulus", std::to_string(E));
+    model.parse_parameters(prm);
+    perideal::ModelContext context;
+    context.horizon            = ps.settings().horizon;
+    context.thickness          = ps.settings().thickness;
+    context.planar             = planar;
+    context.surface_correction = false;
+    model.initialize(ps, context);
+  }
+
+  // The thesis plate (seed note 002, sec. 5.3): E = 192 GPa, rho = 7800 kg/m^3,
+  // dx = h = 1e-4 m, delta = 4 dx, |xi| <= delta, no corrections: dt = 2.94685e-8 s from the
+  // Silling-Askari bound at an interior particle (48 neighbours; the most stiffness, so the
+  // minimum over the body).
+  void
+  check_stable_time_step()
+  {
+    perideal::ParticleSystem<2>           ps(MPI_COMM_WORLD);
+    perideal::ParticleSystem<2>::Settings s;
+    s.spacing        = dx;
+    s.horizon        = 4. * dx;
+    s.thickness      = 1e-4;
+    s.partial_volume = false;
+    ps.generate(s,
+                dealii::BoundingBox<2>(
+                  std::make_pair(dealii::Point<2>(), dealii::Point<2>(11 * dx, 11 * dx))),
+                [](const dealii::Point<2> &) { return true; },
+                {});
+    perideal::BondBased<2> model;
+    make_model(model, ps, perideal::PlanarAssumption::plane_stress);
+    const double dt = model.stable_time_step(ps, rho);
+
+    // Independently: sqrt(2 rho / sum_j c V / |xi|) over the 48 lattice offsets.
+    double sum = 0.;
+    for (int a = -4; a <= 4; ++a)
+      for (int b = -4; b <= 4; ++b)
+        if (a * a + b * b > 0 && a * a + b * b <= 16)
+          sum += model.micromodulus() * dx * dx * s.thickness / (dx * std::sqrt(a * a + b * b));
+    const double expected = std::sqrt(2. * rho / sum);
+    deallog << "stable time step " << dt << " s: lattice sum (< 1e-12) "
+            << (std::abs(dt / expected - 1.) < 1e-12 ? "ok" : "FAILED")
+            << ", thesis 2.94685e-8 s (< 1e-4) "
+            << (std::abs(dt / 2.94685e-8 - 1.) < 1e-4 ? "ok" : "FAILED") << std::endl;
+  }
+
+  // Two particles one dx apart on x with delta = 1.5 dx share one bond, a linear spring in 1D:
+  // the force on particle 1 is f V = c (q / |xi|) V V with q = u2 - u1, each mass is rho V, so
+  // rho V q'' = -2 c V^2 q / |xi| and omega^2 = 2 c V / (rho |xi|).
+  void
+  check_oscillator()
+  {
+    perideal::ParticleSystem<3>           ps(MPI_COMM_WORLD);
+    perideal::ParticleSystem<3>::Settings s;
+    s.spacing        = dx;
+    s.horizon        = 1.5 * dx;
+    s.partial_volume = false;
+    ps.generate(s,
+                dealii::BoundingBox<3>(
+                  std::make_pair(dealii::Point<3>(), dealii::Point<3>(2 * dx, dx, dx))),
+                [](const dealii::Point<3> &) { return true; },
+                {});
+    perideal::BondBased<3> model;
+    make_model(model, ps, perideal::PlanarAssumption::three_dimensional);
+    deallog << "oscillator: " << ps.n_global() << " particles, " << ps.n_global_bonds() << " bond"
+            << std::endl;
+
+    const double V      = dx * dx * dx;
+    const double omega  = std::sqrt(2. * model.micromodulus() * V / (rho * dx));
+    const double period = 2. * pi / omega;
+    const double dt     = period / 200.;
+    // Velocity Verlet on a linear oscillator gives q_n = q_0 cos(omega_h n dt) exactly, with
+    // cos(omega_h dt) = 1 - (omega dt)^2 / 2: the period is shorter by (omega dt)^2 / 24.
+    const double period_verlet = 2. * pi * dt / std::acos(1. - 0.5 * std::pow(omega * dt, 2));
+
+    perideal::ParticleVector u, v, a;
+    ps.reinit_vector(u, 3);
+    ps.reinit_vector(v, 3);
+    ps.reinit_vector(a, 3);
+    const double amplitude = 1e-3 * dx;
+    // +1 for the particle at larger x.
+    std::vector<double> side(ps.n_owned());
+    for (unsigned int i = 0; i < ps.n_owned(); ++i)
+      {
+        side[i]                = ps.positions()[i][0] > dx ? 1. : -1.;
+        u.local_element(3 * i) = side[i] * amplitude;
+      }
+
+    double                               potential = 0.;
+    perideal::VelocityVerlet::Operations operations;
+    operations.acceleration =
+      [&](const double, perideal::ParticleVector &uu, perideal::ParticleVector &aa) {
+        uu.update_ghost_values();
+        std::vector<double> w;
+        model.compute_forces(ps, uu, aa, &w, std::numeric_limits<double>::infinity());
+        aa *= 1. / rho;
+        double local = 0.;
+        for (unsigned int i = 0; i < ps.n_owned(); ++i)
+          local += w[i] * ps.volumes()[i];
+        potential = dealii::Utilities::MPI::sum(local, MPI_COMM_WORLD);
+      };
+    operations.prescribe_step_velocity =
+      [](const double, const double, perideal::ParticleVector &) {};
+    operations.prescribe_displacement = [](const double, perideal::ParticleVector &) {};
+    perideal::VelocityVerlet stepper(operations, dt, 0.);
+    stepper.initialize(0., u, a);
+
+    const auto relative = [&]() {
+      double local = 0.;
+      for (unsigned int i = 0; i < ps.n_owned(); ++i)
+        local += side[i] * u.local_element(3 * i);
+      return dealii::Utilities::MPI::sum(local, MPI_COMM_WORLD);
+    };
+    const auto energy = [&]() {
+      double local = 0.;
+      for (unsigned int i = 0; i < ps.n_owned(); ++i)
+        for (unsigned int d = 0; d < 3; ++d)
+          local += 0.5 * rho * ps.volumes()[i] * std::pow(v.local_element(3 * i + d), 2);
+      return dealii::Utilities::MPI::sum(local, MPI_COMM_WORLD) + potential;
+    };
+
+    const double        energy_0     = energy();
+    double              energy_error = 0., time = 0., q = relative();
+    std::vector<double> crossings;
+    for (unsigned int n = 0; n < 2000; ++n)
+      {
+        stepper.step(time, u, v, a);
+        time += dt;
+        const double q_new = relative();
+        if ((q > 0.) != (q_new > 0.))
+          crossings.push_back(time - dt * q_new / (q_new - q));
+        q            = q_new;
+        energy_error = std::max(energy_error, std::abs(energy() / energy_0 - 1.));
+      }
+    const double measured = 2. * (crossings.back() - crossings.front()) / (crossings.size() - 1);
+
+    deallog << "  " << crossings.size()
+            << " zero crossings in 10 periods; measured/exact period - 1 = " << std::setprecision(2)
+            << measured / period - 1. << std::setprecision(6)
+            << ", theory -(omega dt)^2/24 = " << std::setprecision(2)
+            << -std::pow(omega * dt, 2) / 24. << std::setprecision(6) << std::endl;
+    // Tolerances: the Verlet period error (omega dt)^2/24 = 4.1e-5 must be reproduced to 1e-6
+    // (the secant zero crossings err by O((omega dt)^3) per crossing, averaged over 20); the
+    // period itself is right to 1e-4.
+    deallog << "  period within 1e-4 of 2 pi / omega "
+            << (std::abs(measured / period - 1.) < 1e-4 ? "ok" : "FAILED")
+            << ", within 1e-6 of the Verlet period "
+            << (std::abs(measured / period_verlet - 1.) < 1e-6 ? "ok" : "FAILED") << std::endl;
+    // The Verlet energy of a linear oscillator oscillates between E0 (1 - (omega dt)^2/4) and
+    // E0 without drift (the modified energy v^2/2 / (1 - (omega dt / 2)^2) + omega^2 q^2 / 2 is
+    // conserved exactly).
+    const double bound = 0.25 * std::pow(omega * dt, 2);
+    deallog << "  max |E/E0 - 1| over 10 periods = " << std::setprecision(3) << energy_error
+            << std::setprecision(6) << ", bound (omega dt)^2/4 = " << std::setprecision(3) << bound
+            << std::setprecision(6) << ": "
+            << (energy_error <= bound * (1. + 1e-6) ? "ok" : "FAILED") << std::endl;
+  }
+} // namespace
+
+int
+main(int argc, char **argv)
+{
+  dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
+  mpi_initlog();
+
+  check_stable_time_step();
+  check_oscillator();
+}
