@@ -30,7 +30,10 @@ namespace perideal
       auto function = std::make_unique<FunctionParser<dim>>(n);
       try
         {
-          function->initialize(variable_names(dim), expression, {{"pi", numbers::PI}}, /*time_dependent=*/true);
+          function->initialize(variable_names(dim),
+                               expression,
+                               {{"pi", numbers::PI}},
+                               /*time_dependent=*/true);
         }
       catch (...)
         {

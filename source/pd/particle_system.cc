@@ -79,7 +79,7 @@ namespace perideal
         n_points[d] = std::max(1, static_cast<int>(std::ceil(box.side_length(d) / dx - 1e-8)));
         upper[d]    = lower[d] + n_points[d] * dx;
         n_bins[d] =
-          std::max(1, static_cast<int>(std::floor((upper[d] - lower[d]) / settings.horizon)));
+          std::max(1, static_cast<int>(std::floor((upper[d] - lower[d]) / search_radius())));
         bin_width[d] = (upper[d] - lower[d]) / n_bins[d];
       }
     // first_point[d][k]: first lattice index in bin k along d (bins are monotone in the index).
@@ -204,8 +204,11 @@ namespace perideal
   {
     const double delta = parameters.horizon;
     const double dx    = parameters.spacing;
-    const double reach = delta * (1. + 1e-10);
-    const auto   n_all = static_cast<unsigned int>(reference_positions.size());
+    // Bonds of length delta exactly belong to the family; for the geometric partial volume the
+    // family ends where the factor reaches zero, at delta + dx/2 (excluded).
+    const bool   geometric = (parameters.partial_volume == PartialVolume::geometric);
+    const double reach     = geometric ? (delta + 0.5 * dx) * (1. - 1e-10) : delta * (1. + 1e-10);
+    const auto   n_all     = static_cast<unsigned int>(reference_positions.size());
 
     // Cell list of all local particles (owned and ghost candidates): O(N).
     BoundingBox<dim> local_box(reference_positions.empty() ?
@@ -329,12 +332,13 @@ namespace perideal
     for (unsigned int i = 0; i < n_owned_particles; ++i)
       for (unsigned int b = found.row_start[i]; b < found.row_start[i + 1]; ++b)
         {
-          const Point<dim> &xj   = reference_positions[found.neighbor[b]];
-          const double      r    = reference_positions[i].distance(xj);
-          found.length[b]        = r;
-          found.volume_factor[b] = (!parameters.partial_volume || r <= delta - 0.5 * dx) ?
-                                     1. :
-                                     (delta + 0.5 * dx - r) / dx;
+          const Point<dim> &xj = reference_positions[found.neighbor[b]];
+          const double      r  = reference_positions[i].distance(xj);
+          found.length[b]      = r;
+          found.volume_factor[b] =
+            (parameters.partial_volume == PartialVolume::none || r <= delta - 0.5 * dx) ?
+              1. :
+              (delta + 0.5 * dx - r) / dx;
           for (const auto &crack : pre_cracks)
             if (crack.cuts(reference_positions[i], xj))
               found.intact[b] = 0;
@@ -415,6 +419,15 @@ namespace perideal
   ParticleSystem<dim>::bonds()
   {
     return bond_list;
+  }
+
+  template <int dim>
+  double
+  ParticleSystem<dim>::search_radius() const
+  {
+    return parameters.partial_volume == PartialVolume::geometric ?
+             parameters.horizon + 0.5 * parameters.spacing :
+             parameters.horizon;
   }
 
   template <int dim>

@@ -38,7 +38,7 @@ namespace
     s.spacing        = dx;
     s.horizon        = horizon_factor * dx;
     s.thickness      = 1e-4;
-    s.partial_volume = false;
+    s.partial_volume = perideal::PartialVolume::none;
     ps.generate(s,
                 dealii::BoundingBox<dim>(std::make_pair(lower, upper)),
                 [](const dealii::Point<dim> &) { return true; },

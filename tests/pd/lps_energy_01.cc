@@ -77,10 +77,11 @@ namespace
       , ps(MPI_COMM_WORLD)
     {
       typename perideal::ParticleSystem<dim>::Settings s;
-      s.spacing        = dx;
-      s.horizon        = delta;
-      s.thickness      = h;
-      s.partial_volume = partial_volume;
+      s.spacing   = dx;
+      s.horizon   = delta;
+      s.thickness = h;
+      s.partial_volume =
+        partial_volume ? perideal::PartialVolume::book : perideal::PartialVolume::none;
       dealii::Point<dim> upper;
       for (unsigned int d = 0; d < dim; ++d)
         upper[d] = n * dx;

@@ -29,8 +29,9 @@ main(int argc, char **argv)
   // between the rows below and above the line is broken, none else. Count by brute force.
   perideal::ParticleSystem<2>           particles(MPI_COMM_WORLD);
   perideal::ParticleSystem<2>::Settings settings;
-  settings.spacing = 1.;
-  settings.horizon = 3.015;
+  settings.spacing        = 1.;
+  settings.horizon        = 3.015;
+  settings.partial_volume = perideal::PartialVolume::none;
   perideal::PreCrack<2> crack;
   crack.vertices = {Point<2>(-1., 10.), Point<2>(21., 10.)};
   particles.generate(settings,

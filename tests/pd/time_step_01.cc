@@ -58,7 +58,7 @@ namespace
     s.spacing        = dx;
     s.horizon        = 4. * dx;
     s.thickness      = 1e-4;
-    s.partial_volume = false;
+    s.partial_volume = perideal::PartialVolume::none;
     ps.generate(s,
                 dealii::BoundingBox<2>(
                   std::make_pair(dealii::Point<2>(), dealii::Point<2>(11 * dx, 11 * dx))),
@@ -91,7 +91,7 @@ namespace
     perideal::ParticleSystem<3>::Settings s;
     s.spacing        = dx;
     s.horizon        = 1.5 * dx;
-    s.partial_volume = false;
+    s.partial_volume = perideal::PartialVolume::none;
     ps.generate(s,
                 dealii::BoundingBox<3>(
                   std::make_pair(dealii::Point<3>(), dealii::Point<3>(2 * dx, dx, dx))),

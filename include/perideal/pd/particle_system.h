@@ -35,7 +35,7 @@ namespace perideal
     std::vector<unsigned int> neighbor;
     /// Reference bond length |xi| [m].
     std::vector<double> length;
-    /// Partial-volume factor of the bond (1 inside delta - dx/2, then linear to 1/2 at delta).
+    /// Partial-volume factor of the bond (1 inside delta - dx/2, then (delta + dx/2 - |xi|)/dx).
     std::vector<double> volume_factor;
     /// Surface-correction factor (1 until a model computes it).
     std::vector<double> surface_factor;
@@ -49,6 +49,25 @@ namespace perideal
     {
       return neighbor.size();
     }
+  };
+
+  /**
+   * @brief How the volume of a neighbour that the horizon cuts is counted (seed note 000,
+   * sec. 4.3; Seleson 2014, Comput. Methods Appl. Mech. Engrg. 282).
+   *
+   * - none: every neighbour with |xi| <= delta counts fully;
+   * - book: neighbours with |xi| <= delta, scaled by beta = (delta + dx/2 - |xi|)/dx beyond
+   *   delta - dx/2 (Madenci & Oterkus 2014 codes; beta falls to 1/2 at delta, so a full family
+   *   holds 86 % of the horizon volume at delta = 3.015 dx: use with surface correction, which
+   *   rescales it);
+   * - geometric: the same beta, with the family extended to |xi| < delta + dx/2, the cells that the
+   *   horizon cuts; the family volume then matches the horizon to about 1 %.
+   */
+  enum class PartialVolume
+  {
+    none,
+    book,
+    geometric
   };
 
   /**
@@ -74,8 +93,8 @@ namespace perideal
       double horizon = 0.;
       /// Thickness of a 2D body [m] (particle volume dx^2 h); ignored in 3D.
       double thickness = 1.;
-      /// Scale the volume of neighbours that the horizon cuts (delta - dx/2 < |xi| <= delta).
-      bool partial_volume = true;
+      /// How neighbours that the horizon cuts count.
+      PartialVolume partial_volume = PartialVolume::geometric;
     };
 
     /**
@@ -125,6 +144,9 @@ namespace perideal
     /// The bonds, for models that set per-bond factors and for damage.
     BondList &
     bonds();
+    /// The largest bond length: delta, or delta + dx/2 for PartialVolume::geometric.
+    double
+    search_radius() const;
     /// The settings used by generate().
     const Settings &
     settings() const;

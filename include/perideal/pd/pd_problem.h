@@ -96,7 +96,7 @@ namespace perideal
     PlanarAssumption                             planar = PlanarAssumption::three_dimensional;
     RegionCollection<dim>                        regions;
     std::vector<std::string>                     body_regions;
-    std::vector<std::string> no_fail_regions;
+    std::vector<std::string>                     no_fail_regions;
     std::vector<PreCrack<dim>>                   pre_cracks;
     std::unique_ptr<MaterialModel<dim>>          material;
     std::unique_ptr<DamageModel<dim>>            damage;
@@ -116,8 +116,8 @@ namespace perideal
     double              stable_dt        = 0.;
     ParticleVector      u, v, a, internal_force, external_force;
     std::vector<double> energy_density;
-    double              external_work  = 0.;
-    double              initial_energy = 0.;
+    double              external_work              = 0.;
+    double              initial_energy             = 0.;
     double              initial_prescribed_kinetic = 0.;
     ParticleVector      previous_u, previous_load;
   };
