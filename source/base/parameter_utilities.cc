@@ -51,6 +51,25 @@ namespace perideal
       return result;
     }
 
+    void
+    declare_name_list(dealii::ParameterHandler &prm,
+                      const std::string        &section,
+                      const std::string        &documentation)
+    {
+      prm.enter_subsection(section);
+      prm.declare_entry("Names", "", dealii::Patterns::Anything(), documentation);
+      prm.leave_subsection();
+    }
+
+    std::vector<std::string>
+    parse_name_list(dealii::ParameterHandler &prm, const std::string &section)
+    {
+      prm.enter_subsection(section);
+      const auto names = split_names(prm.get("Names"));
+      prm.leave_subsection();
+      return names;
+    }
+
     std::string
     format_number(const double value)
     {

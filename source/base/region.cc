@@ -178,14 +178,11 @@ namespace perideal
   void
   RegionCollection<dim>::declare_names(ParameterHandler &prm)
   {
-    prm.enter_subsection("Regions");
-    prm.declare_entry("Names",
-                      "",
-                      Patterns::Anything(),
-                      "Comma-separated names of the regions defined below, each in a subsection "
-                      "of its own name. Regions are referred to by name elsewhere (body, "
-                      "boundary conditions).");
-    prm.leave_subsection();
+    ParameterUtilities::declare_name_list(
+      prm,
+      "Regions",
+      "Comma-separated names of the regions defined below, each in a subsection of its own name. "
+      "Regions are referred to by name elsewhere (body, boundary conditions).");
   }
 
   template <int dim>
@@ -208,10 +205,7 @@ namespace perideal
   std::vector<std::string>
   RegionCollection<dim>::parse_names(ParameterHandler &prm)
   {
-    prm.enter_subsection("Regions");
-    const auto names = ParameterUtilities::split_names(prm.get("Names"));
-    prm.leave_subsection();
-    return names;
+    return ParameterUtilities::parse_name_list(prm, "Regions");
   }
 
   template <int dim>
@@ -246,6 +240,36 @@ namespace perideal
                                "."));
       }
     return it->second;
+  }
+
+  template <int dim>
+  std::function<bool(const Point<dim> &)>
+  RegionCollection<dim>::union_of(const std::vector<std::string> &names,
+                                  const std::string              &entry) const
+  {
+    if (names.empty())
+      return {};
+    std::vector<const Region<dim> *> members;
+    for (const auto &name : names)
+      members.push_back(&get(name, entry));
+    return [members](const Point<dim> &p) {
+      for (const auto *region : members)
+        if (region->contains(p))
+          return true;
+      return false;
+    };
+  }
+
+  template <int dim>
+  BoundingBox<dim>
+  RegionCollection<dim>::bounding_box_of(const std::vector<std::string> &names,
+                                         const std::string              &entry) const
+  {
+    AssertThrow(!names.empty(), ExcMessage("The parameter <" + entry + "> names no region."));
+    BoundingBox<dim> box = get(names[0], entry).bounding_box();
+    for (const auto &name : names)
+      box.merge_with(get(name, entry).bounding_box());
+    return box;
   }
 
   template class Region<2>;

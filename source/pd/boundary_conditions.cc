@@ -50,13 +50,10 @@ namespace perideal
   void
   BoundaryConditions<dim>::declare_names(ParameterHandler &prm)
   {
-    prm.enter_subsection("Boundary conditions");
-    prm.declare_entry("Names",
-                      "",
-                      Patterns::Anything(),
-                      "Comma-separated names of the boundary conditions, each described in a "
-                      "subsection of its own name.");
-    prm.leave_subsection();
+    ParameterUtilities::declare_name_list(prm,
+                                          "Boundary conditions",
+                                          "Comma-separated names of the boundary conditions, "
+                                          "each described in a subsection of its own name.");
   }
 
   template <int dim>
@@ -110,10 +107,7 @@ namespace perideal
   std::vector<std::string>
   BoundaryConditions<dim>::parse_names(ParameterHandler &prm)
   {
-    prm.enter_subsection("Boundary conditions");
-    const auto names = ParameterUtilities::split_names(prm.get("Names"));
-    prm.leave_subsection();
-    return names;
+    return ParameterUtilities::parse_name_list(prm, "Boundary conditions");
   }
 
   template <int dim>

@@ -289,34 +289,11 @@ namespace perideal
   void
   PDProblem<dim>::setup()
   {
-    std::vector<const Region<dim> *> body;
-    BoundingBox<dim>                 box = regions.get(body_regions[0], "").bounding_box();
-    for (const auto &name : body_regions)
-      {
-        body.push_back(&regions.get(name, "Discretization/Body"));
-        box.merge_with(body.back()->bounding_box());
-      }
-    const auto in_body = [&body](const Point<dim> &p) {
-      for (const auto *region : body)
-        if (region->contains(p))
-          return true;
-      return false;
-    };
-    std::vector<const Region<dim> *> no_fail;
-    for (const auto &name : no_fail_regions)
-      no_fail.push_back(&regions.get(name, "Material/No-fail regions"));
-    const auto in_no_fail = [&no_fail](const Point<dim> &p) {
-      for (const auto *region : no_fail)
-        if (region->contains(p))
-          return true;
-      return false;
-    };
     particle_system.generate(discretization,
-                             box,
-                             in_body,
+                             regions.bounding_box_of(body_regions, "Discretization/Body"),
+                             regions.union_of(body_regions, "Discretization/Body"),
                              pre_cracks,
-                             no_fail.empty() ? std::function<bool(const Point<dim> &)>() :
-                                               in_no_fail);
+                             regions.union_of(no_fail_regions, "Material/No-fail regions"));
     AssertThrow(particle_system.n_global() > 0,
                 ExcMessage("The body (<Discretization/Body>) holds no particle: its regions are "
                            "smaller than the lattice spacing or empty."));

@@ -30,6 +30,21 @@ namespace perideal
     split_names(const std::string &text);
 
     /**
+     * @brief Declare the entry "Names" (a comma-separated list) of subsection @p section; the
+     * first pass over a file reads it to learn which named subsections to declare.
+     */
+    void
+    declare_name_list(dealii::ParameterHandler &prm,
+                      const std::string        &section,
+                      const std::string        &documentation);
+
+    /**
+     * @brief The names listed in the entry "Names" of subsection @p section.
+     */
+    std::vector<std::string>
+    parse_name_list(dealii::ParameterHandler &prm, const std::string &section);
+
+    /**
      * @brief @p value with six significant digits, for messages.
      */
     std::string

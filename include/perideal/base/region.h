@@ -10,6 +10,7 @@
 #include <deal.II/grid/grid_tools_cache.h>
 #include <deal.II/grid/tria.h>
 
+#include <functional>
 #include <map>
 #include <memory>
 #include <string>
@@ -118,6 +119,19 @@ namespace perideal
      */
     const Region<dim> &
     get(const std::string &name, const std::string &entry) const;
+
+    /**
+     * @brief Whether a point lies in any of the regions @p names (named by @p entry in errors);
+     * an empty function for an empty list.
+     */
+    std::function<bool(const dealii::Point<dim> &)>
+    union_of(const std::vector<std::string> &names, const std::string &entry) const;
+
+    /**
+     * @brief A box holding all regions @p names (at least one).
+     */
+    dealii::BoundingBox<dim>
+    bounding_box_of(const std::vector<std::string> &names, const std::string &entry) const;
 
   private:
     std::map<std::string, Region<dim>> regions;
