@@ -4,7 +4,7 @@
 Writes a parameter file per case (the set-up of bar_wave.prm with another model, strip width,
 lattice spacing, pulse width or surface correction), runs perideal-solid on it in
 WORKDIR/<case>/ and prints the two speed estimates of postprocess.py. About 1 min per 10^4
-particle-steps x 10^3 on one core; all cases together take about 1.5 min.
+particle-steps x 10^3 on one core; all cases together take about 2 min, lps_W80 alone about 80 s.
 
 Usage: study.py [--bin PATH/perideal-solid] [--workdir DIR] [--only NAME,...]
 """
@@ -30,6 +30,7 @@ CASES = {
     "lps_W10": ("linear peridynamic solid", 0.3, 1e-3, 0.01, 0.06, True),
     "lps_W20": ("linear peridynamic solid", 0.3, 1e-3, 0.02, 0.06, True),
     "lps_W40": ("linear peridynamic solid", 0.3, 0.5e-3, 0.02, 0.06, True),
+    "lps_W80": ("linear peridynamic solid", 0.3, 0.25e-3, 0.02, 0.06, True),
     "lps_W20_no_correction": ("linear peridynamic solid", 0.3, 1e-3, 0.02, 0.06, False),
 }
 

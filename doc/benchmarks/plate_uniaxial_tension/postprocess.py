@@ -8,15 +8,18 @@ solution
 
     u_y = eps (y - L/2),   u_x = -nu eps (x - L/2),   eps = 2 U / L,
 
-prints the errors in the central half of each line and plots PD against elasticity
-(mid_lines.png in the first directory, or in --plot-dir).
+prints the errors in the central half of each line and the grip reaction against E eps L h, and
+plots PD against elasticity (mid_lines.png in the first directory, or in --plot-dir). With
+--markdown it also prints one table row per directory, as in README.md.
 
-Usage: postprocess.py DIR [DIR ...] [--labels A,B,...] [--plot-dir DIR]
+Usage: postprocess.py DIR [DIR ...] [--labels A,B,...] [--plot-dir DIR] [--markdown]
+                      [--grip-displacement U]
 Needs numpy, h5py, matplotlib (Debian: python3-numpy python3-h5py python3-matplotlib).
 """
 
 import argparse
 import glob
+import itertools
 import os
 import re
 import sys
@@ -27,7 +30,8 @@ import numpy as np
 L = 0.05  # plate side [m]
 U = 5.6141e-4  # grip displacement [m] (seed 002, Table 6.2: half elongation)
 NU = 1.0 / 3.0  # Poisson ratio implied by 2D plane-stress PMB
-EPS = 2.0 * U / L  # applied strain
+E = 192e9  # Young's modulus [Pa]
+H = 1e-4  # thickness [m]
 
 
 def last_particle_file(directory):
@@ -60,7 +64,7 @@ def errors(s, u_pd, u_el):
     return e.max(), e.mean(), slope_pd / slope_el - 1.0
 
 
-def analyse(directory):
+def analyse(directory, eps):
     fname = last_particle_file(directory)
     with h5py.File(fname, "r") as f:
         x = f["nodes"][:]
@@ -70,8 +74,8 @@ def analyse(directory):
 
     y_line, uy = mid_line(x, x[:, 1], u[:, 1], x[:, 0] - L / 2, dx)
     x_line, ux = mid_line(x, x[:, 0], u[:, 0], x[:, 1] - L / 2, dx)
-    uy_el = EPS * (y_line - L / 2)
-    ux_el = -NU * EPS * (x_line - L / 2)
+    uy_el = eps * (y_line - L / 2)
+    ux_el = -NU * eps * (x_line - L / 2)
     result = {
         "file": fname,
         "dx": dx,
@@ -97,12 +101,17 @@ def main():
     parser.add_argument("directories", nargs="+")
     parser.add_argument("--labels", default=None, help="comma-separated legend labels")
     parser.add_argument("--plot-dir", default=None, help="where to write mid_lines.png")
+    parser.add_argument("--markdown", action="store_true", help="also print README table rows")
+    parser.add_argument("--grip-displacement", type=float, default=U,
+                        help=f"half elongation U [m], default {U}; eps = 2 U / L")
     args = parser.parse_args()
     labels = args.labels.split(",") if args.labels else args.directories
+    eps = 2.0 * args.grip_displacement / L
 
-    results = [analyse(d) for d in args.directories]
-    reaction_el = 192e9 * EPS * L * 1e-4
-    print(f"applied strain eps = {EPS:.7f}, nu = {NU:.6f}; elastic reaction E eps L h = {reaction_el:.5e} N")
+    results = [analyse(d, eps) for d in args.directories]
+    reaction_el = E * eps * L * H
+    print(f"applied strain eps = {eps:.7g}, nu = {NU:.6f}; "
+          f"elastic reaction E eps L h = {reaction_el:.5e} N")
     for label, r in zip(labels, results):
         print(f"\n{label}: {r['file']} at t = {r['time']:.4e} s")
         print(f"  kinetic energy {r['kinetic']:.3e} J (max during the run {r['max_kinetic']:.3e} J), "
@@ -112,6 +121,18 @@ def main():
             emax, emean, slope = r[key]
             print(f"  {name}: central half: max error {100 * emax:.2f} %, mean error {100 * emean:.2f} % "
                   f"(of the largest elastic value there), slope error {100 * slope:+.2f} %")
+    if args.markdown:
+        print()
+
+        def signed(value):  # with the typographic minus of the README
+            return f"{100 * value:+.2f} %".replace("-", "\u2212")
+
+        for label, r in zip(labels, results):
+            uy_max, uy_mean, uy_slope = r["uy_errors"]
+            ux_max, ux_mean, ux_slope = r["ux_errors"]
+            print(f"| {label} | {100 * uy_max:.2f} % / {100 * uy_mean:.2f} % | {signed(uy_slope)} "
+                  f"| {100 * ux_max:.2f} % / {100 * ux_mean:.2f} % | {signed(ux_slope)} | "
+                  f"{signed(r['reaction'] / reaction_el - 1)} |")
 
     import matplotlib
 
@@ -122,7 +143,7 @@ def main():
     r0 = results[0]
     axes[0, 0].plot(r0["y"] * 1e3, r0["uy_el"] * 1e3, "k-", lw=1, label="plane-stress elasticity")
     axes[0, 1].plot(r0["x"] * 1e3, r0["ux_el"] * 1e3, "k-", lw=1, label="plane-stress elasticity")
-    for label, r, marker in zip(labels, results, "os^dv"):
+    for label, r, marker in zip(labels, results, itertools.cycle("os^dv<>ph")):
         axes[0, 0].plot(r["y"] * 1e3, r["uy"] * 1e3, marker, ms=3, mfc="none", label=f"PD, {label}")
         axes[0, 1].plot(r["x"] * 1e3, r["ux"] * 1e3, marker, ms=3, mfc="none", label=f"PD, {label}")
         axes[1, 0].plot(r["y"] * 1e3, (r["uy"] - r["uy_el"]) * 1e6, marker + "-", ms=3, lw=0.5, mfc="none", label=label)
