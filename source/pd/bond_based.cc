@@ -96,61 +96,93 @@ namespace perideal
                                  std::vector<double>  *energy_density,
                                  const double          critical_stretch)
   {
-    BondList                      &bonds   = particles.bonds();
-    const std::vector<Point<dim>> &x       = particles.positions();
-    const std::vector<double>     &volume  = particles.volumes();
-    const unsigned int             n_owned = particles.n_owned();
-    const double                  *uu      = u.begin();
-    double                        *f       = force.begin();
-    const unsigned int            *nbr     = bonds.neighbor.data();
-    const double                  *length  = bonds.length.data();
-    const double                  *modulus = bond_modulus.data();
-    std::uint8_t                  *intact  = bonds.intact.data();
-    const bool                     energy  = (energy_density != nullptr);
-    if (energy)
-      energy_density->assign(n_owned, 0.);
+    const BondList &bonds = particles.bonds();
+    if (inverse_length.size() != bonds.size())
+      {
+        inverse_length.resize(bonds.size());
+        for (std::size_t b = 0; b < bonds.size(); ++b)
+          inverse_length[b] = 1. / bonds.length[b];
+      }
+    double *f = force.begin();
+    std::fill(f, f + std::size_t(particles.n_owned()) * dim, 0.);
+    if (energy_density != nullptr)
+      {
+        energy_density->assign(particles.n_owned(), 0.);
+        force_loop<true>(particles, u.begin(), f, energy_density->data(), critical_stretch);
+      }
+    else
+      force_loop<false>(particles, u.begin(), f, nullptr, critical_stretch);
+  }
 
-    std::fill(f, f + std::size_t(n_owned) * dim, 0.);
+  template <int dim>
+  template <bool with_energy>
+  void
+  BondBased<dim>::force_loop(ParticleSystem<dim> &particles,
+                             const double        *u,
+                             double              *f,
+                             double              *w,
+                             const double         critical_stretch)
+  {
+    BondList           &bonds     = particles.bonds();
+    const double       *volume    = particles.volumes().data();
+    const unsigned int  n_owned   = particles.n_owned();
+    const double       *x         = particles.coordinates().data();
+    const unsigned int *row_start = bonds.row_start.data();
+    const unsigned int *nbr       = bonds.neighbor.data();
+    const double       *length    = bonds.length.data();
+    const double       *inverse   = inverse_length.data();
+    const double       *modulus   = bond_modulus.data();
+    std::uint8_t       *intact    = bonds.intact.data();
+
     for (unsigned int i = 0; i < n_owned; ++i)
       {
-        double fi[dim] = {};
-        double wi      = 0.;
-        for (unsigned int b = bonds.row_start[i]; b < bonds.row_start[i + 1]; ++b)
+        const double *xi      = x + std::size_t(i) * dim;
+        const double *ui      = u + std::size_t(i) * dim;
+        const double  vi      = volume[i];
+        double        fi[dim] = {};
+        double        wi      = 0.;
+        const auto    row_end = row_start[i + 1];
+        for (unsigned int b = row_start[i]; b < row_end; ++b)
           {
-            if (!intact[b])
+            const std::uint8_t state = intact[b];
+            if (state == 0)
               continue;
-            const unsigned int j = nbr[b];
-            double             y[dim];
+            const unsigned int j  = nbr[b];
+            const double      *xj = x + std::size_t(j) * dim;
+            const double      *uj = u + std::size_t(j) * dim;
+            double             r[dim];
             double             len2 = 0.;
             for (unsigned int d = 0; d < dim; ++d)
               {
-                y[d] = x[j][d] - x[i][d] + uu[j * dim + d] - uu[i * dim + d];
-                len2 += y[d] * y[d];
+                r[d] = (xj[d] - xi[d]) + (uj[d] - ui[d]);
+                len2 += r[d] * r[d];
               }
             const double len = std::sqrt(len2);
-            const double s   = (len - length[b]) / length[b];
-            if (s > critical_stretch && intact[b] == 1)
+            const double s   = (len - length[b]) * inverse[b];
+            if (s > critical_stretch && state == 1)
               {
                 intact[b] = 0;
                 continue;
               }
-            const double t = modulus[b] * s / len;
+            const double t  = modulus[b] * s / len;
+            const double vj = volume[j];
             for (unsigned int d = 0; d < dim; ++d)
-              fi[d] += t * y[d] * volume[j];
-            const double w = 0.25 * modulus[b] * s * s * length[b];
-            wi += w * volume[j];
+              fi[d] += t * vj * r[d];
             if (j < n_owned)
+              for (unsigned int d = 0; d < dim; ++d)
+                f[std::size_t(j) * dim + d] -= t * vi * r[d];
+            if constexpr (with_energy)
               {
-                for (unsigned int d = 0; d < dim; ++d)
-                  f[j * dim + d] -= t * y[d] * volume[i];
-                if (energy)
-                  (*energy_density)[j] += w * volume[i];
+                const double e = 0.25 * modulus[b] * s * s * length[b];
+                wi += e * vj;
+                if (j < n_owned)
+                  w[j] += e * vi;
               }
           }
         for (unsigned int d = 0; d < dim; ++d)
-          f[i * dim + d] += fi[d];
-        if (energy)
-          (*energy_density)[i] += wi;
+          f[std::size_t(i) * dim + d] += fi[d];
+        if constexpr (with_energy)
+          w[i] += wi;
       }
   }
 

@@ -262,6 +262,17 @@ namespace perideal
   }
 
   template <int dim>
+  std::vector<std::string>
+  BoundaryConditions<dim>::names_of_type(const Type type) const
+  {
+    std::vector<std::string> result;
+    for (const auto &c : conditions)
+      if (c.type == type)
+        result.push_back(c.name);
+    return result;
+  }
+
+  template <int dim>
   bool
   BoundaryConditions<dim>::is_prescribed(const unsigned int i, const unsigned int c) const
   {

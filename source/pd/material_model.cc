@@ -25,4 +25,28 @@ namespace perideal
   isotropic_elasticity_tensor<2>(const double, const double, const PlanarAssumption);
   template dealii::SymmetricTensor<4, 3>
   isotropic_elasticity_tensor<3>(const double, const double, const PlanarAssumption);
+
+  template <int dim>
+  void
+  MaterialModel<dim>::stiffness_bound(const ParticleSystem<dim> &, std::vector<double> &) const
+  {
+    AssertThrow(false,
+                dealii::ExcMessage("This material model provides no stiffness bound; the "
+                                   "quasi-static solvers (<Solver/Type> = adaptive dynamic "
+                                   "relaxation or static) cannot use it. Choose <Solver/Type> = "
+                                   "explicit."));
+  }
+
+  template <int dim>
+  void
+  MaterialModel<dim>::linearize(const ParticleSystem<dim> &, LinearizedModel &) const
+  {
+    AssertThrow(false,
+                dealii::ExcMessage("This material model provides no linearization; the static "
+                                   "solver (<Solver/Type> = static) cannot use it. Choose "
+                                   "<Solver/Type> = adaptive dynamic relaxation or explicit."));
+  }
+
+  template class MaterialModel<2>;
+  template class MaterialModel<3>;
 } // namespace perideal

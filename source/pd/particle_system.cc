@@ -195,6 +195,10 @@ namespace perideal
 
     const double volume = (dim == 2 ? dx * dx * settings.thickness : dx * dx * dx);
     particle_volumes.assign(reference_positions.size(), volume);
+    flat_coordinates.resize(reference_positions.size() * dim);
+    for (std::size_t i = 0; i < reference_positions.size(); ++i)
+      for (unsigned int d = 0; d < dim; ++d)
+        flat_coordinates[i * dim + d] = reference_positions[i][d];
   }
 
   template <int dim>
@@ -460,6 +464,13 @@ namespace perideal
         cached = std::make_shared<const Partitioner>(owned, ghosts, communicator);
       }
     return cached;
+  }
+
+  template <int dim>
+  const std::vector<double> &
+  ParticleSystem<dim>::coordinates() const
+  {
+    return flat_coordinates;
   }
 
   template <int dim>

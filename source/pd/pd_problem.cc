@@ -5,13 +5,16 @@
 
 #include <perideal/base/parameter_utilities.h>
 #include <perideal/base/progress_reporter.h>
+#include <perideal/pd/adaptive_dynamic_relaxation.h>
 #include <perideal/pd/explicit_solver.h>
 #include <perideal/pd/pd_problem.h>
 
+#include <chrono>
 #include <cmath>
 #include <filesystem>
 #include <iomanip>
 #include <limits>
+#include <map>
 
 namespace perideal
 {
@@ -49,6 +52,20 @@ namespace perideal
       return cracks;
     }
   } // namespace
+
+  SolverType
+  solver_type_from_name(const std::string &name)
+  {
+    static const std::map<std::string, SolverType> types = {
+      {"explicit", SolverType::explicit_dynamics},
+      {"adaptive dynamic relaxation", SolverType::adaptive_dynamic_relaxation},
+      {"static", SolverType::static_linear}};
+    const auto found = types.find(name);
+    AssertThrow(found != types.end(),
+                ExcMessage("The parameter <Solver/Type> is <" + name +
+                           ">; accepted: explicit, adaptive dynamic relaxation, static."));
+    return found->second;
+  }
 
   template <int dim>
   PDProblem<dim>::PDProblem(const MPI_Comm comm, std::ostream &log)
@@ -173,6 +190,44 @@ namespace perideal
                       "dynamics.");
     prm.leave_subsection();
 
+    prm.enter_subsection("Solver");
+    prm.declare_entry("Type",
+                      "explicit",
+                      Patterns::Selection("explicit|adaptive dynamic relaxation|static"),
+                      "'explicit': velocity-Verlet dynamics to <Time stepping/End time>; "
+                      "'adaptive dynamic relaxation': quasi-static equilibrium (Kilic & Madenci "
+                      "2010) in load steps with bond breaking; 'static': the model linearized "
+                      "about the reference configuration, a sparse linear solve per load step. "
+                      "Quasi-static runs evaluate the boundary-condition functions at t = End "
+                      "time and scale them by the load factor.");
+    prm.declare_entry("Load steps",
+                      "1",
+                      Patterns::Integer(1),
+                      "Quasi-static: number N of load steps; step k applies k/N of the prescribed "
+                      "displacements and loads.");
+    prm.declare_entry("Tolerance",
+                      "1e-8",
+                      Patterns::Double(0.),
+                      "Quasi-static: relative residual at which a solve stops. Adaptive dynamic "
+                      "relaxation: ||F|| / max(||F_ext||, ||F_0||) of the residual force density "
+                      "on free components; static: ||K u - F|| / ||F|| of CG.");
+    prm.declare_entry("Maximum iterations",
+                      "100000",
+                      Patterns::Integer(1),
+                      "Quasi-static: largest number of iterations of one solve (relaxation "
+                      "iterations or CG iterations).");
+    prm.declare_entry("Density safety factor",
+                      "1",
+                      Patterns::Double(0.),
+                      "Adaptive dynamic relaxation: the fictitious density is this factor times "
+                      "1/4 of the model's Gershgorin stiffness bound; accepted: >= 1.");
+    prm.declare_entry("Linear solver",
+                      "cg amg",
+                      Patterns::Selection("cg amg|direct"),
+                      "Static: conjugate gradients with algebraic multigrid (Trilinos ML), or a "
+                      "direct solver (Amesos KLU) for small problems.");
+    prm.leave_subsection();
+
     prm.enter_subsection("Output");
     prm.declare_entry("Directory", "output", Patterns::Anything(), "Where results are written.");
     prm.declare_entry("Base name", "particles", Patterns::Anything(), "Prefix of particle files.");
@@ -264,9 +319,28 @@ namespace perideal
       }
     prm.leave_subsection();
 
+    prm.enter_subsection("Solver");
+    solver_type               = solver_type_from_name(prm.get("Type"));
+    load_steps                = prm.get_integer("Load steps");
+    relaxation_tolerance      = prm.get_double("Tolerance");
+    relaxation_max_iterations = prm.get_integer("Maximum iterations");
+    relaxation_safety         = prm.get_double("Density safety factor");
+    AssertThrow(relaxation_safety >= 1.,
+                ExcMessage("The parameter <Solver/Density safety factor> is " +
+                           ParameterUtilities::format_number(relaxation_safety) +
+                           "; accepted: >= 1 (below, the relaxation is not stable)."));
+    ParameterUtilities::require_positive(relaxation_tolerance, "Solver/Tolerance");
+    static_settings.tolerance      = relaxation_tolerance;
+    static_settings.max_iterations = relaxation_max_iterations;
+    static_settings.linear_solver  = prm.get("Linear solver") == "direct" ?
+                                       StaticSolver<dim>::LinearSolver::direct :
+                                       StaticSolver<dim>::LinearSolver::cg_amg;
+    prm.leave_subsection();
+
     prm.enter_subsection("Time stepping");
     end_time = prm.get_double("End time");
-    ParameterUtilities::require_positive(end_time, "Time stepping/End time");
+    if (solver_type == SolverType::explicit_dynamics)
+      ParameterUtilities::require_positive(end_time, "Time stepping/End time");
     requested_time_step = prm.get_double("Time step");
     safety_factor       = prm.get_double("Safety factor");
     AssertThrow(safety_factor > 0. && safety_factor <= 1.,
@@ -355,6 +429,22 @@ namespace perideal
   void
   PDProblem<dim>::run()
   {
+    switch (solver_type)
+      {
+        case SolverType::explicit_dynamics:
+          run_explicit();
+          break;
+        case SolverType::adaptive_dynamic_relaxation:
+        case SolverType::static_linear:
+          run_quasi_static();
+          break;
+      }
+  }
+
+  template <int dim>
+  void
+  PDProblem<dim>::run_explicit()
+  {
     const unsigned int n_steps =
       std::max<unsigned int>(1, static_cast<unsigned int>(std::ceil(end_time / dt - 1e-6)));
     dt = end_time / n_steps;
@@ -410,13 +500,15 @@ namespace perideal
     energy_density.assign(particle_system.n_owned(), 0.);
     stepper.initialize(0., u, a);
     work_load(previous_load);
-    external_work  = 0.;
-    initial_energy = 0.;
-    write_statistics(0, 0., statistics);
+    local_external_work = 0.;
+    initial_energy      = 0.;
+    write_statistics(0, 0., statistics, false);
     write_particles(0, 0., particle_output);
 
     ParticleVector load;
     particle_system.reinit_vector(load, dim);
+    const std::uint64_t n_bonds = particle_system.n_global_bonds();
+    const auto          start   = std::chrono::steady_clock::now();
     for (unsigned int step = 1; step <= n_steps; ++step)
       {
         const double time        = (step - 1) * dt;
@@ -430,21 +522,200 @@ namespace perideal
         previous_u = u;
         stepper.step(time, u, v, a);
         work_load(load);
-        previous_u.sadd(-1., 1., u);
-        previous_load += load;
-        external_work += 0.5 * (previous_load * previous_u);
+        // Work of the loads over the step (trapezoidal rule), summed over ranks when reported.
+        const std::size_t n_values = std::size_t(particle_system.n_owned()) * dim;
+        for (std::size_t k = 0; k < n_values; ++k)
+          local_external_work += 0.5 * (previous_load.local_element(k) + load.local_element(k)) *
+                                 (u.local_element(k) - previous_u.local_element(k));
         previous_load = load;
         if (write_stats)
-          write_statistics(step, step * dt, statistics);
+          write_statistics(step, step * dt, statistics, step * dt >= end_time * (1 - 1e-12));
         if (write_fields)
           write_particles(step, step * dt, particle_output);
         progress.update(step, step * dt);
       }
+    const double seconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    if (is_root && show_progress)
+      log << "Wall time of the time loop: " << seconds << " s\n"
+          << "bond updates per second: " << double(n_bonds) * n_steps / seconds << std::endl;
   }
 
   template <int dim>
   void
-  PDProblem<dim>::write_statistics(const unsigned int step, const double time, StatisticsFile &file)
+  PDProblem<dim>::run_quasi_static()
+  {
+    const auto velocity_conditions =
+      boundary_conditions.names_of_type(BoundaryConditions<dim>::Type::velocity);
+    AssertThrow(velocity_conditions.empty(),
+                ExcMessage("The boundary condition <" + velocity_conditions.front() +
+                           "> is of type 'velocity', which a quasi-static solve (<Solver/Type> "
+                           "= adaptive dynamic relaxation or static) cannot apply; use "
+                           "'displacement' (scaled by the load factor) instead."));
+    std::string condition_list;
+    for (const auto &name : boundary_conditions.names())
+      condition_list += (condition_list.empty() ? "" : ", ") + name;
+    const auto displacement_conditions =
+      boundary_conditions.names_of_type(BoundaryConditions<dim>::Type::displacement);
+    AssertThrow(!displacement_conditions.empty(),
+                ExcMessage("A quasi-static solve needs at least one 'displacement' boundary "
+                           "condition: without one the problem is singular (rigid-body motions "
+                           "are free). Boundary conditions: " +
+                           (condition_list.empty() ? std::string("none") : condition_list) + "."));
+
+    for (ParticleVector *vec :
+         {&u, &v, &a, &internal_force, &external_force, &previous_u, &previous_load})
+      particle_system.reinit_vector(*vec, dim);
+    ParticleVector target, full_load, prescribed, load;
+    for (ParticleVector *vec : {&target, &full_load, &prescribed, &load})
+      particle_system.reinit_vector(*vec, dim);
+    const unsigned int n_owned  = particle_system.n_owned();
+    const std::size_t  n_values = std::size_t(n_owned) * dim;
+    const auto        &x        = particle_system.positions();
+    for (unsigned int i = 0; i < n_owned; ++i)
+      for (unsigned int d = 0; d < dim; ++d)
+        {
+          u.local_element(i * dim + d)          = initial_displacement->value(x[i], d);
+          prescribed.local_element(i * dim + d) = boundary_conditions.is_prescribed(i, d) ? 1. : 0.;
+        }
+    boundary_conditions.prescribe_displacement(end_time, target);
+    boundary_conditions.add_loads(end_time, full_load);
+
+    if (is_root)
+      std::filesystem::create_directories(output_directory);
+    StatisticsFile      statistics(communicator, output_directory + "/statistics.csv");
+    ParticleOutput<dim> particle_output(communicator,
+                                        output_directory,
+                                        base_name,
+                                        write_hdf5,
+                                        write_vtu);
+
+    double     factor           = 0.;
+    const auto apply_prescribed = [&](ParticleVector &uu) {
+      for (std::size_t k = 0; k < n_values; ++k)
+        if (prescribed.local_element(k) != 0.)
+          uu.local_element(k) = factor * target.local_element(k);
+    };
+    // Internal and external force density at the current load factor (breaks bonds).
+    const auto evaluate = [&](ParticleVector &uu, std::vector<double> *energy) {
+      uu.update_ghost_values();
+      material->compute_forces(particle_system, uu, internal_force, energy, critical_stretch);
+      external_force = full_load;
+      external_force *= factor;
+    };
+
+    AdaptiveDynamicRelaxation::Operations operations;
+    operations.residual = [&](ParticleVector &uu, ParticleVector &force) {
+      evaluate(uu, nullptr);
+      force = internal_force;
+      force += external_force;
+      for (std::size_t k = 0; k < n_values; ++k)
+        if (prescribed.local_element(k) != 0.)
+          force.local_element(k) = 0.;
+    };
+    operations.prescribe_displacement = apply_prescribed;
+    operations.clear_prescribed       = [&](ParticleVector &vv) {
+      for (std::size_t k = 0; k < n_values; ++k)
+        if (prescribed.local_element(k) != 0.)
+          vv.local_element(k) = 0.;
+    };
+    std::unique_ptr<AdaptiveDynamicRelaxation> relaxation;
+    if (solver_type == SolverType::adaptive_dynamic_relaxation)
+      {
+        std::vector<double> bound;
+        material->stiffness_bound(particle_system, bound);
+        ParticleVector density;
+        particle_system.reinit_vector(density, dim);
+        AdaptiveDynamicRelaxation::fictitious_density(bound, dim, relaxation_safety, density);
+        AdaptiveDynamicRelaxation::Settings settings;
+        settings.tolerance      = relaxation_tolerance;
+        settings.max_iterations = relaxation_max_iterations;
+        relaxation =
+          std::make_unique<AdaptiveDynamicRelaxation>(operations, density, settings, communicator);
+      }
+    StaticSolver<dim> static_solver(static_settings);
+
+    const auto &volume    = particle_system.volumes();
+    const auto  work_load = [&](ParticleVector &result) {
+      for (unsigned int i = 0; i < n_owned; ++i)
+        for (unsigned int d = 0; d < dim; ++d)
+          result.local_element(i * dim + d) =
+            volume[i] * (boundary_conditions.is_prescribed(i, d) ?
+                            -internal_force.local_element(i * dim + d) :
+                            external_force.local_element(i * dim + d));
+    };
+
+    energy_density.assign(n_owned, 0.);
+    evaluate(u, &energy_density);
+    work_load(previous_load);
+    local_external_work = 0.;
+    initial_energy      = 0.;
+    write_statistics(0, 0., statistics, false);
+
+    const unsigned int max_passes = 100;
+    for (unsigned int step = 1; step <= load_steps; ++step)
+      {
+        factor              = double(step) / load_steps;
+        previous_u          = u;
+        unsigned int passes = 0, iterations = 0;
+        double       residual = 0.;
+        for (;; ++passes)
+          {
+            const auto broken_before = n_broken_bonds(particle_system);
+            if (relaxation)
+              {
+                const auto result = relaxation->solve(u, [&]() {
+                  ParticleVector f = full_load;
+                  f *= factor;
+                  for (std::size_t k = 0; k < n_values; ++k)
+                    if (prescribed.local_element(k) != 0.)
+                      f.local_element(k) = 0.;
+                  return f.l2_norm();
+                }());
+                iterations += result.iterations;
+                residual = result.relative_residual;
+              }
+            else
+              {
+                apply_prescribed(u);
+                external_force = full_load;
+                external_force *= factor;
+                iterations += static_solver.solve(particle_system,
+                                                  *material,
+                                                  prescribed,
+                                                  external_force,
+                                                  u,
+                                                  condition_list);
+              }
+            evaluate(u, &energy_density);
+            if (n_broken_bonds(particle_system) == broken_before)
+              break;
+            AssertThrow(passes + 1 < max_passes,
+                        ExcMessage("Load step " + std::to_string(step) +
+                                   ": bonds kept breaking through " + std::to_string(max_passes) +
+                                   " re-solves (unstable crack growth); use more "
+                                   "<Solver/Load steps>."));
+          }
+        if (is_root && show_progress)
+          log << "Load step " << step << "/" << load_steps << ": " << passes + 1 << " solve(s), "
+              << iterations << " iterations"
+              << (relaxation ? ", relative residual " + std::to_string(residual) : "") << std::endl;
+        work_load(load);
+        for (std::size_t k = 0; k < n_values; ++k)
+          local_external_work += 0.5 * (previous_load.local_element(k) + load.local_element(k)) *
+                                 (u.local_element(k) - previous_u.local_element(k));
+        previous_load = load;
+        write_statistics(step, factor, statistics, step == load_steps);
+      }
+    write_particles(load_steps, 1., particle_output);
+  }
+
+  template <int dim>
+  void
+  PDProblem<dim>::write_statistics(const unsigned int step,
+                                   const double       time,
+                                   StatisticsFile    &file,
+                                   const bool         final_row)
   {
     const auto &volume  = particle_system.volumes();
     double      kinetic = 0., strain = 0., max_u = 0., prescribed_kinetic = 0.;
@@ -464,10 +735,11 @@ namespace perideal
         strain += energy_density[i] * volume[i];
         max_u = std::max(max_u, std::sqrt(u2));
       }
-    kinetic            = Utilities::MPI::sum(kinetic, communicator);
-    prescribed_kinetic = Utilities::MPI::sum(prescribed_kinetic, communicator);
-    strain             = Utilities::MPI::sum(strain, communicator);
-    max_u              = Utilities::MPI::max(max_u, communicator);
+    kinetic                    = Utilities::MPI::sum(kinetic, communicator);
+    const double external_work = Utilities::MPI::sum(local_external_work, communicator);
+    prescribed_kinetic         = Utilities::MPI::sum(prescribed_kinetic, communicator);
+    strain                     = Utilities::MPI::sum(strain, communicator);
+    max_u                      = Utilities::MPI::max(max_u, communicator);
     if (step == 0)
       {
         initial_energy             = kinetic + strain;
@@ -511,11 +783,14 @@ namespace perideal
                        reactions[k][d]);
     file.end_row();
 
-    if (is_root && step > 0 && time >= end_time * (1 - 1e-12))
+    if (is_root && step > 0 && final_row)
       {
         log << std::scientific << std::setprecision(6);
-        log << "Final time: " << time << " s\n"
-            << "Kinetic energy: " << kinetic << " J\n"
+        if (solver_type == SolverType::explicit_dynamics)
+          log << "Final time: " << time << " s\n";
+        else
+          log << "Load factor: " << time << "\n";
+        log << "Kinetic energy: " << kinetic << " J\n"
             << "Strain energy: " << strain << " J\n"
             << "External work: " << work << " J\n"
             << "Broken bonds: " << broken << "\n"

@@ -6,6 +6,8 @@
 
 #include <deal.II/base/partitioner.h>
 #include <deal.II/lac/la_parallel_vector.h>
+#include <deal.II/lac/trilinos_sparse_matrix.h>
+#include <deal.II/lac/trilinos_vector.h>
 
 namespace perideal
 {
@@ -17,6 +19,12 @@ namespace perideal
   using ParticleVector = dealii::LinearAlgebra::distributed::Vector<double>;
 
   using Partitioner = dealii::Utilities::MPI::Partitioner;
+
+  /// A distributed sparse matrix (Trilinos Epetra), rows partitioned like the particle dofs.
+  using SparseMatrix = dealii::TrilinosWrappers::SparseMatrix;
+
+  /// A distributed vector of the locally owned dofs for the Trilinos solvers (no ghosts).
+  using SolverVector = dealii::TrilinosWrappers::MPI::Vector;
 } // namespace perideal
 
 #endif

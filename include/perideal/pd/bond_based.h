@@ -49,6 +49,21 @@ namespace perideal
     double
     stable_time_step(const ParticleSystem<dim> &particles, const double density) const override;
 
+    /**
+     * @brief Gershgorin bound (see MaterialModel::stiffness_bound()); defined in
+     * source/pd/model_linearization.cc.
+     */
+    void
+    stiffness_bound(const ParticleSystem<dim> &particles,
+                    std::vector<double>       &per_particle) const override;
+
+    /**
+     * @brief Linearization (see MaterialModel::linearize()); defined in
+     * source/pd/model_linearization.cc.
+     */
+    void
+    linearize(const ParticleSystem<dim> &particles, LinearizedModel &linearized) const override;
+
     dealii::SymmetricTensor<4, dim>
     elasticity_tensor() const override;
 
@@ -76,6 +91,19 @@ namespace perideal
     double       c = 0.;
     /// c G beta per bond.
     std::vector<double> bond_modulus;
+    /// 1 / |xi| per bond.
+    std::vector<double> inverse_length;
+
+    /**
+     * @brief The force loop; the energy density is accumulated only if @p with_energy.
+     */
+    template <bool with_energy>
+    void
+    force_loop(ParticleSystem<dim> &particles,
+               const double        *u,
+               double              *force,
+               double              *energy_density,
+               const double         critical_stretch);
   };
 } // namespace perideal
 

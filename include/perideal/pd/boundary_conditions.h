@@ -72,6 +72,9 @@ namespace perideal
     /// Whether component @p c of owned particle @p i is prescribed.
     bool
     is_prescribed(const unsigned int i, const unsigned int c) const;
+    /// Names of the conditions of type @p type.
+    std::vector<std::string>
+    names_of_type(const Type type) const;
     /// Names of the conditions.
     const std::vector<std::string> &
     names() const;

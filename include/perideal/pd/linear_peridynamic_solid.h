@@ -60,6 +60,21 @@ namespace perideal
     double
     stable_time_step(const ParticleSystem<dim> &particles, const double density) const override;
 
+    /**
+     * @brief Gershgorin bound (see MaterialModel::stiffness_bound()); defined in
+     * source/pd/model_linearization.cc.
+     */
+    void
+    stiffness_bound(const ParticleSystem<dim> &particles,
+                    std::vector<double>       &per_particle) const override;
+
+    /**
+     * @brief Linearization (see MaterialModel::linearize()); defined in
+     * source/pd/model_linearization.cc.
+     */
+    void
+    linearize(const ParticleSystem<dim> &particles, LinearizedModel &linearized) const override;
+
     dealii::SymmetricTensor<4, dim>
     elasticity_tensor() const override;
 

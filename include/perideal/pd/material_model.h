@@ -52,6 +52,31 @@ namespace perideal
   };
 
   /**
+   * @brief The small-displacement linearization of a model about the reference configuration,
+   * written as a sum of squares (what a model gives to assemble its stiffness matrix).
+   *
+   * With the linearized bond extension e_b = n_b . (u_j - u_i), n_b = xi/|xi| for the bond b
+   * from i to j (the same for both ends), the linearized strain energy is
+   *   E = 1/2 sum_b k_b e_b^2 + 1/2 sum_i w_i theta_i^2,
+   *   theta_i = sum_{b at i} g_b^(i) e_b,
+   * so that the nodal force (force density times V_i) is -dE/du. The per-bond arrays follow the
+   * BondList; a bond to a ghost particle is stored on both ranks and counts with
+   * ParticleSystem::bond_share(). theta_i of an owned particle i collects the coefficient of row
+   * i (bonds stored in row i) and that of column i (bonds stored in the row of an owned j < i).
+   */
+  struct LinearizedModel
+  {
+    /// k_b [N/m] per bond (0 for a broken bond).
+    std::vector<double> bond_stiffness;
+    /// w_i [N m] per owned particle; empty for a model without a dilatation term.
+    std::vector<double> dilatation_weight;
+    /// g_b^(i) [1/m] per bond for the end i that stores the bond (row end).
+    std::vector<double> dilatation_row;
+    /// g_b^(j) [1/m] per bond for the other end j (used when j is owned).
+    std::vector<double> dilatation_column;
+  };
+
+  /**
    * @brief Interface of a peridynamic material model (a plugin, chosen per region by name).
    *
    * The plugin boundary is per region: one virtual call computes the forces of all particles
@@ -106,6 +131,23 @@ namespace perideal
      */
     virtual double
     stable_time_step(const ParticleSystem<dim> &particles, const double density) const = 0;
+
+    /**
+     * @brief Gershgorin bound of the linearized operator per particle: @p per_particle[i] is
+     * an upper bound of sum_j |K_ij| over the rows of owned particle i, K the derivative of the
+     * force density [N/m^3] by the displacement [m] (block rows, spectral norms of the dim x dim
+     * blocks). It is twice the stiffness sum of stable_time_step(), so that
+     * dt_stable = sqrt(4 rho / max_i bound_i). Broken bonds do not count.
+     */
+    virtual void
+    stiffness_bound(const ParticleSystem<dim> &particles, std::vector<double> &per_particle) const;
+
+    /**
+     * @brief The linearization of the model about the reference configuration (intact bonds
+     * only), see LinearizedModel.
+     */
+    virtual void
+    linearize(const ParticleSystem<dim> &particles, LinearizedModel &linearized) const;
 
     /**
      * @brief The classical elasticity tensor the model reproduces for homogeneous deformation.

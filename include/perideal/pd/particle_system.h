@@ -158,6 +158,14 @@ namespace perideal
     partitioner(const unsigned int n_components) const;
 
     /**
+     * @brief Reference coordinates of the local particles as one array, x[i * dim + d], for
+     * force loops (bond vectors are formed as (x_j - x_i) + (u_j - u_i): adding u to x first
+     * would lose the digits of small displacements).
+     */
+    const std::vector<double> &
+    coordinates() const;
+
+    /**
      * @brief Size @p v for @p n_components values per particle, with ghosts, zeroed.
      */
     void
@@ -189,6 +197,7 @@ namespace perideal
     unsigned int                                                       n_owned_particles  = 0;
     dealii::types::global_dof_index                                    n_global_particles = 0;
     std::vector<dealii::Point<dim>>                                    reference_positions;
+    std::vector<double>                                                flat_coordinates;
     std::vector<double>                                                particle_volumes;
     std::vector<dealii::types::global_dof_index>                       global_indices;
     BondList                                                           bond_list;

@@ -15,6 +15,7 @@
 #include <perideal/pd/damage_model.h>
 #include <perideal/pd/material_model.h>
 #include <perideal/pd/particle_system.h>
+#include <perideal/pd/static_solver.h>
 
 #include <memory>
 #include <ostream>
@@ -24,8 +25,37 @@
 namespace perideal
 {
   /**
+   * @brief How PDProblem::run() solves (<Solver/Type>).
+   *
+   * - explicit: velocity-Verlet time stepping to the end time (dynamics);
+   * - adaptive_dynamic_relaxation: quasi-static equilibrium by AdaptiveDynamicRelaxation, in
+   *   load steps, with bond breaking;
+   * - static: quasi-static equilibrium of the model linearized about the reference
+   *   configuration (StaticSolver), in load steps, with bond breaking.
+   */
+  enum class SolverType
+  {
+    explicit_dynamics,
+    adaptive_dynamic_relaxation,
+    static_linear
+  };
+
+  /**
+   * @brief The solver type named by a value of <Solver/Type> (the one place that maps names).
+   */
+  SolverType
+  solver_type_from_name(const std::string &name);
+
+  /**
    * @brief A peridynamic problem: particles, a material and damage model, boundary conditions,
-   * explicit time stepping and output, all read from a parameter file.
+   * explicit time stepping or a quasi-static solve, and output, all read from a parameter file.
+   *
+   * Quasi-static solves (<Solver/Type> = adaptive dynamic relaxation or static) apply the
+   * prescribed displacements and the loads of the boundary conditions, evaluated at t = End
+   * time, scaled by the load factor k/N in N load steps. After each converged step the bonds are
+   * checked against the critical stretch; while bonds break, the step is solved again (at most
+   * 100 times). A statistics row is written per load step (column 'time' holds the load factor)
+   * and the particle fields at the end.
    *
    * Use: declare_parameters() with the region and boundary-condition names of a first pass,
    * parse the file, parse_parameters() (checks every entry), setup() (particles, bonds, model
@@ -62,7 +92,8 @@ namespace perideal
     setup();
 
     /**
-     * @brief Integrate to the end time, writing statistics and particle output.
+     * @brief Integrate to the end time or solve the load steps, writing statistics and particle
+     * output.
      */
     void
     run();
@@ -79,9 +110,16 @@ namespace perideal
 
   private:
     void
+    run_explicit();
+    void
+    run_quasi_static();
+    void
     compute_acceleration(const double time, ParticleVector &u, ParticleVector &a);
     void
-    write_statistics(const unsigned int step, const double time, StatisticsFile &file);
+    write_statistics(const unsigned int step,
+                     const double       time,
+                     StatisticsFile    &file,
+                     const bool         final_row);
     void
     write_particles(const unsigned int step, const double time, ParticleOutput<dim> &output);
 
@@ -107,7 +145,13 @@ namespace perideal
     double                                       safety_factor = 0.8, damping = 0.;
     std::string                                  output_directory, base_name;
     unsigned int                                 particle_interval = 0, statistics_interval = 1;
-    bool write_hdf5 = true, write_vtu = false, show_progress = true;
+    bool                                 write_hdf5 = true, write_vtu = false, show_progress = true;
+    SolverType                           solver_type               = SolverType::explicit_dynamics;
+    double                               relaxation_tolerance      = 1e-8;
+    unsigned int                         relaxation_max_iterations = 100000;
+    double                               relaxation_safety         = 1.;
+    unsigned int                         load_steps                = 1;
+    typename StaticSolver<dim>::Settings static_settings;
 
     // State.
     ParticleSystem<dim> particle_system;
@@ -116,7 +160,7 @@ namespace perideal
     double              stable_dt        = 0.;
     ParticleVector      u, v, a, internal_force, external_force;
     std::vector<double> energy_density;
-    double              external_work              = 0.;
+    double              local_external_work        = 0.;
     double              initial_energy             = 0.;
     double              initial_prescribed_kinetic = 0.;
     ParticleVector      previous_u, previous_load;

@@ -1,0 +1,86 @@
+// ---------------------------------------------------------------------
+// PeriDeal: static linear solve of the linearized peridynamic equations.
+// ---------------------------------------------------------------------
+#ifndef perideal_pd_static_solver_h
+#define perideal_pd_static_solver_h
+
+#include <perideal/base/linear_algebra.h>
+#include <perideal/pd/material_model.h>
+#include <perideal/pd/particle_system.h>
+
+#include <string>
+
+namespace perideal
+{
+  /**
+   * @brief The static equilibrium of the model linearized about the reference configuration,
+   * K u = F_ext, assembled into a distributed Trilinos matrix and solved by CG + AMG or a direct
+   * solver (Amesos KLU).
+   *
+   * Linearization (MaterialModel::linearize()): E = 1/2 sum_b k_b e_b^2 + 1/2 sum_i w_i theta_i^2
+   * with e_b = n_b . (u_j - u_i). Writing e and theta as the rows of a rectangular matrix G
+   * (one row per bond, one per particle with a dilatation, built from the owned rows only), the
+   * stiffness is K = G^T diag(k, w) G (Trilinos' A^T diag(V) B product). The dilatation term
+   * couples the neighbours of neighbours; the product builds that sparsity without a search.
+   * Rows are the particle dofs (global index = particle index * dim + component, the
+   * partitioner of ParticleSystem::partitioner(dim)).
+   *
+   * Prescribed components are eliminated symmetrically: their columns are left out of G (so
+   * K_ff only), the known values move to the right-hand side (F_f - K_fc g), and the row gets
+   * s u_c = s g_c with s the particle's stiffness scale sum_b k_b, which keeps the condition
+   * number of the free block.
+   */
+  template <int dim>
+  class StaticSolver
+  {
+  public:
+    /// The linear solver (Patterns::Selection "cg amg|direct" of <Solver/Linear solver>).
+    enum class LinearSolver
+    {
+      cg_amg,
+      direct
+    };
+
+    struct Settings
+    {
+      LinearSolver linear_solver = LinearSolver::cg_amg;
+      /// Relative residual ||K u - F|| / ||F|| of CG.
+      double tolerance = 1e-10;
+      /// Largest number of CG iterations.
+      unsigned int max_iterations = 10000;
+    };
+
+    /**
+     * @brief A solver with @p settings.
+     */
+    explicit StaticSolver(const Settings &settings);
+
+    /**
+     * @brief Solve for @p u. @p prescribed holds 1 on prescribed components (owned entries),
+     * @p u their values on entry (other entries are ignored) and the solution on exit, with
+     * ghost values; @p external_force is the applied force density [N/m^3] (owned entries).
+     * @p conditions names the boundary conditions for the error messages. Throws if no
+     * component is prescribed (rigid-body modes) or the solver fails. Returns the number of
+     * CG iterations (0 for the direct solver).
+     */
+    unsigned int
+    solve(const ParticleSystem<dim> &particles,
+          const MaterialModel<dim>  &material,
+          const ParticleVector      &prescribed,
+          const ParticleVector      &external_force,
+          ParticleVector            &u,
+          const std::string         &conditions);
+
+    /**
+     * @brief The matrix of the last solve (prescribed rows eliminated).
+     */
+    const SparseMatrix &
+    matrix() const;
+
+  private:
+    Settings     settings;
+    SparseMatrix system_matrix;
+  };
+} // namespace perideal
+
+#endif

@@ -1,0 +1,129 @@
+// ---------------------------------------------------------------------
+// PeriDeal: adaptive dynamic relaxation for quasi-static peridynamics.
+// ---------------------------------------------------------------------
+#include <deal.II/base/exceptions.h>
+
+#include <perideal/base/parameter_utilities.h>
+#include <perideal/pd/adaptive_dynamic_relaxation.h>
+
+#include <cmath>
+#include <sstream>
+#include <utility>
+
+namespace perideal
+{
+  using namespace dealii;
+
+  AdaptiveDynamicRelaxation::AdaptiveDynamicRelaxation(const Operations     &operations,
+                                                       const ParticleVector &density,
+                                                       const Settings       &settings,
+                                                       const MPI_Comm        comm)
+    : operations(operations)
+    , lambda(density)
+    , settings(settings)
+    , communicator(comm)
+  {}
+
+  void
+  AdaptiveDynamicRelaxation::fictitious_density(const std::vector<double> &bound,
+                                                const unsigned int         n_components,
+                                                const double               safety,
+                                                ParticleVector            &density)
+  {
+    for (std::size_t i = 0; i < bound.size(); ++i)
+      for (unsigned int c = 0; c < n_components; ++c)
+        // An isolated particle (no bond) still gets a positive density.
+        density.local_element(i * n_components + c) = bound[i] > 0. ? 0.25 * safety * bound[i] : 1.;
+  }
+
+  AdaptiveDynamicRelaxation::Result
+  AdaptiveDynamicRelaxation::solve(ParticleVector &u, const double external_norm)
+  {
+    const std::size_t n_values = u.locally_owned_size();
+    ParticleVector    force, previous_force, v;
+    force.reinit(u, true);
+    previous_force.reinit(u, true);
+    v.reinit(u, true);
+
+    operations.prescribe_displacement(u);
+    operations.residual(u, force);
+    const double initial_norm = force.l2_norm();
+    const double scale        = std::max(external_norm, initial_norm);
+    Result       result;
+    if (scale == 0.)
+      return result;
+
+    std::vector<std::pair<unsigned int, double>> history;
+    const unsigned int report_every = std::max(1u, settings.max_iterations / 10);
+    history.emplace_back(0, initial_norm / scale);
+
+    // v^{1/2} = F^0 / (2 lambda) (dt = 1).
+    for (std::size_t k = 0; k < n_values; ++k)
+      v.local_element(k) = 0.5 * force.local_element(k) / lambda.local_element(k);
+    operations.clear_prescribed(v);
+
+    double residual = initial_norm / scale;
+    for (unsigned int n = 1; n <= settings.max_iterations; ++n)
+      {
+        u += v;
+        operations.prescribe_displacement(u);
+        previous_force.swap(force);
+        operations.residual(u, force);
+        residual = force.l2_norm() / scale;
+        AssertThrow(std::isfinite(residual),
+                    ExcMessage("Adaptive dynamic relaxation diverged at iteration " +
+                               std::to_string(n) +
+                               " (non-finite residual): the fictitious density is below the "
+                               "stiffness bound of the model."));
+        if (n % report_every == 0)
+          history.emplace_back(n, residual);
+        result.iterations        = n;
+        result.relative_residual = residual;
+        if (residual < settings.tolerance)
+          return result;
+
+        // Damping from the local Rayleigh quotient with the diagonal stiffness estimate, over
+        // the moving components (prescribed ones have v = 0 and no stiffness estimate).
+        double local[2] = {0., 0.};
+        for (std::size_t k = 0; k < n_values; ++k)
+          {
+            const double uk = u.local_element(k), vk = v.local_element(k);
+            if (vk != 0.)
+              {
+                const double K = -(force.local_element(k) - previous_force.local_element(k)) /
+                                 (lambda.local_element(k) * vk);
+                local[0] += uk * K * uk;
+                local[1] += uk * uk;
+              }
+          }
+        double global[2];
+        Utilities::MPI::sum(ArrayView<const double>(local, 2),
+                            communicator,
+                            ArrayView<double>(global, 2));
+        double c = 0.;
+        if (global[0] > 0. && global[1] > 0.)
+          c = 2. * std::sqrt(global[0] / global[1]);
+        if (c > 2.)
+          c = 1.9;
+
+        for (std::size_t k = 0; k < n_values; ++k)
+          v.local_element(k) = ((2. - c) * v.local_element(k) +
+                                2. * force.local_element(k) / lambda.local_element(k)) /
+                               (2. + c);
+        operations.clear_prescribed(v);
+      }
+
+    std::ostringstream message;
+    message << "Adaptive dynamic relaxation did not converge in " << settings.max_iterations
+            << " iterations (<Solver/Maximum iterations>): the relative residual ||F|| / "
+               "max(||F_ext||, ||F_0||) is "
+            << residual << ", the tolerance (<Solver/Tolerance>) " << settings.tolerance
+            << ". Residual history (iteration: relative residual):";
+    for (const auto &[iteration, value] : history)
+      message << "\n  " << iteration << ": " << value;
+    message << "\nIncrease <Solver/Maximum iterations> or <Solver/Load steps>, or relax the "
+               "tolerance.";
+    AssertThrow(false, ExcMessage(message.str()));
+    return result;
+  }
+} // namespace perideal

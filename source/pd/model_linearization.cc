@@ -1,0 +1,154 @@
+// ---------------------------------------------------------------------
+// PeriDeal: stiffness bounds and linearizations of the material models (for the quasi-static
+// solvers). Kept apart from the force kernels in bond_based.cc and linear_peridynamic_solid.cc.
+// ---------------------------------------------------------------------
+#include <perideal/pd/bond_based.h>
+#include <perideal/pd/linear_peridynamic_solid.h>
+
+#include <cmath>
+
+namespace perideal
+{
+  using namespace dealii;
+
+  // PMB: the bond b couples i and j through the block k_b n n^T (force density per unit
+  // displacement k_b = c G beta V_j / |xi|); block Gershgorin with spectral norms gives
+  // |K_ii| + sum_j |K_ij| <= 2 sum_j k_b.
+  template <int dim>
+  void
+  BondBased<dim>::stiffness_bound(const ParticleSystem<dim> &particles,
+                                  std::vector<double>       &per_particle) const
+  {
+    const BondList    &bonds   = particles.bonds();
+    const auto        &volume  = particles.volumes();
+    const unsigned int n_owned = particles.n_owned();
+    per_particle.assign(n_owned, 0.);
+    for (unsigned int i = 0; i < n_owned; ++i)
+      for (unsigned int b = bonds.row_start[i]; b < bonds.row_start[i + 1]; ++b)
+        {
+          if (!bonds.intact[b])
+            continue;
+          const unsigned int j = bonds.neighbor[b];
+          const double       k = 2. * bond_modulus[b] / bonds.length[b];
+          per_particle[i] += k * volume[j];
+          if (j < n_owned)
+            per_particle[j] += k * volume[i];
+        }
+  }
+
+  // PMB linearized: f_i V_i = sum_j (c G beta / |xi|) V_i V_j n n^T (u_j - u_i).
+  template <int dim>
+  void
+  BondBased<dim>::linearize(const ParticleSystem<dim> &particles, LinearizedModel &linearized) const
+  {
+    const BondList &bonds  = particles.bonds();
+    const auto     &volume = particles.volumes();
+    linearized.bond_stiffness.assign(bonds.size(), 0.);
+    linearized.dilatation_weight.clear();
+    linearized.dilatation_row.clear();
+    linearized.dilatation_column.clear();
+    for (unsigned int i = 0; i < particles.n_owned(); ++i)
+      for (unsigned int b = bonds.row_start[i]; b < bonds.row_start[i + 1]; ++b)
+        if (bonds.intact[b])
+          linearized.bond_stiffness[b] =
+            bond_modulus[b] / bonds.length[b] * volume[i] * volume[bonds.neighbor[b]];
+  }
+
+  // LPS: the same estimate as stable_time_step() (direct deviatoric stiffness plus the
+  // dilatation coupling), doubled for the block Gershgorin bound.
+  template <int dim>
+  void
+  LinearPeridynamicSolid<dim>::stiffness_bound(const ParticleSystem<dim> &particles,
+                                               std::vector<double>       &per_particle) const
+  {
+    const BondList     &bonds   = particles.bonds();
+    const auto         &volume  = particles.volumes();
+    const unsigned int  n_owned = particles.n_owned();
+    const double        n       = dim;
+    const double        alpha_m = shear_modulus * n * (n + 2.);
+    const double        kappa   = std::abs(n * bulk_modulus - (n + 2.) * shear_modulus);
+    std::vector<double> direct(n_owned, 0.), moment(n_owned, 0.);
+    for (unsigned int i = 0; i < n_owned; ++i)
+      for (unsigned int b = bonds.row_start[i]; b < bonds.row_start[i + 1]; ++b)
+        {
+          if (!bonds.intact[b])
+            continue;
+          const unsigned int j = bonds.neighbor[b];
+          const double       k = (alpha_m / weighted_volume.local_element(i) +
+                            alpha_m / weighted_volume.local_element(j)) *
+                           bond_weight[b];
+          const double r = bond_weight[b] * bonds.length[b];
+          direct[i] += k * volume[j];
+          moment[i] += r * volume[j];
+          if (j < n_owned)
+            {
+              direct[j] += k * volume[i];
+              moment[j] += r * volume[i];
+            }
+        }
+    per_particle.assign(n_owned, 0.);
+    for (unsigned int i = 0; i < n_owned; ++i)
+      {
+        const double m_i = weighted_volume.local_element(i);
+        per_particle[i]  = 2. * (direct[i] + 2. * n * kappa * moment[i] * moment[i] / (m_i * m_i));
+      }
+  }
+
+  // LPS linearized (doc/theory/models.md): W_i = (n k - (n+2) mu)/(2 n) theta_i^2
+  // + (alpha_i / 2) sum_j omega e^2 V_j beta, because the deviatoric sum expands to
+  // sum omega e^2 V - theta_i^2 m_i / n^2 and alpha_i m_i = mu n (n + 2). Hence
+  // k_b = (alpha_i + alpha_j) omega beta V_i V_j, w_i = V_i (n k - (n+2) mu) / n,
+  // g_b^(i) = (n / m_i) omega beta |xi| V_j.
+  template <int dim>
+  void
+  LinearPeridynamicSolid<dim>::linearize(const ParticleSystem<dim> &particles,
+                                         LinearizedModel           &linearized) const
+  {
+    const BondList    &bonds   = particles.bonds();
+    const auto        &volume  = particles.volumes();
+    const unsigned int n_owned = particles.n_owned();
+    const double       n       = dim;
+    const double       alpha_m = shear_modulus * n * (n + 2.);
+    linearized.bond_stiffness.assign(bonds.size(), 0.);
+    linearized.dilatation_row.assign(bonds.size(), 0.);
+    linearized.dilatation_column.assign(bonds.size(), 0.);
+    linearized.dilatation_weight.assign(n_owned, 0.);
+    for (unsigned int i = 0; i < n_owned; ++i)
+      {
+        linearized.dilatation_weight[i] =
+          volume[i] * (n * bulk_modulus - (n + 2.) * shear_modulus) / n;
+        const double m_i = weighted_volume.local_element(i);
+        for (unsigned int b = bonds.row_start[i]; b < bonds.row_start[i + 1]; ++b)
+          {
+            if (!bonds.intact[b])
+              continue;
+            const unsigned int j   = bonds.neighbor[b];
+            const double       m_j = weighted_volume.local_element(j);
+            linearized.bond_stiffness[b] =
+              (alpha_m / m_i + alpha_m / m_j) * bond_weight[b] * volume[i] * volume[j];
+            const double r                  = n * bond_weight[b] * bonds.length[b];
+            linearized.dilatation_row[b]    = r / m_i * volume[j];
+            linearized.dilatation_column[b] = r / m_j * volume[i];
+          }
+      }
+  }
+
+  template void
+  BondBased<2>::stiffness_bound(const ParticleSystem<2> &, std::vector<double> &) const;
+  template void
+  BondBased<3>::stiffness_bound(const ParticleSystem<3> &, std::vector<double> &) const;
+  template void
+  BondBased<2>::linearize(const ParticleSystem<2> &, LinearizedModel &) const;
+  template void
+  BondBased<3>::linearize(const ParticleSystem<3> &, LinearizedModel &) const;
+  template void
+  LinearPeridynamicSolid<2>::stiffness_bound(const ParticleSystem<2> &,
+                                             std::vector<double> &) const;
+  template void
+  LinearPeridynamicSolid<3>::stiffness_bound(const ParticleSystem<3> &,
+                                             std::vector<double> &) const;
+  template void
+  LinearPeridynamicSolid<2>::linearize(const ParticleSystem<2> &, LinearizedModel &) const;
+  template void
+  LinearPeridynamicSolid<3>::linearize(const ParticleSystem<3> &, LinearizedModel &) const;
+} // namespace perideal

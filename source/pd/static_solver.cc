@@ -1,0 +1,329 @@
+// ---------------------------------------------------------------------
+// PeriDeal: static linear solve of the linearized peridynamic equations.
+// ---------------------------------------------------------------------
+#include <deal.II/base/index_set.h>
+#include <deal.II/lac/dynamic_sparsity_pattern.h>
+#include <deal.II/lac/solver_cg.h>
+#include <deal.II/lac/solver_control.h>
+#include <deal.II/lac/trilinos_precondition.h>
+#include <deal.II/lac/trilinos_solver.h>
+
+#include <perideal/pd/static_solver.h>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <map>
+
+namespace perideal
+{
+  using namespace dealii;
+
+  namespace
+  {
+    /// The rectangular matrix G (rows: bond extensions, dilatations, constraint rows) and its
+    /// row weights.
+    template <int dim>
+    void
+    build_extension_matrix(const ParticleSystem<dim> &particles,
+                           const LinearizedModel     &linearized,
+                           const ParticleVector      &prescribed,
+                           const std::vector<double> &constraint_scale,
+                           const bool                 eliminate,
+                           SparseMatrix              &G,
+                           SolverVector              &weights)
+    {
+      const MPI_Comm     comm       = particles.get_communicator();
+      const BondList    &bonds      = particles.bonds();
+      const auto        &x          = particles.positions();
+      const unsigned int n_owned    = particles.n_owned();
+      const IndexSet    &dofs       = particles.partitioner(dim)->locally_owned_range();
+      const bool         dilatation = !linearized.dilatation_weight.empty();
+
+      struct Row
+      {
+        std::map<types::global_dof_index, double> entries;
+        double                                    weight = 0.;
+      };
+      std::vector<Row> rows;
+      const auto       add_extension =
+        [&](Row &row, const std::size_t b, const unsigned int i, const double factor) {
+          const unsigned int j = bonds.neighbor[b];
+          for (unsigned int d = 0; d < dim; ++d)
+            {
+              const double n_d = (x[j][d] - x[i][d]) / bonds.length[b];
+              const auto   gi  = particles.global_index(i) * dim + d;
+              const auto   gj  = particles.global_index(j) * dim + d;
+              if (!eliminate || prescribed.local_element(i * dim + d) == 0.)
+                row.entries[gi] -= factor * n_d;
+              if (!eliminate || prescribed.local_element(j * dim + d) == 0.)
+                row.entries[gj] += factor * n_d;
+            }
+        };
+
+      // Bond rows.
+      for (unsigned int i = 0; i < n_owned; ++i)
+        for (unsigned int b = bonds.row_start[i]; b < bonds.row_start[i + 1]; ++b)
+          if (linearized.bond_stiffness[b] != 0.)
+            {
+              Row row;
+              row.weight = linearized.bond_stiffness[b] * particles.bond_share(b);
+              add_extension(row, b, i, 1.);
+              rows.push_back(std::move(row));
+            }
+      // Dilatation rows.
+      if (dilatation)
+        {
+          std::vector<Row> theta(n_owned);
+          for (unsigned int i = 0; i < n_owned; ++i)
+            {
+              theta[i].weight = linearized.dilatation_weight[i];
+              for (unsigned int b = bonds.row_start[i]; b < bonds.row_start[i + 1]; ++b)
+                {
+                  if (linearized.dilatation_row[b] != 0.)
+                    add_extension(theta[i], b, i, linearized.dilatation_row[b]);
+                  const unsigned int j = bonds.neighbor[b];
+                  if (j < n_owned && linearized.dilatation_column[b] != 0.)
+                    add_extension(theta[j], b, i, linearized.dilatation_column[b]);
+                }
+            }
+          for (auto &row : theta)
+            rows.push_back(std::move(row));
+        }
+      // Constraint rows: s_c u_c.
+      if (eliminate)
+        for (unsigned int i = 0; i < n_owned; ++i)
+          for (unsigned int d = 0; d < dim; ++d)
+            if (prescribed.local_element(i * dim + d) != 0.)
+              {
+                Row row;
+                row.weight                                       = constraint_scale[i];
+                row.entries[particles.global_index(i) * dim + d] = 1.;
+                rows.push_back(std::move(row));
+              }
+
+      // Rows without entries (every column eliminated) carry nothing.
+      rows.erase(std::remove_if(rows.begin(),
+                                rows.end(),
+                                [](const Row &row) { return row.entries.empty(); }),
+                 rows.end());
+
+      // Contiguous row ranges per rank.
+      const unsigned long long n_local_rows = rows.size();
+      unsigned long long       first_row = 0, n_rows = 0;
+      MPI_Exscan(&n_local_rows, &first_row, 1, MPI_UNSIGNED_LONG_LONG, MPI_SUM, comm);
+      if (Utilities::MPI::this_mpi_process(comm) == 0)
+        first_row = 0;
+      MPI_Allreduce(&n_local_rows, &n_rows, 1, MPI_UNSIGNED_LONG_LONG, MPI_SUM, comm);
+      AssertThrow(n_rows < std::numeric_limits<types::global_dof_index>::max(),
+                  ExcMessage("The static system has more rows than deal.II's index type "
+                             "holds; configure deal.II with 64-bit indices."));
+      const types::global_dof_index first = first_row;
+      IndexSet                      row_set(n_rows);
+      row_set.add_range(first, first + n_local_rows);
+      row_set.compress();
+
+      DynamicSparsityPattern               dsp(n_rows, dofs.size(), row_set);
+      std::vector<types::global_dof_index> columns;
+      for (std::size_t r = 0; r < rows.size(); ++r)
+        {
+          columns.clear();
+          for (const auto &entry : rows[r].entries)
+            columns.push_back(entry.first);
+          dsp.add_entries(first + r, columns.begin(), columns.end(), true);
+        }
+      G.reinit(row_set, dofs, dsp, comm);
+      std::vector<double> values;
+      for (std::size_t r = 0; r < rows.size(); ++r)
+        {
+          columns.clear();
+          values.clear();
+          for (const auto &entry : rows[r].entries)
+            {
+              columns.push_back(entry.first);
+              values.push_back(entry.second);
+            }
+          if (!columns.empty())
+            G.set(first + r, columns.size(), columns.data(), values.data());
+        }
+      G.compress(VectorOperation::insert);
+
+      weights.reinit(row_set, comm);
+      for (std::size_t r = 0; r < rows.size(); ++r)
+        weights[first + r] = rows[r].weight;
+      weights.compress(VectorOperation::insert);
+    }
+  } // namespace
+
+  template <int dim>
+  StaticSolver<dim>::StaticSolver(const Settings &settings)
+    : settings(settings)
+  {}
+
+  template <int dim>
+  unsigned int
+  StaticSolver<dim>::solve(const ParticleSystem<dim> &particles,
+                           const MaterialModel<dim>  &material,
+                           const ParticleVector      &prescribed_owned,
+                           const ParticleVector      &external_force,
+                           ParticleVector            &u,
+                           const std::string         &conditions)
+  {
+    const MPI_Comm     comm    = particles.get_communicator();
+    const unsigned int n_owned = particles.n_owned();
+    const IndexSet    &dofs    = particles.partitioner(dim)->locally_owned_range();
+    const auto        &volume  = particles.volumes();
+
+    ParticleVector prescribed;
+    particles.reinit_vector(prescribed, dim);
+    double n_prescribed = 0.;
+    for (std::size_t k = 0; k < std::size_t(n_owned) * dim; ++k)
+      {
+        prescribed.local_element(k) = prescribed_owned.local_element(k) != 0. ? 1. : 0.;
+        n_prescribed += prescribed.local_element(k);
+      }
+    prescribed.update_ghost_values();
+    n_prescribed = Utilities::MPI::sum(n_prescribed, comm);
+    AssertThrow(n_prescribed > 0.,
+                ExcMessage("The static system is singular: no displacement component is "
+                           "prescribed (boundary conditions: " +
+                           (conditions.empty() ? std::string("none") : conditions) +
+                           "), so rigid-body motions are free. Add a 'displacement' boundary "
+                           "condition that holds at least the rigid-body modes (2D: 3, 3D: 6)."));
+
+    LinearizedModel linearized;
+    material.linearize(particles, linearized);
+    // Stiffness scale of each owned particle for its constraint rows.
+    std::vector<double> scale(n_owned, 0.);
+    const BondList     &bonds = particles.bonds();
+    for (unsigned int i = 0; i < n_owned; ++i)
+      for (unsigned int b = bonds.row_start[i]; b < bonds.row_start[i + 1]; ++b)
+        {
+          scale[i] += linearized.bond_stiffness[b];
+          if (bonds.neighbor[b] < n_owned)
+            scale[bonds.neighbor[b]] += linearized.bond_stiffness[b];
+        }
+    for (double &s : scale)
+      if (s <= 0.)
+        s = 1.;
+
+    // Right-hand side F_f - K_fc g with K g = G^T diag(w) G g of the unconstrained G.
+    SolverVector g(dofs, comm), rhs(dofs, comm), solution(dofs, comm);
+    for (std::size_t k = 0; k < std::size_t(n_owned) * dim; ++k)
+      if (prescribed.local_element(k) != 0.)
+        g[dofs.nth_index_in_set(k)] = u.local_element(k);
+    g.compress(VectorOperation::insert);
+    {
+      SparseMatrix G;
+      SolverVector weights;
+      build_extension_matrix<dim>(particles, linearized, prescribed, scale, false, G, weights);
+      SolverVector extension(weights);
+      G.vmult(extension, g);
+      extension.scale(weights);
+      G.Tvmult(rhs, extension);
+      rhs *= -1.;
+    }
+    for (unsigned int i = 0; i < n_owned; ++i)
+      for (unsigned int d = 0; d < dim; ++d)
+        {
+          const std::size_t k     = std::size_t(i) * dim + d;
+          const auto        index = dofs.nth_index_in_set(k);
+          if (prescribed.local_element(k) != 0.)
+            {
+              rhs[index]      = scale[i] * u.local_element(k);
+              solution[index] = u.local_element(k);
+            }
+          else
+            // Read, then set: mixing add and insert before compress() would trigger collective
+            // assembly on some ranks only.
+            rhs[index] =
+              static_cast<double>(rhs[index]) + external_force.local_element(k) * volume[i];
+        }
+    rhs.compress(VectorOperation::insert);
+    solution.compress(VectorOperation::insert);
+
+    {
+      SparseMatrix G;
+      SolverVector weights;
+      build_extension_matrix<dim>(particles, linearized, prescribed, scale, true, G, weights);
+      G.Tmmult(system_matrix, G, weights);
+    }
+
+    unsigned int iterations = 0;
+    const double rhs_norm   = rhs.l2_norm();
+    if (rhs_norm > 0.)
+      {
+        SolverControl     control(settings.max_iterations, settings.tolerance * rhs_norm);
+        const std::string advice =
+          " The boundary conditions (" + conditions +
+          ") may leave rigid-body modes free (2D: 3, 3D: 6 must be held by 'displacement' "
+          "conditions), or broken bonds may have split the body into free pieces.";
+        try
+          {
+            if (settings.linear_solver == LinearSolver::direct)
+              {
+                TrilinosWrappers::SolverDirect solver(control);
+                solver.solve(system_matrix, solution, rhs);
+              }
+            else
+              {
+                TrilinosWrappers::PreconditionAMG                 amg;
+                TrilinosWrappers::PreconditionAMG::AdditionalData data;
+                data.elliptic = true;
+                data.constant_modes.assign(dim, std::vector<bool>(dofs.n_elements(), false));
+                for (std::size_t k = 0; k < dofs.n_elements(); ++k)
+                  data.constant_modes[k % dim][k] = true;
+                amg.initialize(system_matrix, data);
+                SolverCG<SolverVector> cg(control);
+                cg.solve(system_matrix, solution, rhs, amg);
+                iterations = control.last_step();
+              }
+          }
+        catch (const SolverControl::NoConvergence &e)
+          {
+            AssertThrow(false,
+                        ExcMessage("The static solve did not converge: residual " +
+                                   std::to_string(e.last_residual / rhs_norm) + " after " +
+                                   std::to_string(e.last_step) +
+                                   " CG iterations (<Solver/Tolerance> = " +
+                                   std::to_string(settings.tolerance) + ")." + advice));
+          }
+        catch (const std::exception &e)
+          {
+            AssertThrow(false,
+                        ExcMessage(std::string("The static solve failed (the stiffness matrix "
+                                               "is singular?).") +
+                                   advice + " Solver message: " + e.what()));
+          }
+        // A singular system can yield a solution that is not finite.
+        AssertThrow(std::isfinite(solution.l2_norm()),
+                    ExcMessage("The static solve produced a non-finite displacement: the "
+                               "stiffness matrix is singular." +
+                               advice));
+        // Check the residual independently of the solver's own test.
+        SolverVector residual(rhs);
+        system_matrix.vmult(residual, solution);
+        residual -= rhs;
+        AssertThrow(residual.l2_norm() <= std::max(1e3 * settings.tolerance, 1e-8) * rhs_norm,
+                    ExcMessage("The static solve left the residual " +
+                               std::to_string(residual.l2_norm() / rhs_norm) +
+                               " (relative): the stiffness matrix is singular or nearly so." +
+                               advice));
+      }
+
+    for (std::size_t k = 0; k < std::size_t(n_owned) * dim; ++k)
+      u.local_element(k) = solution[dofs.nth_index_in_set(k)];
+    u.update_ghost_values();
+    return iterations;
+  }
+
+  template <int dim>
+  const SparseMatrix &
+  StaticSolver<dim>::matrix() const
+  {
+    return system_matrix;
+  }
+
+  template class StaticSolver<2>;
+  template class StaticSolver<3>;
+} // namespace perideal

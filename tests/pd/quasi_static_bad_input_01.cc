@@ -1,0 +1,114 @@
+// Quasi-static bad input stops with a message: adaptive dynamic relaxation that does not converge
+// within <Solver/Maximum iterations> lists its residual history; a static or relaxation run
+// without any displacement condition (rigid-body modes free, singular system) and one with a
+// velocity condition are refused.
+#include <deal.II/base/parameter_handler.h>
+
+#include <perideal/pd/pd_problem.h>
+
+#include "../tests.h"
+
+#include <sstream>
+
+using namespace dealii;
+
+const std::string base = R"(
+set Dimension = 2
+subsection Discretization
+  set Lattice spacing = 1e-3
+  set Horizon factor = 3.015
+  set Thickness = 1e-3
+  set Body = plate
+end
+subsection Regions
+  set Names = plate, top, bottom
+  subsection plate
+    set Lower corner = 0, 0
+    set Upper corner = 0.02, 0.01
+  end
+  subsection top
+    set Lower corner = 0, 0.006
+    set Upper corner = 0.02, 0.01
+  end
+  subsection bottom
+    set Lower corner = 0, 0
+    set Upper corner = 0.02, 0.004
+  end
+end
+subsection Material
+  set Density = 7800
+  subsection bond based
+    set Young's modulus = 200e9
+  end
+end
+subsection Boundary conditions
+  set Names = pull, hold
+  subsection pull
+    set Region = top
+    set Type = displacement
+    set Components = y
+    set Function = 1e-6
+  end
+  subsection hold
+    set Region = bottom
+    set Type = displacement
+    set Components = x, y
+    set Function = 0; 0
+  end
+end
+subsection Solver
+  set Type = adaptive dynamic relaxation
+  set Maximum iterations = 20
+end
+subsection Output
+  set Directory = output-quasi-static-bad-input
+  set Write HDF5 = false
+  set Progress = false
+end
+)";
+
+void
+check(const std::string &name, const std::string &changes)
+{
+  ParameterHandler prm;
+  perideal::PDProblem<2>::declare_parameters(prm, {"plate", "top", "bottom"}, {"pull", "hold"});
+  std::ostringstream log;
+  try
+    {
+      prm.parse_input_from_string(base + changes);
+      perideal::PDProblem<2> problem(MPI_COMM_WORLD, log);
+      problem.parse_parameters(prm);
+      problem.setup();
+      problem.run();
+      deallog << name << ": accepted (wrong)" << std::endl;
+    }
+  catch (const ExceptionBase &exc)
+    {
+      std::ostringstream message;
+      exc.print_info(message);
+      std::string text = message.str();
+      text.erase(0, text.find_first_not_of(" \n"));
+      while (!text.empty() && (text.back() == '\n' || text.back() == ' '))
+        text.pop_back();
+      deallog << name << ": " << text << std::endl;
+    }
+}
+
+int
+main(int argc, char **argv)
+{
+  Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
+  mpi_initlog();
+  check("relaxation without convergence", "");
+  const std::string traction_only =
+    "subsection Boundary conditions\n subsection pull\n set Type = traction\n set Components = "
+    "x, y\n set Function = 0; 1e6\n set Layer thickness = 4e-3\n end\n subsection hold\n set "
+    "Type = traction\n set Components = x, y\n set Function = 0; -1e6\n set Layer thickness = "
+    "4e-3\n end\nend\n";
+  check("static without displacement condition",
+        traction_only + "subsection Solver\n set Type = static\nend\n");
+  check("relaxation without displacement condition", traction_only);
+  check("velocity condition in a quasi-static run",
+        "subsection Boundary conditions\n subsection pull\n set Type = velocity\n end\nend\n"
+        "subsection Solver\n set Type = static\nend\n");
+}
