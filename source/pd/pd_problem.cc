@@ -100,14 +100,17 @@ namespace perideal
                         Patterns::Double(0.),
                         "2D only: thickness h of the body [m]; particle volume dx^2 h.");
       prm.declare_entry("Partial volume correction",
-                        "geometric",
+                        "book",
                         Patterns::Selection("none|book|geometric"),
                         "How neighbours cut by the horizon count: 'none' (|xi| <= delta, full "
-                        "volume), 'book' (|xi| <= delta, volume scaled by (delta + dx/2 - "
-                        "|xi|)/dx beyond delta - dx/2, as in Madenci & Oterkus' codes; the family "
-                        "then lacks about 14 % of the horizon volume, which only the surface "
-                        "correction restores), 'geometric' (the same factor with the family "
-                        "extended to delta + dx/2: the cells the horizon cuts).");
+                        "volume); 'book' (|xi| <= delta, volume scaled by (delta + dx/2 - "
+                        "|xi|)/dx beyond delta - dx/2, as in Madenci & Oterkus' codes and LAMMPS: "
+                        "the family lacks 12-14 % of the horizon volume, which the surface "
+                        "correction restores, so use it with 'Surface correction = true'); "
+                        "'geometric' (the same factor with the family extended to delta + dx/2, "
+                        "the cells the horizon cuts: right bulk stiffness without surface "
+                        "correction, but an effective Poisson ratio 5 % low at delta = 3.015 dx). "
+                        "See doc/architecture.md.");
       prm.declare_entry("Surface correction",
                         "true",
                         Patterns::Bool(),

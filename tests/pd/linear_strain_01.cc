@@ -29,6 +29,8 @@ centre_force(perideal::MaterialModel<dim>    &model,
   s.spacing   = dx;
   s.horizon   = horizon_factor * dx;
   s.thickness = 1e-3;
+  // The family that fills the horizon (no surface correction rescales the bulk here).
+  s.partial_volume = perideal::PartialVolume::geometric;
   Point<dim> upper;
   for (unsigned int d = 0; d < dim; ++d)
     upper[d] = n * dx;

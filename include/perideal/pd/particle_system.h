@@ -94,7 +94,7 @@ namespace perideal
       /// Thickness of a 2D body [m] (particle volume dx^2 h); ignored in 3D.
       double thickness = 1.;
       /// How neighbours that the horizon cuts count.
-      PartialVolume partial_volume = PartialVolume::geometric;
+      PartialVolume partial_volume = PartialVolume::book;
     };
 
     /**
