@@ -9,6 +9,7 @@
 #include <perideal/pd/explicit_solver.h>
 #include <perideal/pd/pd_problem.h>
 
+#include <array>
 #include <chrono>
 #include <cmath>
 #include <filesystem>
@@ -581,6 +582,26 @@ namespace perideal
           u.local_element(i * dim + d)          = initial_displacement->value(x[i], d);
           prescribed.local_element(i * dim + d) = boundary_conditions.is_prescribed(i, d) ? 1. : 0.;
         }
+    if (solver_type == SolverType::static_linear)
+      {
+        // A component that no condition prescribes anywhere leaves a rigid translation free:
+        // the stiffness matrix is singular in that direction.
+        std::array<double, dim> constrained{};
+        for (unsigned int i = 0; i < n_owned; ++i)
+          for (unsigned int d = 0; d < dim; ++d)
+            constrained[d] += prescribed.local_element(i * dim + d);
+        const char axis[3] = {'x', 'y', 'z'};
+        for (unsigned int d = 0; d < dim; ++d)
+          AssertThrow(
+            Utilities::MPI::sum(constrained[d], communicator) > 0.,
+            ExcMessage(std::string("No displacement condition prescribes the ") + axis[d] +
+                       " component anywhere, so a rigid translation in " + axis[d] +
+                       " is free and the static system (<Solver/Type> = static) is "
+                       "singular. Prescribe " +
+                       axis[d] + " on at least one region (boundary conditions: " + condition_list +
+                       "), or use 'adaptive dynamic relaxation', which leaves "
+                       "unloaded rigid motions at rest."));
+      }
     boundary_conditions.prescribe_displacement(end_time, target);
     boundary_conditions.add_loads(end_time, full_load);
 

@@ -108,6 +108,9 @@ main(int argc, char **argv)
   check("static without displacement condition",
         traction_only + "subsection Solver\n set Type = static\nend\n");
   check("relaxation without displacement condition", traction_only);
+  check("static with a free translation",
+        "subsection Boundary conditions\n subsection hold\n set Components = y\n set Function "
+        "= 0\n end\nend\nsubsection Solver\n set Type = static\nend\n");
   check("velocity condition in a quasi-static run",
         "subsection Boundary conditions\n subsection pull\n set Type = velocity\n end\nend\n"
         "subsection Solver\n set Type = static\nend\n");
