@@ -489,21 +489,9 @@ namespace perideal
     };
     VelocityVerlet stepper(operations, dt, damping);
 
-    // The load that does work on the body: applied loads, and on prescribed components the
-    // force the constraint exerts (minus the internal force, neglecting the particle's inertia).
-    const auto &volume    = particle_system.volumes();
-    const auto  work_load = [&](ParticleVector &load) {
-      for (unsigned int i = 0; i < particle_system.n_owned(); ++i)
-        for (unsigned int d = 0; d < dim; ++d)
-          load.local_element(i * dim + d) =
-            volume[i] * (boundary_conditions.is_prescribed(i, d) ?
-                            -internal_force.local_element(i * dim + d) :
-                            external_force.local_element(i * dim + d));
-    };
-
     energy_density.assign(particle_system.n_owned(), 0.);
     stepper.initialize(0., u, a);
-    work_load(previous_load);
+    compute_work_load(previous_load);
     local_external_work = 0.;
     initial_energy      = 0.;
     write_statistics(0, 0., statistics, false);
@@ -525,13 +513,7 @@ namespace perideal
           energy_density.clear();
         previous_u = u;
         stepper.step(time, u, v, a);
-        work_load(load);
-        // Work of the loads over the step (trapezoidal rule), summed over ranks when reported.
-        const std::size_t n_values = std::size_t(particle_system.n_owned()) * dim;
-        for (std::size_t k = 0; k < n_values; ++k)
-          local_external_work += 0.5 * (previous_load.local_element(k) + load.local_element(k)) *
-                                 (u.local_element(k) - previous_u.local_element(k));
-        previous_load = load;
+        accumulate_external_work(load);
         if (write_stats)
           write_statistics(step, step * dt, statistics, step * dt >= end_time * (1 - 1e-12));
         if (write_fields)
@@ -659,19 +641,9 @@ namespace perideal
       }
     StaticSolver<dim> static_solver(static_settings);
 
-    const auto &volume    = particle_system.volumes();
-    const auto  work_load = [&](ParticleVector &result) {
-      for (unsigned int i = 0; i < n_owned; ++i)
-        for (unsigned int d = 0; d < dim; ++d)
-          result.local_element(i * dim + d) =
-            volume[i] * (boundary_conditions.is_prescribed(i, d) ?
-                            -internal_force.local_element(i * dim + d) :
-                            external_force.local_element(i * dim + d));
-    };
-
     energy_density.assign(n_owned, 0.);
     evaluate(u, &energy_density);
-    work_load(previous_load);
+    compute_work_load(previous_load);
     local_external_work = 0.;
     initial_energy      = 0.;
     write_statistics(0, 0., statistics, false);
@@ -724,14 +696,36 @@ namespace perideal
           log << "Load step " << step << "/" << load_steps << ": " << passes + 1 << " solve(s), "
               << iterations << " iterations"
               << (relaxation ? ", relative residual " + std::to_string(residual) : "") << std::endl;
-        work_load(load);
-        for (std::size_t k = 0; k < n_values; ++k)
-          local_external_work += 0.5 * (previous_load.local_element(k) + load.local_element(k)) *
-                                 (u.local_element(k) - previous_u.local_element(k));
-        previous_load = load;
+        accumulate_external_work(load);
         write_statistics(step, factor, statistics, step == load_steps);
       }
     write_particles(load_steps, 1., particle_output);
+  }
+
+  template <int dim>
+  void
+  PDProblem<dim>::compute_work_load(ParticleVector &load) const
+  {
+    const auto &volume = particle_system.volumes();
+    for (unsigned int i = 0; i < particle_system.n_owned(); ++i)
+      for (unsigned int d = 0; d < dim; ++d)
+        load.local_element(i * dim + d) =
+          volume[i] * (boundary_conditions.is_prescribed(i, d) ?
+                         -internal_force.local_element(i * dim + d) :
+                         external_force.local_element(i * dim + d));
+  }
+
+  template <int dim>
+  void
+  PDProblem<dim>::accumulate_external_work(ParticleVector &load)
+  {
+    compute_work_load(load);
+    // Trapezoidal rule over the step from previous_u to u; summed over ranks when reported.
+    const std::size_t n_values = std::size_t(particle_system.n_owned()) * dim;
+    for (std::size_t k = 0; k < n_values; ++k)
+      local_external_work += 0.5 * (previous_load.local_element(k) + load.local_element(k)) *
+                             (u.local_element(k) - previous_u.local_element(k));
+    previous_load = load;
   }
 
   template <int dim>

@@ -113,6 +113,19 @@ namespace perideal
     run_explicit();
     void
     run_quasi_static();
+    /**
+     * @brief The load that does work on the body, per particle [N]: the applied loads, and on
+     * prescribed components the force the constraint exerts (minus the internal force; the
+     * constrained particles' inertia is accounted for through their kinetic energy).
+     */
+    void
+    compute_work_load(ParticleVector &load) const;
+    /**
+     * @brief Add the work done from previous_u to u (trapezoidal rule in the loads) and keep
+     * the current load, computed into @p load, for the next step.
+     */
+    void
+    accumulate_external_work(ParticleVector &load);
     void
     compute_acceleration(const double time, ParticleVector &u, ParticleVector &a);
     void
