@@ -187,30 +187,6 @@ namespace perideal
   }
 
   template <int dim>
-  double
-  BondBased<dim>::stable_time_step(const ParticleSystem<dim> &particles, const double density) const
-  {
-    const BondList     &bonds   = particles.bonds();
-    const auto         &volume  = particles.volumes();
-    const unsigned int  n_owned = particles.n_owned();
-    std::vector<double> stiffness(n_owned, 0.);
-    for (unsigned int i = 0; i < n_owned; ++i)
-      for (unsigned int b = bonds.row_start[i]; b < bonds.row_start[i + 1]; ++b)
-        {
-          const unsigned int j = bonds.neighbor[b];
-          const double       k = bond_modulus[b] / bonds.length[b];
-          stiffness[i] += k * volume[j];
-          if (j < n_owned)
-            stiffness[j] += k * volume[i];
-        }
-    double dt = std::numeric_limits<double>::max();
-    for (const double k : stiffness)
-      if (k > 0.)
-        dt = std::min(dt, std::sqrt(2. * density / k));
-    return Utilities::MPI::min(dt, particles.get_communicator());
-  }
-
-  template <int dim>
   SymmetricTensor<4, dim>
   BondBased<dim>::elasticity_tensor() const
   {

@@ -206,48 +206,6 @@ namespace perideal
   }
 
   template <int dim>
-  double
-  LinearPeridynamicSolid<dim>::stable_time_step(const ParticleSystem<dim> &particles,
-                                                const double               density) const
-  {
-    // Gershgorin bound of the linearized operator: the direct deviatoric stiffness
-    // (alpha_i + alpha_j) omega of each bond plus the coupling through the dilatation,
-    // n |n k - (n + 2) mu| (sum_j omega |xi| V_j)^2 / m_i^2, counted for both ends.
-    const BondList     &bonds   = particles.bonds();
-    const auto         &volume  = particles.volumes();
-    const unsigned int  n_owned = particles.n_owned();
-    const double        n       = dim;
-    const double        alpha_m = shear_modulus * n * (n + 2.);
-    const double        kappa   = std::abs(n * bulk_modulus - (n + 2.) * shear_modulus);
-    std::vector<double> direct(n_owned, 0.), moment(n_owned, 0.);
-    for (unsigned int i = 0; i < n_owned; ++i)
-      for (unsigned int b = bonds.row_start[i]; b < bonds.row_start[i + 1]; ++b)
-        {
-          const unsigned int j = bonds.neighbor[b];
-          const double       k = (alpha_m / weighted_volume.local_element(i) +
-                            alpha_m / weighted_volume.local_element(j)) *
-                           bond_weight[b];
-          const double r = bond_weight[b] * bonds.length[b];
-          direct[i] += k * volume[j];
-          moment[i] += r * volume[j];
-          if (j < n_owned)
-            {
-              direct[j] += k * volume[i];
-              moment[j] += r * volume[i];
-            }
-        }
-    double dt = std::numeric_limits<double>::max();
-    for (unsigned int i = 0; i < n_owned; ++i)
-      {
-        const double m_i       = weighted_volume.local_element(i);
-        const double stiffness = direct[i] + 2. * n * kappa * moment[i] * moment[i] / (m_i * m_i);
-        if (stiffness > 0.)
-          dt = std::min(dt, std::sqrt(2. * density / stiffness));
-      }
-    return Utilities::MPI::min(dt, particles.get_communicator());
-  }
-
-  template <int dim>
   SymmetricTensor<4, dim>
   LinearPeridynamicSolid<dim>::elasticity_tensor() const
   {

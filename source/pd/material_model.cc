@@ -3,6 +3,9 @@
 // ---------------------------------------------------------------------
 #include <perideal/pd/material_model.h>
 
+#include <cmath>
+#include <limits>
+
 namespace perideal
 {
   template <int dim>
@@ -27,14 +30,17 @@ namespace perideal
   isotropic_elasticity_tensor<3>(const double, const double, const PlanarAssumption);
 
   template <int dim>
-  void
-  MaterialModel<dim>::stiffness_bound(const ParticleSystem<dim> &, std::vector<double> &) const
+  double
+  MaterialModel<dim>::stable_time_step(const ParticleSystem<dim> &particles,
+                                       const double               density) const
   {
-    AssertThrow(false,
-                dealii::ExcMessage("This material model provides no stiffness bound; the "
-                                   "quasi-static solvers (<Solver/Type> = adaptive dynamic "
-                                   "relaxation or static) cannot use it. Choose <Solver/Type> = "
-                                   "explicit."));
+    std::vector<double> bound;
+    stiffness_bound(particles, bound);
+    double dt = std::numeric_limits<double>::max();
+    for (const double k : bound)
+      if (k > 0.)
+        dt = std::min(dt, std::sqrt(4. * density / k));
+    return dealii::Utilities::MPI::min(dt, particles.get_communicator());
   }
 
   template <int dim>

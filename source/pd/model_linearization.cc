@@ -54,7 +54,7 @@ namespace perideal
             bond_modulus[b] / bonds.length[b] * volume[i] * volume[bonds.neighbor[b]];
   }
 
-  // LPS: the same estimate as stable_time_step() (direct deviatoric stiffness plus the
+  // LPS: the Gershgorin estimate behind stable_time_step() (direct deviatoric stiffness plus the
   // dilatation coupling), doubled for the block Gershgorin bound.
   template <int dim>
   void

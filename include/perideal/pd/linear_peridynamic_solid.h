@@ -57,8 +57,6 @@ namespace perideal
                    std::vector<double>  *energy_density,
                    const double          critical_stretch) override;
 
-    double
-    stable_time_step(const ParticleSystem<dim> &particles, const double density) const override;
 
     /**
      * @brief Gershgorin bound (see MaterialModel::stiffness_bound()); defined in

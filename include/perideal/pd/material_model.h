@@ -127,10 +127,11 @@ namespace perideal
     /**
      * @brief The largest stable explicit time step for density @p density [kg/m^3]: the
      * Silling–Askari bound dt = min_i sqrt(2 rho / sum_j V_j C_ij) (Silling & Askari 2005,
-     * Comput. Struct. 83, eq. 31) with the model's bond stiffness C_ij. Same on every rank.
+     * Comput. Struct. 83, eq. 31) with the model's bond stiffness C_ij, i.e.
+     * sqrt(4 rho / max_i stiffness_bound_i). Same on every rank.
      */
-    virtual double
-    stable_time_step(const ParticleSystem<dim> &particles, const double density) const = 0;
+    double
+    stable_time_step(const ParticleSystem<dim> &particles, const double density) const;
 
     /**
      * @brief Gershgorin bound of the linearized operator per particle: @p per_particle[i] is
@@ -140,7 +141,8 @@ namespace perideal
      * dt_stable = sqrt(4 rho / max_i bound_i). Broken bonds do not count.
      */
     virtual void
-    stiffness_bound(const ParticleSystem<dim> &particles, std::vector<double> &per_particle) const;
+    stiffness_bound(const ParticleSystem<dim> &particles,
+                    std::vector<double>       &per_particle) const = 0;
 
     /**
      * @brief The linearization of the model about the reference configuration (intact bonds
