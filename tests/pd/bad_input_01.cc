@@ -5,6 +5,7 @@
 #include <perideal/pd/pd_problem.h>
 
 #include "../tests.h"
+#include "pd_tests.h"
 
 #include <filesystem>
 #include <sstream>
@@ -54,30 +55,11 @@ subsection Output
 end
 )";
 
+// Check base with the changes applied.
 void
 check(const std::string &name, const std::string &changes)
 {
-  ParameterHandler prm;
-  perideal::PDProblem<2>::declare_parameters(prm, {"plate", "top"}, {"pull", "hold"});
-  std::ostringstream log;
-  try
-    {
-      prm.parse_input_from_string(base + changes);
-      perideal::PDProblem<2> problem(MPI_COMM_WORLD, log);
-      problem.parse_parameters(prm);
-      problem.setup();
-      deallog << name << ": accepted (wrong)" << std::endl;
-    }
-  catch (const ExceptionBase &exc)
-    {
-      std::ostringstream message;
-      exc.print_info(message);
-      std::string text = message.str();
-      text.erase(0, text.find_first_not_of(" \n"));
-      while (!text.empty() && (text.back() == '\n' || text.back() == ' '))
-        text.pop_back();
-      deallog << name << ": " << text << std::endl;
-    }
+  pd_tests::check_bad_input(name, base + changes, {"plate", "top"}, {"pull", "hold"}, false);
   deallog << "  output written: " << std::filesystem::exists("output-bad-input") << std::endl;
 }
 

@@ -139,8 +139,8 @@ namespace
     const double right_part      = sums[0] / sums[2];
     const double amplitude_ratio = 1. / (2. * right_part - 1.);
 
-    const bool pass =
-      std::abs(speed_ratio - 1.) < strip.tolerance && std::abs(amplitude_ratio - 1.) < strip.tolerance;
+    const bool pass = std::abs(speed_ratio - 1.) < strip.tolerance &&
+                      std::abs(amplitude_ratio - 1.) < strip.tolerance;
     std::ostringstream line;
     line << strip.model << ", nu = " << std::setprecision(3) << strip.nu << ", strip "
          << std::llround(length / strip.dx) << " x " << std::llround(strip.width / strip.dx)
@@ -149,7 +149,8 @@ namespace
          << std::fixed << "  centroid speed / sqrt(E/rho) = " << speed_ratio << "\n"
          << "  right-going part " << right_part << " -> speed / sqrt(E/rho) = " << amplitude_ratio
          << "\n"
-         << "  within " << std::setprecision(0) << 100. * strip.tolerance << " %: " << (pass ? "yes" : "NO");
+         << "  within " << std::setprecision(0) << 100. * strip.tolerance
+         << " %: " << (pass ? "yes" : "NO");
     std::istringstream lines(line.str());
     for (std::string text; std::getline(lines, text);)
       deallog << text << std::endl;

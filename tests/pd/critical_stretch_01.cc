@@ -15,6 +15,7 @@
 #include <perideal/pd/pre_crack.h>
 
 #include "../tests.h"
+#include "pd_tests.h"
 
 #include <algorithm>
 #include <cmath>
@@ -33,19 +34,7 @@ namespace
   const double delta = 4e-4;
   const double G0    = 1000.;
 
-  std::string
-  planar_name(const perideal::PlanarAssumption planar)
-  {
-    switch (planar)
-      {
-        case perideal::PlanarAssumption::plane_stress:
-          return "plane stress";
-        case perideal::PlanarAssumption::plane_strain:
-          return "plane strain";
-        default:
-          return "3D";
-      }
-  }
+  using pd_tests::planar_name;
 
   template <int dim>
   perideal::ParticleSystem<dim>
@@ -64,23 +53,14 @@ namespace
     dealii::Point<dim> upper;
     for (unsigned int d = 0; d < dim; ++d)
       upper[d] = n * dx;
-    ps.generate(
-      s,
-      dealii::BoundingBox<dim>(std::make_pair(dealii::Point<dim>(), upper)),
-      [](const dealii::Point<dim> &) { return true; },
-      cracks);
+    pd_tests::generate_box<dim>(ps, s, dealii::Point<dim>(), upper, cracks);
     return ps;
   }
 
   perideal::ModelContext
   context(const perideal::PlanarAssumption planar)
   {
-    perideal::ModelContext c;
-    c.horizon            = delta;
-    c.thickness          = h;
-    c.planar             = planar;
-    c.surface_correction = false;
-    return c;
+    return pd_tests::model_context(delta, h, planar, false);
   }
 
   // Energy per unit crack area of all bonds that cross a plane when each stores the PMB
@@ -118,10 +98,7 @@ namespace
   {
     auto                     ps = make_particles<dim>(9, delta, false, {});
     perideal::BondBased<dim> model;
-    dealii::ParameterHandler prm;
-    perideal::BondBased<dim>::declare_parameters(prm);
-    prm.set("Young's modulus", std::to_string(E));
-    model.parse_parameters(prm);
+    pd_tests::parse_model(model, {{"Young's modulus", std::to_string(E)}});
     model.initialize(ps, context(planar));
     const double s0 = model.critical_stretch(G0);
     const double c  = model.micromodulus();
@@ -143,25 +120,16 @@ namespace
   {
     auto                     ps = make_particles<dim>(9, delta, false, {});
     perideal::BondBased<dim> pmb;
-    {
-      dealii::ParameterHandler prm;
-      perideal::BondBased<dim>::declare_parameters(prm);
-      prm.set("Young's modulus", std::to_string(E));
-      pmb.parse_parameters(prm);
-      pmb.initialize(ps, context(planar));
-    }
+    pd_tests::parse_model(pmb, {{"Young's modulus", std::to_string(E)}});
+    pmb.initialize(ps, context(planar));
     perideal::LinearPeridynamicSolid<dim> lps;
-    {
-      dealii::ParameterHandler prm;
-      perideal::LinearPeridynamicSolid<dim>::declare_parameters(prm);
-      prm.set("Young's modulus", std::to_string(E));
-      std::ostringstream poisson;
-      poisson << std::setprecision(17) << nu;
-      prm.set("Poisson's ratio", poisson.str());
-      prm.set("Influence function", "inverse distance");
-      lps.parse_parameters(prm);
-      lps.initialize(ps, context(planar));
-    }
+    std::ostringstream                    poisson;
+    poisson << std::setprecision(17) << nu;
+    pd_tests::parse_model(lps,
+                          {{"Young's modulus", std::to_string(E)},
+                           {"Poisson's ratio", poisson.str()},
+                           {"Influence function", "inverse distance"}});
+    lps.initialize(ps, context(planar));
     const double s_lps = lps.critical_stretch(G0), s_pmb = pmb.critical_stretch(G0);
     deallog << "linear peridynamic solid, " << planar_name(planar)
             << ", nu = " << std::setprecision(4) << nu << std::setprecision(6) << ": s0 = " << s_lps

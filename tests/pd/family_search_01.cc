@@ -8,6 +8,7 @@
 #include <perideal/pd/particle_system.h>
 
 #include "../tests.h"
+#include "pd_tests.h"
 
 #include <algorithm>
 #include <array>
@@ -39,10 +40,7 @@ namespace
     s.horizon        = horizon_factor * dx;
     s.thickness      = 1e-4;
     s.partial_volume = perideal::PartialVolume::none;
-    ps.generate(s,
-                dealii::BoundingBox<dim>(std::make_pair(lower, upper)),
-                [](const dealii::Point<dim> &) { return true; },
-                {});
+    pd_tests::generate_box<dim>(ps, s, lower, upper);
 
     // Lattice index of a particle from its position (cell centres at lower + (i + 1/2) dx).
     const auto lattice_index = [&](const dealii::Point<dim> &x) {
@@ -141,30 +139,14 @@ namespace
 
     // The largest possible family: lattice offsets within the horizon.
     unsigned int full_family = 0;
-    {
-      const int            reach = static_cast<int>(horizon_factor);
-      std::array<int, dim> v;
-      v.fill(-reach);
-      while (true)
-        {
-          long r2 = 0;
-          for (unsigned int d = 0; d < dim; ++d)
-            r2 += long(v[d]) * v[d];
-          if (r2 > 0 && r2 <= reach2)
-            ++full_family;
-          unsigned int d = 0;
-          for (; d < dim; ++d)
-            if (v[d] < reach)
-              {
-                ++v[d];
-                break;
-              }
-            else
-              v[d] = -reach;
-          if (d == dim)
-            break;
-        }
-    }
+    pd_tests::for_each_lattice_offset<dim>(static_cast<int>(horizon_factor),
+                                           [&](const std::array<int, dim> &v) {
+                                             long r2 = 0;
+                                             for (unsigned int d = 0; d < dim; ++d)
+                                               r2 += long(v[d]) * v[d];
+                                             if (r2 > 0 && r2 <= reach2)
+                                               ++full_family;
+                                           });
 
     bad_ghosts  = dealii::Utilities::MPI::sum(bad_ghosts, comm);
     bad_lengths = dealii::Utilities::MPI::sum(bad_lengths, comm);

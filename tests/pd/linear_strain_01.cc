@@ -6,6 +6,7 @@
 #include <perideal/pd/linear_peridynamic_solid.h>
 
 #include "../tests.h"
+#include "pd_tests.h"
 
 #include <cmath>
 #include <limits>
@@ -34,19 +35,13 @@ centre_force(perideal::MaterialModel<dim>    &model,
   Point<dim> upper;
   for (unsigned int d = 0; d < dim; ++d)
     upper[d] = n * dx;
-  ps.generate(s,
-              BoundingBox<dim>(std::make_pair(Point<dim>(), upper)),
-              [](const Point<dim> &) { return true; },
-              {});
-  perideal::ModelContext context;
-  context.horizon   = s.horizon;
-  context.thickness = s.thickness;
-  context.planar    = planar;
+  pd_tests::generate_box<dim>(ps, s, Point<dim>(), upper);
   // PMB: the raw model (no surface correction). LPS: the discrete weighted volume m_i, the
   // usual discretization of the model (with the continuum m the dilatation carries the
   // quadrature error of m as well).
-  context.surface_correction = discrete_weighted_volume;
-  model.initialize(ps, context);
+  model.initialize(
+    ps,
+    pd_tests::model_context(s.horizon, s.thickness, planar, discrete_weighted_volume));
 
   perideal::ParticleVector u, f;
   ps.reinit_vector(u, dim);

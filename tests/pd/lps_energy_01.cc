@@ -12,6 +12,7 @@
 #include <perideal/pd/particle_system.h>
 
 #include "../tests.h"
+#include "pd_tests.h"
 
 #include <algorithm>
 #include <array>
@@ -32,31 +33,6 @@ namespace
   const double h  = 1e-4;
   const double dx = 1e-4;
 
-  std::string
-  planar_name(const perideal::PlanarAssumption planar)
-  {
-    switch (planar)
-      {
-        case perideal::PlanarAssumption::plane_stress:
-          return "plane stress";
-        case perideal::PlanarAssumption::plane_strain:
-          return "plane strain";
-        default:
-          return "3D";
-      }
-  }
-
-  // Deterministic pseudo-random number in [-1, 1] from an integer key (splitmix64).
-  double
-  random_number(std::uint64_t key)
-  {
-    key += 0x9e3779b97f4a7c15ULL;
-    key = (key ^ (key >> 30)) * 0xbf58476d1ce4e5b9ULL;
-    key = (key ^ (key >> 27)) * 0x94d049bb133111ebULL;
-    key = key ^ (key >> 31);
-    return 2. * (key >> 11) * (1. / 9007199254740992.) - 1.;
-  }
-
   double
   influence(const std::string &name, const double r, const double R)
   {
@@ -67,68 +43,9 @@ namespace
     return std::exp(-r * r / (R * R));
   }
 
-  // A cube lattice of n^dim particles starting at the origin.
-  template <int dim>
-  struct Body
-  {
-    Body(const int n, const double horizon_factor, const bool partial_volume)
-      : n(n)
-      , delta(horizon_factor * dx)
-      , ps(MPI_COMM_WORLD)
-    {
-      typename perideal::ParticleSystem<dim>::Settings s;
-      s.spacing   = dx;
-      s.horizon   = delta;
-      s.thickness = h;
-      s.partial_volume =
-        partial_volume ? perideal::PartialVolume::book : perideal::PartialVolume::none;
-      dealii::Point<dim> upper;
-      for (unsigned int d = 0; d < dim; ++d)
-        upper[d] = n * dx;
-      ps.generate(s,
-                  dealii::BoundingBox<dim>(std::make_pair(dealii::Point<dim>(), upper)),
-                  [](const dealii::Point<dim> &) { return true; },
-                  {});
-    }
-
-    int
-    depth(const unsigned int i) const
-    {
-      int layers = n;
-      for (unsigned int d = 0; d < dim; ++d)
-        {
-          const int k = static_cast<int>(std::lround(ps.positions()[i][d] / dx - 0.5));
-          layers      = std::min({layers, k, n - 1 - k});
-        }
-      return layers;
-    }
-
-    std::uint64_t
-    lattice_index(const unsigned int i) const
-    {
-      std::uint64_t index = 0;
-      for (unsigned int d = dim; d-- > 0;)
-        index = index * n + std::lround(ps.positions()[i][d] / dx - 0.5);
-      return index;
-    }
-
-    void
-    set_field(perideal::ParticleVector                                        &u,
-              const std::function<dealii::Tensor<1, dim>(const unsigned int)> &field) const
-    {
-      ps.reinit_vector(u, dim);
-      for (unsigned int i = 0; i < ps.n_local(); ++i)
-        {
-          const auto value = field(i);
-          for (unsigned int d = 0; d < dim; ++d)
-            u.local_element(i * dim + d) = value[d];
-        }
-    }
-
-    const int                     n;
-    const double                  delta;
-    perideal::ParticleSystem<dim> ps;
-  };
+  using pd_tests::Body;
+  using pd_tests::planar_name;
+  using pd_tests::random_number;
 
   template <int dim>
   std::unique_ptr<perideal::LinearPeridynamicSolid<dim>>
@@ -138,21 +55,14 @@ namespace
            const std::string               &omega,
            const bool                       correction)
   {
-    auto                     model = std::make_unique<perideal::LinearPeridynamicSolid<dim>>();
-    dealii::ParameterHandler prm;
-    perideal::LinearPeridynamicSolid<dim>::declare_parameters(prm);
-    prm.set("Young's modulus", std::to_string(E));
+    auto               model = std::make_unique<perideal::LinearPeridynamicSolid<dim>>();
     std::ostringstream poisson; // all digits: std::to_string would cut 1/3 to 0.333333
     poisson << std::setprecision(17) << nu;
-    prm.set("Poisson's ratio", poisson.str());
-    prm.set("Influence function", omega);
-    model->parse_parameters(prm);
-    perideal::ModelContext context;
-    context.horizon            = body.delta;
-    context.thickness          = h;
-    context.planar             = planar;
-    context.surface_correction = correction;
-    model->initialize(body.ps, context);
+    pd_tests::parse_model(*model,
+                          {{"Young's modulus", std::to_string(E)},
+                           {"Poisson's ratio", poisson.str()},
+                           {"Influence function", omega}});
+    model->initialize(body.ps, pd_tests::model_context(body.delta, h, planar, correction));
     return model;
   }
 
@@ -164,12 +74,10 @@ namespace
   double
   lattice_shear_ratio(const double R, const bool partial_volume, const std::string &omega)
   {
-    const int            reach = static_cast<int>(R) + 1;
-    std::array<int, dim> v;
-    v.fill(-reach);
     double num = 0., den = 0.;
-    while (true)
-      {
+    pd_tests::for_each_lattice_offset<dim>(
+      static_cast<int>(R) + 1,
+      [&](const std::array<int, dim> &v) {
         double r2 = 0.;
         for (unsigned int d = 0; d < dim; ++d)
           r2 += double(v[d]) * v[d];
@@ -181,18 +89,7 @@ namespace
             num += w * v[0] * v[0] * v[1] * v[1] / r2;
             den += w * r2;
           }
-        unsigned int d = 0;
-        for (; d < dim; ++d)
-          if (v[d] < reach)
-            {
-              ++v[d];
-              break;
-            }
-          else
-            v[d] = -reach;
-        if (d == dim)
-          break;
-      }
+      });
     return dim * (dim + 2.) * num / den;
   }
 
@@ -204,7 +101,11 @@ namespace
     const int    R              = 4;
     const bool   partial_volume = true;
     const int    n              = 2 * R + 3;
-    Body<dim>    body(n, horizon_factor, partial_volume);
+    Body<dim>    body(n,
+                   dx,
+                   horizon_factor,
+                   partial_volume ? perideal::PartialVolume::book : perideal::PartialVolume::none,
+                   h);
     const auto   model = make_lps<dim>(body, planar, 0.3, omega, true);
     const auto   C     = model->elasticity_tensor();
     const auto   I     = dealii::unit_symmetric_tensor<dim>();
@@ -276,22 +177,12 @@ namespace
   void
   check_reduction(const perideal::PlanarAssumption planar, const double nu)
   {
-    Body<dim>  body(dim == 2 ? 15 : 9, 3.015, false);
+    Body<dim>  body(dim == 2 ? 15 : 9, dx, 3.015, perideal::PartialVolume::none, h);
     const auto lps = make_lps<dim>(body, planar, nu, "inverse distance", false);
 
     perideal::BondBased<dim> pmb;
-    {
-      dealii::ParameterHandler prm;
-      perideal::BondBased<dim>::declare_parameters(prm);
-      prm.set("Young's modulus", std::to_string(E));
-      pmb.parse_parameters(prm);
-      perideal::ModelContext context;
-      context.horizon            = body.delta;
-      context.thickness          = h;
-      context.planar             = planar;
-      context.surface_correction = false;
-      pmb.initialize(body.ps, context);
-    }
+    pd_tests::parse_model(pmb, {{"Young's modulus", std::to_string(E)}});
+    pmb.initialize(body.ps, pd_tests::model_context(body.delta, h, planar, false));
 
     perideal::ParticleVector u, f_lps, f_pmb;
     body.set_field(u, [&](const unsigned int i) {

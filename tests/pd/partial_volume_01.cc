@@ -10,6 +10,7 @@
 #include <perideal/pd/particle_system.h>
 
 #include "../tests.h"
+#include "pd_tests.h"
 
 #include <algorithm>
 #include <cmath>
@@ -43,10 +44,7 @@ namespace
         s.horizon        = horizon_factor * dx;
         s.thickness      = 1e-4;
         s.partial_volume = partial ? perideal::PartialVolume::book : perideal::PartialVolume::none;
-        ps.generate(s,
-                    dealii::BoundingBox<2>(std::make_pair(lower, upper)),
-                    [](const dealii::Point<2> &) { return true; },
-                    {});
+        pd_tests::generate_box<2>(ps, s, lower, upper);
 
         // Every bond has the factor of the formula (1 without partial volume).
         const perideal::BondList &bonds = ps.bonds();
@@ -130,10 +128,7 @@ namespace
       s.horizon        = horizon_factor * dx;
       s.thickness      = 1e-4;
       s.partial_volume = perideal::PartialVolume::geometric;
-      ps.generate(s,
-                  dealii::BoundingBox<2>(std::make_pair(lower, upper)),
-                  [](const dealii::Point<2> &) { return true; },
-                  {});
+      pd_tests::generate_box<2>(ps, s, lower, upper);
       const perideal::BondList &bonds  = ps.bonds();
       const dealii::Point<2>    centre = lower + dealii::Point<2>(7.5 * dx, 7.5 * dx);
       double                    local  = 0.;

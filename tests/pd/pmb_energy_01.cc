@@ -12,6 +12,7 @@
 #include <perideal/pd/particle_system.h>
 
 #include "../tests.h"
+#include "pd_tests.h"
 
 #include <algorithm>
 #include <array>
@@ -31,115 +32,17 @@ namespace
   const double E  = 192e9;
   const double h  = 1e-4;
 
-  std::string
-  planar_name(const perideal::PlanarAssumption planar)
-  {
-    switch (planar)
-      {
-        case perideal::PlanarAssumption::plane_stress:
-          return "plane stress";
-        case perideal::PlanarAssumption::plane_strain:
-          return "plane strain";
-        default:
-          return "3D";
-      }
-  }
-
-  // Deterministic pseudo-random number in [-1, 1] from an integer key (splitmix64), so that
-  // the field does not depend on the number of ranks.
-  double
-  random_number(std::uint64_t key)
-  {
-    key += 0x9e3779b97f4a7c15ULL;
-    key = (key ^ (key >> 30)) * 0xbf58476d1ce4e5b9ULL;
-    key = (key ^ (key >> 27)) * 0x94d049bb133111ebULL;
-    key = key ^ (key >> 31);
-    return 2. * (key >> 11) * (1. / 9007199254740992.) - 1.;
-  }
-
-  // A cube lattice of n^dim particles of spacing dx starting at the origin.
-  template <int dim>
-  struct Body
-  {
-    Body(const int                     n,
-         const double                  dx,
-         const double                  horizon_factor,
-         const perideal::PartialVolume partial_volume)
-      : n(n)
-      , dx(dx)
-      , delta(horizon_factor * dx)
-      , ps(MPI_COMM_WORLD)
-    {
-      typename perideal::ParticleSystem<dim>::Settings s;
-      s.spacing        = dx;
-      s.horizon        = delta;
-      s.thickness      = h;
-      s.partial_volume = partial_volume;
-      dealii::Point<dim> upper;
-      for (unsigned int d = 0; d < dim; ++d)
-        upper[d] = n * dx;
-      ps.generate(s,
-                  dealii::BoundingBox<dim>(std::make_pair(dealii::Point<dim>(), upper)),
-                  [](const dealii::Point<dim> &) { return true; },
-                  {});
-    }
-
-    // Distance of particle i from the boundary in lattice layers (0 on the surface layer).
-    int
-    depth(const unsigned int i) const
-    {
-      int layers = n;
-      for (unsigned int d = 0; d < dim; ++d)
-        {
-          const int k = static_cast<int>(std::lround(ps.positions()[i][d] / dx - 0.5));
-          layers      = std::min({layers, k, n - 1 - k});
-        }
-      return layers;
-    }
-
-    std::uint64_t
-    lattice_index(const unsigned int i) const
-    {
-      std::uint64_t index = 0;
-      for (unsigned int d = dim; d-- > 0;)
-        index = index * n + std::lround(ps.positions()[i][d] / dx - 0.5);
-      return index;
-    }
-
-    // u(x) for all local (owned and ghost) particles.
-    void
-    set_field(perideal::ParticleVector                                        &u,
-              const std::function<dealii::Tensor<1, dim>(const unsigned int)> &field) const
-    {
-      ps.reinit_vector(u, dim);
-      for (unsigned int i = 0; i < ps.n_local(); ++i)
-        {
-          const auto value = field(i);
-          for (unsigned int d = 0; d < dim; ++d)
-            u.local_element(i * dim + d) = value[d];
-        }
-    }
-
-    const int                     n;
-    const double                  dx, delta;
-    perideal::ParticleSystem<dim> ps;
-  };
+  using pd_tests::Body;
+  using pd_tests::planar_name;
+  using pd_tests::random_number;
 
   template <int dim>
   std::unique_ptr<perideal::BondBased<dim>>
   make_model(Body<dim> &body, const perideal::PlanarAssumption planar, const bool correction)
   {
-    auto                     model = std::make_unique<perideal::BondBased<dim>>();
-    dealii::ParameterHandler prm;
-    perideal::BondBased<dim>::declare_parameters(prm);
-    prm.set("Young's modulus", std::to_string(E));
-    model->parse_parameters(prm);
-    perideal::ModelContext context;
-    context.horizon            = body.delta;
-    context.thickness          = h;
-    context.planar             = planar;
-    context.surface_correction = correction;
-    model->initialize(body.ps, context);
+    auto model = std::make_unique<perideal::BondBased<dim>>();
+    pd_tests::parse_model(*model, {{"Young's modulus", std::to_string(E)}});
+    model->initialize(body.ps, pd_tests::model_context(body.delta, h, planar, correction));
     return model;
   }
 
@@ -159,12 +62,10 @@ namespace
   double
   lattice_sum(const double R, const perideal::PartialVolume partial_volume)
   {
-    const int            reach = static_cast<int>(R) + 2;
-    std::array<int, dim> v;
-    v.fill(-reach);
     double sum = 0.;
-    while (true)
-      {
+    pd_tests::for_each_lattice_offset<dim>(
+      static_cast<int>(R) + 2,
+      [&](const std::array<int, dim> &v) {
         double r2 = 0.;
         for (unsigned int d = 0; d < dim; ++d)
           r2 += double(v[d]) * v[d];
@@ -174,18 +75,7 @@ namespace
           sum +=
             r *
             ((partial_volume == perideal::PartialVolume::none || r <= R - 0.5) ? 1. : R + 0.5 - r);
-        unsigned int d = 0;
-        for (; d < dim; ++d)
-          if (v[d] < reach)
-            {
-              ++v[d];
-              break;
-            }
-          else
-            v[d] = -reach;
-        if (d == dim)
-          break;
-      }
+      });
     return sum;
   }
 
@@ -194,7 +84,7 @@ namespace
   void
   check_micromodulus(const perideal::PlanarAssumption planar)
   {
-    Body<dim>    body(9, 1e-4, 4., perideal::PartialVolume::none);
+    Body<dim>    body(9, 1e-4, 4., perideal::PartialVolume::none, h);
     const auto   model = make_model<dim>(body, planar, false);
     const double c = model->micromodulus(), delta = body.delta;
     const auto   C = model->elasticity_tensor();
@@ -229,7 +119,7 @@ namespace
                         const perideal::PartialVolume    partial_volume)
   {
     const int                R = static_cast<int>(horizon_factor);
-    Body<dim>                body(2 * R + 5, 1e-4, horizon_factor, partial_volume);
+    Body<dim>                body(2 * R + 5, 1e-4, horizon_factor, partial_volume, h);
     const auto               model = make_model<dim>(body, planar, false);
     const double             eps   = 1e-6;
     perideal::ParticleVector u;
@@ -275,7 +165,7 @@ namespace
   {
     const double horizon_factor = (dim == 2 ? 4. : 3.);
     const int    R              = static_cast<int>(horizon_factor);
-    Body<dim>    body(n, 1e-4, horizon_factor, perideal::PartialVolume::none);
+    Body<dim>    body(n, 1e-4, horizon_factor, perideal::PartialVolume::none, h);
     const double eps = 1e-6;
     deallog << planar_name(planar) << ", delta = " << horizon_factor << " dx, " << n << "^" << dim
             << " particles, uniaxial stretch " << eps << ':' << std::endl;
@@ -328,7 +218,7 @@ namespace
   {
     const double horizon_factor = (dim == 2 ? 4. : 3.);
     const int    R              = static_cast<int>(horizon_factor);
-    Body<dim>    body(dim == 2 ? 21 : 13, 1e-4, horizon_factor, perideal::PartialVolume::none);
+    Body<dim>    body(dim == 2 ? 21 : 13, 1e-4, horizon_factor, perideal::PartialVolume::none, h);
     const auto   model = make_model<dim>(body, planar, correction);
     // A general homogeneous deformation u = H x; large enough (1e-4) that round-off in the
     // stretch, (|y| - |xi|)/|xi|, stays at 1e-12 of s.
@@ -363,7 +253,7 @@ namespace
   void
   check_balance(const perideal::PlanarAssumption planar)
   {
-    Body<dim>  body(dim == 2 ? 17 : 9, 1e-4, 3.015, perideal::PartialVolume::geometric);
+    Body<dim>  body(dim == 2 ? 17 : 9, 1e-4, 3.015, perideal::PartialVolume::geometric, h);
     const auto model = make_model<dim>(body, planar, true);
     perideal::ParticleVector u, f;
     body.set_field(u, [&](const unsigned int i) {

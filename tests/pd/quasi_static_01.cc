@@ -11,6 +11,7 @@
 #include <perideal/pd/static_solver.h>
 
 #include "../tests.h"
+#include "pd_tests.h"
 
 #include <cmath>
 #include <limits>
@@ -36,16 +37,13 @@ check(perideal::MaterialModel<dim> &model, const unsigned int n, const std::stri
     upper[d] = n * dx;
   lower[dim - 1] = -4 * dx;
   upper[dim - 1] += 4 * dx;
-  ps.generate(s,
-              BoundingBox<dim>(std::make_pair(lower, upper)),
-              [](const Point<dim> &) { return true; },
-              {});
-  perideal::ModelContext context;
-  context.horizon   = s.horizon;
-  context.thickness = s.thickness;
-  context.planar    = dim == 2 ? perideal::PlanarAssumption::plane_stress :
-                                 perideal::PlanarAssumption::three_dimensional;
-  model.initialize(ps, context);
+  pd_tests::generate_box<dim>(ps, s, lower, upper);
+  model.initialize(ps,
+                   pd_tests::model_context(s.horizon,
+                                           s.thickness,
+                                           dim == 2 ? perideal::PlanarAssumption::plane_stress :
+                                                      perideal::PlanarAssumption::three_dimensional,
+                                           true));
 
   perideal::ParticleVector prescribed, target, zero, u_static, u_adr;
   for (auto *v : {&prescribed, &target, &zero, &u_static, &u_adr})
@@ -123,20 +121,13 @@ main(int argc, char **argv)
   mpi_initlog();
   deallog.depth_file(1); // no CG iteration lines
   {
-    ParameterHandler prm;
-    perideal::BondBased<2>::declare_parameters(prm);
-    prm.set("Young's modulus", "192e9");
     perideal::BondBased<2> pmb;
-    pmb.parse_parameters(prm);
+    pd_tests::parse_model(pmb, {{"Young's modulus", "192e9"}});
     check<2>(pmb, 30, "2D PMB plate 30 x 30");
   }
   {
-    ParameterHandler prm;
-    perideal::LinearPeridynamicSolid<3>::declare_parameters(prm);
-    prm.set("Young's modulus", "70e9");
-    prm.set("Poisson's ratio", "0.3");
     perideal::LinearPeridynamicSolid<3> lps;
-    lps.parse_parameters(prm);
+    pd_tests::parse_model(lps, {{"Young's modulus", "70e9"}, {"Poisson's ratio", "0.3"}});
     check<3>(lps, 6, "3D LPS block 6 x 6 x 6");
   }
 }

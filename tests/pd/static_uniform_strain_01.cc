@@ -10,6 +10,7 @@
 #include <perideal/pd/static_solver.h>
 
 #include "../tests.h"
+#include "pd_tests.h"
 
 #include <cmath>
 
@@ -36,17 +37,13 @@ check(perideal::MaterialModel<dim> &model,
       lower[d] = -double(layers) * dx;
       upper[d] = (n + layers) * dx;
     }
-  ps.generate(s,
-              BoundingBox<dim>(std::make_pair(lower, upper)),
-              [](const Point<dim> &) { return true; },
-              {});
-  perideal::ModelContext context;
-  context.horizon            = s.horizon;
-  context.thickness          = s.thickness;
-  context.planar             = dim == 2 ? perideal::PlanarAssumption::plane_stress :
-                                          perideal::PlanarAssumption::three_dimensional;
-  context.surface_correction = surface_correction;
-  model.initialize(ps, context);
+  pd_tests::generate_box<dim>(ps, s, lower, upper);
+  model.initialize(ps,
+                   pd_tests::model_context(s.horizon,
+                                           s.thickness,
+                                           dim == 2 ? perideal::PlanarAssumption::plane_stress :
+                                                      perideal::PlanarAssumption::three_dimensional,
+                                           surface_correction));
 
   // eps = [[1e-4, 2e-5, 0], [2e-5, -3e-5, 1e-5], [0, 1e-5, 5e-5]].
   const double eps[3][3] = {{1e-4, 2e-5, 0.}, {2e-5, -3e-5, 1e-5}, {0., 1e-5, 5e-5}};
@@ -102,29 +99,18 @@ main(int argc, char **argv)
   mpi_initlog();
   deallog.depth_file(1); // no CG iteration lines
   {
-    ParameterHandler prm;
-    perideal::BondBased<2>::declare_parameters(prm);
-    prm.set("Young's modulus", "192e9");
     perideal::BondBased<2> pmb;
-    pmb.parse_parameters(prm);
+    pd_tests::parse_model(pmb, {{"Young's modulus", "192e9"}});
     check<2>(pmb, 20, 4, false, 3.015, "2D PMB, delta = 3.015 dx, no surface correction");
   }
   {
-    ParameterHandler prm;
-    perideal::LinearPeridynamicSolid<2>::declare_parameters(prm);
-    prm.set("Young's modulus", "70e9");
-    prm.set("Poisson's ratio", "0.3");
     perideal::LinearPeridynamicSolid<2> lps;
-    lps.parse_parameters(prm);
+    pd_tests::parse_model(lps, {{"Young's modulus", "70e9"}, {"Poisson's ratio", "0.3"}});
     check<2>(lps, 16, 8, true, 3.015, "2D LPS, delta = 3.015 dx, discrete weighted volume");
   }
   {
-    ParameterHandler prm;
-    perideal::LinearPeridynamicSolid<3>::declare_parameters(prm);
-    prm.set("Young's modulus", "70e9");
-    prm.set("Poisson's ratio", "0.3");
     perideal::LinearPeridynamicSolid<3> lps;
-    lps.parse_parameters(prm);
+    pd_tests::parse_model(lps, {{"Young's modulus", "70e9"}, {"Poisson's ratio", "0.3"}});
     check<3>(lps, 3, 6, true, 2.015, "3D LPS, delta = 2.015 dx, discrete weighted volume");
   }
 }

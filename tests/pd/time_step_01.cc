@@ -12,6 +12,7 @@
 #include <perideal/pd/particle_system.h>
 
 #include "../tests.h"
+#include "pd_tests.h"
 
 #include <algorithm>
 #include <cmath>
@@ -34,16 +35,10 @@ namespace
              perideal::ParticleSystem<dim>   &ps,
              const perideal::PlanarAssumption planar)
   {
-    dealii::ParameterHandler prm;
-    perideal::BondBased<dim>::declare_parameters(prm);
-    prm.set("Young's modulus", std::to_string(E));
-    model.parse_parameters(prm);
-    perideal::ModelContext context;
-    context.horizon            = ps.settings().horizon;
-    context.thickness          = ps.settings().thickness;
-    context.planar             = planar;
-    context.surface_correction = false;
-    model.initialize(ps, context);
+    pd_tests::parse_model(model, {{"Young's modulus", std::to_string(E)}});
+    model.initialize(
+      ps,
+      pd_tests::model_context(ps.settings().horizon, ps.settings().thickness, planar, false));
   }
 
   // The thesis plate (seed note 002, sec. 5.3): E = 192 GPa, rho = 7800 kg/m^3,
@@ -59,11 +54,7 @@ namespace
     s.horizon        = 4. * dx;
     s.thickness      = 1e-4;
     s.partial_volume = perideal::PartialVolume::none;
-    ps.generate(s,
-                dealii::BoundingBox<2>(
-                  std::make_pair(dealii::Point<2>(), dealii::Point<2>(11 * dx, 11 * dx))),
-                [](const dealii::Point<2> &) { return true; },
-                {});
+    pd_tests::generate_box<2>(ps, s, dealii::Point<2>(), dealii::Point<2>(11 * dx, 11 * dx));
     perideal::BondBased<2> model;
     make_model(model, ps, perideal::PlanarAssumption::plane_stress);
     const double dt = model.stable_time_step(ps, rho);
@@ -92,11 +83,7 @@ namespace
     s.spacing        = dx;
     s.horizon        = 1.5 * dx;
     s.partial_volume = perideal::PartialVolume::none;
-    ps.generate(s,
-                dealii::BoundingBox<3>(
-                  std::make_pair(dealii::Point<3>(), dealii::Point<3>(2 * dx, dx, dx))),
-                [](const dealii::Point<3> &) { return true; },
-                {});
+    pd_tests::generate_box<3>(ps, s, dealii::Point<3>(), dealii::Point<3>(2 * dx, dx, dx));
     perideal::BondBased<3> model;
     make_model(model, ps, perideal::PlanarAssumption::three_dimensional);
     deallog << "oscillator: " << ps.n_global() << " particles, " << ps.n_global_bonds() << " bond"
