@@ -455,26 +455,8 @@ namespace perideal
     if (is_root)
       log << "Time step: " << dt << " s, steps: " << n_steps << std::endl;
 
-    for (ParticleVector *vec :
-         {&u, &v, &a, &internal_force, &external_force, &previous_u, &previous_load})
-      particle_system.reinit_vector(*vec, dim);
-    const auto &x = particle_system.positions();
-    for (unsigned int i = 0; i < particle_system.n_owned(); ++i)
-      for (unsigned int d = 0; d < dim; ++d)
-        {
-          u.local_element(i * dim + d) = initial_displacement->value(x[i], d);
-          v.local_element(i * dim + d) = initial_velocity->value(x[i], d);
-        }
-
-    if (is_root)
-      std::filesystem::create_directories(output_directory);
-    StatisticsFile      statistics(communicator, output_directory + "/statistics.csv");
-    ParticleOutput<dim> particle_output(communicator,
-                                        output_directory,
-                                        base_name,
-                                        write_hdf5,
-                                        write_vtu);
-    ProgressReporter    progress(communicator, log, n_steps, end_time, show_progress && is_root);
+    start_run();
+    ProgressReporter progress(communicator, log, n_steps, end_time, show_progress && is_root);
 
     VelocityVerlet::Operations operations;
     operations.acceleration = [this](const double t, ParticleVector &uu, ParticleVector &aa) {
@@ -494,8 +476,8 @@ namespace perideal
     compute_work_load(previous_load);
     local_external_work = 0.;
     initial_energy      = 0.;
-    write_statistics(0, 0., statistics, false);
-    write_particles(0, 0., particle_output);
+    write_statistics(0, 0., false);
+    write_particles(0, 0.);
 
     ParticleVector load;
     particle_system.reinit_vector(load, dim);
@@ -515,9 +497,9 @@ namespace perideal
         stepper.step(time, u, v, a);
         accumulate_external_work(load);
         if (write_stats)
-          write_statistics(step, step * dt, statistics, step * dt >= end_time * (1 - 1e-12));
+          write_statistics(step, step * dt, step * dt >= end_time * (1 - 1e-12));
         if (write_fields)
-          write_particles(step, step * dt, particle_output);
+          write_particles(step, step * dt);
         progress.update(step, step * dt);
       }
     const double seconds =
@@ -549,19 +531,15 @@ namespace perideal
                            "are free). Boundary conditions: " +
                            (condition_list.empty() ? std::string("none") : condition_list) + "."));
 
-    for (ParticleVector *vec :
-         {&u, &v, &a, &internal_force, &external_force, &previous_u, &previous_load})
-      particle_system.reinit_vector(*vec, dim);
+    start_run();
     ParticleVector target, full_load, prescribed, load;
     for (ParticleVector *vec : {&target, &full_load, &prescribed, &load})
       particle_system.reinit_vector(*vec, dim);
     const unsigned int n_owned  = particle_system.n_owned();
     const std::size_t  n_values = std::size_t(n_owned) * dim;
-    const auto        &x        = particle_system.positions();
     for (unsigned int i = 0; i < n_owned; ++i)
       for (unsigned int d = 0; d < dim; ++d)
         {
-          u.local_element(i * dim + d)          = initial_displacement->value(x[i], d);
           prescribed.local_element(i * dim + d) = boundary_conditions.is_prescribed(i, d) ? 1. : 0.;
         }
     if (solver_type == SolverType::static_linear)
@@ -587,14 +565,6 @@ namespace perideal
     boundary_conditions.prescribe_displacement(end_time, target);
     boundary_conditions.add_loads(end_time, full_load);
 
-    if (is_root)
-      std::filesystem::create_directories(output_directory);
-    StatisticsFile      statistics(communicator, output_directory + "/statistics.csv");
-    ParticleOutput<dim> particle_output(communicator,
-                                        output_directory,
-                                        base_name,
-                                        write_hdf5,
-                                        write_vtu);
 
     double     factor           = 0.;
     const auto apply_prescribed = [&](ParticleVector &uu) {
@@ -646,7 +616,7 @@ namespace perideal
     compute_work_load(previous_load);
     local_external_work = 0.;
     initial_energy      = 0.;
-    write_statistics(0, 0., statistics, false);
+    write_statistics(0, 0., false);
 
     const unsigned int max_passes = 100;
     for (unsigned int step = 1; step <= load_steps; ++step)
@@ -697,9 +667,36 @@ namespace perideal
               << iterations << " iterations"
               << (relaxation ? ", relative residual " + std::to_string(residual) : "") << std::endl;
         accumulate_external_work(load);
-        write_statistics(step, factor, statistics, step == load_steps);
+        write_statistics(step, factor, step == load_steps);
       }
-    write_particles(load_steps, 1., particle_output);
+    write_particles(load_steps, 1.);
+  }
+
+  template <int dim>
+  void
+  PDProblem<dim>::start_run()
+  {
+    for (ParticleVector *vec :
+         {&u, &v, &a, &internal_force, &external_force, &previous_u, &previous_load})
+      particle_system.reinit_vector(*vec, dim);
+    const auto &x = particle_system.positions();
+    for (unsigned int i = 0; i < particle_system.n_owned(); ++i)
+      for (unsigned int d = 0; d < dim; ++d)
+        {
+          u.local_element(i * dim + d) = initial_displacement->value(x[i], d);
+          if (solver_type == SolverType::explicit_dynamics)
+            v.local_element(i * dim + d) = initial_velocity->value(x[i], d);
+        }
+
+    if (is_root)
+      std::filesystem::create_directories(output_directory);
+    statistics =
+      std::make_unique<StatisticsFile>(communicator, output_directory + "/statistics.csv");
+    particle_output = std::make_unique<ParticleOutput<dim>>(communicator,
+                                                            output_directory,
+                                                            base_name,
+                                                            write_hdf5,
+                                                            write_vtu);
   }
 
   template <int dim>
@@ -730,13 +727,11 @@ namespace perideal
 
   template <int dim>
   void
-  PDProblem<dim>::write_statistics(const unsigned int step,
-                                   const double       time,
-                                   StatisticsFile    &file,
-                                   const bool         final_row)
+  PDProblem<dim>::write_statistics(const unsigned int step, const double time, const bool final_row)
   {
-    const auto &volume  = particle_system.volumes();
-    double      kinetic = 0., strain = 0., max_u = 0., prescribed_kinetic = 0.;
+    StatisticsFile &file    = *statistics;
+    const auto     &volume  = particle_system.volumes();
+    double          kinetic = 0., strain = 0., max_u = 0., prescribed_kinetic = 0.;
     for (unsigned int i = 0; i < particle_system.n_owned(); ++i)
       {
         double v2 = 0., u2 = 0.;
@@ -826,10 +821,9 @@ namespace perideal
 
   template <int dim>
   void
-  PDProblem<dim>::write_particles(const unsigned int   step,
-                                  const double         time,
-                                  ParticleOutput<dim> &output)
+  PDProblem<dim>::write_particles(const unsigned int step, const double time)
   {
+    ParticleOutput<dim> &output = *particle_output;
     if (!write_hdf5 && !write_vtu)
       return;
     const unsigned int      n_owned = particle_system.n_owned();

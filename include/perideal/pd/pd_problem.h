@@ -128,13 +128,16 @@ namespace perideal
     accumulate_external_work(ParticleVector &load);
     void
     compute_acceleration(const double time, ParticleVector &u, ParticleVector &a);
+    /**
+     * @brief Size the state vectors, set the initial conditions (the initial velocity only for
+     * explicit runs) and open the output: shared by every solver type.
+     */
     void
-    write_statistics(const unsigned int step,
-                     const double       time,
-                     StatisticsFile    &file,
-                     const bool         final_row);
+    start_run();
     void
-    write_particles(const unsigned int step, const double time, ParticleOutput<dim> &output);
+    write_statistics(const unsigned int step, const double time, const bool final_row);
+    void
+    write_particles(const unsigned int step, const double time);
 
     MPI_Comm      communicator;
     std::ostream &log;
@@ -167,16 +170,18 @@ namespace perideal
     typename StaticSolver<dim>::Settings static_settings;
 
     // State.
-    ParticleSystem<dim> particle_system;
-    double              critical_stretch = 0.;
-    double              dt               = 0.;
-    double              stable_dt        = 0.;
-    ParticleVector      u, v, a, internal_force, external_force;
-    std::vector<double> energy_density;
-    double              local_external_work        = 0.;
-    double              initial_energy             = 0.;
-    double              initial_prescribed_kinetic = 0.;
-    ParticleVector      previous_u, previous_load;
+    ParticleSystem<dim>                  particle_system;
+    double                               critical_stretch = 0.;
+    double                               dt               = 0.;
+    double                               stable_dt        = 0.;
+    ParticleVector                       u, v, a, internal_force, external_force;
+    std::vector<double>                  energy_density;
+    double                               local_external_work        = 0.;
+    double                               initial_energy             = 0.;
+    double                               initial_prescribed_kinetic = 0.;
+    ParticleVector                       previous_u, previous_load;
+    std::unique_ptr<StatisticsFile>      statistics;
+    std::unique_ptr<ParticleOutput<dim>> particle_output;
   };
 } // namespace perideal
 
