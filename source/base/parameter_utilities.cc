@@ -102,9 +102,41 @@ namespace perideal
       prm.parse_input(filename, "", /*skip_undefined=*/false, /*assert_mandatory=*/true);
     }
 
+    template <int dim>
+    std::unique_ptr<dealii::FunctionParser<dim>>
+    make_function(const std::string &expression, const unsigned int n, const std::string &entry)
+    {
+      const std::string variables = dim == 2 ? "x,y,t" : "x,y,z,t";
+      const auto        parts     = dealii::Utilities::split_string_list(expression, ';');
+      AssertThrow(parts.size() == n,
+                  dealii::ExcMessage("The parameter <" + entry + "> = <" + expression +
+                                     "> must hold " + std::to_string(n) +
+                                     " expression(s) separated by ';', one per component."));
+      auto function = std::make_unique<dealii::FunctionParser<dim>>(n);
+      try
+        {
+          function->initialize(variables,
+                               expression,
+                               {{"pi", dealii::numbers::PI}},
+                               /*time_dependent=*/true);
+        }
+      catch (...)
+        {
+          AssertThrow(false,
+                      dealii::ExcMessage("The parameter <" + entry + "> = <" + expression +
+                                         "> is not a valid expression of " + variables +
+                                         " (and the constant pi)."));
+        }
+      return function;
+    }
+
     template dealii::Point<2>
     parse_point<2>(const std::string &, const std::string &);
     template dealii::Point<3>
     parse_point<3>(const std::string &, const std::string &);
+    template std::unique_ptr<dealii::FunctionParser<2>>
+    make_function<2>(const std::string &, const unsigned int, const std::string &);
+    template std::unique_ptr<dealii::FunctionParser<3>>
+    make_function<3>(const std::string &, const unsigned int, const std::string &);
   } // namespace ParameterUtilities
 } // namespace perideal

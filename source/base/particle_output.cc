@@ -2,6 +2,7 @@
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/utilities.h>
 
+#include <perideal/base/hdf5_xdmf_writer.h>
 #include <perideal/base/particle_output.h>
 
 #include <filesystem>
@@ -223,51 +224,9 @@ namespace perideal
   void
   ParticleOutput<dim>::write_hdf5_xdmf(const unsigned int step, const double time)
   {
-    // deal.II 9.4 cannot write parallel HDF5 if a rank has no patches:
-    // DataOutBase::write_hdf5_parallel() asserts patches.size() > 0 in debug
-    // mode, and in release mode H5Dwrite() fails on that rank ("no output
-    // buffer") because write_filtered_data() leaves its filter empty, so the
-    // collective data set calls do not match either. We therefore let only
-    // the ranks that own particles write, on a sub-communicator, and
-    // broadcast the XDMF entry to all ranks so that the record stays complete
-    // whichever rank owns the first particle.
-    const unsigned int my_rank    = dealii::Utilities::MPI::this_mpi_process(comm);
-    const unsigned int n_ranks    = dealii::Utilities::MPI::n_mpi_processes(comm);
-    const bool         has_points = !patches.empty();
-    const unsigned int root = dealii::Utilities::MPI::min(has_points ? my_rank : n_ranks, comm);
-    if (root == n_ranks)
-      return; // no particle anywhere: there is nothing to write
-
-    MPI_Comm  writers = MPI_COMM_NULL;
-    const int ierr    = MPI_Comm_split(comm, has_points ? 0 : MPI_UNDEFINED, my_rank, &writers);
-    AssertThrowMPI(ierr);
-    // Free the sub-communicator also if writing throws.
-    const std::unique_ptr<MPI_Comm, void (*)(MPI_Comm *)> writers_guard(&writers, [](MPI_Comm *c) {
-      if (*c != MPI_COMM_NULL)
-        MPI_Comm_free(c);
-    });
-
-    // The XDMF record refers to the .h5 file relative to its own location.
-    const std::string h5_relative =
-      base_name + "_" + dealii::Utilities::int_to_string(step, 5) + ".h5";
-    dealii::XDMFEntry entry;
-    if (has_points)
-      {
-        // Do not merge coincident vertices: two particles at the same
-        // position are still two particles.
-        dealii::DataOutBase::DataOutFilter filter(
-          dealii::DataOutBase::DataOutFilterFlags(false, true));
-        this->write_filtered_data(filter);
-        this->write_hdf5_parallel(filter, hdf5_filename(step), writers);
-        entry = this->create_xdmf_entry(filter, h5_relative, time, writers);
-      }
-    xdmf_entries.push_back(dealii::Utilities::MPI::broadcast(comm, entry, root));
-
-    if (has_points)
-      {
-        // Rank 0 of the writers (= root) rewrites the record.
-        this->write_xdmf_file(xdmf_entries, xdmf_filename(), writers);
-      }
+    // Do not merge coincident vertices: two particles at the same position are still two.
+    write_hdf5_xdmf_step(
+      *this, !patches.empty(), false, comm, directory, base_name, step, time, xdmf_entries);
   }
 
 

@@ -10,42 +10,6 @@ namespace perideal
 {
   using namespace dealii;
 
-  namespace
-  {
-    std::string
-    variable_names(const unsigned int dim)
-    {
-      return dim == 2 ? "x,y,t" : "x,y,z,t";
-    }
-
-    template <int dim>
-    std::unique_ptr<FunctionParser<dim>>
-    make_function(const std::string &expression, const unsigned int n, const std::string &entry)
-    {
-      const auto parts = Utilities::split_string_list(expression, ';');
-      AssertThrow(parts.size() == n,
-                  ExcMessage("The parameter <" + entry + "> = <" + expression + "> must hold " +
-                             std::to_string(n) +
-                             " expression(s) separated by ';', one per component."));
-      auto function = std::make_unique<FunctionParser<dim>>(n);
-      try
-        {
-          function->initialize(variable_names(dim),
-                               expression,
-                               {{"pi", numbers::PI}},
-                               /*time_dependent=*/true);
-        }
-      catch (...)
-        {
-          AssertThrow(false,
-                      ExcMessage("The parameter <" + entry + "> = <" + expression +
-                                 "> is not a valid expression of " + variable_names(dim) +
-                                 " (and the constant pi)."));
-        }
-      return function;
-    }
-  } // namespace
-
   template <int dim>
   void
   BoundaryConditions<dim>::declare_names(ParameterHandler &prm)
@@ -140,14 +104,14 @@ namespace perideal
           for (const auto &comp : Utilities::split_string_list(prm.get("Components"), ','))
             c.components.push_back(comp == "x" ? 0 : comp == "y" ? 1 : 2);
         c.expression = prm.get("Function");
-        c.function   = make_function<dim>(c.expression, c.components.size(), prefix + "Function");
+        c.function   = ParameterUtilities::make_function<dim>(c.expression, c.components.size(), prefix + "Function");
         conditions.push_back(std::move(c));
         prm.leave_subsection();
       }
     prm.leave_subsection();
     prm.enter_subsection("Body force");
     const std::string expression = prm.get("Function");
-    body_force                   = make_function<dim>(expression, dim, "Body force/Function");
+    body_force                   = ParameterUtilities::make_function<dim>(expression, dim, "Body force/Function");
     has_body_force               = false;
     for (const auto &part : Utilities::split_string_list(expression, ';'))
       if (part != "0")

@@ -4,10 +4,12 @@
 #ifndef perideal_base_parameter_utilities_h
 #define perideal_base_parameter_utilities_h
 
+#include <deal.II/base/function_parser.h>
 #include <deal.II/base/parameter_handler.h>
 #include <deal.II/base/point.h>
 #include <deal.II/base/tensor.h>
 
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -70,6 +72,15 @@ namespace perideal
      */
     void
     parse_file(dealii::ParameterHandler &prm, const std::string &filename);
+
+    /**
+     * @brief A FunctionParser of @p n components from @p expression (one expression of x, y,
+     * (z) and t per component, separated by ';', the constant pi defined); throws, naming
+     * @p entry, if the number of expressions differs from @p n or one does not parse.
+     */
+    template <int dim>
+    std::unique_ptr<dealii::FunctionParser<dim>>
+    make_function(const std::string &expression, const unsigned int n, const std::string &entry);
   } // namespace ParameterUtilities
 } // namespace perideal
 
