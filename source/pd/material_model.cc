@@ -9,27 +9,6 @@
 namespace perideal
 {
   template <int dim>
-  dealii::SymmetricTensor<4, dim>
-  isotropic_elasticity_tensor(const double           youngs_modulus,
-                              const double           poisson_ratio,
-                              const PlanarAssumption planar)
-  {
-    const double mu = youngs_modulus / (2. * (1. + poisson_ratio));
-    double       lambda =
-      youngs_modulus * poisson_ratio / ((1. + poisson_ratio) * (1. - 2. * poisson_ratio));
-    if (planar == PlanarAssumption::plane_stress)
-      lambda = 2. * lambda * mu / (lambda + 2. * mu);
-    const auto identity = dealii::unit_symmetric_tensor<dim>();
-    return lambda * dealii::outer_product(identity, identity) +
-           2. * mu * dealii::identity_tensor<dim>();
-  }
-
-  template dealii::SymmetricTensor<4, 2>
-  isotropic_elasticity_tensor<2>(const double, const double, const PlanarAssumption);
-  template dealii::SymmetricTensor<4, 3>
-  isotropic_elasticity_tensor<3>(const double, const double, const PlanarAssumption);
-
-  template <int dim>
   double
   MaterialModel<dim>::stable_time_step(const ParticleSystem<dim> &particles,
                                        const double               density) const

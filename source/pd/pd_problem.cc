@@ -286,9 +286,7 @@ namespace perideal
 
     prm.enter_subsection("Material");
     {
-      planar  = (dim == 3 ? PlanarAssumption::three_dimensional :
-                 prm.get("Planar assumption") == "plane stress" ? PlanarAssumption::plane_stress :
-                                                                  PlanarAssumption::plane_strain);
+      planar  = planar_assumption_from_name(prm.get("Planar assumption"), dim);
       density = prm.get_double("Density");
       ParameterUtilities::require_positive(density, "Material/Density");
       const std::string model_name = prm.get("Model");

@@ -7,6 +7,7 @@
 #include <deal.II/base/parameter_handler.h>
 #include <deal.II/base/symmetric_tensor.h>
 
+#include <perideal/base/elasticity.h>
 #include <perideal/base/linear_algebra.h>
 #include <perideal/base/plugin_registry.h>
 #include <perideal/pd/particle_system.h>
@@ -16,26 +17,6 @@
 
 namespace perideal
 {
-  /**
-   * @brief How a 2D model represents the third direction.
-   */
-  enum class PlanarAssumption
-  {
-    plane_stress,
-    plane_strain,
-    three_dimensional
-  };
-
-  /**
-   * @brief Isotropic elasticity tensor for (E, nu) under a planar assumption (plane stress:
-   * lambda* = E nu / (1 - nu^2)).
-   */
-  template <int dim>
-  dealii::SymmetricTensor<4, dim>
-  isotropic_elasticity_tensor(const double           youngs_modulus,
-                              const double           poisson_ratio,
-                              const PlanarAssumption planar);
-
   /**
    * @brief Data every material model needs besides its own parameters.
    */
