@@ -7,6 +7,7 @@
 
 #include <perideal/base/parameter_utilities.h>
 #include <perideal/base/region.h>
+#include <perideal/fem/fe_problem.h>
 #include <perideal/pd/boundary_conditions.h>
 #include <perideal/pd/pd_problem.h>
 
@@ -20,31 +21,25 @@ namespace
   {
     std::cout
       << "Usage: perideal-solid [--validate] FILE.prm\n"
-         "       perideal-solid --print-parameters [2|3]\n"
+         "       perideal-solid --print-parameters [2|3] [pd|fe]\n"
          "  FILE.prm              run the problem described in FILE.prm\n"
          "  --validate FILE.prm   check every entry of FILE.prm and exit (0: valid)\n"
-         "  --print-parameters    print a complete annotated parameter file (with one example\n"
-         "                        region 'body' and one boundary condition 'support')\n";
+         "  --print-parameters    print a complete annotated parameter file of a particle (pd,\n"
+         "                        default) or finite-element (fe) problem, with one example\n"
+         "                        region 'body' and one boundary condition 'support'\n";
   }
 
-  template <int dim>
+  // Run (or only check) a problem of type Problem whose parameters are declared with
+  // Problem::declare_parameters(prm, names...).
+  template <typename Problem, typename... Names>
   void
-  run(const std::string &file, const bool validate_only)
+  parse_and_run(const std::string &file, const bool validate_only, const Names &...names)
   {
-    using namespace perideal;
-    dealii::ParameterHandler first_pass;
-    first_pass.declare_entry("Dimension", "2", dealii::Patterns::Integer(2, 3), "");
-    RegionCollection<dim>::declare_names(first_pass);
-    BoundaryConditions<dim>::declare_names(first_pass);
-    ParameterUtilities::parse_partially(first_pass, file);
-
     dealii::ParameterHandler prm;
-    PDProblem<dim>::declare_parameters(prm,
-                                       RegionCollection<dim>::parse_names(first_pass),
-                                       BoundaryConditions<dim>::parse_names(first_pass));
-    ParameterUtilities::parse_file(prm, file);
+    Problem::declare_parameters(prm, names...);
+    perideal::ParameterUtilities::parse_file(prm, file);
 
-    PDProblem<dim> problem(MPI_COMM_WORLD, std::cout);
+    Problem problem(MPI_COMM_WORLD, std::cout);
     problem.parse_parameters(prm);
     if (validate_only)
       {
@@ -58,10 +53,50 @@ namespace
 
   template <int dim>
   void
-  print_parameters()
+  run(const std::string &file, const bool validate_only)
+  {
+    using namespace perideal;
+    // First pass: the lists of names that decide which subsections exist, and which regions
+    // (particles, finite elements) the problem has.
+    dealii::ParameterHandler first_pass;
+    first_pass.declare_entry("Dimension", "2", dealii::Patterns::Integer(2, 3), "");
+    first_pass.enter_subsection("Discretization");
+    first_pass.declare_entry("Body", "", dealii::Patterns::Anything(), "");
+    first_pass.leave_subsection();
+    RegionCollection<dim>::declare_names(first_pass);
+    BoundaryConditions<dim>::declare_names(first_pass);
+    FESolid<dim>::declare_names(first_pass);
+    ParameterUtilities::parse_partially(first_pass, file);
+    first_pass.enter_subsection("Discretization");
+    const bool has_particles = !first_pass.get("Body").empty();
+    first_pass.leave_subsection();
+    const bool has_mesh = FESolid<dim>::is_enabled(first_pass);
+
+    if (has_mesh && !has_particles)
+      parse_and_run<FEProblem<dim>>(file, validate_only, FESolid<dim>::parse_names(first_pass));
+    else
+      {
+        AssertThrow(!has_mesh,
+                    dealii::ExcMessage(
+                      "The file defines both particles (<Discretization/Body>) and a mesh "
+                      "(<Finite elements/Mesh file> or <Finite elements/Generator>); coupled "
+                      "FE-PD problems are not available in this version. Remove one of them."));
+        parse_and_run<PDProblem<dim>>(file,
+                                      validate_only,
+                                      RegionCollection<dim>::parse_names(first_pass),
+                                      BoundaryConditions<dim>::parse_names(first_pass));
+      }
+  }
+
+  template <int dim>
+  void
+  print_parameters(const bool finite_elements)
   {
     dealii::ParameterHandler prm;
-    perideal::PDProblem<dim>::declare_parameters(prm, {"body"}, {"support"});
+    if (finite_elements)
+      perideal::FEProblem<dim>::declare_parameters(prm, {"support"});
+    else
+      perideal::PDProblem<dim>::declare_parameters(prm, {"body"}, {"support"});
     prm.print_parameters(std::cout, dealii::ParameterHandler::PRM);
   }
 } // namespace
@@ -80,10 +115,11 @@ main(int argc, char **argv)
         }
       if (args[0] == "--print-parameters")
         {
+          const bool finite_elements = (args.size() > 2 && args[2] == "fe");
           if (args.size() > 1 && args[1] == "3")
-            print_parameters<3>();
+            print_parameters<3>(finite_elements);
           else
-            print_parameters<2>();
+            print_parameters<2>(finite_elements);
           return 0;
         }
       const bool validate = (args[0] == "--validate");
