@@ -1,0 +1,193 @@
+// ---------------------------------------------------------------------
+// PeriDeal: the transfer operator from FE displacements to particle displacements.
+// ---------------------------------------------------------------------
+#include <deal.II/base/bounding_box.h>
+#include <deal.II/base/mpi.h>
+#include <deal.II/fe/mapping_q1.h>
+#include <deal.II/grid/filtered_iterator.h>
+#include <deal.II/grid/grid_tools.h>
+#include <deal.II/grid/grid_tools_cache.h>
+#include <deal.II/lac/dynamic_sparsity_pattern.h>
+#include <deal.II/lac/sparsity_tools.h>
+
+#include <perideal/base/parameter_utilities.h>
+#include <perideal/coupling/transfer_operator.h>
+
+#include <cmath>
+
+namespace perideal
+{
+  using namespace dealii;
+
+  template <int dim>
+  void
+  TransferOperator<dim>::reinit(const FESolid<dim> &fe, const ParticleSystem<dim> &particles)
+  {
+    const MPI_Comm comm         = particles.get_communicator();
+    const auto    &tria         = fe.get_triangulation();
+    const auto    &dof_handler  = fe.get_dof_handler();
+    const auto     n_owned      = particles.n_owned();
+    const auto    &x            = particles.positions();
+
+    // Each rank's first particle global index (owned particles are numbered contiguously).
+    const types::global_dof_index first_global = n_owned > 0 ? particles.global_index(0) : 0;
+    const auto offsets = Utilities::MPI::all_gather(comm, first_global);
+
+    // Locate the owned particles in the locally owned cells of all ranks (one cell each).
+    const MappingQ1<dim>         mapping;
+    const GridTools::Cache<dim>  cache(tria, mapping);
+    const auto                   local_boxes =
+      GridTools::compute_mesh_predicate_bounding_box(tria, IteratorFilters::LocallyOwnedCell());
+    const auto global_boxes = Utilities::MPI::all_gather(comm, local_boxes);
+    std::vector<Point<dim>> points(x.begin(), x.begin() + n_owned);
+    const auto              located =
+      GridTools::internal::distributed_compute_point_locations(cache,
+                                                               points,
+                                                               global_boxes,
+                                                               std::vector<bool>(),
+                                                               1e-10,
+                                                               /*perform_handshake=*/true,
+                                                               /*enforce_unique_mapping=*/true);
+
+    // Every particle must lie in the mesh (checked on all ranks together, so that all throw).
+    {
+      std::vector<bool> found(n_owned, false);
+      for (const auto &component : located.recv_components)
+        found[std::get<1>(component)] = true;
+      std::vector<Point<dim>> lost;
+      for (unsigned int i = 0; i < n_owned; ++i)
+        if (!found[i])
+          lost.push_back(x[i]);
+      const auto n_lost = Utilities::MPI::sum<types::global_dof_index>(lost.size(), comm);
+      if (n_lost > 0)
+        {
+          Point<dim> first;
+          for (const auto &points_of_rank : Utilities::MPI::all_gather(comm, lost))
+            if (!points_of_rank.empty())
+              {
+                first = points_of_rank.front();
+                break;
+              }
+          std::string where;
+          for (unsigned int d = 0; d < dim; ++d)
+            where += (d > 0 ? ", " : "") + ParameterUtilities::format_number(first[d]);
+          AssertThrow(false,
+                      ExcMessage(std::to_string(n_lost) + " particle(s), the first at (" + where +
+                                 "), lie outside the FE mesh: the PD region (<Discretization/"
+                                 "Body>, widened by the horizon where beta > 0) must lie inside "
+                                 "the mesh of <Finite elements>."));
+        }
+    }
+
+    // The rows this rank computes: for each located point in an FE-carrying cell, the shape
+    // functions of that cell.
+    const auto &fe_element = fe.get_fe_collection()[0];
+    const unsigned int n_dofs = fe_element.n_dofs_per_cell();
+    std::vector<types::global_dof_index> dofs(n_dofs);
+    struct Entry
+    {
+      types::global_dof_index row, column;
+      double                  value;
+    };
+    std::vector<Entry> entries;
+    for (const auto &component : located.send_components)
+      {
+        const auto &[level_index, rank, local, reference, real, permutation] = component;
+        (void)real;
+        (void)permutation;
+        const typename DoFHandler<dim>::active_cell_iterator cell(&tria,
+                                                                  level_index.first,
+                                                                  level_index.second,
+                                                                  &dof_handler);
+        if (cell->active_fe_index() != 0)
+          continue; // FE_Nothing: the particle is free
+        cell->get_dof_indices(dofs);
+        const types::global_dof_index particle = offsets[rank] + local;
+        for (unsigned int a = 0; a < n_dofs; ++a)
+          {
+            const double value = fe_element.shape_value(a, reference);
+            if (value != 0.)
+              entries.push_back({particle * dim + fe_element.system_to_component_index(a).first,
+                                 dofs[a],
+                                 value});
+          }
+      }
+
+    // Sparsity with the rows of other ranks, sent to their owners; then the matrix.
+    const auto  row_partitioner = particles.partitioner(dim);
+    const auto &owned_rows      = row_partitioner->locally_owned_range();
+    IndexSet    touched_rows(owned_rows.size());
+    for (const auto &e : entries)
+      touched_rows.add_index(e.row);
+    touched_rows.add_indices(owned_rows);
+    touched_rows.compress();
+    DynamicSparsityPattern dsp(owned_rows.size(), dof_handler.n_dofs(), touched_rows);
+    for (const auto &e : entries)
+      dsp.add(e.row, e.column);
+    SparsityTools::distribute_sparsity_pattern(dsp, owned_rows, comm, touched_rows);
+    P.reinit(owned_rows, dof_handler.locally_owned_dofs(), dsp, comm);
+    for (const auto &e : entries)
+      P.add(e.row, e.column, e.value);
+    P.compress(VectorOperation::add);
+
+    // Slaved rows sum to one (partition of unity, one cell per particle); empty rows are free.
+    fe.initialize_vector(fe_buffer);
+    particles.reinit_vector(particle_buffer, dim);
+    fe_buffer = 1.;
+    P.vmult(particle_buffer, fe_buffer);
+    slaved.assign(n_owned, false);
+    for (unsigned int i = 0; i < n_owned; ++i)
+      {
+        const double sum = particle_buffer.local_element(i * dim);
+        AssertThrow(sum == 0. || std::abs(sum - 1.) < 1e-10,
+                    ExcInternalError("A row of the transfer operator sums to " +
+                                     std::to_string(sum) + " instead of 0 or 1."));
+        slaved[i] = (sum != 0.);
+      }
+    n_slaved = Utilities::MPI::sum<types::global_dof_index>(
+      std::count(slaved.begin(), slaved.end(), true), comm);
+  }
+
+  template <int dim>
+  void
+  TransferOperator<dim>::interpolate(const FEVector &U, ParticleVector &u_particles) const
+  {
+    P.vmult(particle_buffer, U);
+    for (unsigned int i = 0; i < slaved.size(); ++i)
+      if (slaved[i])
+        for (unsigned int d = 0; d < dim; ++d)
+          u_particles.local_element(i * dim + d) = particle_buffer.local_element(i * dim + d);
+  }
+
+  template <int dim>
+  void
+  TransferOperator<dim>::add_transpose(const ParticleVector &f, FEVector &F) const
+  {
+    P.Tvmult(fe_buffer, f);
+    F += fe_buffer;
+  }
+
+  template <int dim>
+  bool
+  TransferOperator<dim>::is_slaved(const unsigned int i) const
+  {
+    return slaved[i];
+  }
+
+  template <int dim>
+  types::global_dof_index
+  TransferOperator<dim>::n_global_slaved() const
+  {
+    return n_slaved;
+  }
+
+  template <int dim>
+  const SparseMatrix &
+  TransferOperator<dim>::matrix() const
+  {
+    return P;
+  }
+
+  template class TransferOperator<2>;
+  template class TransferOperator<3>;
+} // namespace perideal

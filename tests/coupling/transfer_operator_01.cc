@@ -1,0 +1,232 @@
+// ---------------------------------------------------------------------
+// The transfer operator P (FE shape functions at particle positions): particles over the right
+// part of a plate whose FE weight 1 - beta vanishes for x >= 0.06 (FE_Nothing cells there).
+// Checked, in 2D (Q1, Q2) and 3D (Q1), on 1 and 2 ranks:
+// - the particles in FE-carrying cells are slaved, the others free (counted against the
+//   geometry);
+// - P U reproduces a linear displacement field exactly at the slaved particles;
+// - P^T transfers forces and moments exactly: sum_a F_a = sum_i f_i and
+//   sum_a x_a x F_a = sum_i x_i x f_i (linear completeness of the shape functions);
+// - a particle outside the mesh is refused.
+// ---------------------------------------------------------------------
+#include <deal.II/base/function.h>
+#include <deal.II/dofs/dof_tools.h>
+#include <deal.II/fe/mapping_q1.h>
+#include <deal.II/hp/mapping_collection.h>
+#include <deal.II/numerics/vector_tools.h>
+
+#include <perideal/coupling/transfer_operator.h>
+
+#include <cmath>
+#include <iostream>
+#include <sstream>
+
+using namespace dealii;
+
+namespace
+{
+  template <int dim>
+  class LinearField : public Function<dim>
+  {
+  public:
+    LinearField()
+      : Function<dim>(dim)
+    {}
+    double
+    value(const Point<dim> &x, const unsigned int c) const override
+    {
+      double v = 1e-4 * (c + 1);
+      for (unsigned int d = 0; d < dim; ++d)
+        v += 1e-3 * (1. + c + 2. * d) * x[d];
+      return v;
+    }
+  };
+
+  template <int dim>
+  std::string
+  generator_arguments()
+  {
+    return dim == 2 ? "8, 4 : 0, 0 : 0.1, 0.05 : false" :
+                      "8, 4, 2 : 0, 0, 0 : 0.1, 0.05, 0.025 : false";
+  }
+
+  template <int dim>
+  void
+  make_fe(perideal::FESolid<dim> &fe, const unsigned int degree)
+  {
+    ParameterHandler prm;
+    perideal::FESolid<dim>::declare_parameters(prm, {});
+    prm.parse_input_from_string("subsection Finite elements\n"
+                                "  set Generator = subdivided_hyper_rectangle\n"
+                                "  set Generator arguments = " +
+                                generator_arguments<dim>() +
+                                "\n"
+                                "  set Polynomial degree = " +
+                                std::to_string(degree) +
+                                "\n"
+                                "  subsection Elasticity\n"
+                                "    set Young's modulus = 1e9\n"
+                                "    set Poisson's ratio = 0.25\n"
+                                "  end\n"
+                                "end\n");
+    fe.parse_parameters(prm, perideal::PlanarAssumption::plane_stress, 1.);
+    // beta ramps from 0 at x = 0.04 to 1 at x = 0.06.
+    fe.setup([](const Point<dim> &x) {
+      return 1. - std::min(1., std::max(0., (x[0] - 0.04) / 0.02));
+    });
+  }
+
+  template <int dim>
+  void
+  run(const unsigned int degree)
+  {
+    const MPI_Comm comm = MPI_COMM_WORLD;
+    std::cout << dim << "D, FE_Q(" << degree << ")" << std::endl;
+    perideal::FESolid<dim> fe(comm);
+    make_fe(fe, degree);
+
+    perideal::ParticleSystem<dim>                    particles(comm);
+    typename perideal::ParticleSystem<dim>::Settings settings;
+    settings.spacing = 0.0025;
+    settings.horizon = 3.015 * settings.spacing;
+    Point<dim> lower, upper;
+    lower[0] = 0.03;
+    upper[0] = 0.1;
+    upper[1] = 0.05;
+    if (dim == 3)
+      upper[dim - 1] = 0.025;
+    particles.generate(
+      settings,
+      BoundingBox<dim>(std::make_pair(lower, upper)),
+      [](const Point<dim> &) { return true; },
+      {});
+
+    perideal::TransferOperator<dim> transfer;
+    transfer.reinit(fe, particles);
+
+    // Slaved: the particles in cells with x < 0.0625 (cells of width 0.0125 that the weight
+    // reaches).
+    unsigned int mismatched = 0;
+    for (unsigned int i = 0; i < particles.n_owned(); ++i)
+      mismatched += (transfer.is_slaved(i) != (particles.positions()[i][0] < 0.0625));
+    std::cout << "particles " << particles.n_global() << ", slaved " << transfer.n_global_slaved()
+              << ", slaved exactly those in FE cells: "
+              << (Utilities::MPI::sum(mismatched, comm) == 0 ? "yes" : "NO") << std::endl;
+
+    // A linear field.
+    LinearAlgebra::distributed::Vector<double> U;
+    fe.initialize_vector(U);
+    VectorTools::interpolate(fe.get_dof_handler(), LinearField<dim>(), U);
+    perideal::ParticleVector u;
+    particles.reinit_vector(u, dim);
+    transfer.interpolate(U, u);
+    double            error = 0.;
+    const LinearField<dim> field;
+    for (unsigned int i = 0; i < particles.n_owned(); ++i)
+      if (transfer.is_slaved(i))
+        for (unsigned int c = 0; c < dim; ++c)
+          error = std::max(error,
+                           std::abs(u.local_element(i * dim + c) -
+                                    field.value(particles.positions()[i], c)));
+    error = Utilities::MPI::max(error, comm);
+    std::cout << "linear field at slaved particles: max error / max value "
+              << (error / 1e-4 < 1e-11 ? "< 1e-11" : "TOO LARGE") << std::endl;
+
+    // Forces and moments.
+    perideal::ParticleVector f;
+    particles.reinit_vector(f, dim);
+    Tensor<1, dim> force_p;
+    double         moment_p = 0.;
+    for (unsigned int i = 0; i < particles.n_owned(); ++i)
+      if (transfer.is_slaved(i))
+        {
+          const auto g = particles.global_index(i);
+          for (unsigned int c = 0; c < dim; ++c)
+            f.local_element(i * dim + c) = std::sin(1. + g + 0.3 * c);
+          const Point<dim> &x = particles.positions()[i];
+          for (unsigned int c = 0; c < dim; ++c)
+            force_p[c] += f.local_element(i * dim + c);
+          moment_p += x[0] * f.local_element(i * dim + 1) - x[1] * f.local_element(i * dim);
+        }
+    LinearAlgebra::distributed::Vector<double> F;
+    fe.initialize_vector(F);
+    transfer.add_transpose(f, F);
+    std::map<types::global_dof_index, Point<dim>> support;
+    DoFTools::map_dofs_to_support_points(hp::MappingCollection<dim>(MappingQ1<dim>()),
+                                         fe.get_dof_handler(),
+                                         support);
+    Tensor<1, dim> force_fe;
+    double         moment_fe = 0.;
+    // Per dof component: use the component masks of the FE space.
+    const auto owned = fe.get_dof_handler().locally_owned_dofs();
+    for (unsigned int c = 0; c < dim; ++c)
+      {
+        std::vector<bool> mask(dim, false);
+        mask[c]                 = true;
+        const IndexSet selected = DoFTools::extract_dofs(fe.get_dof_handler(), ComponentMask(mask));
+        for (const auto dof : selected)
+          if (owned.is_element(dof))
+            {
+              const double value = F[dof];
+              force_fe[c] += value;
+              const Point<dim> &x = support.at(dof);
+              moment_fe += (c == 1 ? x[0] * value : c == 0 ? -x[1] * value : 0.);
+            }
+      }
+    force_p   = Utilities::MPI::sum(force_p, comm);
+    force_fe  = Utilities::MPI::sum(force_fe, comm);
+    moment_p  = Utilities::MPI::sum(moment_p, comm);
+    moment_fe = Utilities::MPI::sum(moment_fe, comm);
+    std::cout << "force balance |sum F - sum f| / |sum f|: "
+              << ((force_fe - force_p).norm() / force_p.norm() < 1e-12 ? "< 1e-12" : "VIOLATED")
+              << ", moment balance: "
+              << (std::abs(moment_fe - moment_p) / std::abs(moment_p) < 1e-12 ? "< 1e-12" :
+                                                                                 "VIOLATED")
+              << std::endl;
+  }
+
+  void
+  outside_mesh()
+  {
+    const MPI_Comm       comm = MPI_COMM_WORLD;
+    perideal::FESolid<2> fe(comm);
+    make_fe(fe, 1);
+    perideal::ParticleSystem<2>                    particles(comm);
+    typename perideal::ParticleSystem<2>::Settings settings;
+    settings.spacing = 0.0025;
+    settings.horizon = 3.015 * settings.spacing;
+    particles.generate(
+      settings,
+      BoundingBox<2>(std::make_pair(Point<2>(0.05, 0.), Point<2>(0.11, 0.05))),
+      [](const Point<2> &) { return true; },
+      {});
+    perideal::TransferOperator<2> transfer;
+    try
+      {
+        transfer.reinit(fe, particles);
+        std::cout << "particles outside the mesh accepted: FAILED" << std::endl;
+      }
+    catch (const ExceptionBase &exc)
+      {
+        std::ostringstream message;
+        exc.print_info(message);
+        std::string text = message.str();
+        text.erase(0, text.find("particle(s)"));
+        while (!text.empty() && (text.back() == '\n' || text.back() == ' '))
+          text.pop_back();
+        std::cout << "particles outside the mesh refused: " << text << std::endl;
+      }
+  }
+} // namespace
+
+int
+main(int argc, char **argv)
+{
+  Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
+  if (Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) != 0)
+    std::cout.setstate(std::ios::failbit);
+  run<2>(1);
+  run<2>(2);
+  run<3>(1);
+  outside_mesh();
+}
