@@ -7,6 +7,7 @@
 
 #include <perideal/base/parameter_utilities.h>
 #include <perideal/base/region.h>
+#include <perideal/coupling/coupled_problem.h>
 #include <perideal/fem/fe_problem.h>
 #include <perideal/pd/boundary_conditions.h>
 #include <perideal/pd/pd_problem.h>
@@ -72,20 +73,19 @@ namespace
     first_pass.leave_subsection();
     const bool has_mesh = FESolid<dim>::is_enabled(first_pass);
 
-    if (has_mesh && !has_particles)
+    if (has_mesh && has_particles)
+      parse_and_run<CoupledProblem<dim>>(file,
+                                         validate_only,
+                                         RegionCollection<dim>::parse_names(first_pass),
+                                         BoundaryConditions<dim>::parse_names(first_pass),
+                                         FESolid<dim>::parse_names(first_pass));
+    else if (has_mesh)
       parse_and_run<FEProblem<dim>>(file, validate_only, FESolid<dim>::parse_names(first_pass));
     else
-      {
-        AssertThrow(!has_mesh,
-                    dealii::ExcMessage(
-                      "The file defines both particles (<Discretization/Body>) and a mesh "
-                      "(<Finite elements/Mesh file> or <Finite elements/Generator>); coupled "
-                      "FE-PD problems are not available in this version. Remove one of them."));
-        parse_and_run<PDProblem<dim>>(file,
-                                      validate_only,
-                                      RegionCollection<dim>::parse_names(first_pass),
-                                      BoundaryConditions<dim>::parse_names(first_pass));
-      }
+      parse_and_run<PDProblem<dim>>(file,
+                                    validate_only,
+                                    RegionCollection<dim>::parse_names(first_pass),
+                                    BoundaryConditions<dim>::parse_names(first_pass));
   }
 
   template <int dim>

@@ -786,8 +786,9 @@ namespace perideal
 
   template <int dim>
   double
-  FESolid<dim>::stable_time_step() const
+  FESolid<dim>::stable_time_step(const Vector *mass_in) const
   {
+    const Vector &m = mass_in ? *mass_in : mass;
     // Gershgorin: lambda_max(M^-1 K) <= max_i sum_j |K_ij| / m_i.
     double bound = 0.;
     for (unsigned int k = 0; k < owned_dofs.n_elements(); ++k)
@@ -796,8 +797,8 @@ namespace perideal
         double     sum = 0.;
         for (auto it = stiffness.begin(row); it != stiffness.end(row); ++it)
           sum += std::abs(it->value());
-        if (mass.local_element(k) > 0.)
-          bound = std::max(bound, sum / mass.local_element(k));
+        if (m.local_element(k) > 0.)
+          bound = std::max(bound, sum / m.local_element(k));
       }
     bound = Utilities::MPI::max(bound, comm);
     return bound > 0. ? 2. / std::sqrt(bound) : std::numeric_limits<double>::max();

@@ -85,7 +85,8 @@ namespace perideal
       }
     bond_modulus.resize(bonds.size());
     for (std::size_t b = 0; b < bonds.size(); ++b)
-      bond_modulus[b] = c * bonds.surface_factor[b] * bonds.volume_factor[b];
+      bond_modulus[b] =
+        c * bonds.surface_factor[b] * bonds.volume_factor[b] * bonds.energy_weight[b];
   }
 
   template <int dim>

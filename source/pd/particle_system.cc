@@ -332,6 +332,7 @@ namespace perideal
     found.length.resize(n_bonds);
     found.volume_factor.resize(n_bonds);
     found.surface_factor.assign(n_bonds, 1.);
+    found.energy_weight.assign(n_bonds, 1.);
     found.intact.assign(n_bonds, 1);
     for (unsigned int i = 0; i < n_owned_particles; ++i)
       for (unsigned int b = found.row_start[i]; b < found.row_start[i + 1]; ++b)

@@ -363,16 +363,32 @@ namespace perideal
 
   template <int dim>
   void
-  PDProblem<dim>::setup()
+  PDProblem<dim>::setup(const std::function<bool(const Point<dim> &)>   &keep,
+                        const std::function<double(const Point<dim> &)> &energy_weight)
   {
+    const auto in_body = regions.union_of(body_regions, "Discretization/Body");
     particle_system.generate(discretization,
                              regions.bounding_box_of(body_regions, "Discretization/Body"),
-                             regions.union_of(body_regions, "Discretization/Body"),
+                             keep ? std::function<bool(const Point<dim> &)>(
+                                      [&](const Point<dim> &x) { return keep(x) && in_body(x); }) :
+                                    std::function<bool(const Point<dim> &)>(in_body),
                              pre_cracks,
                              regions.union_of(no_fail_regions, "Material/No-fail regions"));
     AssertThrow(particle_system.n_global() > 0,
                 ExcMessage("The body (<Discretization/Body>) holds no particle: its regions are "
                            "smaller than the lattice spacing or empty."));
+
+    if (energy_weight)
+      {
+        const auto &x = particle_system.positions();
+        std::vector<double> weight(x.size());
+        for (unsigned int i = 0; i < x.size(); ++i)
+          weight[i] = energy_weight(x[i]);
+        BondList &bonds = particle_system.bonds();
+        for (unsigned int i = 0; i < particle_system.n_owned(); ++i)
+          for (unsigned int b = bonds.row_start[i]; b < bonds.row_start[i + 1]; ++b)
+            bonds.energy_weight[b] = 0.5 * (weight[i] + weight[bonds.neighbor[b]]);
+      }
 
     ModelContext context;
     context.horizon            = discretization.horizon;

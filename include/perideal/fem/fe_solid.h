@@ -152,11 +152,13 @@ namespace perideal
     prescribed_mask() const;
 
     /**
-     * @brief The largest stable explicit time step, 2 / sqrt(lambda_max(M^-1 K)) (power
-     * iteration, raised by 5 % to be safe).
+     * @brief The largest stable explicit time step 2 / sqrt(lambda_max(M^-1 K)), with the
+     * Gershgorin bound lambda_max <= max_i sum_j |K_ij| / M_i, for the lumped mass or
+     * @p mass (e.g. with the particles' masses added in a coupled problem).
      */
     double
-    stable_time_step() const;
+    stable_time_step(
+      const dealii::LinearAlgebra::distributed::Vector<double> *mass = nullptr) const;
 
     /**
      * @brief Strain energy 1/2 u^T K u and reactions sum over the dofs of every displacement

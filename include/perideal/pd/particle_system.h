@@ -39,6 +39,10 @@ namespace perideal
     std::vector<double> volume_factor;
     /// Surface-correction factor (1 until a model computes it).
     std::vector<double> surface_factor;
+    /// Energy weight of the bond: 1, or (beta_i + beta_j) / 2 in the overlap of a blended
+    /// FE-PD coupling (set before the model is initialized; bond-based models scale the bond
+    /// modulus by it).
+    std::vector<double> energy_weight;
     /// 1 while the bond carries force, 0 once broken (pre-cracks start at 0), 2 for a bond that
     /// never breaks (it touches a no-fail region).
     std::vector<std::uint8_t> intact;

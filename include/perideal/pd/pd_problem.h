@@ -17,6 +17,7 @@
 #include <perideal/pd/particle_system.h>
 #include <perideal/pd/static_solver.h>
 
+#include <functional>
 #include <memory>
 #include <ostream>
 #include <string>
@@ -24,6 +25,9 @@
 
 namespace perideal
 {
+  template <int dim>
+  class CoupledProblem;
+
   /**
    * @brief How PDProblem::run() solves (<Solver/Type>).
    *
@@ -87,9 +91,13 @@ namespace perideal
 
     /**
      * @brief Generate the particles and bonds, initialize the model, choose the time step.
+     * Particles fill the lattice points of the body that also satisfy @p keep (if given; a
+     * coupled problem keeps only the PD region); @p energy_weight (if given) weights each
+     * bond's energy by the mean of its ends' values (BondList::energy_weight).
      */
     void
-    setup();
+    setup(const std::function<bool(const dealii::Point<dim> &)>   &keep          = {},
+          const std::function<double(const dealii::Point<dim> &)> &energy_weight = {});
 
     /**
      * @brief Integrate to the end time or solve the load steps, writing statistics and particle
@@ -109,6 +117,9 @@ namespace perideal
     time_step() const;
 
   private:
+    // A coupled problem drives the particle side through the same state and output.
+    friend class CoupledProblem<dim>;
+
     void
     run_explicit();
     void

@@ -1,0 +1,100 @@
+// ---------------------------------------------------------------------
+// PeriDeal: a problem with an FE region and particles joined through an overlap zone.
+// ---------------------------------------------------------------------
+#ifndef perideal_coupling_coupled_problem_h
+#define perideal_coupling_coupled_problem_h
+
+#include <deal.II/base/function_parser.h>
+#include <deal.II/base/parameter_handler.h>
+
+#include <perideal/base/statistics_file.h>
+#include <perideal/coupling/transfer_operator.h>
+#include <perideal/fem/fe_solid.h>
+#include <perideal/pd/pd_problem.h>
+
+#include <memory>
+#include <ostream>
+#include <string>
+#include <vector>
+
+namespace perideal
+{
+  /**
+   * @brief FE far field and PD particles solving one problem, blended in an overlap zone.
+   *
+   * The blending function beta(x) in [0, 1] (<Coupling/Blending function>: 1 where only PD
+   * acts, 0 where only FE acts) weights the energies: E = int (1 - beta) W_FE dx +
+   * sum_bonds beta_b w_b with beta_b = (beta_i + beta_j) / 2, and the masses likewise.
+   * Particles fill the body (<Discretization/Body>) where beta > 0 and within a horizon of it;
+   * FE cells where 1 - beta vanishes carry FE_Nothing. Particles inside FE-carrying cells are
+   * slaved to the FE field through the TransferOperator P (u = P U, forces back with P^T), the
+   * others are free. Explicit dynamics: velocity Verlet on (FE dofs, free particles) with the
+   * lumped FE mass plus P^T of the slaved particles' masses.
+   *
+   * Checked before any heavy work: beta in [0, 1]; the transition 0 < beta < 1 at least a
+   * horizon wide (no bond joins a particle with beta = 1 to one with beta = 0); every particle
+   * inside the mesh; PD boundary conditions only on free particles; the material model
+   * bond based (the blended energy of a state-based model is not implemented).
+   */
+  template <int dim>
+  class CoupledProblem
+  {
+  public:
+    CoupledProblem(const MPI_Comm comm, std::ostream &log);
+
+    static void
+    declare_parameters(dealii::ParameterHandler       &prm,
+                       const std::vector<std::string> &region_names,
+                       const std::vector<std::string> &condition_names,
+                       const std::vector<std::string> &fe_condition_names);
+    void
+    parse_parameters(dealii::ParameterHandler &prm);
+    void
+    setup();
+    void
+    run();
+
+    /// beta at @p x.
+    double
+    blending(const dealii::Point<dim> &x) const;
+
+  private:
+    using FEVector = dealii::LinearAlgebra::distributed::Vector<double>;
+
+    void
+    check_blending() const;
+    void
+    compute_acceleration(const double time);
+    /**
+     * @brief Print the largest unbalanced force at t = 0 relative to the FE internal-force
+     * scale: the ghost force when the initial state is one the model reproduces exactly.
+     */
+    void
+    report_initial_residual();
+    void
+    write_statistics(const unsigned int step, const double time, const bool final_row);
+    void
+    write_output(const unsigned int step, const double time);
+
+    MPI_Comm      comm;
+    std::ostream &log;
+    bool          is_root;
+
+    PDProblem<dim>                               pd;
+    FESolid<dim>                                 fe;
+    TransferOperator<dim>                        transfer;
+    std::string                                  blending_expression;
+    std::unique_ptr<dealii::FunctionParser<dim>> beta;
+
+    double              dt = 0.;
+    FEVector            U, V, A, mass, f_ext, residual, fe_load, previous_fe_load, previous_U;
+    std::vector<double> particle_volume_weight;
+    std::vector<bool>   free_particle;
+    std::vector<double> particle_mass;
+    ParticleVector      nodal_force, particle_load;
+    double              local_work = 0., initial_energy = 0., initial_prescribed_kinetic = 0.;
+    std::unique_ptr<StatisticsFile> statistics;
+  };
+} // namespace perideal
+
+#endif

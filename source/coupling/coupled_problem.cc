@@ -1,0 +1,528 @@
+// ---------------------------------------------------------------------
+// PeriDeal: a problem with an FE region and particles joined through an overlap zone.
+// ---------------------------------------------------------------------
+#include <deal.II/numerics/vector_tools.h>
+
+#include <perideal/base/parameter_utilities.h>
+#include <perideal/base/progress_reporter.h>
+#include <perideal/coupling/coupled_problem.h>
+#include <perideal/pd/damage_model.h>
+
+#include <cmath>
+#include <filesystem>
+#include <iomanip>
+
+namespace perideal
+{
+  using namespace dealii;
+
+  template <int dim>
+  CoupledProblem<dim>::CoupledProblem(const MPI_Comm comm, std::ostream &log)
+    : comm(comm)
+    , log(log)
+    , is_root(Utilities::MPI::this_mpi_process(comm) == 0)
+    , pd(comm, log)
+    , fe(comm)
+  {}
+
+  template <int dim>
+  void
+  CoupledProblem<dim>::declare_parameters(ParameterHandler               &prm,
+                                          const std::vector<std::string> &region_names,
+                                          const std::vector<std::string> &condition_names,
+                                          const std::vector<std::string> &fe_condition_names)
+  {
+    PDProblem<dim>::declare_parameters(prm, region_names, condition_names);
+    FESolid<dim>::declare_parameters(prm, fe_condition_names);
+    prm.enter_subsection("Coupling");
+    prm.declare_entry("Method",
+                      "blended",
+                      Patterns::Selection("blended"),
+                      "How the FE region and the particles are joined: 'blended' (energy "
+                      "blending in the overlap, particles there slaved to the FE field).");
+    prm.declare_entry("Blending function",
+                      "0",
+                      Patterns::Anything(),
+                      "beta(x, y, (z)) in [0, 1]: 1 where only PD acts, 0 where only FE acts, in "
+                      "between in the overlap, which must be at least a horizon wide (e.g. "
+                      "'min(1, max(0, (x - 0.04) / 0.01))').");
+    prm.leave_subsection();
+  }
+
+  template <int dim>
+  void
+  CoupledProblem<dim>::parse_parameters(ParameterHandler &prm)
+  {
+    pd.parse_parameters(prm);
+    fe.parse_parameters(prm, pd.planar, pd.discretization.thickness);
+    prm.enter_subsection("Material");
+    const std::string model = prm.get("Model");
+    prm.leave_subsection();
+    AssertThrow(model == "bond based",
+                ExcMessage("<Material/Model> = " + model +
+                           ": the blended coupling supports the model 'bond based' only (the "
+                           "blended energy of a state-based model is not implemented)."));
+    AssertThrow(pd.solver_type == SolverType::explicit_dynamics,
+                ExcMessage("<Solver/Type>: coupled FE-PD problems run with 'explicit' only in "
+                           "this version."));
+    prm.enter_subsection("Coupling");
+    blending_expression = prm.get("Blending function");
+    beta = ParameterUtilities::make_function<dim>(blending_expression,
+                                                  1,
+                                                  "Coupling/Blending function");
+    prm.leave_subsection();
+  }
+
+  template <int dim>
+  double
+  CoupledProblem<dim>::blending(const Point<dim> &x) const
+  {
+    return beta->value(x);
+  }
+
+  template <int dim>
+  void
+  CoupledProblem<dim>::check_blending() const
+  {
+    const std::string entry = "<Coupling/Blending function> = <" + blending_expression + ">";
+    // beta in [0, 1] at the particles and the FE vertices.
+    double lowest = 1., highest = 0.;
+    for (const auto &x : pd.particle_system.positions())
+      {
+        const double b = blending(x);
+        lowest         = std::min(lowest, b);
+        highest        = std::max(highest, b);
+      }
+    for (const auto &cell : fe.get_triangulation().active_cell_iterators())
+      if (cell->is_locally_owned())
+        for (const unsigned int v : cell->vertex_indices())
+          {
+            const double b = blending(cell->vertex(v));
+            lowest         = std::min(lowest, b);
+            highest        = std::max(highest, b);
+          }
+    lowest  = Utilities::MPI::min(lowest, comm);
+    highest = Utilities::MPI::max(highest, comm);
+    AssertThrow(lowest >= 0. && highest <= 1.,
+                ExcMessage(entry + " takes values in [" + ParameterUtilities::format_number(lowest) +
+                           ", " + ParameterUtilities::format_number(highest) +
+                           "]; it must lie in [0, 1] (clamp it with min(1, max(0, ...)))."));
+    // The transition must be at least a horizon wide: no bond from beta = 1 to beta = 0.
+    const auto   &x       = pd.particle_system.positions();
+    const auto   &bonds   = pd.particle_system.bonds();
+    std::uint64_t n_short = 0;
+    for (unsigned int i = 0; i < pd.particle_system.n_owned(); ++i)
+      for (unsigned int b = bonds.row_start[i]; b < bonds.row_start[i + 1]; ++b)
+        {
+          const double bi = blending(x[i]), bj = blending(x[bonds.neighbor[b]]);
+          if ((bi >= 1. && bj <= 0.) || (bi <= 0. && bj >= 1.))
+            ++n_short;
+        }
+    n_short = Utilities::MPI::sum(n_short, comm);
+    AssertThrow(n_short == 0,
+                ExcMessage(entry + ": the overlap (0 < beta < 1) is narrower than the horizon (" +
+                           ParameterUtilities::format_number(pd.discretization.horizon) +
+                           " m): " + std::to_string(n_short) +
+                           " bonds join a particle with beta = 1 to one with beta = 0. Widen the "
+                           "ramp of the blending function to at least a horizon."));
+  }
+
+  template <int dim>
+  void
+  CoupledProblem<dim>::setup()
+  {
+    const auto weight_fe = [this](const Point<dim> &x) { return 1. - blending(x); };
+    fe.setup(weight_fe);
+
+    // Particles where beta > 0 and within a horizon of such points (lattice offsets up to
+    // delta + dx cover every bond).
+    const double dx = pd.discretization.spacing, delta = pd.discretization.horizon;
+    const int    reach = static_cast<int>(std::ceil(delta / dx)) + 1;
+    std::vector<Tensor<1, dim>> offsets;
+    {
+      std::array<int, 3> k{{-reach, -reach, -reach}};
+      while (true)
+        {
+          Tensor<1, dim> offset;
+          for (unsigned int d = 0; d < dim; ++d)
+            offset[d] = k[d] * dx;
+          if (offset.norm() <= delta + dx)
+            offsets.push_back(offset);
+          unsigned int d = 0;
+          while (d < dim && ++k[d] > reach)
+            k[d++] = -reach;
+          if (d == dim)
+            break;
+        }
+    }
+    const auto in_pd_region = [this, offsets](const Point<dim> &x) {
+      for (const auto &offset : offsets)
+        if (blending(x + offset) > 0.)
+          return true;
+      return false;
+    };
+    pd.setup(in_pd_region, [this](const Point<dim> &x) { return blending(x); });
+
+    transfer.reinit(fe, pd.particle_system);
+    check_blending();
+
+    // Free particles (in FE_Nothing cells) carry their own mass; PD boundary conditions may act
+    // only on them.
+    const unsigned int n_owned = pd.particle_system.n_owned();
+    const auto        &x       = pd.particle_system.positions();
+    const auto        &volume  = pd.particle_system.volumes();
+    free_particle.assign(n_owned, false);
+    particle_mass.assign(n_owned, 0.);
+    std::uint64_t n_constrained_slaved = 0;
+    for (unsigned int i = 0; i < n_owned; ++i)
+      {
+        free_particle[i] = !transfer.is_slaved(i);
+        particle_mass[i] = blending(x[i]) * pd.density * volume[i];
+        for (unsigned int d = 0; d < dim; ++d)
+          if (!free_particle[i] && pd.boundary_conditions.is_prescribed(i, d))
+            ++n_constrained_slaved;
+      }
+    n_constrained_slaved = Utilities::MPI::sum(n_constrained_slaved, comm);
+    AssertThrow(n_constrained_slaved == 0,
+                ExcMessage("A displacement or velocity condition of <Boundary conditions> acts on " +
+                           std::to_string(n_constrained_slaved) +
+                           " particle components that follow the FE field (they lie in cells "
+                           "with FE unknowns); prescribe it there with <Finite elements/Boundary "
+                           "conditions>, or move its region into the PD-only zone (beta = 1)."));
+
+    // The FE mass: lumped (1 - beta) rho plus P^T of the slaved particles' masses.
+    fe.initialize_vector(mass);
+    mass = fe.lumped_mass();
+    pd.particle_system.reinit_vector(nodal_force, dim);
+    for (unsigned int i = 0; i < n_owned; ++i)
+      if (!free_particle[i])
+        for (unsigned int d = 0; d < dim; ++d)
+          nodal_force.local_element(i * dim + d) = particle_mass[i];
+    transfer.add_transpose(nodal_force, mass);
+    std::uint64_t n_massless = 0;
+    for (unsigned int k = 0; k < mass.locally_owned_size(); ++k)
+      n_massless += (mass.local_element(k) <= 0.);
+    n_massless = Utilities::MPI::sum(n_massless, comm);
+    AssertThrow(n_massless == 0,
+                ExcMessage(std::to_string(n_massless) +
+                           " FE dofs carry no mass: their cells have 1 - beta = 0 at the nodes and "
+                           "no particles. Check <Coupling/Blending function> against "
+                           "<Discretization/Body>."));
+
+    // The time step: the smaller of the two regions' stable steps.
+    const double fe_dt  = fe.stable_time_step(&mass);
+    const double stable = std::min(fe_dt, pd.stable_dt);
+    if (pd.requested_time_step > 0.)
+      {
+        AssertThrow(pd.requested_time_step <= stable,
+                    ExcMessage("The parameter <Time stepping/Time step> = " +
+                               ParameterUtilities::format_number(pd.requested_time_step) +
+                               " s exceeds the stable limit " +
+                               ParameterUtilities::format_number(stable) +
+                               " s of the coupled problem; use 0 (automatic) or at most that."));
+        dt = pd.requested_time_step;
+      }
+    else
+      dt = pd.safety_factor * stable;
+
+    const std::string fe_summary = fe.summary();
+    const auto        n_slaved   = transfer.n_global_slaved();
+    if (is_root)
+      log << fe_summary << "\n"
+          << "Coupling: blended, " << n_slaved << " particles slaved to the FE field, "
+          << pd.particle_system.n_global() - n_slaved << " free\n"
+          << "Stable time step: FE " << fe_dt << " s, PD " << pd.stable_dt << " s" << std::endl;
+  }
+
+  template <int dim>
+  void
+  CoupledProblem<dim>::compute_acceleration(const double time)
+  {
+    auto &ps = pd.particle_system;
+    transfer.interpolate(U, pd.u);
+    pd.u.update_ghost_values();
+    pd.material->compute_forces(
+      ps, pd.u, pd.internal_force, &pd.energy_density, pd.critical_stretch);
+    pd.external_force = 0.;
+    pd.boundary_conditions.add_loads(time, pd.external_force);
+    const auto        &volume  = ps.volumes();
+    const unsigned int n_owned = ps.n_owned();
+    for (unsigned int i = 0; i < n_owned; ++i)
+      for (unsigned int d = 0; d < dim; ++d)
+        {
+          const unsigned int k = i * dim + d;
+          nodal_force.local_element(k) =
+            (pd.internal_force.local_element(k) + pd.external_force.local_element(k)) * volume[i];
+          double load = 0., acceleration = 0.;
+          if (free_particle[i])
+            {
+              if (pd.boundary_conditions.is_prescribed(i, d))
+                load = -pd.internal_force.local_element(k) * volume[i];
+              else
+                {
+                  load         = pd.external_force.local_element(k) * volume[i];
+                  acceleration = nodal_force.local_element(k) / particle_mass[i];
+                }
+            }
+          particle_load.local_element(k) = load;
+          pd.a.local_element(k)          = acceleration;
+        }
+
+    // FE: R = f_ext - K U + P^T f; prescribed dofs do not move by it, and the work their
+    // supports do is that of K U - P^T f (the part of R they balance).
+    fe.assemble_load(time, f_ext);
+    fe.stiffness_matrix().vmult(residual, U);
+    residual.sadd(-1., 1., f_ext);
+    transfer.add_transpose(nodal_force, residual);
+    const auto &mask = fe.prescribed_mask();
+    for (unsigned int k = 0; k < U.locally_owned_size(); ++k)
+      if (mask[k])
+        {
+          fe_load.local_element(k) = f_ext.local_element(k) - residual.local_element(k);
+          A.local_element(k)       = 0.;
+        }
+      else
+        {
+          fe_load.local_element(k) = f_ext.local_element(k);
+          A.local_element(k)       = residual.local_element(k) / mass.local_element(k);
+        }
+  }
+
+  template <int dim>
+  void
+  CoupledProblem<dim>::run()
+  {
+    const unsigned int n_steps =
+      std::max<unsigned int>(1, static_cast<unsigned int>(std::ceil(pd.end_time / dt - 1e-6)));
+    dt = pd.end_time / n_steps;
+    if (is_root)
+      log << "Time step: " << dt << " s, steps: " << n_steps << std::endl;
+
+    // State and initial conditions (the same functions for both regions).
+    auto &ps = pd.particle_system;
+    for (ParticleVector *vec :
+         {&pd.u, &pd.v, &pd.a, &pd.internal_force, &pd.external_force, &pd.previous_u,
+          &particle_load, &pd.previous_load})
+      ps.reinit_vector(*vec, dim);
+    for (FEVector *vec : {&U, &V, &A, &f_ext, &residual, &fe_load, &previous_fe_load, &previous_U})
+      fe.initialize_vector(*vec);
+    const auto &x = ps.positions();
+    for (unsigned int i = 0; i < ps.n_owned(); ++i)
+      for (unsigned int d = 0; d < dim; ++d)
+        {
+          pd.u.local_element(i * dim + d) = pd.initial_displacement->value(x[i], d);
+          pd.v.local_element(i * dim + d) = pd.initial_velocity->value(x[i], d);
+        }
+    VectorTools::interpolate(fe.get_dof_handler(), *pd.initial_displacement, U);
+    VectorTools::interpolate(fe.get_dof_handler(), *pd.initial_velocity, V);
+    pd.energy_density.assign(ps.n_owned(), 0.);
+
+    if (is_root)
+      std::filesystem::create_directories(pd.output_directory);
+    statistics =
+      std::make_unique<StatisticsFile>(comm, pd.output_directory + "/statistics.csv");
+    pd.particle_output = std::make_unique<ParticleOutput<dim>>(
+      comm, pd.output_directory, pd.base_name, pd.write_hdf5, pd.write_vtu);
+
+    fe.prescribe(0., U, V);
+    pd.boundary_conditions.prescribe_displacement(0., pd.u);
+    compute_acceleration(0.);
+    report_initial_residual();
+    local_work = 0.;
+    write_statistics(0, 0., false);
+    write_output(0, 0.);
+
+    ProgressReporter   progress(comm, log, n_steps, pd.end_time, pd.show_progress && is_root);
+    const unsigned int n_owned = ps.n_owned();
+    unsigned int       output_step = 1;
+    for (unsigned int step = 1; step <= n_steps; ++step)
+      {
+        const double time = (step - 1) * dt;
+        previous_U        = U;
+        pd.previous_u     = pd.u;
+        previous_fe_load  = fe_load;
+        pd.previous_load  = particle_load;
+
+        // Half step of the velocities, prescribed velocities over the step, positions.
+        V.add(0.5 * dt, A);
+        pd.v.add(0.5 * dt, pd.a);
+        fe.prescribe(time + 0.5 * dt, U, V);
+        pd.boundary_conditions.prescribe_step_velocity(time, dt, pd.v);
+        U.add(dt, V);
+        for (unsigned int i = 0; i < n_owned; ++i)
+          if (free_particle[i])
+            for (unsigned int d = 0; d < dim; ++d)
+              pd.u.local_element(i * dim + d) += dt * pd.v.local_element(i * dim + d);
+        fe.prescribe(time + dt, U, V);
+        pd.boundary_conditions.prescribe_displacement(time + dt, pd.u);
+        U.update_ghost_values();
+
+        compute_acceleration(time + dt);
+        V.add(0.5 * dt, A);
+        pd.v.add(0.5 * dt, pd.a);
+        fe.prescribe(time + dt, U, V);
+
+        // Work of the loads over the step (trapezoidal rule).
+        for (unsigned int k = 0; k < U.locally_owned_size(); ++k)
+          local_work += 0.5 * (previous_fe_load.local_element(k) + fe_load.local_element(k)) *
+                        (U.local_element(k) - previous_U.local_element(k));
+        for (unsigned int k = 0; k < n_owned * dim; ++k)
+          local_work += 0.5 * (pd.previous_load.local_element(k) + particle_load.local_element(k)) *
+                        (pd.u.local_element(k) - pd.previous_u.local_element(k));
+
+        const double now = step * dt;
+        if (step % pd.statistics_interval == 0 || step == n_steps)
+          write_statistics(step, now, step == n_steps);
+        if (step == n_steps || (pd.particle_interval > 0 && step % pd.particle_interval == 0))
+          write_output(output_step++, now);
+        progress.update(step, now);
+      }
+  }
+
+  template <int dim>
+  void
+  CoupledProblem<dim>::report_initial_residual()
+  {
+    // The largest force that is not balanced at t = 0, over the free FE dofs and the free
+    // particle components, against the internal-force scale max_i sum_j |K_ij U_j| of the FE
+    // rows (the nodal force without the cancellation between neighbours). For a deformation the
+    // coupled model reproduces exactly (rigid motion; uniform strain away from free surfaces)
+    // the residual is the ghost force of the coupling.
+    const auto &mask     = fe.prescribed_mask();
+    double      residual_max = 0., scale = 0.;
+    U.update_ghost_values();
+    const auto &K     = fe.stiffness_matrix();
+    const auto  owned = fe.get_dof_handler().locally_owned_dofs();
+    for (unsigned int k = 0; k < U.locally_owned_size(); ++k)
+      {
+        if (!mask[k])
+          residual_max = std::max(residual_max, std::abs(residual.local_element(k)));
+        const auto row = owned.nth_index_in_set(k);
+        double     sum = 0.;
+        for (auto it = K.begin(row); it != K.end(row); ++it)
+          sum += std::abs(it->value() * U(it->column()));
+        scale = std::max(scale, sum);
+      }
+    const auto &ps = pd.particle_system;
+    for (unsigned int i = 0; i < ps.n_owned(); ++i)
+      for (unsigned int d = 0; d < dim; ++d)
+        if (free_particle[i] && !pd.boundary_conditions.is_prescribed(i, d))
+          residual_max = std::max(residual_max, std::abs(nodal_force.local_element(i * dim + d)));
+    residual_max = Utilities::MPI::max(residual_max, comm);
+    scale        = Utilities::MPI::max(scale, comm);
+    if (is_root)
+      log << "Force residual at t = 0: " << residual_max << " N (largest unbalanced nodal force "
+          << "at free dofs and particles), relative to the FE internal-force scale: "
+          << (scale > 0. ? residual_max / scale : 0.) << std::endl;
+  }
+
+  template <int dim>
+  void
+  CoupledProblem<dim>::write_statistics(const unsigned int step,
+                                        const double       time,
+                                        const bool         final_row)
+  {
+    const auto &ps      = pd.particle_system;
+    const auto &volume  = ps.volumes();
+    const auto &mask    = fe.prescribed_mask();
+    double      kinetic = 0., prescribed_kinetic = 0., strain = 0., max_u = 0.;
+    for (unsigned int k = 0; k < V.locally_owned_size(); ++k)
+      {
+        const double e = 0.5 * mass.local_element(k) * V.local_element(k) * V.local_element(k);
+        kinetic += e;
+        if (mask[k])
+          prescribed_kinetic += e;
+      }
+    for (unsigned int i = 0; i < ps.n_owned(); ++i)
+      {
+        double u2 = 0.;
+        for (unsigned int d = 0; d < dim; ++d)
+          {
+            const double vv = pd.v.local_element(i * dim + d);
+            if (free_particle[i])
+              {
+                kinetic += 0.5 * particle_mass[i] * vv * vv;
+                if (pd.boundary_conditions.is_prescribed(i, d))
+                  prescribed_kinetic += 0.5 * particle_mass[i] * vv * vv;
+              }
+            u2 += std::pow(pd.u.local_element(i * dim + d), 2);
+          }
+        strain += pd.energy_density[i] * volume[i];
+        max_u = std::max(max_u, std::sqrt(u2));
+      }
+    kinetic            = Utilities::MPI::sum(kinetic, comm);
+    prescribed_kinetic = Utilities::MPI::sum(prescribed_kinetic, comm);
+    strain             = Utilities::MPI::sum(strain, comm) + fe.strain_energy(U);
+    max_u              = Utilities::MPI::max(max_u, comm);
+    const double work_sum = Utilities::MPI::sum(local_work, comm);
+    if (step == 0)
+      {
+        initial_energy             = kinetic + strain;
+        initial_prescribed_kinetic = prescribed_kinetic;
+      }
+    const double work         = work_sum + prescribed_kinetic - initial_prescribed_kinetic;
+    const double energy_error = kinetic + strain - work - initial_energy;
+    const auto   broken       = n_broken_bonds(ps);
+    AssertThrow(std::isfinite(kinetic) && std::isfinite(strain),
+                ExcMessage("The coupled run became unstable at step " + std::to_string(step) +
+                           ": non-finite energy. Reduce <Time stepping/Safety factor>."));
+
+    // Reactions: FE supports (the part of the residual they balance) and PD conditions.
+    FEVector support;
+    fe.initialize_vector(support);
+    support = residual;
+    support *= -1.;
+    const auto fe_reactions = fe.reactions(support);
+    const auto pd_reactions = pd.boundary_conditions.reactions(pd.internal_force);
+
+    StatisticsFile &file = *statistics;
+    file.add_value("step", step);
+    file.add_value("time", time);
+    file.add_value("kinetic_energy", kinetic);
+    file.add_value("strain_energy", strain);
+    file.add_value("external_work", work);
+    file.add_value("energy_error", energy_error);
+    file.add_value("broken_bonds", broken);
+    file.add_value("max_particle_displacement", max_u);
+    const char axis[3] = {'x', 'y', 'z'};
+    for (unsigned int k = 0; k < pd_reactions.size(); ++k)
+      for (unsigned int d = 0; d < dim; ++d)
+        file.add_value("reaction_" + pd.boundary_conditions.names()[k] + "_" + axis[d],
+                       pd_reactions[k][d]);
+    for (unsigned int k = 0; k < fe_reactions.size(); ++k)
+      if (fe.conditions()[k].type != FESolid<dim>::ConditionType::traction)
+        for (unsigned int d = 0; d < dim; ++d)
+          file.add_value("reaction_" + fe.conditions()[k].name + "_" + axis[d],
+                         fe_reactions[k][d]);
+    file.end_row();
+
+    if (is_root && final_row)
+      {
+        const auto flags = log.flags();
+        log << std::scientific << std::setprecision(6) << "Final time: " << time << " s\n"
+            << "Kinetic energy: " << kinetic << " J\n"
+            << "Strain energy: " << strain << " J\n"
+            << "External work: " << work << " J\n"
+            << "Energy error: " << energy_error << " J\n"
+            << "Broken bonds: " << broken << "\n"
+            << "Max particle displacement: " << max_u << " m" << std::endl;
+        log.flags(flags);
+      }
+  }
+
+  template <int dim>
+  void
+  CoupledProblem<dim>::write_output(const unsigned int step, const double time)
+  {
+    // The slaved particles move with the FE field: show their velocity too.
+    transfer.interpolate(V, pd.v);
+    pd.v.update_ghost_values();
+    pd.write_particles(step, time);
+    U.update_ghost_values();
+    if (pd.write_hdf5)
+      fe.write_output(pd.output_directory, "solution", step, time, U);
+  }
+
+  template class CoupledProblem<2>;
+  template class CoupledProblem<3>;
+} // namespace perideal
