@@ -1,0 +1,175 @@
+// ---------------------------------------------------------------------
+// Bad input of a coupled problem: a valid file is accepted; each bad case stops with a message
+// naming the entry, before the time stepping starts: a blending function outside [0, 1], an overlap narrower than the
+// horizon, particles outside the mesh, a PD condition on particles that follow the FE field,
+// two FE conditions on the same component of a boundary, a state-based model, an implicit
+// solver.
+// ---------------------------------------------------------------------
+#include <deal.II/base/parameter_handler.h>
+
+#include <perideal/base/parameter_utilities.h>
+#include <perideal/base/region.h>
+#include <perideal/coupling/coupled_problem.h>
+
+#include <fstream>
+#include <iostream>
+#include <map>
+#include <sstream>
+
+using namespace dealii;
+
+namespace
+{
+  const std::string base = R"(
+set Dimension = 2
+subsection Discretization
+  set Lattice spacing = 1e-3
+  set Horizon factor  = 3.015
+  set Thickness       = 1e-3
+  set Body            = plate
+end
+subsection Regions
+  set Names = plate, corner
+  subsection plate
+    set Shape        = box
+    set Lower corner = 0, 0
+    set Upper corner = PLATE_X, 0.05
+  end
+  subsection corner
+    set Shape        = box
+    set Lower corner = 0, 0
+    set Upper corner = 0.005, 0.005
+  end
+end
+subsection Material
+  set Model   = MODEL
+  set Density = 7800
+  subsection bond based
+    set Young's modulus = 200e9
+  end
+  subsection linear peridynamic solid
+    set Young's modulus = 200e9
+    set Poisson's ratio = 0.3
+  end
+end
+subsection Boundary conditions
+  set Names = PD_CONDITIONS
+PD_BLOCK
+end
+subsection Finite elements
+  set Generator           = subdivided_hyper_rectangle
+  set Generator arguments = 20, 10 : 0, 0 : 0.1, 0.05 : true
+  set Density             = 7800
+  subsection Elasticity
+    set Young's modulus = 200e9
+    set Poisson's ratio = 0.3333333333333333
+  end
+  subsection Boundary conditions
+    set Names = FE_CONDITIONS
+    subsection left
+      set Boundary ids = 0
+    end
+FE_BLOCK
+  end
+end
+subsection Coupling
+  set Blending function = BETA
+end
+subsection Solver
+  set Type = SOLVER
+end
+subsection Time stepping
+  set End time = 1e-7
+end
+subsection Output
+  set Directory  = results
+  set Write HDF5 = false
+  set Progress   = false
+end
+)";
+
+  std::string
+  replace(std::string text, const std::string &key, const std::string &value)
+  {
+    for (auto p = text.find(key); p != std::string::npos; p = text.find(key, p + value.size()))
+      text.replace(p, key.size(), value);
+    return text;
+  }
+
+  void
+  run_case(const std::string                                        &name,
+           const std::vector<std::pair<std::string, std::string>> &changes)
+  {
+    std::map<std::string, std::string> values = {{"PLATE_X", "0.1"},
+                                                 {"MODEL", "bond based"},
+                                                 {"PD_CONDITIONS", ""},
+                                                 {"PD_BLOCK", ""},
+                                                 {"FE_CONDITIONS", "left"},
+                                                 {"FE_BLOCK", ""},
+                                                 {"BETA", "min(1, max(0, (x - 0.04) / 0.01))"},
+                                                 {"SOLVER", "explicit"}};
+    for (const auto &[key, value] : changes)
+      values[key] = value;
+    std::string text = base;
+    for (const auto &[key, value] : values)
+      text = replace(text, key, value);
+    const std::string file = "bad_input.prm";
+    if (Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0)
+      std::ofstream(file) << text;
+    MPI_Barrier(MPI_COMM_WORLD);
+    try
+      {
+        ParameterHandler first;
+        first.declare_entry("Dimension", "2", Patterns::Integer(2, 3), "");
+        perideal::RegionCollection<2>::declare_names(first);
+        perideal::BoundaryConditions<2>::declare_names(first);
+        perideal::FESolid<2>::declare_names(first);
+        perideal::ParameterUtilities::parse_partially(first, file);
+        ParameterHandler prm;
+        perideal::CoupledProblem<2>::declare_parameters(
+          prm,
+          perideal::RegionCollection<2>::parse_names(first),
+          perideal::BoundaryConditions<2>::parse_names(first),
+          perideal::FESolid<2>::parse_names(first));
+        perideal::ParameterUtilities::parse_file(prm, file);
+        std::ostringstream               log;
+        perideal::CoupledProblem<2> problem(MPI_COMM_WORLD, log);
+        problem.parse_parameters(prm);
+        problem.setup();
+        std::cout << name << ": accepted" << std::endl;
+      }
+    catch (const ExceptionBase &exc)
+      {
+        std::ostringstream message;
+        exc.print_info(message);
+        std::string text = message.str();
+        text.erase(0, text.find_first_not_of(" \n"));
+        while (!text.empty() && (text.back() == '\n' || text.back() == ' '))
+          text.pop_back();
+        std::cout << name << ": " << text << std::endl;
+      }
+  }
+} // namespace
+
+int
+main(int argc, char **argv)
+{
+  Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
+  if (Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) != 0)
+    std::cout.setstate(std::ios::failbit);
+  run_case("valid input", {{"BETA", "min(1, max(0, (x - 0.04) / 0.01))"}});
+  run_case("beta above 1", {{"BETA", "(x - 0.04) / 0.01"}});
+  run_case("overlap narrower than the horizon", {{"BETA", "min(1, max(0, (x - 0.04) / 0.002))"}});
+  run_case("particles outside the mesh", {{"PLATE_X", "0.12"}});
+  run_case("PD condition on slaved particles",
+           {{"PD_CONDITIONS", "hold"},
+            {"PD_BLOCK", "  subsection hold\n    set Region = corner\n  end"},
+            {"BETA", "min(1, max(0, (x - 0.003) / 0.01))"}});
+  run_case("FE conditions on the same component",
+           {{"FE_CONDITIONS", "left, left again"},
+            {"FE_BLOCK",
+             "    subsection left again\n      set Boundary ids = 0\n      set Components = y\n"
+             "    end"}});
+  run_case("state-based model", {{"MODEL", "linear peridynamic solid"}});
+  run_case("implicit solver", {{"SOLVER", "static"}});
+}
