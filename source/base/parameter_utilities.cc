@@ -107,7 +107,12 @@ namespace perideal
     make_function(const std::string &expression, const unsigned int n, const std::string &entry)
     {
       const std::string variables = dim == 2 ? "x,y,t" : "x,y,z,t";
-      const auto        parts     = dealii::Utilities::split_string_list(expression, ';');
+      // A single "0" is zero for every component.
+      std::string text = expression;
+      if (dealii::Utilities::trim(expression) == "0")
+        for (unsigned int k = 1; k < n; ++k)
+          text += "; 0";
+      const auto parts = dealii::Utilities::split_string_list(text, ';');
       AssertThrow(parts.size() == n,
                   dealii::ExcMessage("The parameter <" + entry + "> = <" + expression +
                                      "> must hold " + std::to_string(n) +
@@ -116,7 +121,7 @@ namespace perideal
       try
         {
           function->initialize(variables,
-                               expression,
+                               text,
                                {{"pi", dealii::numbers::PI}},
                                /*time_dependent=*/true);
         }

@@ -8,8 +8,10 @@
 #include <perideal/coupling/coupled_problem.h>
 #include <perideal/pd/damage_model.h>
 
+#include <chrono>
 #include <cmath>
 #include <filesystem>
+#include <map>
 #include <iomanip>
 
 namespace perideal
@@ -155,9 +157,21 @@ namespace perideal
             break;
         }
     }
-    const auto in_pd_region = [this, offsets](const Point<dim> &x) {
+    // beta is evaluated once per lattice point (the offsets are lattice vectors, so x + offset
+    // is a lattice point too).
+    std::map<std::array<long, dim>, double> beta_at;
+    const auto lattice_beta = [&](const Point<dim> &y) {
+      std::array<long, dim> key;
+      for (unsigned int d = 0; d < dim; ++d)
+        key[d] = std::lround(y[d] / dx * 2.);
+      const auto found = beta_at.find(key);
+      if (found != beta_at.end())
+        return found->second;
+      return beta_at[key] = blending(y);
+    };
+    const auto in_pd_region = [&](const Point<dim> &x) {
       for (const auto &offset : offsets)
-        if (blending(x + offset) > 0.)
+        if (lattice_beta(x + offset) > 0.)
           return true;
       return false;
     };
@@ -236,13 +250,16 @@ namespace perideal
 
   template <int dim>
   void
-  CoupledProblem<dim>::compute_acceleration(const double time)
+  CoupledProblem<dim>::compute_acceleration(const double time, const bool with_energy)
   {
     auto &ps = pd.particle_system;
     transfer.interpolate(U, pd.u);
     pd.u.update_ghost_values();
-    pd.material->compute_forces(
-      ps, pd.u, pd.internal_force, &pd.energy_density, pd.critical_stretch);
+    pd.material->compute_forces(ps,
+                                pd.u,
+                                pd.internal_force,
+                                with_energy ? &pd.energy_density : nullptr,
+                                pd.critical_stretch);
     pd.external_force = 0.;
     pd.boundary_conditions.add_loads(time, pd.external_force);
     const auto        &volume  = ps.volumes();
@@ -326,7 +343,7 @@ namespace perideal
 
     fe.prescribe(0., U, V);
     pd.boundary_conditions.prescribe_displacement(0., pd.u);
-    compute_acceleration(0.);
+    compute_acceleration(0., true);
     report_initial_residual();
     local_work = 0.;
     write_statistics(0, 0., false);
@@ -335,6 +352,7 @@ namespace perideal
     ProgressReporter   progress(comm, log, n_steps, pd.end_time, pd.show_progress && is_root);
     const unsigned int n_owned = ps.n_owned();
     unsigned int       output_step = 1;
+    const auto         start       = std::chrono::steady_clock::now();
     for (unsigned int step = 1; step <= n_steps; ++step)
       {
         const double time = (step - 1) * dt;
@@ -357,7 +375,10 @@ namespace perideal
         pd.boundary_conditions.prescribe_displacement(time + dt, pd.u);
         U.update_ghost_values();
 
-        compute_acceleration(time + dt);
+        const bool write_stats = (step % pd.statistics_interval == 0 || step == n_steps);
+        const bool write_fields =
+          (step == n_steps || (pd.particle_interval > 0 && step % pd.particle_interval == 0));
+        compute_acceleration(time + dt, write_stats || write_fields);
         V.add(0.5 * dt, A);
         pd.v.add(0.5 * dt, pd.a);
         fe.prescribe(time + dt, U, V);
@@ -371,12 +392,16 @@ namespace perideal
                         (pd.u.local_element(k) - pd.previous_u.local_element(k));
 
         const double now = step * dt;
-        if (step % pd.statistics_interval == 0 || step == n_steps)
+        if (write_stats)
           write_statistics(step, now, step == n_steps);
-        if (step == n_steps || (pd.particle_interval > 0 && step % pd.particle_interval == 0))
+        if (write_fields)
           write_output(output_step++, now);
         progress.update(step, now);
       }
+    const double seconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    if (is_root && pd.show_progress)
+      log << "Wall time of the time loop: " << seconds << " s" << std::endl;
   }
 
   template <int dim>

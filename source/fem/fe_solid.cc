@@ -293,9 +293,13 @@ namespace perideal
     prm.leave_subsection();
     C = material.tensor<dim>(planar);
     prm.enter_subsection("Body force");
-    body_force = ParameterUtilities::make_function<dim>(prm.get("Function"),
+    const std::string body_force_expression = prm.get("Function");
+    body_force = ParameterUtilities::make_function<dim>(body_force_expression,
                                                         dim,
                                                         section + "/Body force/Function");
+    has_body_force = false;
+    for (const auto &part : Utilities::split_string_list(body_force_expression, ';'))
+      has_body_force = has_body_force || (part != "0");
     prm.leave_subsection();
 
     condition_list.clear();
@@ -368,7 +372,8 @@ namespace perideal
   FESolid<dim>::set_body_force(const std::shared_ptr<Function<dim>> &function)
   {
     AssertDimension(function->n_components, dim);
-    body_force = function;
+    body_force     = function;
+    has_body_force = true;
   }
 
   template <int dim>
@@ -559,6 +564,8 @@ namespace perideal
     dealii::Vector<double> value(dim);
     for (const unsigned int q : fe_values.quadrature_point_indices())
       {
+        if (!has_body_force)
+          break;
         const Point<dim> &x = fe_values.quadrature_point(q);
         const double      w = weight(x) * thickness * fe_values.JxW(q);
         if (w == 0.)
@@ -637,6 +644,15 @@ namespace perideal
   void
   FESolid<dim>::assemble_load(const double time, Vector &f) const
   {
+    const bool has_traction =
+      std::any_of(condition_list.begin(), condition_list.end(), [](const Condition &c) {
+        return c.type == ConditionType::traction;
+      });
+    if (!has_body_force && !has_traction)
+      {
+        f = 0.;
+        return;
+      }
     const auto   &fe = fe_collection[0];
     FEValues<dim> fe_values(fe,
                             QGauss<dim>(degree + 1),

@@ -75,7 +75,8 @@ namespace perideal
 
     /**
      * @brief A FunctionParser of @p n components from @p expression (one expression of x, y,
-     * (z) and t per component, separated by ';', the constant pi defined); throws, naming
+     * (z) and t per component, separated by ';', the constant pi defined; a single "0" is zero
+     * for every component); throws, naming
      * @p entry, if the number of expressions differs from @p n or one does not parse.
      */
     template <int dim>

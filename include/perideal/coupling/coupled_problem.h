@@ -63,8 +63,12 @@ namespace perideal
 
     void
     check_blending() const;
+    /**
+     * @brief Forces and accelerations of both regions at @p time (P U into the slaved
+     * particles first); the particles' energy density only if @p with_energy.
+     */
     void
-    compute_acceleration(const double time);
+    compute_acceleration(const double time, const bool with_energy);
     /**
      * @brief Print the largest unbalanced force at t = 0 relative to the FE internal-force
      * scale: the ghost force when the initial state is one the model reproduces exactly.

@@ -250,6 +250,7 @@ namespace perideal
     dealii::SymmetricTensor<4, dim>        C;
     std::vector<Condition>                 condition_list;
     std::shared_ptr<dealii::Function<dim>> body_force;
+    bool                                   has_body_force   = false;
     double                                 solver_tolerance = 1e-10;
     std::vector<std::pair<dealii::types::boundary_id, dealii::Point<2>>> circular_boundaries;
 
