@@ -145,6 +145,9 @@ def measure_crack(nodes, new_damage, tip, dx, threshold, sign=+1.0):
         length=length,
         tip=(tip[0] + pts[end][0], tip[1] + sign * pts[end][1]),
         path=np.column_stack((tip[0] + p[:, 0], tip[1] + sign * p[:, 1])),
+        fit=np.array([[tip[0], tip[1]],
+                      [tip[0] + direction[0] * (direction @ pts[end]),
+                       tip[1] + sign * direction[1] * (direction @ pts[end])]]),
     )
 
 
@@ -178,18 +181,26 @@ def plot_energies(stats, out):
 def plot_damage(nodes, damage, disp, time, cracks, out):
     fig, ax = plt.subplots(figsize=(5.2, 8.5))
     dx = lattice_spacing(nodes)
-    s = ax.scatter(nodes[:, 0] * 1e3, nodes[:, 1] * 1e3, c=damage, s=(72.0 * dx * 1e3 * 0.9 * 5.2 / 120.0) ** 2 * 4,
-                   marker="s", cmap="viridis", vmin=0.0, vmax=1.0, linewidths=0)
+    # The particles sit on a lattice: draw the damage as an image, one pixel per particle (blank
+    # where there is none, e.g. in the finite-element part of a coupled variant).
+    lo = nodes.min(axis=0)
+    ij = np.round((nodes - lo) / dx).astype(int)
+    image = np.full(ij.max(axis=0) + 1, np.nan)
+    image[ij[:, 0], ij[:, 1]] = damage
+    extent = [(lo[0] - dx / 2) * 1e3, (lo[0] + (image.shape[0] - 0.5) * dx) * 1e3,
+              (lo[1] - dx / 2) * 1e3, (lo[1] + (image.shape[1] - 0.5) * dx) * 1e3]
+    s = ax.imshow(image.T, origin="lower", extent=extent, cmap="viridis", vmin=0.0, vmax=1.0,
+                  interpolation="nearest")
     for crack in cracks:
         if crack is None:
             continue
-        tip0 = crack["path"][-1]
-        ax.plot(crack["path"][:, 0] * 1e3, crack["path"][:, 1] * 1e3, "r.", ms=1.5)
-        ax.plot([tip0[0] * 1e3, crack["tip"][0] * 1e3], [tip0[1] * 1e3, crack["tip"][1] * 1e3], "r-", lw=0.8)
+        ax.plot(crack["path"][:, 0] * 1e3, crack["path"][:, 1] * 1e3, "r-", lw=0.6, alpha=0.7)
+        ax.plot(crack["fit"][:, 0] * 1e3, crack["fit"][:, 1] * 1e3, "w--", lw=0.8)
     ax.set_aspect("equal")
     ax.set_xlabel("x [mm] (impact direction)")
     ax.set_ylabel("y [mm]")
-    ax.set_title("damage at t = %.1f us (reference configuration)" % (time * 1e6), fontsize=9)
+    ax.set_title("damage at t = %.1f us (reference configuration)\nred: crack path, white dashed: "
+                 "fitted line (crack angle)" % (time * 1e6), fontsize=8)
     fig.colorbar(s, ax=ax, shrink=0.6, label="damage index")
     fig.tight_layout()
     fig.savefig(out, dpi=150)
@@ -264,10 +275,15 @@ def main():
     initiated = [h[0] for h in history if h[1] is not None]
     if initiated:
         print("first output time with a grown upper crack: %.3g us" % (initiated[0] * 1e6))
-    if len([h for h in history if h[1] is not None]) >= 2:
-        (ta, ca), (tb, cb) = [(h[0], h[1]) for h in history if h[1] is not None][-2:]
-        print("mean upper crack-path speed over the last output interval: %.0f m/s"
-              % ((cb["length"] - ca["length"]) / (tb - ta)))
+    grown = [(h[0], h[1]["length"]) for h in history if h[1] is not None]
+    if len(grown) >= 2:
+        # Mean speed of the upper crack path from the first output with a crack to the first
+        # output at which it has its final length (it stops at the boundary or runs to the end).
+        t0, l0 = grown[0]
+        t1, l1 = next((t, l) for t, l in grown if l >= grown[-1][1] - 1e-12)
+        if t1 > t0:
+            print("mean upper crack-path speed %.3g-%.3g us: %.0f m/s"
+                  % (t0 * 1e6, t1 * 1e6, (l1 - l0) / (t1 - t0)))
     if lower is not None:
         print("lower crack: angle %.1f deg (chord %.1f deg), path length %.1f mm"
               % (lower["angle"], lower["chord"], lower["length"] * 1e3))
