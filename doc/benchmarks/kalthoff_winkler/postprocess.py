@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
 """Post-processing of the Kalthoff-Winkler benchmark (all-PD and, later, FE+PD variants).
 
-Usage: postprocess.py RESULTS_DIR [--notch-tip X,Y] [--threshold D] [--prefix NAME]
+Usage: postprocess.py RESULTS_DIR [--notch-tip X,Y] [--threshold D] [--base NAME]
 
 Reads RESULTS_DIR/particles.xdmf (the time series of particle HDF5 files written by
 perideal-solid: datasets /nodes (reference positions), /damage, /displacement, ...) and
