@@ -24,7 +24,7 @@ while [ $# -gt 0 ]; do
     --np) np=$2; shift 2 ;;
     --prm) prm=$(cd "$(dirname "$2")" && pwd)/$(basename "$2"); shift 2 ;;
     --app) app=$2; shift 2 ;;
-    -h|--help) sed -n 2,17p "$0"; exit 0 ;;
+    -h|--help) sed -n 2,15p "$0"; exit 0 ;;
     *) echo "run.sh: unknown argument <$1> (see run.sh --help)" >&2; exit 1 ;;
   esac
 done
