@@ -93,12 +93,17 @@ namespace perideal
     for (const auto &component : located.send_components)
       {
         const auto &[level_index, rank, local, reference, real, permutation] = component;
-        (void)real;
         (void)permutation;
         const typename DoFHandler<dim>::active_cell_iterator cell(&tria,
                                                                   level_index.first,
                                                                   level_index.second,
                                                                   &dof_handler);
+        AssertThrow(GeometryInfo<dim>::is_inside_unit_cell(reference, 1e-8),
+                    ExcInternalError("The point search placed a particle outside its cell (" +
+                                     std::to_string(reference[0]) + ", " +
+                                     std::to_string(reference[1]) + ") at (" +
+                                     std::to_string(real[0]) + ", " + std::to_string(real[1]) +
+                                     ")."));
         if (cell->active_fe_index() != 0)
           continue; // FE_Nothing: the particle is free
         cell->get_dof_indices(dofs);

@@ -1,30 +1,34 @@
 #!/usr/bin/env bash
 # End to end: install dependencies if missing (as root), build PeriDeal, run the Kalthoff-Winkler
 # benchmark on 2 MPI ranks, post-process (damage map, energies, crack angle) and say where the
-# results are.
+# results are. By default the flagship: the coupled FE + PD variant (kalthoff_coupled.prm) and
+# its all-PD reference with the same model and lattice (kalthoff_pd_pmb.prm), then the ratio of
+# their wall times and both crack angles.
 #
 # Usage: run.sh [--dx SPACING] [--np N] [--prm FILE] [--app NAME]
 #   --dx SPACING  lattice spacing [m] instead of the 1e-3 of the parameter file (horizon =
 #                 3.015 dx; the output intervals are scaled to keep ~25 snapshots), e.g.
 #                 --dx 5e-4 (1 min on 2 cores) or --dx 2.5e-4 (about 6 min, 322 400 particles);
 #   --np N        MPI ranks (default 2);
-#   --prm FILE    another parameter file of the same case (default kalthoff_pd.prm beside this
-#                 script; a coupled variant keeps the same output names and post-processing);
+#   --prm FILE    run only this parameter file of the case (e.g. kalthoff_pd.prm, the all-PD
+#                 state-based variant); every variant keeps the same output names and
+#                 post-processing;
 #   --app NAME    the application in the build's bin/ (default perideal-solid).
 # Environment: PERIDEAL_BUILD_DIR (default <top>/build), PERIDEAL_RESULTS_DIR (default
-# <top>/results/kalthoff_winkler[_dx<SPACING>]), PYTHON (default /usr/bin/python3).
+# <top>/results/kalthoff_winkler[_dx<SPACING>]; each variant in a subdirectory named after its
+# parameter file), PYTHON (default /usr/bin/python3).
 set -euo pipefail
 here=$(cd "$(dirname "$0")" && pwd)
 top=$(cd "$here/../../.." && pwd)
 
-dx="" np=2 prm="$here/kalthoff_pd.prm" app=perideal-solid
+dx="" np=2 prms=("$here/kalthoff_coupled.prm" "$here/kalthoff_pd_pmb.prm") app=perideal-solid
 while [ $# -gt 0 ]; do
   case "$1" in
     --dx) dx=$2; shift 2 ;;
     --np) np=$2; shift 2 ;;
-    --prm) prm=$(cd "$(dirname "$2")" && pwd)/$(basename "$2"); shift 2 ;;
+    --prm) prms=("$(cd "$(dirname "$2")" && pwd)/$(basename "$2")"); shift 2 ;;
     --app) app=$2; shift 2 ;;
-    -h|--help) sed -n 2,15p "$0"; exit 0 ;;
+    -h|--help) sed -n 2,21p "$0"; exit 0 ;;
     *) echo "run.sh: unknown argument <$1> (see run.sh --help)" >&2; exit 1 ;;
   esac
 done
@@ -48,29 +52,58 @@ fi
 "$top/contrib/build.sh"
 build=${PERIDEAL_BUILD_DIR:-$top/build}
 
-results=${PERIDEAL_RESULTS_DIR:-$top/results/kalthoff_winkler${dx:+_dx$dx}}
-mkdir -p "$results"
-cd "$results"
-if [ -n "$dx" ]; then
-  # A parameter file that includes the benchmark's and overrides the resolution.
-  scale=$("$python" -c "print(max(1, round(1e-3 / float('$dx'))))")
-  cat > kalthoff_dx.prm <<EOF
-include $prm
-subsection Discretization
-  set Lattice spacing = $dx
-end
-subsection Output
-  set Particle output interval = $((25 * scale))
-  set Statistics interval      = $((5 * scale))
-end
-EOF
-  prm=$results/kalthoff_dx.prm
-fi
+results_top=${PERIDEAL_RESULTS_DIR:-$top/results/kalthoff_winkler${dx:+_dx$dx}}
+summary=()
+for prm in "${prms[@]}"; do
+  name=$(basename "$prm" .prm)
+  results=$results_top/$name
+  mkdir -p "$results"
+  cd "$results"
+  # A parameter file that includes the benchmark's and overrides what depends on where it runs
+  # (the mesh path, relative to the source tree) and, with --dx, the resolution.
+  scale=$("$python" -c "print(max(1, round(1e-3 / float('${dx:-1e-3}'))))")
+  {
+    echo "include $prm"
+    mesh=$(sed -n 's/^ *set Mesh file *= *//p' "$prm" | head -1)
+    if [ -n "$mesh" ]; then
+      echo "subsection Finite elements"
+      echo "  set Mesh file = $top/$mesh"
+      echo "end"
+    fi
+    if [ -n "$dx" ]; then
+      echo "subsection Discretization"
+      echo "  set Lattice spacing = $dx"
+      echo "end"
+      echo "subsection Output"
+      echo "  set Particle output interval = $((25 * scale))"
+      echo "  set Statistics interval      = $((5 * scale))"
+      echo "end"
+    fi
+  } > run.prm
 
-start=$(date +%s)
-mpirun -np "$np" "$build/bin/$app" "$prm" | tee run.log
-echo "Wall time of the run: $(( $(date +%s) - start )) s (mpirun -np $np)" | tee -a run.log
-"$python" "$here/postprocess.py" "$results" | tee postprocess.log
-echo
-echo "Results in $results: statistics.csv, particles.xdmf (open in ParaView), damage_final.png,"
-echo "energies.png, crack_angle.png, crack_angle.csv, run.log, postprocess.log."
+  start=$(date +%s.%N)
+  mpirun -np "$np" "$build/bin/$app" run.prm | tee run.log
+  seconds=$("$python" -c "print(f'{$(date +%s.%N) - $start:.1f}')")
+  echo "Wall time of the run: $seconds s (mpirun -np $np)" | tee -a run.log
+  "$python" "$here/postprocess.py" "$results" | tee postprocess.log
+  angle=$(tail -1 postprocess.log | sed 's/.*: //')
+  summary+=("$name: crack angle $angle deg, wall time $seconds s")
+  echo
+  echo "Results in $results: statistics.csv, particles.xdmf (open in ParaView; coupled runs also"
+  echo "solution.xdmf, the FE field), damage_final.png, energies.png, crack_angle.png,"
+  echo "crack_angle.csv, run.log, postprocess.log."
+  echo
+done
+
+echo "Summary (experiment: about 70 deg):"
+printf '  %s\n' "${summary[@]}"
+if [ ${#prms[@]} -eq 2 ]; then
+  "$python" - "$results_top" <<'PY'
+import re, sys
+def wall(name):
+    log = open(f"{sys.argv[1]}/{name}/run.log").read()
+    return float(re.search(r"Wall time of the run: ([\d.]+)", log).group(1))
+c, p = wall("kalthoff_coupled"), wall("kalthoff_pd_pmb")
+print(f"  wall time coupled / all-PD: {c / p:.2f}")
+PY
+fi

@@ -54,7 +54,7 @@ namespace perideal
     void
     run();
 
-    /// beta at @p x.
+    /// beta at @p x (values within 1e-10 of 0 or 1 snapped to them).
     double
     blending(const dealii::Point<dim> &x) const;
 
