@@ -420,16 +420,19 @@ namespace perideal
     const auto &mask     = fe.prescribed_mask();
     double      residual_max = 0., scale = 0.;
     U.update_ghost_values();
-    const auto &K     = fe.stiffness_matrix();
-    const auto  owned = fe.get_dof_handler().locally_owned_dofs();
+    const auto &K = fe.stiffness_matrix().trilinos_matrix();
     for (unsigned int k = 0; k < U.locally_owned_size(); ++k)
+      if (!mask[k])
+        residual_max = std::max(residual_max, std::abs(residual.local_element(k)));
+    for (int row = 0; row < K.NumMyRows(); ++row)
       {
-        if (!mask[k])
-          residual_max = std::max(residual_max, std::abs(residual.local_element(k)));
-        const auto row = owned.nth_index_in_set(k);
-        double     sum = 0.;
-        for (auto it = K.begin(row); it != K.end(row); ++it)
-          sum += std::abs(it->value() * U(it->column()));
+        int     n_entries = 0;
+        double *values    = nullptr;
+        int    *columns   = nullptr;
+        K.ExtractMyRowView(row, n_entries, values, columns);
+        double sum = 0.;
+        for (int k = 0; k < n_entries; ++k)
+          sum += std::abs(values[k] * U(K.ColMap().GID(columns[k])));
         scale = std::max(scale, sum);
       }
     const auto &ps = pd.particle_system;
@@ -534,7 +537,14 @@ namespace perideal
             << "External work: " << work << " J\n"
             << "Energy error: " << energy_error << " J\n"
             << "Broken bonds: " << broken << "\n"
-            << "Max particle displacement: " << max_u << " m" << std::endl;
+            << "Max particle displacement: " << max_u << " m\n";
+        for (unsigned int k = 0; k < pd_reactions.size(); ++k)
+          log << "Reaction " << pd.boundary_conditions.names()[k] << ": " << pd_reactions[k]
+              << " N\n";
+        for (unsigned int k = 0; k < fe_reactions.size(); ++k)
+          if (fe.conditions()[k].type != FESolid<dim>::ConditionType::traction)
+            log << "Reaction " << fe.conditions()[k].name << ": " << fe_reactions[k] << " N\n";
+        log << std::flush;
         log.flags(flags);
       }
   }

@@ -805,16 +805,22 @@ namespace perideal
   FESolid<dim>::stable_time_step(const Vector *mass_in) const
   {
     const Vector &m = mass_in ? *mass_in : mass;
-    // Gershgorin: lambda_max(M^-1 K) <= max_i sum_j |K_ij| / m_i.
-    double bound = 0.;
-    for (unsigned int k = 0; k < owned_dofs.n_elements(); ++k)
+    // Gershgorin: lambda_max(M^-1 K) <= max_i sum_j |K_ij| / m_i (rows read through Epetra:
+    // deal.II's row iterator copies every row).
+    double      bound  = 0.;
+    const auto &matrix = stiffness.trilinos_matrix();
+    for (int row = 0; row < matrix.NumMyRows(); ++row)
       {
-        const auto row = owned_dofs.nth_index_in_set(k);
-        double     sum = 0.;
-        for (auto it = stiffness.begin(row); it != stiffness.end(row); ++it)
-          sum += std::abs(it->value());
-        if (m.local_element(k) > 0.)
-          bound = std::max(bound, sum / m.local_element(k));
+        int     n_entries = 0;
+        double *values    = nullptr;
+        int    *columns   = nullptr;
+        matrix.ExtractMyRowView(row, n_entries, values, columns);
+        double sum = 0.;
+        for (int k = 0; k < n_entries; ++k)
+          sum += std::abs(values[k]);
+        const auto local = owned_dofs.index_within_set(matrix.RowMap().GID(row));
+        if (m.local_element(local) > 0.)
+          bound = std::max(bound, sum / m.local_element(local));
       }
     bound = Utilities::MPI::max(bound, comm);
     return bound > 0. ? 2. / std::sqrt(bound) : std::numeric_limits<double>::max();
