@@ -143,6 +143,9 @@ namespace perideal
     const double       *coefficient = bond_coefficient.data();
     std::uint8_t       *intact      = bonds.intact.data();
     double             *energy      = rows.scalar(0);
+    double             *buffer[dim];
+    for (unsigned int d = 0; d < dim; ++d)
+      buffer[d] = rows.component(d);
 
     // Pair forces F = k s (xi + eta)/|xi + eta| and pair energies k s^2 |xi| / 4 with
     // k = c G beta V_i V_j, summed per particle and divided by V_i at the end.
@@ -158,7 +161,7 @@ namespace perideal
             Vector             r[dim], len2           = 0.;
             for (unsigned int d = 0; d < dim; ++d)
               {
-                r[d].copy_from(rows.component(d) + l, stdx::element_aligned);
+                r[d].copy_from(buffer[d] + l, stdx::element_aligned);
                 len2 += r[d] * r[d];
               }
             const Vector len           = stdx::sqrt(len2);
@@ -175,7 +178,7 @@ namespace perideal
               {
                 r[d] *= t;
                 fi[d] += r[d];
-                r[d].copy_to(rows.component(d) + l, stdx::element_aligned);
+                r[d].copy_to(buffer[d] + l, stdx::element_aligned);
               }
             if constexpr (with_energy)
               {
@@ -191,9 +194,7 @@ namespace perideal
         if constexpr (with_energy)
           {
             w[i] += stdx::reduce(wi);
-            for (unsigned int l = 0; l < n; ++l)
-              if (nbr[first + l] < n_owned)
-                w[nbr[first + l]] += energy[l];
+            rows.scatter_scalar(0, w, nbr + first, n, n_owned);
           }
       }
     for (unsigned int i = 0; i < n_owned; ++i)

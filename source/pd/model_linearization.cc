@@ -73,14 +73,14 @@ namespace perideal
           const unsigned int j = bonds.neighbor[b];
           const double       k = (alpha_m / weighted_volume.local_element(i) +
                             alpha_m / weighted_volume.local_element(j)) *
-                           bond_weight[b];
-          const double r = bond_weight[b] * bonds.length[b];
-          direct[i] += k * volume[j];
-          moment[i] += r * volume[j];
+                           pair_weight[b];
+          const double r = pair_weight[b] * bonds.length[b];
+          direct[i] += k / volume[i];
+          moment[i] += r / volume[i];
           if (j < n_owned)
             {
-              direct[j] += k * volume[i];
-              moment[j] += r * volume[i];
+              direct[j] += k / volume[j];
+              moment[j] += r / volume[j];
             }
         }
     per_particle.assign(n_owned, 0.);
@@ -119,13 +119,12 @@ namespace perideal
           {
             if (!bonds.intact[b])
               continue;
-            const unsigned int j   = bonds.neighbor[b];
-            const double       m_j = weighted_volume.local_element(j);
-            linearized.bond_stiffness[b] =
-              (alpha_m / m_i + alpha_m / m_j) * bond_weight[b] * volume[i] * volume[j];
-            const double r                  = n * bond_weight[b] * bonds.length[b];
-            linearized.dilatation_row[b]    = r / m_i * volume[j];
-            linearized.dilatation_column[b] = r / m_j * volume[i];
+            const unsigned int j            = bonds.neighbor[b];
+            const double       m_j          = weighted_volume.local_element(j);
+            linearized.bond_stiffness[b]    = (alpha_m / m_i + alpha_m / m_j) * pair_weight[b];
+            const double r                  = n * pair_weight[b] * bonds.length[b];
+            linearized.dilatation_row[b]    = r / m_i / volume[i];
+            linearized.dilatation_column[b] = r / m_j / volume[j];
           }
       }
   }

@@ -197,6 +197,41 @@ namespace perideal
         }
     }
 
+    /**
+     * @brief Per-bond scalar @p k of the current row from a per-particle array:
+     * scalar(k)[l] = @p values[neighbor[l]] for the @p n bonds; lanes up to the end of the last
+     * block are set to zero.
+     */
+    void
+    gather_scalar(const unsigned int  k,
+                  const double       *values,
+                  const unsigned int *neighbor,
+                  const unsigned int  n)
+    {
+      double *a = scalar(k);
+      for (unsigned int l = 0; l < n; ++l)
+        a[l] = values[neighbor[l]];
+      const unsigned int padded = (n + bond_simd::width - 1) / bond_simd::width * bond_simd::width;
+      std::fill(a + n, a + padded, 0.);
+    }
+
+    /**
+     * @brief Add the per-bond scalar @p k of the current row to the owned neighbours:
+     * target[j] += scalar(k)[l] for the @p n bonds to @p neighbor with j < @p n_owned.
+     */
+    void
+    scatter_scalar(const unsigned int  k,
+                   double             *target,
+                   const unsigned int *neighbor,
+                   const unsigned int  n,
+                   const unsigned int  n_owned)
+    {
+      const double *a = scalar(k);
+      for (unsigned int l = 0; l < n; ++l)
+        if (neighbor[l] < n_owned)
+          target[neighbor[l]] += a[l];
+    }
+
   private:
     unsigned int        stride = 0;
     std::vector<double> data;
