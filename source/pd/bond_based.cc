@@ -5,6 +5,7 @@
 
 #include <perideal/base/parameter_utilities.h>
 #include <perideal/pd/bond_based.h>
+#include <perideal/pd/bond_rows.h>
 #include <perideal/pd/surface_correction.h>
 
 #include <cmath>
@@ -67,14 +68,16 @@ namespace perideal
           break;
       }
     BondList &bonds = particles.bonds();
+    rows.reinit(bonds, 1);
+    inverse_length.resize(bonds.size());
+    for (std::size_t b = 0; b < bonds.size(); ++b)
+      inverse_length[b] = 1. / bonds.length[b];
     if (context.surface_correction)
       {
         const auto energy = [&](const ParticleVector &u, std::vector<double> &w) {
           ParticleVector force;
           particles.reinit_vector(force, dim);
-          bond_modulus.resize(bonds.size());
-          for (std::size_t b = 0; b < bonds.size(); ++b)
-            bond_modulus[b] = c * bonds.volume_factor[b];
+          set_bond_coefficients(particles, false);
           // Pre-cracked bonds take part: the correction describes the uncracked geometry.
           const std::vector<std::uint8_t> intact = bonds.intact;
           std::fill(bonds.intact.begin(), bonds.intact.end(), 1);
@@ -83,10 +86,22 @@ namespace perideal
         };
         apply_energy_surface_correction<dim>(particles, elasticity_tensor(), energy);
       }
-    bond_modulus.resize(bonds.size());
-    for (std::size_t b = 0; b < bonds.size(); ++b)
-      bond_modulus[b] =
-        c * bonds.surface_factor[b] * bonds.volume_factor[b] * bonds.energy_weight[b];
+    set_bond_coefficients(particles, true);
+  }
+
+  template <int dim>
+  void
+  BondBased<dim>::set_bond_coefficients(const ParticleSystem<dim> &particles,
+                                        const bool                 with_surface_factor)
+  {
+    const BondList &bonds  = particles.bonds();
+    const auto     &volume = particles.volumes();
+    bond_coefficient.resize(bonds.size());
+    for (unsigned int i = 0; i < particles.n_owned(); ++i)
+      for (unsigned int b = bonds.row_start[i]; b < bonds.row_start[i + 1]; ++b)
+        bond_coefficient[b] =
+          c * (with_surface_factor ? bonds.surface_factor[b] * bonds.energy_weight[b] : 1.) *
+          bonds.volume_factor[b] * volume[i] * volume[bonds.neighbor[b]];
   }
 
   template <int dim>
@@ -97,13 +112,6 @@ namespace perideal
                                  std::vector<double>  *energy_density,
                                  const double          critical_stretch)
   {
-    const BondList &bonds = particles.bonds();
-    if (inverse_length.size() != bonds.size())
-      {
-        inverse_length.resize(bonds.size());
-        for (std::size_t b = 0; b < bonds.size(); ++b)
-          inverse_length[b] = 1. / bonds.length[b];
-      }
     double *f = force.begin();
     std::fill(f, f + std::size_t(particles.n_owned()) * dim, 0.);
     if (energy_density != nullptr)
@@ -124,66 +132,78 @@ namespace perideal
                              double              *w,
                              const double         critical_stretch)
   {
-    BondList           &bonds     = particles.bonds();
-    const double       *volume    = particles.volumes().data();
-    const unsigned int  n_owned   = particles.n_owned();
-    const double       *x         = particles.coordinates().data();
-    const unsigned int *row_start = bonds.row_start.data();
-    const unsigned int *nbr       = bonds.neighbor.data();
-    const double       *length    = bonds.length.data();
-    const double       *inverse   = inverse_length.data();
-    const double       *modulus   = bond_modulus.data();
-    std::uint8_t       *intact    = bonds.intact.data();
+    using namespace bond_simd;
+    BondList           &bonds       = particles.bonds();
+    const double       *volume      = particles.volumes().data();
+    const unsigned int  n_owned     = particles.n_owned();
+    const double       *x           = particles.coordinates().data();
+    const unsigned int *row_start   = bonds.row_start.data();
+    const unsigned int *nbr         = bonds.neighbor.data();
+    const double       *length      = bonds.length.data();
+    const double       *inverse     = inverse_length.data();
+    const double       *coefficient = bond_coefficient.data();
+    std::uint8_t       *intact      = bonds.intact.data();
+    double             *energy      = rows.scalar(0);
+    double             *buffer[dim];
+    for (unsigned int d = 0; d < dim; ++d)
+      buffer[d] = rows.component(d);
 
+    // Pair forces F = k s (xi + eta)/|xi + eta| and pair energies k s^2 |xi| / 4 with
+    // k = c G beta V_i V_j, summed per particle and divided by V_i at the end.
     for (unsigned int i = 0; i < n_owned; ++i)
       {
-        const double *xi      = x + std::size_t(i) * dim;
-        const double *ui      = u + std::size_t(i) * dim;
-        const double  vi      = volume[i];
-        double        fi[dim] = {};
-        double        wi      = 0.;
-        const auto    row_end = row_start[i + 1];
-        for (unsigned int b = row_start[i]; b < row_end; ++b)
+        const unsigned int first = row_start[i], n = row_start[i + 1] - first;
+        rows.gather(x, u, i, nbr + first, n);
+        Vector fi[dim] = {};
+        Vector wi      = 0.;
+        for (unsigned int l = 0; l < n; l += width)
           {
-            const std::uint8_t state = intact[b];
-            if (state == 0)
-              continue;
-            const unsigned int j  = nbr[b];
-            const double      *xj = x + std::size_t(j) * dim;
-            const double      *uj = u + std::size_t(j) * dim;
-            double             r[dim];
-            double             len2 = 0.;
+            const unsigned int b = first + l, n_valid = n - l;
+            Vector             r[dim], len2           = 0.;
             for (unsigned int d = 0; d < dim; ++d)
               {
-                r[d] = (xj[d] - xi[d]) + (uj[d] - ui[d]);
+                r[d].copy_from(buffer[d] + l, stdx::element_aligned);
                 len2 += r[d] * r[d];
               }
-            const double len = std::sqrt(len2);
-            const double s   = (len - length[b]) * inverse[b];
-            if (s > critical_stretch && state == 1)
-              {
-                intact[b] = 0;
-                continue;
-              }
-            const double t  = modulus[b] * s / len;
-            const double vj = volume[j];
+            const Vector len           = stdx::sqrt(len2);
+            const Vector xi            = load(length + b, n_valid, 1.);
+            const Vector s             = (len - xi) * load(inverse + b, n_valid, 1.);
+            Mask         active        = intact_lanes(intact + b, n_valid);
+            const Mask   overstretched = active && (s > critical_stretch);
+            if (stdx::any_of(overstretched))
+              active = active && !break_bonds(overstretched, intact + b);
+            const Vector k         = load(coefficient + b, n_valid, 0.);
+            Vector       t         = 0.;
+            stdx::where(active, t) = k * s / len;
             for (unsigned int d = 0; d < dim; ++d)
-              fi[d] += t * vj * r[d];
-            if (j < n_owned)
-              for (unsigned int d = 0; d < dim; ++d)
-                f[std::size_t(j) * dim + d] -= t * vi * r[d];
+              {
+                r[d] *= t;
+                fi[d] += r[d];
+                r[d].copy_to(buffer[d] + l, stdx::element_aligned);
+              }
             if constexpr (with_energy)
               {
-                const double e = 0.25 * modulus[b] * s * s * length[b];
-                wi += e * vj;
-                if (j < n_owned)
-                  w[j] += e * vi;
+                Vector e               = 0.;
+                stdx::where(active, e) = 0.25 * k * s * s * xi;
+                wi += e;
+                e.copy_to(energy + l, stdx::element_aligned);
               }
           }
+        rows.scatter(f, nbr + first, n, n_owned);
         for (unsigned int d = 0; d < dim; ++d)
-          f[std::size_t(i) * dim + d] += fi[d];
+          f[std::size_t(i) * dim + d] += stdx::reduce(fi[d]);
         if constexpr (with_energy)
-          w[i] += wi;
+          {
+            w[i] += stdx::reduce(wi);
+            rows.scatter_scalar(0, w, nbr + first, n, n_owned);
+          }
+      }
+    for (unsigned int i = 0; i < n_owned; ++i)
+      {
+        for (unsigned int d = 0; d < dim; ++d)
+          f[std::size_t(i) * dim + d] /= volume[i];
+        if constexpr (with_energy)
+          w[i] /= volume[i];
       }
   }
 

@@ -12,8 +12,8 @@ namespace perideal
   using namespace dealii;
 
   // PMB: the bond b couples i and j through the block k_b n n^T (force density per unit
-  // displacement k_b = c G beta V_j / |xi|); block Gershgorin with spectral norms gives
-  // |K_ii| + sum_j |K_ij| <= 2 sum_j k_b.
+  // displacement k_b = c G beta V_j / |xi|, i.e. bond_coefficient / (|xi| V_i)); block
+  // Gershgorin with spectral norms gives |K_ii| + sum_j |K_ij| <= 2 sum_j k_b.
   template <int dim>
   void
   BondBased<dim>::stiffness_bound(const ParticleSystem<dim> &particles,
@@ -29,10 +29,10 @@ namespace perideal
           if (!bonds.intact[b])
             continue;
           const unsigned int j = bonds.neighbor[b];
-          const double       k = 2. * bond_modulus[b] / bonds.length[b];
-          per_particle[i] += k * volume[j];
+          const double       k = 2. * bond_coefficient[b] / bonds.length[b];
+          per_particle[i] += k / volume[i];
           if (j < n_owned)
-            per_particle[j] += k * volume[i];
+            per_particle[j] += k / volume[j];
         }
   }
 
@@ -41,17 +41,14 @@ namespace perideal
   void
   BondBased<dim>::linearize(const ParticleSystem<dim> &particles, LinearizedModel &linearized) const
   {
-    const BondList &bonds  = particles.bonds();
-    const auto     &volume = particles.volumes();
+    const BondList &bonds = particles.bonds();
     linearized.bond_stiffness.assign(bonds.size(), 0.);
     linearized.dilatation_weight.clear();
     linearized.dilatation_row.clear();
     linearized.dilatation_column.clear();
-    for (unsigned int i = 0; i < particles.n_owned(); ++i)
-      for (unsigned int b = bonds.row_start[i]; b < bonds.row_start[i + 1]; ++b)
-        if (bonds.intact[b])
-          linearized.bond_stiffness[b] =
-            bond_modulus[b] / bonds.length[b] * volume[i] * volume[bonds.neighbor[b]];
+    for (std::size_t b = 0; b < bonds.size(); ++b)
+      if (bonds.intact[b])
+        linearized.bond_stiffness[b] = bond_coefficient[b] / bonds.length[b];
   }
 
   // LPS: the Gershgorin estimate behind stable_time_step() (direct deviatoric stiffness plus the
@@ -76,14 +73,14 @@ namespace perideal
           const unsigned int j = bonds.neighbor[b];
           const double       k = (alpha_m / weighted_volume.local_element(i) +
                             alpha_m / weighted_volume.local_element(j)) *
-                           bond_weight[b];
-          const double r = bond_weight[b] * bonds.length[b];
-          direct[i] += k * volume[j];
-          moment[i] += r * volume[j];
+                           pair_weight[b];
+          const double r = pair_weight[b] * bonds.length[b];
+          direct[i] += k / volume[i];
+          moment[i] += r / volume[i];
           if (j < n_owned)
             {
-              direct[j] += k * volume[i];
-              moment[j] += r * volume[i];
+              direct[j] += k / volume[j];
+              moment[j] += r / volume[j];
             }
         }
     per_particle.assign(n_owned, 0.);
@@ -122,13 +119,12 @@ namespace perideal
           {
             if (!bonds.intact[b])
               continue;
-            const unsigned int j   = bonds.neighbor[b];
-            const double       m_j = weighted_volume.local_element(j);
-            linearized.bond_stiffness[b] =
-              (alpha_m / m_i + alpha_m / m_j) * bond_weight[b] * volume[i] * volume[j];
-            const double r                  = n * bond_weight[b] * bonds.length[b];
-            linearized.dilatation_row[b]    = r / m_i * volume[j];
-            linearized.dilatation_column[b] = r / m_j * volume[i];
+            const unsigned int j            = bonds.neighbor[b];
+            const double       m_j          = weighted_volume.local_element(j);
+            linearized.bond_stiffness[b]    = (alpha_m / m_i + alpha_m / m_j) * pair_weight[b];
+            const double r                  = n * pair_weight[b] * bonds.length[b];
+            linearized.dilatation_row[b]    = r / m_i / volume[i];
+            linearized.dilatation_column[b] = r / m_j / volume[j];
           }
       }
   }

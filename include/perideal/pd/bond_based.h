@@ -4,6 +4,7 @@
 #ifndef perideal_pd_bond_based_h
 #define perideal_pd_bond_based_h
 
+#include <perideal/pd/bond_rows.h>
 #include <perideal/pd/material_model.h>
 
 namespace perideal
@@ -87,10 +88,20 @@ namespace perideal
     double       youngs_modulus = 0.;
     ModelContext context;
     double       c = 0.;
-    /// c G beta per bond.
-    std::vector<double> bond_modulus;
+    /// c G beta V_i V_j per bond (the pair force per unit stretch).
+    std::vector<double> bond_coefficient;
     /// 1 / |xi| per bond.
     std::vector<double> inverse_length;
+    /// Work arrays of the force loop (bond vectors, then forces; pair energies).
+    BondRows<dim> rows;
+
+    /**
+     * @brief Set bond_coefficient from the micromodulus, the partial-volume factors, the
+     * particle volumes and, if @p with_surface_factor, the surface-correction factors and the
+     * coupling's energy weights (BondList::energy_weight; the one place that computes it).
+     */
+    void
+    set_bond_coefficients(const ParticleSystem<dim> &particles, const bool with_surface_factor);
 
     /**
      * @brief The force loop; the energy density is accumulated only if @p with_energy.

@@ -4,6 +4,7 @@
 #ifndef perideal_pd_linear_peridynamic_solid_h
 #define perideal_pd_linear_peridynamic_solid_h
 
+#include <perideal/pd/bond_rows.h>
 #include <perideal/pd/influence_function.h>
 #include <perideal/pd/material_model.h>
 
@@ -96,11 +97,17 @@ namespace perideal
     ModelContext                       context;
     double                             bulk_modulus  = 0.;
     double                             shear_modulus = 0.;
-    /// omega beta per bond.
-    std::vector<double> bond_weight;
+    /// omega beta V_i V_j per bond.
+    std::vector<double> pair_weight;
     /// Weighted volume per local particle (owned and ghost).
     ParticleVector weighted_volume;
     ParticleVector theta;
+    /// alpha = mu n (n + 2) / m per local particle.
+    std::vector<double> alpha;
+    /// theta / m per local particle (work array of compute_forces()).
+    std::vector<double> theta_over_m;
+    /// Work arrays of the force loops.
+    BondRows<dim> rows;
   };
 } // namespace perideal
 
