@@ -2,12 +2,14 @@
 #ifndef perideal_tests_h
 #define perideal_tests_h
 
+#include <deal.II/base/exceptions.h>
 #include <deal.II/base/logstream.h>
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/utilities.h>
 
 #include <fstream>
 #include <iomanip>
+#include <sstream>
 #include <string>
 
 namespace perideal_tests
@@ -17,6 +19,22 @@ namespace perideal_tests
   {
     static std::ofstream file;
     return file;
+  }
+
+  /**
+   * The message of a deal.II exception (its "additional information"), trimmed: what a test
+   * prints to show which entry a bad input names.
+   */
+  inline std::string
+  exception_text(const dealii::ExceptionBase &exc)
+  {
+    std::ostringstream message;
+    exc.print_info(message);
+    std::string text = message.str();
+    text.erase(0, text.find_first_not_of(" \n"));
+    while (!text.empty() && (text.back() == '\n' || text.back() == ' '))
+      text.pop_back();
+    return text;
   }
 } // namespace perideal_tests
 

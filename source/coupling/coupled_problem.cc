@@ -420,21 +420,11 @@ namespace perideal
     const auto &mask     = fe.prescribed_mask();
     double      residual_max = 0., scale = 0.;
     U.update_ghost_values();
-    const auto &K = fe.stiffness_matrix().trilinos_matrix();
     for (unsigned int k = 0; k < U.locally_owned_size(); ++k)
       if (!mask[k])
         residual_max = std::max(residual_max, std::abs(residual.local_element(k)));
-    for (int row = 0; row < K.NumMyRows(); ++row)
-      {
-        int     n_entries = 0;
-        double *values    = nullptr;
-        int    *columns   = nullptr;
-        K.ExtractMyRowView(row, n_entries, values, columns);
-        double sum = 0.;
-        for (int k = 0; k < n_entries; ++k)
-          sum += std::abs(values[k] * U(K.ColMap().GID(columns[k])));
-        scale = std::max(scale, sum);
-      }
+    for (const double sum : fe.absolute_row_sums(&U))
+      scale = std::max(scale, sum);
     const auto &ps = pd.particle_system;
     for (unsigned int i = 0; i < ps.n_owned(); ++i)
       for (unsigned int d = 0; d < dim; ++d)

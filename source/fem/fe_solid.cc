@@ -805,10 +805,23 @@ namespace perideal
   FESolid<dim>::stable_time_step(const Vector *mass_in) const
   {
     const Vector &m = mass_in ? *mass_in : mass;
-    // Gershgorin: lambda_max(M^-1 K) <= max_i sum_j |K_ij| / m_i (rows read through Epetra:
-    // deal.II's row iterator copies every row).
-    double      bound  = 0.;
-    const auto &matrix = stiffness.trilinos_matrix();
+    // Gershgorin: lambda_max(M^-1 K) <= max_i sum_j |K_ij| / m_i.
+    const auto sums  = absolute_row_sums();
+    double     bound = 0.;
+    for (unsigned int k = 0; k < sums.size(); ++k)
+      if (m.local_element(k) > 0.)
+        bound = std::max(bound, sums[k] / m.local_element(k));
+    bound = Utilities::MPI::max(bound, comm);
+    return bound > 0. ? 2. / std::sqrt(bound) : std::numeric_limits<double>::max();
+  }
+
+  template <int dim>
+  std::vector<double>
+  FESolid<dim>::absolute_row_sums(const Vector *x) const
+  {
+    // Rows read through Epetra views: deal.II's row iterator copies every row.
+    const auto         &matrix = stiffness.trilinos_matrix();
+    std::vector<double> sums(owned_dofs.n_elements(), 0.);
     for (int row = 0; row < matrix.NumMyRows(); ++row)
       {
         int     n_entries = 0;
@@ -817,13 +830,10 @@ namespace perideal
         matrix.ExtractMyRowView(row, n_entries, values, columns);
         double sum = 0.;
         for (int k = 0; k < n_entries; ++k)
-          sum += std::abs(values[k]);
-        const auto local = owned_dofs.index_within_set(matrix.RowMap().GID(row));
-        if (m.local_element(local) > 0.)
-          bound = std::max(bound, sum / m.local_element(local));
+          sum += std::abs(values[k] * (x ? (*x)(matrix.ColMap().GID(columns[k])) : 1.));
+        sums[owned_dofs.index_within_set(matrix.RowMap().GID(row))] = sum;
       }
-    bound = Utilities::MPI::max(bound, comm);
-    return bound > 0. ? 2. / std::sqrt(bound) : std::numeric_limits<double>::max();
+    return sums;
   }
 
   template <int dim>

@@ -11,6 +11,8 @@
 #include <perideal/base/region.h>
 #include <perideal/coupling/coupled_problem.h>
 
+#include <tests.h>
+
 #include <fstream>
 #include <iostream>
 #include <map>
@@ -140,13 +142,7 @@ end
       }
     catch (const ExceptionBase &exc)
       {
-        std::ostringstream message;
-        exc.print_info(message);
-        std::string text = message.str();
-        text.erase(0, text.find_first_not_of(" \n"));
-        while (!text.empty() && (text.back() == '\n' || text.back() == ' '))
-          text.pop_back();
-        std::cout << name << ": " << text << std::endl;
+        std::cout << name << ": " << perideal_tests::exception_text(exc) << std::endl;
       }
   }
 } // namespace

@@ -17,6 +17,8 @@
 
 #include <perideal/coupling/transfer_operator.h>
 
+#include <tests.h>
+
 #include <cmath>
 #include <iostream>
 #include <sstream>
@@ -208,13 +210,9 @@ namespace
       }
     catch (const ExceptionBase &exc)
       {
-        std::ostringstream message;
-        exc.print_info(message);
-        std::string text = message.str();
-        text.erase(0, text.find("particle(s)"));
-        while (!text.empty() && (text.back() == '\n' || text.back() == ' '))
-          text.pop_back();
-        std::cout << "particles outside the mesh refused: " << text << std::endl;
+        const std::string text = perideal_tests::exception_text(exc);
+        std::cout << "particles outside the mesh refused: " << text.substr(text.find("particle(s)"))
+                  << std::endl;
       }
   }
 } // namespace

@@ -8,6 +8,8 @@
 
 #include <perideal/base/elasticity.h>
 
+#include <tests.h>
+
 #include <cmath>
 #include <iostream>
 #include <sstream>
@@ -163,12 +165,6 @@ main()
       }
     catch (const ExceptionBase &exc)
       {
-        std::ostringstream message;
-        exc.print_info(message);
-        std::string text = message.str();
-        text.erase(0, text.find_first_not_of(" \n"));
-        while (!text.empty() && (text.back() == '\n' || text.back() == ' '))
-          text.pop_back();
-        std::cout << "bad input refused: " << text << std::endl;
+        std::cout << "bad input refused: " << perideal_tests::exception_text(exc) << std::endl;
       }
 }

@@ -13,6 +13,8 @@
 #include <perideal/pd/particle_system.h>
 #include <perideal/pd/pd_problem.h>
 
+#include <tests.h>
+
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -210,13 +212,7 @@ namespace pd_tests
       }
     catch (const dealii::ExceptionBase &exc)
       {
-        std::ostringstream message;
-        exc.print_info(message);
-        std::string text = message.str();
-        text.erase(0, text.find_first_not_of(" \n"));
-        while (!text.empty() && (text.back() == '\n' || text.back() == ' '))
-          text.pop_back();
-        dealii::deallog << name << ": " << text << std::endl;
+        dealii::deallog << name << ": " << perideal_tests::exception_text(exc) << std::endl;
       }
   }
 } // namespace pd_tests

@@ -161,6 +161,15 @@ namespace perideal
       const dealii::LinearAlgebra::distributed::Vector<double> *mass = nullptr) const;
 
     /**
+     * @brief Per owned dof, sum_j |K_ij x_j| (with ghost values of @p x), or sum_j |K_ij|
+     * without @p x: the Gershgorin row bound, and the size of a nodal force without the
+     * cancellation between neighbours.
+     */
+    std::vector<double>
+    absolute_row_sums(
+      const dealii::LinearAlgebra::distributed::Vector<double> *x = nullptr) const;
+
+    /**
      * @brief Strain energy 1/2 u^T K u and reactions sum over the dofs of every displacement
      * or velocity condition of (K u - f) (the force the support exerts, per component).
      */
