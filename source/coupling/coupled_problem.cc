@@ -529,11 +529,12 @@ namespace perideal
             << "Broken bonds: " << broken << "\n"
             << "Max particle displacement: " << max_u << " m\n";
         for (unsigned int k = 0; k < pd_reactions.size(); ++k)
-          log << "Reaction " << pd.boundary_conditions.names()[k] << ": " << pd_reactions[k]
-              << " N\n";
+          log << "Reaction " << pd.boundary_conditions.names()[k] << ": "
+              << without_round_off(pd_reactions[k]) << " N\n";
         for (unsigned int k = 0; k < fe_reactions.size(); ++k)
           if (fe.conditions()[k].type != FESolid<dim>::ConditionType::traction)
-            log << "Reaction " << fe.conditions()[k].name << ": " << fe_reactions[k] << " N\n";
+            log << "Reaction " << fe.conditions()[k].name << ": "
+                << without_round_off(fe_reactions[k]) << " N\n";
         log << std::flush;
         log.flags(flags);
       }

@@ -173,7 +173,8 @@ namespace perideal
             << "External work: " << external_work << " J\n";
         for (unsigned int k = 0; k < reactions.size(); ++k)
           if (fe.conditions()[k].type != FESolid<dim>::ConditionType::traction)
-            log << "Reaction of " << fe.conditions()[k].name << ": " << reactions[k] << " N\n";
+            log << "Reaction of " << fe.conditions()[k].name << ": "
+                << without_round_off(reactions[k]) << " N\n";
         log << "Max displacement: " << max_displacement << " m" << std::endl;
         log.flags(old_flags);
         log.precision(old_precision);

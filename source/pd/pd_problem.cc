@@ -825,8 +825,9 @@ namespace perideal
         for (unsigned int k = 0; k < reactions.size(); ++k)
           {
             log << "Reaction " << boundary_conditions.names()[k] << ":";
+            const auto reaction = without_round_off(reactions[k]);
             for (unsigned int d = 0; d < dim; ++d)
-              log << ' ' << reactions[k][d];
+              log << ' ' << reaction[d];
             log << " N\n";
           }
         log << std::defaultfloat;

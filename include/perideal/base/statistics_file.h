@@ -2,7 +2,9 @@
 #define perideal_base_statistics_file_h
 
 #include <deal.II/base/mpi.h>
+#include <deal.II/base/tensor.h>
 
+#include <cmath>
 #include <fstream>
 #include <map>
 #include <string>
@@ -76,6 +78,21 @@ namespace perideal
 
     std::ofstream file;
   };
+  /**
+   * @brief @p force with the components below 1e-10 of its norm set to zero, for printed
+   * summaries: a component that vanishes by symmetry is then 0 on every number of ranks and
+   * build, not a round-off value that changes with the summation order.
+   */
+  template <int dim>
+  dealii::Tensor<1, dim>
+  without_round_off(const dealii::Tensor<1, dim> &force)
+  {
+    dealii::Tensor<1, dim> cleaned = force;
+    for (unsigned int d = 0; d < dim; ++d)
+      if (std::abs(cleaned[d]) < 1e-10 * force.norm())
+        cleaned[d] = 0.;
+    return cleaned;
+  }
 } // namespace perideal
 
 #endif
