@@ -11,7 +11,7 @@
 #include <chrono>
 #include <cmath>
 #include <filesystem>
-#include <map>
+#include <unordered_map>
 #include <iomanip>
 
 namespace perideal
@@ -92,12 +92,15 @@ namespace perideal
   {
     const std::string entry = "<Coupling/Blending function> = <" + blending_expression + ">";
     // beta in [0, 1] at the particles and the FE vertices.
+    const auto         &x = pd.particle_system.positions();
+    std::vector<double> beta_p(x.size());
+    for (unsigned int i = 0; i < x.size(); ++i)
+      beta_p[i] = blending(x[i]);
     double lowest = 1., highest = 0.;
-    for (const auto &x : pd.particle_system.positions())
+    for (const double b : beta_p)
       {
-        const double b = blending(x);
-        lowest         = std::min(lowest, b);
-        highest        = std::max(highest, b);
+        lowest  = std::min(lowest, b);
+        highest = std::max(highest, b);
       }
     for (const auto &cell : fe.get_triangulation().active_cell_iterators())
       if (cell->is_locally_owned())
@@ -114,13 +117,12 @@ namespace perideal
                            ", " + ParameterUtilities::format_number(highest) +
                            "]; it must lie in [0, 1] (clamp it with min(1, max(0, ...)))."));
     // The transition must be at least a horizon wide: no bond from beta = 1 to beta = 0.
-    const auto   &x       = pd.particle_system.positions();
     const auto   &bonds   = pd.particle_system.bonds();
     std::uint64_t n_short = 0;
     for (unsigned int i = 0; i < pd.particle_system.n_owned(); ++i)
       for (unsigned int b = bonds.row_start[i]; b < bonds.row_start[i + 1]; ++b)
         {
-          const double bi = blending(x[i]), bj = blending(x[bonds.neighbor[b]]);
+          const double bi = beta_p[i], bj = beta_p[bonds.neighbor[b]];
           if ((bi >= 1. && bj <= 0.) || (bi <= 0. && bj >= 1.))
             ++n_short;
         }
@@ -162,8 +164,19 @@ namespace perideal
         }
     }
     // beta is evaluated once per lattice point (the offsets are lattice vectors, so x + offset
-    // is a lattice point too).
-    std::map<std::array<long, dim>, double> beta_at;
+    // is a lattice point too); the key is the point's position in half spacings.
+    struct KeyHash
+    {
+      std::size_t
+      operator()(const std::array<long, dim> &key) const
+      {
+        std::size_t h = 0;
+        for (const long k : key)
+          h = h * 1000003u ^ std::hash<long>()(k);
+        return h;
+      }
+    };
+    std::unordered_map<std::array<long, dim>, double, KeyHash> beta_at;
     const auto lattice_beta = [&](const Point<dim> &y) {
       std::array<long, dim> key;
       for (unsigned int d = 0; d < dim; ++d)
