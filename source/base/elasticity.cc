@@ -54,8 +54,7 @@ namespace perideal
     AssertThrow(name == "plane stress" || name == "plane strain",
                 ExcMessage("The planar assumption <" + name +
                            "> is unknown; accepted: plane stress, plane strain."));
-    return name == "plane stress" ? PlanarAssumption::plane_stress :
-                                    PlanarAssumption::plane_strain;
+    return name == "plane stress" ? PlanarAssumption::plane_stress : PlanarAssumption::plane_strain;
   }
 
   template <int dim>
@@ -108,9 +107,7 @@ namespace perideal
             in_plane_compliance(a, b) = compliance(in_plane[a], in_plane[b]);
         block.invert(in_plane_compliance);
       }
-    const auto index2d = [](const unsigned int i, const unsigned int j) {
-      return i == j ? i : 2u;
-    };
+    const auto index2d = [](const unsigned int i, const unsigned int j) { return i == j ? i : 2u; };
     for (unsigned int i = 0; i < dim; ++i)
       for (unsigned int j = i; j < dim; ++j)
         for (unsigned int k = 0; k < dim; ++k)
@@ -156,9 +153,9 @@ namespace perideal
   rotation_from_euler_angles(const double phi, const double theta, const double psi)
   {
     const auto about = [](const unsigned int axis, const double degrees) {
-      const double c = std::cos(degrees * numbers::PI / 180.);
-      const double s = std::sin(degrees * numbers::PI / 180.);
-      Tensor<2, 3> R;
+      const double       c = std::cos(degrees * numbers::PI / 180.);
+      const double       s = std::sin(degrees * numbers::PI / 180.);
+      Tensor<2, 3>       R;
       const unsigned int p = (axis + 1) % 3, q = (axis + 2) % 3;
       R[axis][axis] = 1.;
       R[p][p]       = c;
@@ -224,14 +221,13 @@ namespace perideal
         values.push_back(Utilities::string_to_double(v));
       return values;
     };
-    const auto require_count = [&](const std::string          &entry,
-                                   const std::vector<double> &values,
-                                   const std::size_t          n) {
-      AssertThrow(values.size() == n,
-                  ExcMessage("The parameter <" + section + "/" + entry + "> needs " +
-                             std::to_string(n) + " values for <" + section +
-                             "/Symmetry> = " + symmetry + "."));
-    };
+    const auto require_count =
+      [&](const std::string &entry, const std::vector<double> &values, const std::size_t n) {
+        AssertThrow(values.size() == n,
+                    ExcMessage("The parameter <" + section + "/" + entry + "> needs " +
+                               std::to_string(n) + " values for <" + section +
+                               "/Symmetry> = " + symmetry + "."));
+      };
     symmetry = prm.get("Symmetry");
     if (symmetry == "isotropic")
       {
@@ -264,8 +260,8 @@ namespace perideal
         require_count("Poisson's ratios", n, 2);
         require_count("Shear moduli", g, 1);
         const double G12 = e[0] / (2. * (1. + n[0]));
-        stiffness = orthotropic_stiffness({{e[0], e[0], e[1]}}, {{n[0], n[1], n[1]}},
-                                          {{g[0], g[0], G12}});
+        stiffness =
+          orthotropic_stiffness({{e[0], e[0], e[1]}}, {{n[0], n[1], n[1]}}, {{g[0], g[0], G12}});
       }
     else if (symmetry == "orthotropic")
       {
@@ -274,8 +270,8 @@ namespace perideal
         require_count("Young's moduli", e, 3);
         require_count("Poisson's ratios", n, 3);
         require_count("Shear moduli", g, 3);
-        stiffness = orthotropic_stiffness({{e[0], e[1], e[2]}}, {{n[0], n[1], n[2]}},
-                                          {{g[2], g[1], g[0]}});
+        stiffness =
+          orthotropic_stiffness({{e[0], e[1], e[2]}}, {{n[0], n[1], n[2]}}, {{g[2], g[1], g[0]}});
       }
     else
       {
@@ -303,8 +299,7 @@ namespace perideal
             }
         }
       AssertThrow(positive,
-                  ExcMessage("The elastic constants in <" + section + "> (Symmetry = " +
-                             symmetry +
+                  ExcMessage("The elastic constants in <" + section + "> (Symmetry = " + symmetry +
                              ") do not give a positive definite stiffness: the material would be "
                              "unstable. Check the moduli and Poisson's ratios."));
     }
@@ -312,7 +307,8 @@ namespace perideal
     const auto angles = numbers("Orientation");
     if (angles[0] != 0. || angles[1] != 0. || angles[2] != 0.)
       stiffness =
-        rotate_voigt_stiffness(stiffness, rotation_from_euler_angles(angles[0], angles[1], angles[2]));
+        rotate_voigt_stiffness(stiffness,
+                               rotation_from_euler_angles(angles[0], angles[1], angles[2]));
   }
 
   const FullMatrix<double> &

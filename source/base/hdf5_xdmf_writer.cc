@@ -23,7 +23,7 @@ namespace perideal
   {
     const unsigned int my_rank = dealii::Utilities::MPI::this_mpi_process(comm);
     const unsigned int n_ranks = dealii::Utilities::MPI::n_mpi_processes(comm);
-    const unsigned int root = dealii::Utilities::MPI::min(has_patches ? my_rank : n_ranks, comm);
+    const unsigned int root    = dealii::Utilities::MPI::min(has_patches ? my_rank : n_ranks, comm);
     if (root == n_ranks)
       return; // nothing to write anywhere
 

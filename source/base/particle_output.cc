@@ -225,8 +225,15 @@ namespace perideal
   ParticleOutput<dim>::write_hdf5_xdmf(const unsigned int step, const double time)
   {
     // Do not merge coincident vertices: two particles at the same position are still two.
-    write_hdf5_xdmf_step(
-      *this, !patches.empty(), false, comm, directory, base_name, step, time, xdmf_entries);
+    write_hdf5_xdmf_step(*this,
+                         !patches.empty(),
+                         false,
+                         comm,
+                         directory,
+                         base_name,
+                         step,
+                         time,
+                         xdmf_entries);
   }
 
 

@@ -11,8 +11,8 @@
 #include <chrono>
 #include <cmath>
 #include <filesystem>
-#include <unordered_map>
 #include <iomanip>
+#include <unordered_map>
 
 namespace perideal
 {
@@ -69,9 +69,8 @@ namespace perideal
                            "this version."));
     prm.enter_subsection("Coupling");
     blending_expression = prm.get("Blending function");
-    beta = ParameterUtilities::make_function<dim>(blending_expression,
-                                                  1,
-                                                  "Coupling/Blending function");
+    beta =
+      ParameterUtilities::make_function<dim>(blending_expression, 1, "Coupling/Blending function");
     prm.leave_subsection();
   }
 
@@ -113,8 +112,9 @@ namespace perideal
     lowest  = Utilities::MPI::min(lowest, comm);
     highest = Utilities::MPI::max(highest, comm);
     AssertThrow(lowest >= 0. && highest <= 1.,
-                ExcMessage(entry + " takes values in [" + ParameterUtilities::format_number(lowest) +
-                           ", " + ParameterUtilities::format_number(highest) +
+                ExcMessage(entry + " takes values in [" +
+                           ParameterUtilities::format_number(lowest) + ", " +
+                           ParameterUtilities::format_number(highest) +
                            "]; it must lie in [0, 1] (clamp it with min(1, max(0, ...)))."));
     // The transition must be at least a horizon wide: no bond from beta = 1 to beta = 0.
     const auto   &bonds   = pd.particle_system.bonds();
@@ -144,8 +144,8 @@ namespace perideal
 
     // Particles where beta > 0 and within a horizon of such points (lattice offsets up to
     // delta + dx cover every bond).
-    const double dx = pd.discretization.spacing, delta = pd.discretization.horizon;
-    const int    reach = static_cast<int>(std::ceil(delta / dx)) + 1;
+    const double                dx = pd.discretization.spacing, delta = pd.discretization.horizon;
+    const int                   reach = static_cast<int>(std::ceil(delta / dx)) + 1;
     std::vector<Tensor<1, dim>> offsets;
     {
       std::array<int, 3> k{{-reach, -reach, -reach}};
@@ -215,11 +215,12 @@ namespace perideal
       }
     n_constrained_slaved = Utilities::MPI::sum(n_constrained_slaved, comm);
     AssertThrow(n_constrained_slaved == 0,
-                ExcMessage("A displacement or velocity condition of <Boundary conditions> acts on " +
-                           std::to_string(n_constrained_slaved) +
-                           " particle components that follow the FE field (they lie in cells "
-                           "with FE unknowns); prescribe it there with <Finite elements/Boundary "
-                           "conditions>, or move its region into the PD-only zone (beta = 1)."));
+                ExcMessage(
+                  "A displacement or velocity condition of <Boundary conditions> acts on " +
+                  std::to_string(n_constrained_slaved) +
+                  " particle components that follow the FE field (they lie in cells "
+                  "with FE unknowns); prescribe it there with <Finite elements/Boundary "
+                  "conditions>, or move its region into the PD-only zone (beta = 1)."));
 
     // The FE mass: lumped (1 - beta) rho plus P^T of the slaved particles' masses.
     fe.initialize_vector(mass);
@@ -334,9 +335,14 @@ namespace perideal
 
     // State and initial conditions (the same functions for both regions).
     auto &ps = pd.particle_system;
-    for (ParticleVector *vec :
-         {&pd.u, &pd.v, &pd.a, &pd.internal_force, &pd.external_force, &pd.previous_u,
-          &particle_load, &pd.previous_load})
+    for (ParticleVector *vec : {&pd.u,
+                                &pd.v,
+                                &pd.a,
+                                &pd.internal_force,
+                                &pd.external_force,
+                                &pd.previous_u,
+                                &particle_load,
+                                &pd.previous_load})
       ps.reinit_vector(*vec, dim);
     for (FEVector *vec : {&U, &V, &A, &f_ext, &residual, &fe_load, &previous_fe_load, &previous_U})
       fe.initialize_vector(*vec);
@@ -353,10 +359,12 @@ namespace perideal
 
     if (is_root)
       std::filesystem::create_directories(pd.output_directory);
-    statistics =
-      std::make_unique<StatisticsFile>(comm, pd.output_directory + "/statistics.csv");
-    pd.particle_output = std::make_unique<ParticleOutput<dim>>(
-      comm, pd.output_directory, pd.base_name, pd.write_hdf5, pd.write_vtu);
+    statistics = std::make_unique<StatisticsFile>(comm, pd.output_directory + "/statistics.csv");
+    pd.particle_output = std::make_unique<ParticleOutput<dim>>(comm,
+                                                               pd.output_directory,
+                                                               pd.base_name,
+                                                               pd.write_hdf5,
+                                                               pd.write_vtu);
 
     fe.prescribe(0., U, V);
     pd.boundary_conditions.prescribe_displacement(0., pd.u);
@@ -367,7 +375,7 @@ namespace perideal
     write_output(0, 0.);
 
     ProgressReporter   progress(comm, log, n_steps, pd.end_time, pd.show_progress && is_root);
-    const unsigned int n_owned = ps.n_owned();
+    const unsigned int n_owned     = ps.n_owned();
     unsigned int       output_step = 1;
     const auto         start       = std::chrono::steady_clock::now();
     for (unsigned int step = 1; step <= n_steps; ++step)
@@ -430,7 +438,7 @@ namespace perideal
     // rows (the nodal force without the cancellation between neighbours). For a deformation the
     // coupled model reproduces exactly (rigid motion; uniform strain away from free surfaces)
     // the residual is the ghost force of the coupling.
-    const auto &mask     = fe.prescribed_mask();
+    const auto &mask         = fe.prescribed_mask();
     double      residual_max = 0., scale = 0.;
     U.update_ghost_values();
     for (unsigned int k = 0; k < U.locally_owned_size(); ++k)
@@ -485,10 +493,10 @@ namespace perideal
         strain += pd.energy_density[i] * volume[i];
         max_u = std::max(max_u, std::sqrt(u2));
       }
-    kinetic            = Utilities::MPI::sum(kinetic, comm);
-    prescribed_kinetic = Utilities::MPI::sum(prescribed_kinetic, comm);
-    strain             = Utilities::MPI::sum(strain, comm) + fe.strain_energy(U);
-    max_u              = Utilities::MPI::max(max_u, comm);
+    kinetic               = Utilities::MPI::sum(kinetic, comm);
+    prescribed_kinetic    = Utilities::MPI::sum(prescribed_kinetic, comm);
+    strain                = Utilities::MPI::sum(strain, comm) + fe.strain_energy(U);
+    max_u                 = Utilities::MPI::max(max_u, comm);
     const double work_sum = Utilities::MPI::sum(local_work, comm);
     if (step == 0)
       {
@@ -527,8 +535,7 @@ namespace perideal
     for (unsigned int k = 0; k < fe_reactions.size(); ++k)
       if (fe.conditions()[k].type != FESolid<dim>::ConditionType::traction)
         for (unsigned int d = 0; d < dim; ++d)
-          file.add_value("reaction_" + fe.conditions()[k].name + "_" + axis[d],
-                         fe_reactions[k][d]);
+          file.add_value("reaction_" + fe.conditions()[k].name + "_" + axis[d], fe_reactions[k][d]);
     file.end_row();
 
     if (is_root && final_row)

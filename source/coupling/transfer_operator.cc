@@ -23,22 +23,22 @@ namespace perideal
   void
   TransferOperator<dim>::reinit(const FESolid<dim> &fe, const ParticleSystem<dim> &particles)
   {
-    const MPI_Comm comm         = particles.get_communicator();
-    const auto    &tria         = fe.get_triangulation();
-    const auto    &dof_handler  = fe.get_dof_handler();
-    const auto     n_owned      = particles.n_owned();
-    const auto    &x            = particles.positions();
+    const MPI_Comm comm        = particles.get_communicator();
+    const auto    &tria        = fe.get_triangulation();
+    const auto    &dof_handler = fe.get_dof_handler();
+    const auto     n_owned     = particles.n_owned();
+    const auto    &x           = particles.positions();
 
     // Each rank's first particle global index (owned particles are numbered contiguously).
     const types::global_dof_index first_global = n_owned > 0 ? particles.global_index(0) : 0;
-    const auto offsets = Utilities::MPI::all_gather(comm, first_global);
+    const auto                    offsets      = Utilities::MPI::all_gather(comm, first_global);
 
     // Locate the owned particles in the locally owned cells of all ranks (one cell each).
-    const MappingQ1<dim>         mapping;
-    const GridTools::Cache<dim>  cache(tria, mapping);
-    const auto                   local_boxes =
+    const MappingQ1<dim>        mapping;
+    const GridTools::Cache<dim> cache(tria, mapping);
+    const auto                  local_boxes =
       GridTools::compute_mesh_predicate_bounding_box(tria, IteratorFilters::LocallyOwnedCell());
-    const auto global_boxes = Utilities::MPI::all_gather(comm, local_boxes);
+    const auto              global_boxes = Utilities::MPI::all_gather(comm, local_boxes);
     std::vector<Point<dim>> points(x.begin(), x.begin() + n_owned);
     const auto              located =
       GridTools::internal::distributed_compute_point_locations(cache,
@@ -81,8 +81,8 @@ namespace perideal
 
     // The rows this rank computes: for each located point in an FE-carrying cell, the shape
     // functions of that cell.
-    const auto &fe_element = fe.get_fe_collection()[0];
-    const unsigned int n_dofs = fe_element.n_dofs_per_cell();
+    const auto                          &fe_element = fe.get_fe_collection()[0];
+    const unsigned int                   n_dofs     = fe_element.n_dofs_per_cell();
     std::vector<types::global_dof_index> dofs(n_dofs);
     struct Entry
     {
@@ -99,11 +99,10 @@ namespace perideal
                                                                   level_index.second,
                                                                   &dof_handler);
         AssertThrow(GeometryInfo<dim>::is_inside_unit_cell(reference, 1e-8),
-                    ExcInternalError("The point search placed a particle outside its cell (" +
-                                     std::to_string(reference[0]) + ", " +
-                                     std::to_string(reference[1]) + ") at (" +
-                                     std::to_string(real[0]) + ", " + std::to_string(real[1]) +
-                                     ")."));
+                    ExcInternalError(
+                      "The point search placed a particle outside its cell (" +
+                      std::to_string(reference[0]) + ", " + std::to_string(reference[1]) +
+                      ") at (" + std::to_string(real[0]) + ", " + std::to_string(real[1]) + ")."));
         if (cell->active_fe_index() != 0)
           continue; // FE_Nothing: the particle is free
         cell->get_dof_indices(dofs);
@@ -112,9 +111,8 @@ namespace perideal
           {
             const double value = fe_element.shape_value(a, reference);
             if (value != 0.)
-              entries.push_back({particle * dim + fe_element.system_to_component_index(a).first,
-                                 dofs[a],
-                                 value});
+              entries.push_back(
+                {particle * dim + fe_element.system_to_component_index(a).first, dofs[a], value});
           }
       }
 
@@ -149,8 +147,9 @@ namespace perideal
                                      std::to_string(sum) + " instead of 0 or 1."));
         slaved[i] = (sum != 0.);
       }
-    n_slaved = Utilities::MPI::sum<types::global_dof_index>(
-      std::count(slaved.begin(), slaved.end(), true), comm);
+    n_slaved =
+      Utilities::MPI::sum<types::global_dof_index>(std::count(slaved.begin(), slaved.end(), true),
+                                                   comm);
   }
 
   template <int dim>

@@ -78,9 +78,8 @@ namespace perideal
   FEProblem<dim>::parse_parameters(ParameterHandler &prm)
   {
     prm.enter_subsection("Finite elements");
-    const PlanarAssumption planar =
-      planar_assumption_from_name(prm.get("Planar assumption"), dim);
-    const double thickness = prm.get_double("Thickness");
+    const PlanarAssumption planar = planar_assumption_from_name(prm.get("Planar assumption"), dim);
+    const double           thickness = prm.get_double("Thickness");
     ParameterUtilities::require_positive(thickness, "Finite elements/Thickness");
     prm.leave_subsection();
     fe.parse_parameters(prm, planar, thickness);
@@ -275,8 +274,8 @@ namespace perideal
     unsigned int     output_step = 1;
     for (unsigned int step = 1; step <= n_steps; ++step)
       {
-        const double step_dt           = std::min(dt, end_time - time);
-        const double previous_kinetic  = prescribed_kinetic_energy();
+        const double step_dt          = std::min(dt, end_time - time);
+        const double previous_kinetic = prescribed_kinetic_energy();
         v.add(0.5 * step_dt, a);
         fe.prescribe(time + 0.5 * step_dt, u, v);
         previous_u    = u;

@@ -93,7 +93,8 @@ namespace perideal
       get_data_component_interpretation() const override
       {
         return std::vector<DataComponentInterpretation::DataComponentInterpretation>(
-          get_names().size(), DataComponentInterpretation::component_is_scalar);
+          get_names().size(),
+          DataComponentInterpretation::component_is_scalar);
       }
 
       UpdateFlags
@@ -104,7 +105,7 @@ namespace perideal
 
       void
       evaluate_vector_field(const DataPostprocessorInputs::Vector<dim> &inputs,
-                            std::vector<dealii::Vector<double>> &computed) const override
+                            std::vector<dealii::Vector<double>>        &computed) const override
       {
         for (unsigned int q = 0; q < inputs.solution_gradients.size(); ++q)
           {
@@ -155,12 +156,13 @@ namespace perideal
   FESolid<dim>::declare_names(ParameterHandler &prm)
   {
     prm.enter_subsection(section);
-    prm.declare_entry("Mesh file",
-                      "",
-                      Patterns::Anything(),
-                      "A gmsh .msh file (format 2.2, quadrilaterals/hexahedra, lengths in m; "
-                      "boundary ids from the physical curves/surfaces), relative to the working "
-                      "directory. Empty: use the generator (or no FE region if that is empty too).");
+    prm.declare_entry(
+      "Mesh file",
+      "",
+      Patterns::Anything(),
+      "A gmsh .msh file (format 2.2, quadrilaterals/hexahedra, lengths in m; "
+      "boundary ids from the physical curves/surfaces), relative to the working "
+      "directory. Empty: use the generator (or no FE region if that is empty too).");
     prm.declare_entry("Generator",
                       "",
                       Patterns::Anything(),
@@ -271,8 +273,8 @@ namespace perideal
                                  const PlanarAssumption planar_assumption,
                                  const double           thickness_2d)
   {
-    planar    = planar_assumption;
-    thickness = (dim == 2 ? thickness_2d : 1.);
+    planar           = planar_assumption;
+    thickness        = (dim == 2 ? thickness_2d : 1.);
     const auto names = parse_names(prm);
     prm.enter_subsection(section);
     mesh_file           = prm.get("Mesh file");
@@ -294,7 +296,7 @@ namespace perideal
     C = material.tensor<dim>(planar);
     prm.enter_subsection("Body force");
     const std::string body_force_expression = prm.get("Function");
-    body_force = ParameterUtilities::make_function<dim>(body_force_expression,
+    body_force     = ParameterUtilities::make_function<dim>(body_force_expression,
                                                         dim,
                                                         section + "/Body force/Function");
     has_body_force = false;
@@ -313,7 +315,8 @@ namespace perideal
         for (const auto &id : Utilities::split_string_list(prm.get("Boundary ids"), ','))
           c.boundary_ids.insert(static_cast<types::boundary_id>(Utilities::string_to_int(id)));
         AssertThrow(!c.boundary_ids.empty(),
-                    ExcMessage("The parameter <" + prefix + "Boundary ids> is empty; list the "
+                    ExcMessage("The parameter <" + prefix +
+                               "Boundary ids> is empty; list the "
                                "boundary ids the condition acts on."));
         const std::string type = prm.get("Type");
         c.type                 = (type == "displacement" ? ConditionType::displacement :
@@ -358,8 +361,8 @@ namespace perideal
       {
         const auto parts = Utilities::split_string_list(item, ':');
         AssertThrow(parts.size() == 2,
-                    ExcMessage("The parameter <" + section + "/Circular boundaries> item <" +
-                               item + "> is not of the form 'id: cx, cy'."));
+                    ExcMessage("The parameter <" + section + "/Circular boundaries> item <" + item +
+                               "> is not of the form 'id: cx, cy'."));
         circular_boundaries.emplace_back(
           static_cast<types::boundary_id>(Utilities::string_to_int(parts[0])),
           ParameterUtilities::parse_point<2>(parts[1], section + "/Circular boundaries"));
@@ -382,7 +385,7 @@ namespace perideal
   {
     if (!mesh_file.empty())
       {
-        GridIn<dim> grid_in(triangulation);
+        GridIn<dim>   grid_in(triangulation);
         std::ifstream in(mesh_file);
         grid_in.read_msh(in);
       }
@@ -433,7 +436,7 @@ namespace perideal
       {
         // A cell carries no FE unknowns if the weight vanishes at its vertices and at its
         // quadrature points.
-        const QGauss<dim>  quadrature(degree + 1);
+        const QGauss<dim>    quadrature(degree + 1);
         const MappingQ1<dim> mapping;
         for (const auto &cell : dof_handler.active_cell_iterators())
           if (cell->is_locally_owned())
@@ -490,12 +493,14 @@ namespace perideal
                       const auto local = owned_dofs.index_within_set(face_dofs[i]);
                       if (prescribed[local])
                         continue;
-                      prescribed[local] = true;
+                      prescribed[local]  = true;
                       const Point<dim> x = mapping.transform_unit_to_real_cell(
                         cell,
-                        fe.unit_support_point(
-                          fe.face_to_cell_index(i, f, cell->face_orientation(f),
-                                                cell->face_flip(f), cell->face_rotation(f))));
+                        fe.unit_support_point(fe.face_to_cell_index(i,
+                                                                    f,
+                                                                    cell->face_orientation(f),
+                                                                    cell->face_flip(f),
+                                                                    cell->face_rotation(f))));
                       prescribed_dofs.push_back(
                         {static_cast<unsigned int>(local),
                          k,
@@ -524,10 +529,11 @@ namespace perideal
 
   template <int dim>
   void
-  FESolid<dim>::assemble_cell_matrix(FEValues<dim> &fe_values, FullMatrix<double> &cell_matrix) const
+  FESolid<dim>::assemble_cell_matrix(FEValues<dim>      &fe_values,
+                                     FullMatrix<double> &cell_matrix) const
   {
-    const unsigned int n = fe_values.dofs_per_cell;
-    const FEValuesExtractors::Vector displacements(0);
+    const unsigned int                   n = fe_values.dofs_per_cell;
+    const FEValuesExtractors::Vector     displacements(0);
     std::vector<SymmetricTensor<2, dim>> eps(n);
     cell_matrix = 0.;
     for (const unsigned int q : fe_values.quadrature_point_indices())
@@ -552,12 +558,12 @@ namespace perideal
   template <int dim>
   void
   FESolid<dim>::assemble_cell_load(const typename DoFHandler<dim>::active_cell_iterator &cell,
-                                   const double                                         time,
-                                   FEValues<dim>                                       &fe_values,
-                                   FEFaceValues<dim>              &fe_face_values,
-                                   dealii::Vector<double>         &cell_rhs) const
+                                   const double                                          time,
+                                   FEValues<dim>                                        &fe_values,
+                                   FEFaceValues<dim>      &fe_face_values,
+                                   dealii::Vector<double> &cell_rhs) const
   {
-    const unsigned int n = fe_values.dofs_per_cell;
+    const unsigned int n  = fe_values.dofs_per_cell;
     const auto        &fe = fe_values.get_fe();
     cell_rhs              = 0.;
     body_force->set_time(time);
@@ -609,9 +615,8 @@ namespace perideal
                             update_gradients | update_quadrature_points | update_JxW_values);
     // Nodal (Gauss-Lobatto) quadrature: a diagonal, positive mass for every degree.
     FEValues<dim>                        nodal_values(fe,
-                                   QGaussLobatto<dim>(degree + 1),
-                                   update_values | update_quadrature_points |
-                                     update_JxW_values);
+                               QGaussLobatto<dim>(degree + 1),
+                               update_values | update_quadrature_points | update_JxW_values);
     const unsigned int                   n = fe.n_dofs_per_cell();
     FullMatrix<double>                   cell_matrix(n, n);
     dealii::Vector<double>               cell_mass(n);
@@ -653,14 +658,13 @@ namespace perideal
         f = 0.;
         return;
       }
-    const auto   &fe = fe_collection[0];
-    FEValues<dim> fe_values(fe,
+    const auto                          &fe = fe_collection[0];
+    FEValues<dim>                        fe_values(fe,
                             QGauss<dim>(degree + 1),
                             update_values | update_quadrature_points | update_JxW_values);
-    FEFaceValues<dim> fe_face_values(fe,
+    FEFaceValues<dim>                    fe_face_values(fe,
                                      QGauss<dim - 1>(degree + 1),
-                                     update_values | update_quadrature_points |
-                                       update_JxW_values);
+                                     update_values | update_quadrature_points | update_JxW_values);
     const unsigned int                   n = fe.n_dofs_per_cell();
     dealii::Vector<double>               cell_rhs(n);
     std::vector<types::global_dof_index> dofs(n);
@@ -692,7 +696,11 @@ namespace perideal
           for (const unsigned int comp : c.components)
             mask[comp] = true;
           for (const auto id : c.boundary_ids)
-            VectorTools::interpolate_boundary_values(dof_handler, id, g, constraints, ComponentMask(mask));
+            VectorTools::interpolate_boundary_values(dof_handler,
+                                                     id,
+                                                     g,
+                                                     constraints,
+                                                     ComponentMask(mask));
         }
     constraints.close();
   }
@@ -709,15 +717,14 @@ namespace perideal
     AffineConstraints<double> constraints;
     make_constraints(time, constraints);
 
-    const auto   &fe = fe_collection[0];
-    FEValues<dim> fe_values(fe,
+    const auto                          &fe = fe_collection[0];
+    FEValues<dim>                        fe_values(fe,
                             QGauss<dim>(degree + 1),
                             update_values | update_gradients | update_quadrature_points |
                               update_JxW_values);
-    FEFaceValues<dim> fe_face_values(fe,
+    FEFaceValues<dim>                    fe_face_values(fe,
                                      QGauss<dim - 1>(degree + 1),
-                                     update_values | update_quadrature_points |
-                                       update_JxW_values);
+                                     update_values | update_quadrature_points | update_JxW_values);
     const unsigned int                   n = fe.n_dofs_per_cell();
     FullMatrix<double>                   cell_matrix(n, n);
     dealii::Vector<double>               cell_rhs(n);
@@ -749,8 +756,8 @@ namespace perideal
     amg_data.aggregation_threshold = 0.02;
     amg.initialize(system_matrix, amg_data);
 
-    const double  rhs_norm = rhs.l2_norm();
-    SolverControl control(10000, solver_tolerance * std::max(rhs_norm, 1e-300));
+    const double     rhs_norm = rhs.l2_norm();
+    SolverControl    control(10000, solver_tolerance * std::max(rhs_norm, 1e-300));
     SolverCG<Vector> cg(control);
     if (rhs_norm > 0.)
       {
@@ -767,7 +774,8 @@ namespace perideal
                                    " CG iterations (target " +
                                    ParameterUtilities::format_number(control.tolerance()) +
                                    "). Is every rigid motion constrained by the displacement "
-                                   "conditions in <" + section + "/Boundary conditions>?"));
+                                   "conditions in <" +
+                                   section + "/Boundary conditions>?"));
           }
       }
     constraints.distribute(u);
@@ -897,7 +905,8 @@ namespace perideal
         return next_selected(tria, ++next);
       });
     const std::vector<DataComponentInterpretation::DataComponentInterpretation> vector(
-      dim, DataComponentInterpretation::component_is_part_of_vector);
+      dim,
+      DataComponentInterpretation::component_is_part_of_vector);
     data_out.add_data_vector(u,
                              std::vector<std::string>(dim, "displacement"),
                              DataOut<dim>::type_dof_data,
@@ -920,7 +929,7 @@ namespace perideal
   FESolid<dim>::summary() const
   {
     std::ostringstream out;
-    const auto n_active = Utilities::MPI::sum<std::uint64_t>(
+    const auto         n_active = Utilities::MPI::sum<std::uint64_t>(
       [&] {
         std::uint64_t count = 0;
         for (const auto &cell : dof_handler.active_cell_iterators())

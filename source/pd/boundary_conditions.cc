@@ -104,15 +104,17 @@ namespace perideal
           for (const auto &comp : Utilities::split_string_list(prm.get("Components"), ','))
             c.components.push_back(comp == "x" ? 0 : comp == "y" ? 1 : 2);
         c.expression = prm.get("Function");
-        c.function   = ParameterUtilities::make_function<dim>(c.expression, c.components.size(), prefix + "Function");
+        c.function   = ParameterUtilities::make_function<dim>(c.expression,
+                                                            c.components.size(),
+                                                            prefix + "Function");
         conditions.push_back(std::move(c));
         prm.leave_subsection();
       }
     prm.leave_subsection();
     prm.enter_subsection("Body force");
     const std::string expression = prm.get("Function");
-    body_force                   = ParameterUtilities::make_function<dim>(expression, dim, "Body force/Function");
-    has_body_force               = false;
+    body_force     = ParameterUtilities::make_function<dim>(expression, dim, "Body force/Function");
+    has_body_force = false;
     for (const auto &part : Utilities::split_string_list(expression, ';'))
       if (part != "0")
         has_body_force = true;

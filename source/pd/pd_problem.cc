@@ -380,7 +380,7 @@ namespace perideal
 
     if (energy_weight)
       {
-        const auto &x = particle_system.positions();
+        const auto         &x = particle_system.positions();
         std::vector<double> weight(x.size());
         for (unsigned int i = 0; i < x.size(); ++i)
           weight[i] = energy_weight(x[i]);

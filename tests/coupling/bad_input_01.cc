@@ -1,9 +1,9 @@
 // ---------------------------------------------------------------------
 // Bad input of a coupled problem: a valid file is accepted; each bad case stops with a message
-// naming the entry, before the time stepping starts: a blending function outside [0, 1], an overlap narrower than the
-// horizon, particles outside the mesh, a PD condition on particles that follow the FE field,
-// two FE conditions on the same component of a boundary, a state-based model, an implicit
-// solver.
+// naming the entry, before the time stepping starts: a blending function outside [0, 1], an overlap
+// narrower than the horizon, particles outside the mesh, a PD condition on particles that follow
+// the FE field, two FE conditions on the same component of a boundary, a state-based model, an
+// implicit solver.
 // ---------------------------------------------------------------------
 #include <deal.II/base/parameter_handler.h>
 
@@ -11,12 +11,12 @@
 #include <perideal/base/region.h>
 #include <perideal/coupling/coupled_problem.h>
 
-#include <tests.h>
-
 #include <fstream>
 #include <iostream>
 #include <map>
 #include <sstream>
+
+#include <tests.h>
 
 using namespace dealii;
 
@@ -99,8 +99,7 @@ end
   }
 
   void
-  run_case(const std::string                                        &name,
-           const std::vector<std::pair<std::string, std::string>> &changes)
+  run_case(const std::string &name, const std::vector<std::pair<std::string, std::string>> &changes)
   {
     std::map<std::string, std::string> values = {{"PLATE_X", "0.1"},
                                                  {"MODEL", "bond based"},
@@ -134,7 +133,7 @@ end
           perideal::BoundaryConditions<2>::parse_names(first),
           perideal::FESolid<2>::parse_names(first));
         perideal::ParameterUtilities::parse_file(prm, file);
-        std::ostringstream               log;
+        std::ostringstream          log;
         perideal::CoupledProblem<2> problem(MPI_COMM_WORLD, log);
         problem.parse_parameters(prm);
         problem.setup();

@@ -17,11 +17,11 @@
 
 #include <perideal/coupling/transfer_operator.h>
 
-#include <tests.h>
-
 #include <cmath>
 #include <iostream>
 #include <sstream>
+
+#include <tests.h>
 
 using namespace dealii;
 
@@ -73,9 +73,8 @@ namespace
                                 "end\n");
     fe.parse_parameters(prm, perideal::PlanarAssumption::plane_stress, 1.);
     // beta ramps from 0 at x = 0.04 to 1 at x = 0.06.
-    fe.setup([](const Point<dim> &x) {
-      return 1. - std::min(1., std::max(0., (x[0] - 0.04) / 0.02));
-    });
+    fe.setup(
+      [](const Point<dim> &x) { return 1. - std::min(1., std::max(0., (x[0] - 0.04) / 0.02)); });
   }
 
   template <int dim>
@@ -97,11 +96,10 @@ namespace
     upper[1] = 0.05;
     if (dim == 3)
       upper[dim - 1] = 0.025;
-    particles.generate(
-      settings,
-      BoundingBox<dim>(std::make_pair(lower, upper)),
-      [](const Point<dim> &) { return true; },
-      {});
+    particles.generate(settings,
+                       BoundingBox<dim>(std::make_pair(lower, upper)),
+                       [](const Point<dim> &) { return true; },
+                       {});
 
     perideal::TransferOperator<dim> transfer;
     transfer.reinit(fe, particles);
@@ -122,7 +120,7 @@ namespace
     perideal::ParticleVector u;
     particles.reinit_vector(u, dim);
     transfer.interpolate(U, u);
-    double            error = 0.;
+    double                 error = 0.;
     const LinearField<dim> field;
     for (unsigned int i = 0; i < particles.n_owned(); ++i)
       if (transfer.is_slaved(i))
@@ -183,7 +181,7 @@ namespace
               << ((force_fe - force_p).norm() / force_p.norm() < 1e-12 ? "< 1e-12" : "VIOLATED")
               << ", moment balance: "
               << (std::abs(moment_fe - moment_p) / std::abs(moment_p) < 1e-12 ? "< 1e-12" :
-                                                                                 "VIOLATED")
+                                                                                "VIOLATED")
               << std::endl;
   }
 
@@ -197,11 +195,10 @@ namespace
     typename perideal::ParticleSystem<2>::Settings settings;
     settings.spacing = 0.0025;
     settings.horizon = 3.015 * settings.spacing;
-    particles.generate(
-      settings,
-      BoundingBox<2>(std::make_pair(Point<2>(0.05, 0.), Point<2>(0.11, 0.05))),
-      [](const Point<2> &) { return true; },
-      {});
+    particles.generate(settings,
+                       BoundingBox<2>(std::make_pair(Point<2>(0.05, 0.), Point<2>(0.11, 0.05))),
+                       [](const Point<2> &) { return true; },
+                       {});
     perideal::TransferOperator<2> transfer;
     try
       {

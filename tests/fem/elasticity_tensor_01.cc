@@ -8,12 +8,12 @@
 
 #include <perideal/base/elasticity.h>
 
-#include <tests.h>
-
 #include <cmath>
 #include <iostream>
 #include <sstream>
 #include <string>
+
+#include <tests.h>
 
 using namespace dealii;
 using perideal::ElasticMaterial;
@@ -49,11 +49,10 @@ namespace
 int
 main()
 {
-  const double E = 200e9, nu = 0.3, G = E / (2. * (1. + nu));
+  const double      E = 200e9, nu = 0.3, G = E / (2. * (1. + nu));
   const std::string E3 = std::to_string(E) + ", " + std::to_string(E) + ", " + std::to_string(E);
   const std::string G3 = std::to_string(G) + ", " + std::to_string(G) + ", " + std::to_string(G);
-  const std::string isotropic =
-    "set Young's modulus = 200e9\nset Poisson's ratio = 0.3\n";
+  const std::string isotropic = "set Young's modulus = 200e9\nset Poisson's ratio = 0.3\n";
 
   // Isotropic: the same tensor as the closed form (lambda, mu) in 3D, plane strain, plane stress.
   for (const auto planar : {PlanarAssumption::plane_strain, PlanarAssumption::plane_stress})
@@ -76,12 +75,12 @@ main()
                     C3),
          1e-14);
   report("transversely isotropic with isotropic constants",
-         difference(make("set Symmetry = transversely isotropic\nset Young's moduli = " +
-                         std::to_string(E) + ", " + std::to_string(E) +
-                         "\nset Poisson's ratios = 0.3, 0.3\nset Shear moduli = " +
-                         std::to_string(G) + "\n")
-                      .tensor<3>(PlanarAssumption::three_dimensional),
-                    C3),
+         difference(
+           make("set Symmetry = transversely isotropic\nset Young's moduli = " + std::to_string(E) +
+                ", " + std::to_string(E) +
+                "\nset Poisson's ratios = 0.3, 0.3\nset Shear moduli = " + std::to_string(G) + "\n")
+             .tensor<3>(PlanarAssumption::three_dimensional),
+           C3),
          1e-14);
 
   // Rotations: an isotropic material is invariant.
@@ -95,8 +94,8 @@ main()
   // 2 C44) / 2, C'66 = (C11 - C12) / 2, C'44 = C44, C'33 = C11.
   {
     const double c11 = 168e9, c12 = 121e9, c44 = 75e9; // copper
-    const auto   m   = make("set Symmetry = cubic\nset Cubic constants = 168e9, 121e9, 75e9\n"
-                         "set Orientation = 45, 0, 0\n")
+    const auto   m = make("set Symmetry = cubic\nset Cubic constants = 168e9, 121e9, 75e9\n"
+                          "set Orientation = 45, 0, 0\n")
                      .voigt_stiffness();
     const double error = std::max({std::abs(m(0, 0) - (c11 + c12 + 2. * c44) / 2.),
                                    std::abs(m(0, 1) - (c11 + c12 - 2. * c44) / 2.),
@@ -113,9 +112,9 @@ main()
   // Orthotropic plane stress: the in-plane compliance is that of the engineering constants.
   {
     const double E1 = 140e9, E2 = 10e9, nu12 = 0.3, G12 = 5e9;
-    const auto   C  = make("set Symmetry = orthotropic\nset Young's moduli = 140e9, 10e9, 10e9\n"
-                        "set Poisson's ratios = 0.3, 0.3, 0.45\n"
-                        "set Shear moduli = 5e9, 5e9, 3.4e9\n")
+    const auto   C = make("set Symmetry = orthotropic\nset Young's moduli = 140e9, 10e9, 10e9\n"
+                          "set Poisson's ratios = 0.3, 0.3, 0.45\n"
+                          "set Shear moduli = 5e9, 5e9, 3.4e9\n")
                      .tensor<2>(PlanarAssumption::plane_stress);
     // Uniaxial stress along 1: eps11 = 1/E1, eps22 = -nu12/E1; pure shear: 2 eps12 = 1/G12.
     SymmetricTensor<2, 2> eps;
@@ -123,12 +122,12 @@ main()
     eps[1][1]                         = -nu12 / E1;
     const SymmetricTensor<2, 2> sigma = C * eps;
     SymmetricTensor<2, 2>       shear;
-    shear[0][1]                          = 0.5 / G12;
-    const SymmetricTensor<2, 2> tau      = C * shear;
-    const double                error    = std::max({std::abs(sigma[0][0] - 1.),
-                                      std::abs(sigma[1][1]),
-                                      std::abs(sigma[0][1]),
-                                      std::abs(tau[0][1] - 1.)});
+    shear[0][1]                       = 0.5 / G12;
+    const SymmetricTensor<2, 2> tau   = C * shear;
+    const double                error = std::max({std::abs(sigma[0][0] - 1.),
+                                                  std::abs(sigma[1][1]),
+                                                  std::abs(sigma[0][1]),
+                                                  std::abs(tau[0][1] - 1.)});
     report("orthotropic plane stress: uniaxial and shear compliance", error, 1e-12);
     (void)E2;
   }
@@ -144,9 +143,9 @@ main()
           expected[i][j] = expected[j][i] = (i == j ? 100e9 : 1e9 * (1 + k % 7));
           values += (k > 0 ? ", " : "") + std::to_string(expected[i][j]);
         }
-    const auto   m     = make("set Symmetry = general\nset Stiffness constants = " + values + "\n")
-                     .voigt_stiffness();
-    double       error = 0.;
+    const auto m =
+      make("set Symmetry = general\nset Stiffness constants = " + values + "\n").voigt_stiffness();
+    double error = 0.;
     for (unsigned int i = 0; i < 6; ++i)
       for (unsigned int j = 0; j < 6; ++j)
         error = std::max(error, std::abs(m(i, j) - expected[i][j]) / 100e9);

@@ -119,9 +119,9 @@ namespace
   std::string
   boundary_functions()
   {
-    const auto        L = linear_part<dim>();
-    const char       *names[] = {"x", "y", "z"};
-    std::string       text;
+    const auto  L       = linear_part<dim>();
+    const char *names[] = {"x", "y", "z"};
+    std::string text;
     for (unsigned int i = 0; i < dim; ++i)
       {
         text += (i > 0 ? "; " : "");
@@ -141,43 +141,52 @@ namespace
       {
         ParameterHandler prm;
         perideal::FESolid<dim>::declare_parameters(prm, {"clamp"});
-        prm.parse_input_from_string(
-          "subsection Finite elements\n"
-          "  set Generator = hyper_cube\n"
-          "  set Generator arguments = 0 : 1 : false\n"
-          "  set Global refinements = " + std::to_string(level) + "\n"
-          "  set Polynomial degree = " + std::to_string(degree) + "\n"
-          "  set Solver tolerance = 1e-12\n"
-          "  subsection Elasticity\n"
-          "    set Symmetry = orthotropic\n"
-          "    set Young's moduli = 140e9, 10e9, 12e9\n"
-          "    set Poisson's ratios = 0.3, 0.28, 0.4\n"
-          "    set Shear moduli = 6e9, 5e9, 3.5e9\n"
-          "    set Orientation = 30, 20, 10\n"
-          "  end\n"
-          "  subsection Boundary conditions\n"
-          "    set Names = clamp\n"
-          "    subsection clamp\n"
-          "      set Boundary ids = 0\n"
-          "      set Function = " + boundary_functions<dim>() + "\n"
-          "    end\n"
-          "  end\n"
-          "end\n");
+        prm.parse_input_from_string("subsection Finite elements\n"
+                                    "  set Generator = hyper_cube\n"
+                                    "  set Generator arguments = 0 : 1 : false\n"
+                                    "  set Global refinements = " +
+                                    std::to_string(level) +
+                                    "\n"
+                                    "  set Polynomial degree = " +
+                                    std::to_string(degree) +
+                                    "\n"
+                                    "  set Solver tolerance = 1e-12\n"
+                                    "  subsection Elasticity\n"
+                                    "    set Symmetry = orthotropic\n"
+                                    "    set Young's moduli = 140e9, 10e9, 12e9\n"
+                                    "    set Poisson's ratios = 0.3, 0.28, 0.4\n"
+                                    "    set Shear moduli = 6e9, 5e9, 3.5e9\n"
+                                    "    set Orientation = 30, 20, 10\n"
+                                    "  end\n"
+                                    "  subsection Boundary conditions\n"
+                                    "    set Names = clamp\n"
+                                    "    subsection clamp\n"
+                                    "      set Boundary ids = 0\n"
+                                    "      set Function = " +
+                                    boundary_functions<dim>() +
+                                    "\n"
+                                    "    end\n"
+                                    "  end\n"
+                                    "end\n");
         perideal::FESolid<dim> fe(MPI_COMM_WORLD);
         fe.parse_parameters(prm, PlanarAssumption::plane_strain, 1.);
         fe.set_body_force(std::make_shared<BodyForce<dim>>(fe.elasticity_tensor()));
         fe.setup();
         fe.solve_static(0.);
 
-        const ExactSolution<dim>        exact;
-        dealii::Vector<float>           cellwise(fe.get_triangulation().n_active_cells());
-        const QGauss<dim>               quadrature(degree + 2);
-        double                          errors[2];
-        const VectorTools::NormType     norms[2] = {VectorTools::L2_norm, VectorTools::H1_seminorm};
+        const ExactSolution<dim>    exact;
+        dealii::Vector<float>       cellwise(fe.get_triangulation().n_active_cells());
+        const QGauss<dim>           quadrature(degree + 2);
+        double                      errors[2];
+        const VectorTools::NormType norms[2] = {VectorTools::L2_norm, VectorTools::H1_seminorm};
         for (unsigned int k = 0; k < 2; ++k)
           {
-            VectorTools::integrate_difference(
-              fe.get_dof_handler(), fe.solution(), exact, cellwise, quadrature, norms[k]);
+            VectorTools::integrate_difference(fe.get_dof_handler(),
+                                              fe.solution(),
+                                              exact,
+                                              cellwise,
+                                              quadrature,
+                                              norms[k]);
             errors[k] =
               VectorTools::compute_global_error(fe.get_triangulation(), cellwise, norms[k]);
           }

@@ -13,8 +13,6 @@
 #include <perideal/pd/particle_system.h>
 #include <perideal/pd/pd_problem.h>
 
-#include <tests.h>
-
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -24,6 +22,8 @@
 #include <string>
 #include <utility>
 #include <vector>
+
+#include <tests.h>
 
 namespace pd_tests
 {

@@ -47,8 +47,7 @@ namespace perideal
    */
   template <int dim>
   dealii::SymmetricTensor<4, dim>
-  reduce_elasticity_tensor(const dealii::FullMatrix<double> &voigt,
-                           const PlanarAssumption            planar);
+  reduce_elasticity_tensor(const dealii::FullMatrix<double> &voigt, const PlanarAssumption planar);
 
   /**
    * @brief The 3D stiffness @p voigt (6 x 6 Voigt matrix) of a material whose axes are rotated

@@ -69,7 +69,7 @@ namespace perideal
     double       end_time = 0., requested_time_step = 0., safety_factor = 0.8;
     std::string  output_directory;
     unsigned int output_interval = 0, statistics_interval = 1;
-    bool         show_progress   = true;
+    bool         show_progress = true;
 
     dealii::LinearAlgebra::distributed::Vector<double> f_ext, previous_f_ext, previous_u;
     double                                             external_work = 0.;

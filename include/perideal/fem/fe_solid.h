@@ -62,11 +62,11 @@ namespace perideal
     /// A boundary condition on a set of boundary ids.
     struct Condition
     {
-      std::string                                name;
-      std::set<dealii::types::boundary_id>       boundary_ids;
-      ConditionType                              type = ConditionType::displacement;
-      std::vector<unsigned int>                  components;
-      std::shared_ptr<dealii::Function<dim>>     function;
+      std::string                            name;
+      std::set<dealii::types::boundary_id>   boundary_ids;
+      ConditionType                          type = ConditionType::displacement;
+      std::vector<unsigned int>              components;
+      std::shared_ptr<dealii::Function<dim>> function;
     };
 
     /// The weight 1 - beta(x) of the FE energy; cells where it is 0 everywhere are FE_Nothing.
@@ -166,8 +166,7 @@ namespace perideal
      * cancellation between neighbours.
      */
     std::vector<double>
-    absolute_row_sums(
-      const dealii::LinearAlgebra::distributed::Vector<double> *x = nullptr) const;
+    absolute_row_sums(const dealii::LinearAlgebra::distributed::Vector<double> *x = nullptr) const;
 
     /**
      * @brief Strain energy 1/2 u^T K u and reactions sum over the dofs of every displacement
@@ -183,10 +182,10 @@ namespace perideal
      * FE-carrying cells as `<directory>/<base_name>_<step>.h5` plus `<base_name>.xdmf`.
      */
     void
-    write_output(const std::string                                         &directory,
-                 const std::string                                         &base_name,
-                 const unsigned int                                         step,
-                 const double                                               time,
+    write_output(const std::string                                        &directory,
+                 const std::string                                        &base_name,
+                 const unsigned int                                        step,
+                 const double                                              time,
                  const dealii::LinearAlgebra::distributed::Vector<double> &u);
 
     /// A vector with the layout of the solution (owned + ghosted dofs).
@@ -224,23 +223,23 @@ namespace perideal
     /// A dof of a displacement or velocity condition.
     struct PrescribedDof
     {
-      unsigned int      local_index;
-      unsigned int      condition;
-      unsigned int      function_component;
+      unsigned int       local_index;
+      unsigned int       condition;
+      unsigned int       function_component;
       dealii::Point<dim> support_point;
     };
 
     void
     make_mesh();
     void
-    assemble_cell_matrix(dealii::FEValues<dim> &fe_values,
+    assemble_cell_matrix(dealii::FEValues<dim>      &fe_values,
                          dealii::FullMatrix<double> &cell_matrix) const;
     void
     assemble_cell_load(const typename dealii::DoFHandler<dim>::active_cell_iterator &cell,
-                       const double                                                 time,
-                       dealii::FEValues<dim>                                       &fe_values,
-                       dealii::FEFaceValues<dim> &fe_face_values,
-                       dealii::Vector<double>    &cell_rhs) const;
+                       const double                                                  time,
+                       dealii::FEValues<dim>                                        &fe_values,
+                       dealii::FEFaceValues<dim>                                    &fe_face_values,
+                       dealii::Vector<double> &cell_rhs) const;
     void
     make_constraints(const double time, dealii::AffineConstraints<double> &constraints) const;
     void
@@ -252,9 +251,9 @@ namespace perideal
     std::string                            mesh_file, generator, generator_arguments;
     unsigned int                           global_refinements = 0;
     unsigned int                           degree             = 1;
-    PlanarAssumption                       planar = PlanarAssumption::three_dimensional;
-    double                                 thickness = 1.;
-    double                                 density   = 0.;
+    PlanarAssumption                       planar             = PlanarAssumption::three_dimensional;
+    double                                 thickness          = 1.;
+    double                                 density            = 0.;
     ElasticMaterial                        material;
     dealii::SymmetricTensor<4, dim>        C;
     std::vector<Condition>                 condition_list;
@@ -264,17 +263,17 @@ namespace perideal
     std::vector<std::pair<dealii::types::boundary_id, dealii::Point<2>>> circular_boundaries;
 
     // State.
-    WeightFunction                                      fe_weight;
-    dealii::parallel::distributed::Triangulation<dim>   triangulation;
-    dealii::hp::FECollection<dim>                       fe_collection;
-    dealii::DoFHandler<dim>                             dof_handler;
-    dealii::IndexSet                                    owned_dofs, relevant_dofs;
-    dealii::AffineConstraints<double>                   hanging_constraints;
-    SparseMatrix                                        stiffness, system_matrix;
+    WeightFunction                                     fe_weight;
+    dealii::parallel::distributed::Triangulation<dim>  triangulation;
+    dealii::hp::FECollection<dim>                      fe_collection;
+    dealii::DoFHandler<dim>                            dof_handler;
+    dealii::IndexSet                                   owned_dofs, relevant_dofs;
+    dealii::AffineConstraints<double>                  hanging_constraints;
+    SparseMatrix                                       stiffness, system_matrix;
     dealii::LinearAlgebra::distributed::Vector<double> mass, displacement;
-    std::vector<bool>                                   prescribed;
-    std::vector<PrescribedDof>                          prescribed_dofs;
-    std::vector<dealii::XDMFEntry>                      xdmf_entries;
+    std::vector<bool>                                  prescribed;
+    std::vector<PrescribedDof>                         prescribed_dofs;
+    std::vector<dealii::XDMFEntry>                     xdmf_entries;
   };
 } // namespace perideal
 
