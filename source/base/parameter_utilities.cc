@@ -135,10 +135,83 @@ namespace perideal
       return function;
     }
 
+    template <int dim>
+    void
+    declare_prescribed_components(dealii::ParameterHandler &prm)
+    {
+      prm.declare_entry("Components",
+                        dim == 2 ? "x, y" : "x, y, z",
+                        dealii::Patterns::MultipleSelection(dim == 2 ? "x|y" : "x|y|z"),
+                        "The prescribed components (displacement, velocity); ignored for "
+                        "traction.");
+      prm.declare_entry("Function",
+                        "0",
+                        dealii::Patterns::Anything(),
+                        "One expression of x, y, (z) and t [s] per listed component (all dim "
+                        "components for traction), separated by ';'; a single 0 is zero for "
+                        "all.");
+    }
+
+    void
+    declare_time_stepping(dealii::ParameterHandler &prm)
+    {
+      prm.declare_entry("End time", "0", dealii::Patterns::Double(0.), "Simulated time [s].");
+      prm.declare_entry("Time step",
+                        "0",
+                        dealii::Patterns::Double(0.),
+                        "Time step [s]; 0 chooses Safety factor times the stable limit. A value "
+                        "above the stable limit is refused.");
+      prm.declare_entry("Safety factor",
+                        "0.8",
+                        dealii::Patterns::Double(0.),
+                        "Fraction of the stable time step used when 'Time step' is 0, in (0, 1].");
+    }
+
+    void
+    parse_time_stepping(dealii::ParameterHandler &prm,
+                        double                   &end_time,
+                        double                   &time_step,
+                        double                   &safety_factor)
+    {
+      end_time      = prm.get_double("End time");
+      time_step     = prm.get_double("Time step");
+      safety_factor = prm.get_double("Safety factor");
+      AssertThrow(safety_factor > 0. && safety_factor <= 1.,
+                  dealii::ExcMessage("The parameter <Time stepping/Safety factor> must lie in "
+                                     "(0, 1]."));
+    }
+
+    double
+    choose_time_step(const double requested, const double safety_factor, const double stable_dt)
+    {
+      if (requested <= 0.)
+        return safety_factor * stable_dt;
+      AssertThrow(requested <= stable_dt,
+                  dealii::ExcMessage(
+                    "The parameter <Time stepping/Time step> = " + format_number(requested) +
+                    " s exceeds the stable limit " + format_number(stable_dt) +
+                    " s of this discretization; accepted: 0 (automatic) or a "
+                    "value up to the limit."));
+      return requested;
+    }
+
+    std::vector<unsigned int>
+    parse_components(dealii::ParameterHandler &prm)
+    {
+      std::vector<unsigned int> components;
+      for (const auto &name : dealii::Utilities::split_string_list(prm.get("Components"), ','))
+        components.push_back(name == "x" ? 0 : name == "y" ? 1 : 2);
+      return components;
+    }
+
     template dealii::Point<2>
     parse_point<2>(const std::string &, const std::string &);
     template dealii::Point<3>
     parse_point<3>(const std::string &, const std::string &);
+    template void
+    declare_prescribed_components<2>(dealii::ParameterHandler &);
+    template void
+    declare_prescribed_components<3>(dealii::ParameterHandler &);
     template std::unique_ptr<dealii::FunctionParser<2>>
     make_function<2>(const std::string &, const unsigned int, const std::string &);
     template std::unique_ptr<dealii::FunctionParser<3>>

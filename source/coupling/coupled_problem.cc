@@ -242,20 +242,9 @@ namespace perideal
                            "<Discretization/Body>."));
 
     // The time step: the smaller of the two regions' stable steps.
-    const double fe_dt  = fe.stable_time_step(&mass);
-    const double stable = std::min(fe_dt, pd.stable_dt);
-    if (pd.requested_time_step > 0.)
-      {
-        AssertThrow(pd.requested_time_step <= stable,
-                    ExcMessage("The parameter <Time stepping/Time step> = " +
-                               ParameterUtilities::format_number(pd.requested_time_step) +
-                               " s exceeds the stable limit " +
-                               ParameterUtilities::format_number(stable) +
-                               " s of the coupled problem; use 0 (automatic) or at most that."));
-        dt = pd.requested_time_step;
-      }
-    else
-      dt = pd.safety_factor * stable;
+    const double fe_dt = fe.stable_time_step(&mass);
+    stable_dt          = std::min(fe_dt, pd.stable_dt);
+    dt = ParameterUtilities::choose_time_step(pd.requested_time_step, pd.safety_factor, stable_dt);
 
     const std::string fe_summary = fe.summary();
     const auto        n_slaved   = transfer.n_global_slaved();
@@ -498,17 +487,11 @@ namespace perideal
     strain                = Utilities::MPI::sum(strain, comm) + fe.strain_energy(U);
     max_u                 = Utilities::MPI::max(max_u, comm);
     const double work_sum = Utilities::MPI::sum(local_work, comm);
-    if (step == 0)
-      {
-        initial_energy             = kinetic + strain;
-        initial_prescribed_kinetic = prescribed_kinetic;
-      }
-    const double work         = work_sum + prescribed_kinetic - initial_prescribed_kinetic;
-    const double energy_error = kinetic + strain - work - initial_energy;
+    energy_balance.record(step, kinetic, strain, work_sum, prescribed_kinetic);
+    energy_balance.check_stable(time, stable_dt);
+    const double work         = energy_balance.work();
+    const double energy_error = energy_balance.error();
     const auto   broken       = n_broken_bonds(ps);
-    AssertThrow(std::isfinite(kinetic) && std::isfinite(strain),
-                ExcMessage("The coupled run became unstable at step " + std::to_string(step) +
-                           ": non-finite energy. Reduce <Time stepping/Safety factor>."));
 
     // Reactions: FE supports (the part of the residual they balance) and PD conditions.
     FEVector support;

@@ -49,15 +49,7 @@ namespace perideal
                       "'explicit': velocity-Verlet dynamics with the lumped mass to End time.");
     prm.leave_subsection();
     prm.enter_subsection("Time stepping");
-    prm.declare_entry("End time", "0", Patterns::Double(0.), "Simulated time [s].");
-    prm.declare_entry("Time step",
-                      "0",
-                      Patterns::Double(0.),
-                      "Explicit time step [s]; 0: Safety factor times the stable step.");
-    prm.declare_entry("Safety factor",
-                      "0.8",
-                      Patterns::Double(0., 1.),
-                      "Fraction of the stable time step used when Time step = 0.");
+    ParameterUtilities::declare_time_stepping(prm);
     prm.leave_subsection();
     prm.enter_subsection("Output");
     prm.declare_entry("Directory", "output", Patterns::Anything(), "Where results are written.");
@@ -87,9 +79,7 @@ namespace perideal
     explicit_dynamics = (prm.get("Type") == "explicit");
     prm.leave_subsection();
     prm.enter_subsection("Time stepping");
-    end_time            = prm.get_double("End time");
-    requested_time_step = prm.get_double("Time step");
-    safety_factor       = prm.get_double("Safety factor");
+    ParameterUtilities::parse_time_stepping(prm, end_time, requested_time_step, safety_factor);
     prm.leave_subsection();
     if (explicit_dynamics)
       {
@@ -213,14 +203,8 @@ namespace perideal
   FEProblem<dim>::run_explicit()
   {
     const double stable_dt = fe.stable_time_step();
-    const double dt = requested_time_step > 0. ? requested_time_step : safety_factor * stable_dt;
-    AssertThrow(dt <= stable_dt,
-                ExcMessage("The parameter <Time stepping/Time step> = " +
-                           ParameterUtilities::format_number(dt) +
-                           " s exceeds the stable time step " +
-                           ParameterUtilities::format_number(stable_dt) +
-                           " s of the FE region (lumped mass, Gershgorin bound); use at most "
-                           "that, or 0 for the automatic choice."));
+    const double dt =
+      ParameterUtilities::choose_time_step(requested_time_step, safety_factor, stable_dt);
     const unsigned int n_steps = static_cast<unsigned int>(std::ceil(end_time / dt - 1e-12));
     if (is_root)
       log << "explicit dynamics: dt = " << dt << " s (stable " << stable_dt << " s), " << n_steps

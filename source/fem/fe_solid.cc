@@ -251,16 +251,7 @@ namespace perideal
                           Patterns::Selection("displacement|velocity|traction"),
                           "'displacement' [m] or 'velocity' [m/s, explicit dynamics only] of the "
                           "listed components, or 'traction' [Pa] (all components).");
-        prm.declare_entry("Components",
-                          dim == 2 ? "x, y" : "x, y, z",
-                          Patterns::MultipleSelection(dim == 2 ? "x|y" : "x|y|z"),
-                          "The prescribed components (displacement, velocity); ignored for "
-                          "traction.");
-        prm.declare_entry("Function",
-                          "0",
-                          Patterns::Anything(),
-                          "One expression of x, y, (z) and t [s] per listed component (all dim "
-                          "components for traction), separated by ';'.");
+        ParameterUtilities::declare_prescribed_components<dim>(prm);
         prm.leave_subsection();
       }
     prm.leave_subsection();
@@ -326,8 +317,7 @@ namespace perideal
           for (unsigned int d = 0; d < dim; ++d)
             c.components.push_back(d);
         else
-          for (const auto &comp : Utilities::split_string_list(prm.get("Components"), ','))
-            c.components.push_back(comp == "x" ? 0 : comp == "y" ? 1 : 2);
+          c.components = ParameterUtilities::parse_components(prm);
         c.function = ParameterUtilities::make_function<dim>(prm.get("Function"),
                                                             c.components.size(),
                                                             prefix + "Function");

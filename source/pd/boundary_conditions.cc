@@ -40,16 +40,7 @@ namespace perideal
                           "'displacement' [m] or 'velocity' [m/s] of the listed components, or "
                           "'traction' [Pa] (all components) applied as a body force in the region, "
                           "a surface layer of thickness 'Layer thickness'.");
-        prm.declare_entry("Components",
-                          dim == 2 ? "x, y" : "x, y, z",
-                          Patterns::MultipleSelection(dim == 2 ? "x|y" : "x|y|z"),
-                          "The prescribed components (displacement, velocity); ignored for "
-                          "traction.");
-        prm.declare_entry("Function",
-                          "0",
-                          Patterns::Anything(),
-                          "One expression of x, y, (z) and t [s] per listed component (all dim "
-                          "components for traction), separated by ';'.");
+        ParameterUtilities::declare_prescribed_components<dim>(prm);
         prm.declare_entry("Layer thickness",
                           "0",
                           Patterns::Double(0.),
@@ -101,8 +92,7 @@ namespace perideal
             ParameterUtilities::require_positive(c.layer_thickness, prefix + "Layer thickness");
           }
         else
-          for (const auto &comp : Utilities::split_string_list(prm.get("Components"), ','))
-            c.components.push_back(comp == "x" ? 0 : comp == "y" ? 1 : 2);
+          c.components = ParameterUtilities::parse_components(prm);
         c.expression = prm.get("Function");
         c.function   = ParameterUtilities::make_function<dim>(c.expression,
                                                             c.components.size(),

@@ -82,6 +82,46 @@ namespace perideal
     template <int dim>
     std::unique_ptr<dealii::FunctionParser<dim>>
     make_function(const std::string &expression, const unsigned int n, const std::string &entry);
+
+    /**
+     * @brief Declare the entries "Components" (x, y, (z); default all) and "Function" (one
+     * expression per listed component, or per component for a traction) of a boundary
+     * condition, for particles and finite elements alike; read them with
+     * parse_components() and make_function().
+     */
+    template <int dim>
+    void
+    declare_prescribed_components(dealii::ParameterHandler &prm);
+
+    /**
+     * @brief Declare "End time", "Time step" and "Safety factor" in the current subsection
+     * (the "Time stepping" of every problem type).
+     */
+    void
+    declare_time_stepping(dealii::ParameterHandler &prm);
+
+    /**
+     * @brief Read the entries of declare_time_stepping(); throws unless 0 < Safety factor <= 1.
+     */
+    void
+    parse_time_stepping(dealii::ParameterHandler &prm,
+                        double                   &end_time,
+                        double                   &time_step,
+                        double                   &safety_factor);
+
+    /**
+     * @brief The time step of an explicit run: @p requested if it is positive (refused, naming
+     * <Time stepping/Time step>, if above @p stable_dt), else @p safety_factor times
+     * @p stable_dt.
+     */
+    double
+    choose_time_step(const double requested, const double safety_factor, const double stable_dt);
+
+    /**
+     * @brief The component indices listed in the entry "Components".
+     */
+    std::vector<unsigned int>
+    parse_components(dealii::ParameterHandler &prm);
   } // namespace ParameterUtilities
 } // namespace perideal
 

@@ -7,6 +7,7 @@
 #include <deal.II/base/function_parser.h>
 #include <deal.II/base/parameter_handler.h>
 
+#include <perideal/base/energy_balance.h>
 #include <perideal/base/statistics_file.h>
 #include <perideal/coupling/transfer_operator.h>
 #include <perideal/fem/fe_solid.h>
@@ -90,13 +91,14 @@ namespace perideal
     std::string                                  blending_expression;
     std::unique_ptr<dealii::FunctionParser<dim>> beta;
 
-    double              dt = 0.;
+    double              dt = 0., stable_dt = 0.;
     FEVector            U, V, A, mass, f_ext, residual, fe_load, previous_fe_load, previous_U;
     std::vector<double> particle_volume_weight;
     std::vector<bool>   free_particle;
     std::vector<double> particle_mass;
     ParticleVector      nodal_force, particle_load;
-    double              local_work = 0., initial_energy = 0., initial_prescribed_kinetic = 0.;
+    double              local_work = 0.;
+    EnergyBalance       energy_balance;
     std::unique_ptr<StatisticsFile> statistics;
   };
 } // namespace perideal

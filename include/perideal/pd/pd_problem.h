@@ -7,6 +7,7 @@
 #include <deal.II/base/function_parser.h>
 #include <deal.II/base/parameter_handler.h>
 
+#include <perideal/base/energy_balance.h>
 #include <perideal/base/linear_algebra.h>
 #include <perideal/base/particle_output.h>
 #include <perideal/base/region.h>
@@ -187,9 +188,8 @@ namespace perideal
     double                               stable_dt        = 0.;
     ParticleVector                       u, v, a, internal_force, external_force;
     std::vector<double>                  energy_density;
-    double                               local_external_work        = 0.;
-    double                               initial_energy             = 0.;
-    double                               initial_prescribed_kinetic = 0.;
+    double                               local_external_work = 0.;
+    EnergyBalance                        energy_balance;
     ParticleVector                       previous_u, previous_load;
     std::unique_ptr<StatisticsFile>      statistics;
     std::unique_ptr<ParticleOutput<dim>> particle_output;

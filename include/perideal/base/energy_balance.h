@@ -1,0 +1,59 @@
+// ---------------------------------------------------------------------
+// PeriDeal: the energy balance of a dynamic run (work, error, instability stop).
+// ---------------------------------------------------------------------
+#ifndef perideal_base_energy_balance_h
+#define perideal_base_energy_balance_h
+
+namespace perideal
+{
+  /**
+   * @brief Kinetic + strain energy against the work done on the body, for the statistics of a
+   * time-stepping run.
+   *
+   * The work is that of the loads (external forces, and on prescribed components the force
+   * the constraint balances), accumulated by the caller, plus the change of the kinetic energy
+   * of the prescribed components (the constraints also accelerate them; it telescopes over the
+   * steps). The error is kinetic + strain - work - initial energy: the integration error, and in
+   * a fracture run the energy that the broken bonds took away.
+   */
+  class EnergyBalance
+  {
+  public:
+    /**
+     * @brief Record the totals (summed over all ranks) of a statistics row; the row of step 0
+     * fixes the initial energy and the initial kinetic energy of the prescribed components.
+     */
+    void
+    record(const unsigned int step,
+           const double       kinetic,
+           const double       strain,
+           const double       work_of_loads,
+           const double       prescribed_kinetic);
+
+    /// The work done on the body up to the recorded row [J].
+    double
+    work() const;
+
+    /// kinetic + strain - work - initial energy at the recorded row [J].
+    double
+    error() const;
+
+    /**
+     * @brief Throw, naming the step, the time and the stable time step @p stable_dt, if the
+     * energies are not finite or, after 10 steps, have grown beyond 1000 times the energy put
+     * in: the run became unstable.
+     */
+    void
+    check_stable(const double time, const double stable_dt) const;
+
+  private:
+    unsigned int step               = 0;
+    double       kinetic            = 0.;
+    double       strain             = 0.;
+    double       total_work         = 0.;
+    double       initial_energy     = 0.;
+    double       initial_prescribed = 0.;
+  };
+} // namespace perideal
+
+#endif
