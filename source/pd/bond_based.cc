@@ -5,7 +5,6 @@
 
 #include <perideal/base/parameter_utilities.h>
 #include <perideal/pd/bond_based.h>
-#include <perideal/pd/bond_rows.h>
 #include <perideal/pd/surface_correction.h>
 
 #include <cmath>
@@ -68,10 +67,10 @@ namespace perideal
           break;
       }
     BondList &bonds = particles.bonds();
-    rows.reinit(bonds, 1);
-    inverse_length.resize(bonds.size());
-    for (std::size_t b = 0; b < bonds.size(); ++b)
-      inverse_length[b] = 1. / bonds.length[b];
+    blocks.reinit(particles);
+    blocks.reinit_field(u_field, dim);
+    blocks.reinit_field(f_field, dim);
+    blocks.reinit_field(w_field, 1);
     if (context.surface_correction)
       {
         const auto energy = [&](const ParticleVector &u, std::vector<double> &w) {
@@ -81,8 +80,10 @@ namespace perideal
           // Pre-cracked bonds take part: the correction describes the uncracked geometry.
           const std::vector<std::uint8_t> intact = bonds.intact;
           std::fill(bonds.intact.begin(), bonds.intact.end(), 1);
+          ++bonds.revision;
           compute_forces(particles, u, force, &w, std::numeric_limits<double>::infinity());
           bonds.intact = intact;
+          ++bonds.revision;
         };
         apply_energy_surface_correction<dim>(particles, elasticity_tensor(), energy);
       }
@@ -102,6 +103,7 @@ namespace perideal
         bond_coefficient[b] =
           c * (with_surface_factor ? bonds.surface_factor[b] * bonds.energy_weight[b] : 1.) *
           bonds.volume_factor[b] * volume[i] * volume[bonds.neighbor[b]];
+    blocks.to_lanes(bond_coefficient, lane_coefficient);
   }
 
   template <int dim>
@@ -112,98 +114,111 @@ namespace perideal
                                  std::vector<double>  *energy_density,
                                  const double          critical_stretch)
   {
-    double *f = force.begin();
-    std::fill(f, f + std::size_t(particles.n_owned()) * dim, 0.);
+    blocks.sync_state(particles.bonds());
+    blocks.gather(u.begin(), dim, u_field);
+    std::fill(f_field.begin(), f_field.end(), 0.);
+    const double *volume = particles.volumes().data();
     if (energy_density != nullptr)
       {
-        energy_density->assign(particles.n_owned(), 0.);
-        force_loop<true>(particles, u.begin(), f, energy_density->data(), critical_stretch);
+        std::fill(w_field.begin(), w_field.end(), 0.);
+        force_loop<true>(particles.bonds(), critical_stretch);
+        energy_density->resize(particles.n_owned());
+        blocks.scatter_owned(w_field, 1, volume, energy_density->data());
       }
     else
-      force_loop<false>(particles, u.begin(), f, nullptr, critical_stretch);
+      force_loop<false>(particles.bonds(), critical_stretch);
+    blocks.scatter_owned(f_field, dim, volume, force.begin());
   }
 
   template <int dim>
   template <bool with_energy>
   void
-  BondBased<dim>::force_loop(ParticleSystem<dim> &particles,
-                             const double        *u,
-                             double              *f,
-                             double              *w,
-                             const double         critical_stretch)
+  BondBased<dim>::force_loop(BondList &bonds, const double critical_stretch)
   {
     using namespace bond_simd;
-    BondList           &bonds       = particles.bonds();
-    const double       *volume      = particles.volumes().data();
-    const unsigned int  n_owned     = particles.n_owned();
-    const double       *x           = particles.coordinates().data();
-    const unsigned int *row_start   = bonds.row_start.data();
-    const unsigned int *nbr         = bonds.neighbor.data();
-    const double       *length      = bonds.length.data();
-    const double       *inverse     = inverse_length.data();
-    const double       *coefficient = bond_coefficient.data();
-    std::uint8_t       *intact      = bonds.intact.data();
-    double             *energy      = rows.scalar(0);
-    double             *buffer[dim];
+    const auto         &groups      = blocks.groups();
+    const auto         &block_list  = blocks.blocks();
+    const auto         &classes     = blocks.classes();
+    const double       *coefficient = lane_coefficient.data();
+    const std::uint8_t *state       = blocks.state();
+    const double       *u[dim];
+    double             *f[dim];
     for (unsigned int d = 0; d < dim; ++d)
-      buffer[d] = rows.component(d);
+      {
+        u[d] = blocks.component(u_field, d);
+        f[d] = blocks.component(f_field, d);
+      }
+    double *w = blocks.component(w_field, 0);
 
     // Pair forces F = k s (xi + eta)/|xi + eta| and pair energies k s^2 |xi| / 4 with
-    // k = c G beta V_i V_j, summed per particle and divided by V_i at the end.
-    for (unsigned int i = 0; i < n_owned; ++i)
+    // k = c G beta V_i V_j, summed per particle (divided by V_i by the caller). Lane l of a
+    // block: particle a + l, neighbour a + offset + l, lattice vector xi of the block's class.
+    for (std::size_t g = 0; g + 1 < groups.size(); ++g)
       {
-        const unsigned int first = row_start[i], n = row_start[i + 1] - first;
-        rows.gather(x, u, i, nbr + first, n);
-        Vector fi[dim] = {};
-        Vector wi      = 0.;
-        for (unsigned int l = 0; l < n; l += width)
+        const unsigned int a = groups[g].first_particle;
+        Vector             u_a[dim], f_a[dim];
+        for (unsigned int d = 0; d < dim; ++d)
           {
-            const unsigned int b = first + l, n_valid = n - l;
-            Vector             r[dim], len2           = 0.;
+            u_a[d].copy_from(u[d] + a, stdx::element_aligned);
+            f_a[d] = 0.;
+          }
+        Vector w_a = 0.;
+        for (unsigned int q = groups[g].first_block; q < groups[g + 1].first_block; ++q)
+          {
+            const auto       &block = block_list[q];
+            const auto       &bond  = classes[block.bond_class];
+            const std::size_t b = std::size_t(std::ptrdiff_t(a) + block.offset), lane = q * width;
+            Vector            r[dim], length2                                         = 0.;
             for (unsigned int d = 0; d < dim; ++d)
               {
-                r[d].copy_from(buffer[d] + l, stdx::element_aligned);
-                len2 += r[d] * r[d];
+                const Vector u_b(u[d] + b, stdx::element_aligned);
+                r[d] = bond.xi[d] + (u_b - u_a[d]);
+                length2 += r[d] * r[d];
               }
-            const Vector len           = stdx::sqrt(len2);
-            const Vector xi            = load(length + b, n_valid, 1.);
-            const Vector s             = (len - xi) * load(inverse + b, n_valid, 1.);
-            Mask         active        = intact_lanes(intact + b, n_valid);
-            const Mask   overstretched = active && (s > critical_stretch);
+            // rho = |xi| / |xi + eta|, stretch s = |xi + eta| / |xi| - 1.
+            const Vector ratio2 = length2 * (bond.inverse_length * bond.inverse_length);
+            const Vector rho    = inverse_sqrt(ratio2);
+            const Vector s      = ratio2 * rho - 1.;
+            Mask         active =
+              stdx::static_simd_cast<Vector>(
+                stdx::fixed_size_simd<std::uint8_t, width>(state + lane, stdx::element_aligned)) !=
+              0.;
+            const Mask overstretched = active && (s > critical_stretch);
             if (stdx::any_of(overstretched))
-              active = active && !break_bonds(overstretched, intact + b);
-            const Vector k         = load(coefficient + b, n_valid, 0.);
+              active = active && !blocks.break_lanes(overstretched, q, bonds);
+            const Vector k(coefficient + lane, stdx::element_aligned);
             Vector       t         = 0.;
-            stdx::where(active, t) = k * s / len;
+            stdx::where(active, t) = k * s * (rho * bond.inverse_length);
             for (unsigned int d = 0; d < dim; ++d)
               {
-                r[d] *= t;
-                fi[d] += r[d];
-                r[d].copy_to(buffer[d] + l, stdx::element_aligned);
+                const Vector force = r[d] * t;
+                f_a[d] += force;
+                Vector f_b(f[d] + b, stdx::element_aligned);
+                f_b -= force;
+                f_b.copy_to(f[d] + b, stdx::element_aligned);
               }
             if constexpr (with_energy)
               {
                 Vector e               = 0.;
-                stdx::where(active, e) = 0.25 * k * s * s * xi;
-                wi += e;
-                e.copy_to(energy + l, stdx::element_aligned);
+                stdx::where(active, e) = (0.25 * bond.length) * k * s * s;
+                w_a += e;
+                Vector w_b(w + b, stdx::element_aligned);
+                w_b += e;
+                w_b.copy_to(w + b, stdx::element_aligned);
               }
           }
-        rows.scatter(f, nbr + first, n, n_owned);
         for (unsigned int d = 0; d < dim; ++d)
-          f[std::size_t(i) * dim + d] += stdx::reduce(fi[d]);
+          {
+            Vector sum(f[d] + a, stdx::element_aligned);
+            sum += f_a[d];
+            sum.copy_to(f[d] + a, stdx::element_aligned);
+          }
         if constexpr (with_energy)
           {
-            w[i] += stdx::reduce(wi);
-            rows.scatter_scalar(0, w, nbr + first, n, n_owned);
+            Vector sum(w + a, stdx::element_aligned);
+            sum += w_a;
+            sum.copy_to(w + a, stdx::element_aligned);
           }
-      }
-    for (unsigned int i = 0; i < n_owned; ++i)
-      {
-        for (unsigned int d = 0; d < dim; ++d)
-          f[std::size_t(i) * dim + d] /= volume[i];
-        if constexpr (with_energy)
-          w[i] /= volume[i];
       }
   }
 

@@ -4,7 +4,6 @@
 #include <deal.II/base/numbers.h>
 
 #include <perideal/base/parameter_utilities.h>
-#include <perideal/pd/bond_rows.h>
 #include <perideal/pd/linear_peridynamic_solid.h>
 
 #include <cmath>
@@ -77,7 +76,13 @@ namespace perideal
       for (unsigned int b = bonds.row_start[i]; b < bonds.row_start[i + 1]; ++b)
         pair_weight[b] = influence->value(bonds.length[b], context.horizon) *
                          bonds.volume_factor[b] * volume[i] * volume[bonds.neighbor[b]];
-    rows.reinit(bonds, 4);
+    blocks.reinit(particles);
+    blocks.to_lanes(pair_weight, lane_weight);
+    for (auto *field : {&u_field, &f_field})
+      blocks.reinit_field(*field, dim);
+    for (auto *field :
+         {&w_field, &theta_field, &theta_over_m_field, &alpha_field, &inverse_m_field})
+      blocks.reinit_field(*field, 1);
 
     particles.reinit_vector(weighted_volume, 1);
     particles.reinit_vector(theta, 1);
@@ -105,9 +110,13 @@ namespace perideal
     const double n       = dim;
     const double alpha_m = shear_modulus * n * (n + 2.);
     alpha.resize(particles.n_local());
-    theta_over_m.resize(particles.n_local());
     for (unsigned int i = 0; i < particles.n_local(); ++i)
       alpha[i] = alpha_m / weighted_volume.local_element(i);
+    blocks.gather(alpha.data(), 1, alpha_field);
+    std::vector<double> inverse_m(particles.n_local());
+    for (unsigned int i = 0; i < particles.n_local(); ++i)
+      inverse_m[i] = 1. / weighted_volume.local_element(i);
+    blocks.gather(inverse_m.data(), 1, inverse_m_field);
   }
 
   template <int dim>
@@ -119,137 +128,165 @@ namespace perideal
                                               const double          critical_stretch)
   {
     using namespace bond_simd;
-    BondList           &bonds     = particles.bonds();
-    const double       *x         = particles.coordinates().data();
-    const double       *volume    = particles.volumes().data();
-    const unsigned int  n_owned   = particles.n_owned();
-    const unsigned int  n_local   = particles.n_local();
-    const double       *uu        = u.begin();
-    const double       *m         = weighted_volume.begin();
-    const unsigned int *row_start = bonds.row_start.data();
-    const unsigned int *nbr       = bonds.neighbor.data();
-    const double       *length    = bonds.length.data();
-    const double       *weight    = pair_weight.data();
-    std::uint8_t       *intact    = bonds.intact.data();
-    const double        n         = dim;
-    double             *buffer[dim];
+    BondList           &bonds      = particles.bonds();
+    const double       *volume     = particles.volumes().data();
+    const unsigned int  n_owned    = particles.n_owned();
+    const double       *m          = weighted_volume.begin();
+    const auto         &groups     = blocks.groups();
+    const auto         &block_list = blocks.blocks();
+    const auto         &classes    = blocks.classes();
+    const double       *weight     = lane_weight.data();
+    const std::uint8_t *state      = blocks.state();
+    const double        n          = dim;
+    blocks.sync_state(bonds);
+    blocks.gather(u.begin(), dim, u_field);
+    const double *uu[dim];
+    double       *f[dim];
     for (unsigned int d = 0; d < dim; ++d)
-      buffer[d] = rows.component(d);
-    double *const theta_over_m_j = rows.scalar(0), *const alpha_j_buffer = rows.scalar(1),
-                  *const theta_j = rows.scalar(2), *const energy_j = rows.scalar(3),
-                  *const pair_dilatation = rows.scalar(0);
-
-    // Pass 1: break overstretched bonds (extension e > s0 |xi|), then the dilatation from the
-    // pair sums omega beta V_i V_j |xi| e, divided by V_i.
-    theta      = 0.;
-    double *th = theta.begin();
-    for (unsigned int i = 0; i < n_owned; ++i)
       {
-        const unsigned int first = row_start[i], count = row_start[i + 1] - first;
-        rows.gather(x, uu, i, nbr + first, count);
-        Vector sum = 0.;
-        for (unsigned int l = 0; l < count; l += width)
-          {
-            const unsigned int b = first + l, n_valid = count - l;
-            Vector             len2 = 0.;
-            for (unsigned int d = 0; d < dim; ++d)
-              {
-                const Vector r(buffer[d] + l, stdx::element_aligned);
-                len2 += r * r;
-              }
-            const Vector xi            = load(length + b, n_valid, 1.);
-            const Vector e             = stdx::sqrt(len2) - xi;
-            Mask         active        = intact_lanes(intact + b, n_valid);
-            const Mask   overstretched = active && (e > critical_stretch * xi);
-            if (stdx::any_of(overstretched))
-              active = active && !break_bonds(overstretched, intact + b);
-            Vector a               = 0.;
-            stdx::where(active, a) = load(weight + b, n_valid, 0.) * xi * e;
-            sum += a;
-            a.copy_to(pair_dilatation + l, stdx::element_aligned);
-          }
-        th[i] += stdx::reduce(sum);
-        rows.scatter_scalar(0, th, nbr + first, count, n_owned);
+        uu[d] = blocks.component(u_field, d);
+        f[d]  = blocks.component(f_field, d);
       }
+    // Lane l of a block: particle a + l, neighbour a + offset + l, lattice vector xi of the
+    // block's class. Returns the bond vectors r = xi + eta and |r| / |xi| - 1.
+    const auto bond_vectors = [&](const unsigned int                     a,
+                                  const Vector                          *u_a,
+                                  const typename BondBlocks<dim>::Block &block,
+                                  Vector                                *r,
+                                  Vector                                &rho) {
+      const auto       &bond    = classes[block.bond_class];
+      const std::size_t b       = std::size_t(std::ptrdiff_t(a) + block.offset);
+      Vector            length2 = 0.;
+      for (unsigned int d = 0; d < dim; ++d)
+        {
+          const Vector u_b(uu[d] + b, stdx::element_aligned);
+          r[d] = bond.xi[d] + (u_b - u_a[d]);
+          length2 += r[d] * r[d];
+        }
+      const Vector ratio2 = length2 * (bond.inverse_length * bond.inverse_length);
+      rho                 = inverse_sqrt(ratio2);
+      return Vector(ratio2 * rho - 1.);
+    };
+    const auto intact_lanes = [&](const unsigned int q) {
+      return stdx::static_simd_cast<Vector>(
+               stdx::fixed_size_simd<std::uint8_t, width>(state + std::size_t(q) * width,
+                                                          stdx::element_aligned)) != 0.;
+    };
+    const auto add_to = [](double *target, const Vector &value) {
+      Vector sum(target, stdx::element_aligned);
+      sum += value;
+      sum.copy_to(target, stdx::element_aligned);
+    };
+
+    // Pass 1: break overstretched bonds (stretch above the critical stretch), then the
+    // dilatation from the pair sums omega beta V_i V_j |xi| e (e = |xi| s), divided by V_i.
+    std::fill(theta_field.begin(), theta_field.end(), 0.);
+    double *th = blocks.component(theta_field, 0);
+    for (std::size_t g = 0; g + 1 < groups.size(); ++g)
+      {
+        const unsigned int a = groups[g].first_particle;
+        Vector             u_a[dim], r[dim], rho;
+        for (unsigned int d = 0; d < dim; ++d)
+          u_a[d].copy_from(uu[d] + a, stdx::element_aligned);
+        Vector theta_a = 0.;
+        for (unsigned int q = groups[g].first_block; q < groups[g + 1].first_block; ++q)
+          {
+            const auto  &block         = block_list[q];
+            const double xi            = classes[block.bond_class].length;
+            const Vector s             = bond_vectors(a, u_a, block, r, rho);
+            Mask         active        = intact_lanes(q);
+            const Mask   overstretched = active && (s > critical_stretch);
+            if (stdx::any_of(overstretched))
+              active = active && !blocks.break_lanes(overstretched, q, bonds);
+            Vector pair = 0.;
+            stdx::where(active, pair) =
+              Vector(weight + std::size_t(q) * width, stdx::element_aligned) * s * (xi * xi);
+            theta_a += pair;
+            add_to(th + std::ptrdiff_t(a) + block.offset, pair);
+          }
+        add_to(th + a, theta_a);
+      }
+    double *theta_owned = theta.begin();
+    blocks.scatter_owned(theta_field, 1, nullptr, theta_owned);
     for (unsigned int i = 0; i < n_owned; ++i)
-      th[i] *= n / (m[i] * volume[i]);
+      theta_owned[i] *= n / (m[i] * volume[i]);
     theta.update_ghost_values();
-    for (unsigned int i = 0; i < n_local; ++i)
-      theta_over_m[i] = th[i] / m[i];
+    blocks.gather(theta.begin(), 1, theta_field);
+    const double *theta_k      = blocks.component(theta_field, 0);
+    double       *theta_over_m = blocks.component(theta_over_m_field, 0);
+    for (std::size_t k = 0; k < theta_field.size(); ++k)
+      theta_over_m_field[k] = theta_field[k] * inverse_m_field[k];
 
     // Pass 2: forces (and energy). Pair force
     // [(n k - (n + 2) mu) |xi| (theta_i / m_i + theta_j / m_j) + (alpha_i + alpha_j) e]
     //   omega beta V_i V_j (xi + eta)/|xi + eta|, summed per particle and divided by V_i.
     const double dilatation_coefficient = n * bulk_modulus - (n + 2.) * shear_modulus;
-    double      *f                      = force.begin();
-    std::fill(f, f + std::size_t(n_owned) * dim, 0.);
+    std::fill(f_field.begin(), f_field.end(), 0.);
     const bool energy = (energy_density != nullptr);
+    double    *w      = blocks.component(w_field, 0);
     if (energy)
-      energy_density->assign(n_owned, 0.);
-    double *w = energy ? energy_density->data() : nullptr;
-    for (unsigned int i = 0; i < n_owned; ++i)
+      std::fill(w_field.begin(), w_field.end(), 0.);
+    const double *alpha_k = blocks.component(alpha_field, 0);
+    for (std::size_t g = 0; g + 1 < groups.size(); ++g)
       {
-        const unsigned int first = row_start[i], count = row_start[i + 1] - first;
-        rows.gather(x, uu, i, nbr + first, count);
-        rows.gather_scalar(0, theta_over_m.data(), nbr + first, count);
-        rows.gather_scalar(1, alpha.data(), nbr + first, count);
-        if (energy)
-          rows.gather_scalar(2, th, nbr + first, count);
-        Vector fi[dim] = {};
-        Vector wi      = 0.;
-        for (unsigned int l = 0; l < count; l += width)
+        const unsigned int a = groups[g].first_particle;
+        Vector             u_a[dim], r[dim], rho, f_a[dim];
+        for (unsigned int d = 0; d < dim; ++d)
           {
-            const unsigned int b = first + l, n_valid = count - l;
-            Vector             r[dim], len2           = 0.;
+            u_a[d].copy_from(uu[d] + a, stdx::element_aligned);
+            f_a[d] = 0.;
+          }
+        const Vector theta_over_m_a(theta_over_m + a, stdx::element_aligned);
+        const Vector alpha_a(alpha_k + a, stdx::element_aligned);
+        const Vector theta_a(theta_k + a, stdx::element_aligned);
+        Vector       w_a = 0.;
+        for (unsigned int q = groups[g].first_block; q < groups[g + 1].first_block; ++q)
+          {
+            const auto       &block = block_list[q];
+            const auto       &bond  = classes[block.bond_class];
+            const std::size_t b     = std::size_t(std::ptrdiff_t(a) + block.offset);
+            const Vector      s     = bond_vectors(a, u_a, block, r, rho);
+            const Vector      e     = bond.length * s;
+            const Vector      p(weight + std::size_t(q) * width, stdx::element_aligned);
+            const Vector      alpha_b(alpha_k + b, stdx::element_aligned);
+            const Vector      t = (dilatation_coefficient * bond.length) *
+                               (theta_over_m_a + Vector(theta_over_m + b, stdx::element_aligned)) +
+                             (alpha_a + alpha_b) * e;
+            const Mask active          = intact_lanes(q);
+            Vector     scale           = 0.;
+            stdx::where(active, scale) = t * p * (rho * bond.inverse_length);
             for (unsigned int d = 0; d < dim; ++d)
               {
-                r[d].copy_from(buffer[d] + l, stdx::element_aligned);
-                len2 += r[d] * r[d];
-              }
-            const Vector len    = stdx::sqrt(len2);
-            const Vector xi     = load(length + b, n_valid, 1.);
-            const Vector e      = len - xi;
-            const Vector p      = load(weight + b, n_valid, 0.);
-            const Mask   active = intact_lanes(intact + b, n_valid);
-            const Vector alpha_j(alpha_j_buffer + l, stdx::element_aligned);
-            const Vector t =
-              dilatation_coefficient * xi *
-                (theta_over_m[i] + Vector(theta_over_m_j + l, stdx::element_aligned)) +
-              (alpha[i] + alpha_j) * e;
-            Vector scale               = 0.;
-            stdx::where(active, scale) = t * p / len;
-            for (unsigned int d = 0; d < dim; ++d)
-              {
-                r[d] *= scale;
-                fi[d] += r[d];
-                r[d].copy_to(buffer[d] + l, stdx::element_aligned);
+                const Vector pair_force = r[d] * scale;
+                f_a[d] += pair_force;
+                Vector f_b(f[d] + b, stdx::element_aligned);
+                f_b -= pair_force;
+                f_b.copy_to(f[d] + b, stdx::element_aligned);
               }
             if (energy)
               {
-                const Vector ei      = e - th[i] * xi / n;
-                const Vector ej      = e - Vector(theta_j + l, stdx::element_aligned) * xi / n;
-                Vector       wi_pair = 0., wj_pair = 0.;
-                stdx::where(active, wi_pair) = 0.5 * alpha[i] * p * ei * ei;
-                stdx::where(active, wj_pair) = 0.5 * alpha_j * p * ej * ej;
-                wi += wi_pair;
-                wj_pair.copy_to(energy_j + l, stdx::element_aligned);
+                const Vector ei = e - theta_a * (bond.length / n);
+                const Vector ej =
+                  e - Vector(theta_k + b, stdx::element_aligned) * (bond.length / n);
+                Vector wi_pair = 0., wj_pair = 0.;
+                stdx::where(active, wi_pair) = 0.5 * alpha_a * p * ei * ei;
+                stdx::where(active, wj_pair) = 0.5 * alpha_b * p * ej * ej;
+                w_a += wi_pair;
+                add_to(w + b, wj_pair);
               }
           }
-        rows.scatter(f, nbr + first, count, n_owned);
         for (unsigned int d = 0; d < dim; ++d)
-          f[std::size_t(i) * dim + d] += stdx::reduce(fi[d]);
+          add_to(f[d] + a, f_a[d]);
         if (energy)
-          {
-            w[i] += stdx::reduce(wi);
-            rows.scatter_scalar(3, w, nbr + first, count, n_owned);
-          }
+          add_to(w + a, w_a);
       }
-    for (unsigned int i = 0; i < n_owned; ++i)
+    blocks.scatter_owned(f_field, dim, volume, force.begin());
+    if (energy)
       {
-        for (unsigned int d = 0; d < dim; ++d)
-          f[std::size_t(i) * dim + d] /= volume[i];
-        if (energy)
-          w[i] = 0.5 * bulk_modulus * th[i] * th[i] + w[i] / volume[i];
+        energy_density->resize(n_owned);
+        blocks.scatter_owned(w_field, 1, volume, energy_density->data());
+        for (unsigned int i = 0; i < n_owned; ++i)
+          (*energy_density)[i] += 0.5 * bulk_modulus * theta_owned[i] * theta_owned[i];
       }
   }
 

@@ -4,7 +4,7 @@
 #ifndef perideal_pd_bond_based_h
 #define perideal_pd_bond_based_h
 
-#include <perideal/pd/bond_rows.h>
+#include <perideal/pd/bond_blocks.h>
 #include <perideal/pd/material_model.h>
 
 namespace perideal
@@ -90,10 +90,11 @@ namespace perideal
     double       c = 0.;
     /// c G beta V_i V_j per bond (the pair force per unit stretch).
     std::vector<double> bond_coefficient;
-    /// 1 / |xi| per bond.
-    std::vector<double> inverse_length;
-    /// Work arrays of the force loop (bond vectors, then forces; pair energies).
-    BondRows<dim> rows;
+    /// The bonds in SIMD blocks, and bond_coefficient per lane.
+    BondBlocks<dim>     blocks;
+    std::vector<double> lane_coefficient;
+    /// Kernel-order work fields: displacement, force, energy density.
+    std::vector<double> u_field, f_field, w_field;
 
     /**
      * @brief Set bond_coefficient from the micromodulus, the partial-volume factors, the
@@ -108,11 +109,7 @@ namespace perideal
      */
     template <bool with_energy>
     void
-    force_loop(ParticleSystem<dim> &particles,
-               const double        *u,
-               double              *force,
-               double              *energy_density,
-               const double         critical_stretch);
+    force_loop(BondList &bonds, const double critical_stretch);
   };
 } // namespace perideal
 

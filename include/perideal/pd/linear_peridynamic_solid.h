@@ -4,7 +4,7 @@
 #ifndef perideal_pd_linear_peridynamic_solid_h
 #define perideal_pd_linear_peridynamic_solid_h
 
-#include <perideal/pd/bond_rows.h>
+#include <perideal/pd/bond_blocks.h>
 #include <perideal/pd/influence_function.h>
 #include <perideal/pd/material_model.h>
 
@@ -104,10 +104,13 @@ namespace perideal
     ParticleVector theta;
     /// alpha = mu n (n + 2) / m per local particle.
     std::vector<double> alpha;
-    /// theta / m per local particle (work array of compute_forces()).
-    std::vector<double> theta_over_m;
-    /// Work arrays of the force loops.
-    BondRows<dim> rows;
+    /// The bonds in SIMD blocks, and pair_weight per lane.
+    BondBlocks<dim>     blocks;
+    std::vector<double> lane_weight;
+    /// Kernel-order work fields of compute_forces(): displacement, force, energy density,
+    /// dilatation, theta / m, alpha and 1 / m.
+    std::vector<double> u_field, f_field, w_field, theta_field, theta_over_m_field, alpha_field,
+      inverse_m_field;
   };
 } // namespace perideal
 

@@ -46,6 +46,9 @@ namespace perideal
     /// 1 while the bond carries force, 0 once broken (pre-cracks start at 0), 2 for a bond that
     /// never breaks (it touches a no-fail region).
     std::vector<std::uint8_t> intact;
+    /// Incremented by every change of @p intact outside the force kernels, so that the kernels'
+    /// copy of the states (BondBlocks::sync_state()) follows.
+    std::uint64_t revision = 0;
 
     /// Number of locally stored bonds.
     std::size_t

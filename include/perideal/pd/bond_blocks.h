@@ -1,0 +1,203 @@
+// ---------------------------------------------------------------------
+// PeriDeal: lattice bond blocks and SIMD building blocks of the force kernels.
+// ---------------------------------------------------------------------
+#ifndef perideal_pd_bond_blocks_h
+#define perideal_pd_bond_blocks_h
+
+#include <perideal/pd/particle_system.h>
+
+#include <array>
+#include <cstdint>
+#include <vector>
+
+#include <experimental/simd>
+
+namespace perideal
+{
+  /**
+   * @brief SIMD vectors of the force kernels (std::experimental::simd of the width the kernels
+   * are compiled for: 8 doubles with AVX-512, 4 with AVX2, 2 with SSE2).
+   */
+  namespace bond_simd
+  {
+    namespace stdx = std::experimental;
+
+    /// A SIMD vector of doubles.
+    using Vector = stdx::native_simd<double>;
+    /// A lane mask.
+    using Mask = Vector::mask_type;
+    /// Number of lanes.
+    constexpr unsigned int width = Vector::size();
+
+    /**
+     * @brief 1/sqrt(@p a) for @p a of order one (a squared bond length over the squared
+     * reference length): a single-precision seed refined by two Newton steps, accurate to about
+     * one unit in the last place of a double. Square roots and divisions of doubles are the slow
+     * operations of the vector units; this uses multiplications only (after the seed). Valid for
+     * 1e-30 < @p a < 1e30, i.e. bonds not stretched or shortened by 15 orders of magnitude.
+     */
+    inline Vector
+    inverse_sqrt(const Vector &a)
+    {
+      using Single        = stdx::fixed_size_simd<float, width>;
+      const Single single = stdx::static_simd_cast<Single>(a);
+      Vector       r      = stdx::static_simd_cast<Vector>(Single(1.f) / stdx::sqrt(single));
+      const Vector half_a = 0.5 * a;
+      r                   = r * (1.5 - half_a * r * r);
+      r                   = r * (1.5 - half_a * r * r);
+      return r;
+    }
+  } // namespace bond_simd
+
+  /**
+   * @brief The bonds of a ParticleSystem rearranged for vectorized force loops: SIMD-wide
+   * blocks of bonds along the lattice.
+   *
+   * The particles live on a lattice. The kernels number the local particles (owned and ghost)
+   * lexicographically by their lattice coordinates ("kernel order"), so that lattice lines are
+   * runs of consecutive indices, and keep per-particle fields component-wise in that order
+   * (gather_vector(), scatter_vector()). A *group* is a run of width particles a0 ... a0 + width
+   * - 1 (a0 a multiple of width); a *block* of the group holds, in lane l, the bond of particle
+   * a0 + l along one lattice vector (its *bond class*), with the other ends at a0 + offset + l.
+   * So every load and store of a block is a contiguous vector: the particle's side once per
+   * group, the neighbours' side once per block, and the per-lane arrays of the block. Lanes
+   * without a bond (line ends, ghosts, other offsets) have state 0 and coefficient 0: they
+   * produce zero forces and need no masks. The reference bond vector is the class's lattice
+   * vector, shared by the block; it is not stored per bond.
+   *
+   * The class depends on the SIMD width: it is compiled, like the kernels that use it, with
+   * the kernel options of source/pd/CMakeLists.txt.
+   *
+   * Each bond of the BondList is in exactly one lane (bond_index() maps back). The lane states
+   * are the kernels' copy of BondList::intact: a kernel that breaks a bond writes both (break_
+   * lanes()), and sync_state() re-reads BondList::intact when its revision has changed.
+   */
+  template <int dim>
+  class BondBlocks
+  {
+  public:
+    static constexpr unsigned int width = bond_simd::width;
+
+    /// A lattice vector of the family: its components, length and inverse length.
+    struct BondClass
+    {
+      std::array<double, dim> xi;
+      double                  length;
+      double                  inverse_length;
+    };
+
+    /// The blocks of one group of width consecutive particles (kernel order).
+    struct Group
+    {
+      /// Kernel index of lane 0.
+      unsigned int first_particle;
+      /// Blocks [first_block, next group's first_block).
+      unsigned int first_block;
+    };
+
+    /// One SIMD-wide block of bonds along one lattice vector.
+    struct Block
+    {
+      /// Kernel index of the neighbour in lane l: first_particle + offset + l.
+      int offset;
+      /// Index into classes().
+      unsigned int bond_class;
+    };
+
+    /**
+     * @brief Build the blocks of the bonds of @p particles (reference configuration); copies
+     * the bond states.
+     */
+    void
+    reinit(const ParticleSystem<dim> &particles);
+
+    /// The groups; the last entry is a sentinel (its first_block is n_blocks()).
+    const std::vector<Group> &
+    groups() const
+    {
+      return group_list;
+    }
+
+    /// The blocks, grouped.
+    const std::vector<Block> &
+    blocks() const
+    {
+      return block_list;
+    }
+
+    /// The bond classes.
+    const std::vector<BondClass> &
+    classes() const
+    {
+      return class_list;
+    }
+
+    /**
+     * @brief @p per_lane[q * width + l] = @p per_bond[bond_index(q, l)], 0 for empty lanes.
+     */
+    void
+    to_lanes(const std::vector<double> &per_bond, std::vector<double> &per_lane) const;
+
+    /**
+     * @brief Copy BondList::intact into the lane states if it changed since the last copy.
+     */
+    void
+    sync_state(const BondList &bonds);
+
+    /// The lane states, width per block.
+    std::uint8_t *
+    state()
+    {
+      return lane_state.data();
+    }
+
+    /**
+     * @brief Break the bonds of block @p q whose lanes in @p overstretched are breakable
+     * (state 1), in the lanes and in @p bonds; returns the lanes broken now. Bonds that never
+     * break (state 2) are left alone.
+     */
+    bond_simd::Mask
+    break_lanes(const bond_simd::Mask &overstretched, const unsigned int q, BondList &bonds);
+
+    /**
+     * @brief Size the @p n_components kernel-order arrays of @p field (with the padding the
+     * blocks read and write), zeroed.
+     */
+    void
+    reinit_field(std::vector<double> &field, const unsigned int n_components) const;
+
+    /// Component @p d of a kernel-order field sized by reinit_field(): index by kernel index.
+    double *
+    component(std::vector<double> &field, const unsigned int d) const;
+
+    /**
+     * @brief The @p n_components values per local particle of @p values (particle order,
+     * values[i * n_components + d], owned then ghost) into the kernel-order @p field.
+     */
+    void
+    gather(const double *values, const unsigned int n_components, std::vector<double> &field) const;
+
+    /**
+     * @brief The owned particles' entries of the kernel-order @p field, each divided by the
+     * particle's entry of @p divisor, into @p values (particle order).
+     */
+    void
+    scatter_owned(std::vector<double> &field,
+                  const unsigned int   n_components,
+                  const double        *divisor,
+                  double              *values) const;
+
+  private:
+    unsigned int              n_owned = 0, n_local = 0;
+    std::size_t               field_stride = 0;
+    std::vector<unsigned int> kernel_index;
+    std::vector<Group>        group_list;
+    std::vector<Block>        block_list;
+    std::vector<BondClass>    class_list;
+    std::vector<unsigned int> lane_bond;
+    std::vector<std::uint8_t> lane_state;
+    std::uint64_t             synced_revision = 0;
+  };
+} // namespace perideal
+
+#endif

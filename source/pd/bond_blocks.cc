@@ -1,0 +1,228 @@
+// ---------------------------------------------------------------------
+// PeriDeal: lattice bond blocks of the force kernels.
+// ---------------------------------------------------------------------
+#include <deal.II/base/exceptions.h>
+
+#include <perideal/pd/bond_blocks.h>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <map>
+#include <numeric>
+
+namespace perideal
+{
+  using namespace dealii;
+
+  template <int dim>
+  void
+  BondBlocks<dim>::reinit(const ParticleSystem<dim> &particles)
+  {
+    const BondList &bonds     = particles.bonds();
+    const auto     &positions = particles.positions();
+    const double    dx        = particles.settings().spacing;
+    n_owned                   = particles.n_owned();
+    n_local                   = particles.n_local();
+
+    // Lattice coordinates of the local particles.
+    Point<dim> origin;
+    for (unsigned int d = 0; d < dim; ++d)
+      origin[d] = std::numeric_limits<double>::max();
+    for (const auto &p : positions)
+      for (unsigned int d = 0; d < dim; ++d)
+        origin[d] = std::min(origin[d], p[d]);
+    std::vector<std::array<long, dim>> lattice(n_local);
+    for (unsigned int i = 0; i < n_local; ++i)
+      for (unsigned int d = 0; d < dim; ++d)
+        {
+          const double q = (positions[i][d] - origin[d]) / dx;
+          lattice[i][d]  = std::lround(q);
+          AssertThrow(std::abs(q - lattice[i][d]) < 1e-6,
+                      ExcMessage("Internal error: particle " + std::to_string(i) +
+                                 " is not on the lattice of spacing " + std::to_string(dx) +
+                                 "; the force kernels need lattice particles."));
+        }
+
+    // Kernel order: lexicographic, the last coordinate slowest.
+    std::vector<unsigned int> order(n_local);
+    std::iota(order.begin(), order.end(), 0u);
+    std::sort(order.begin(), order.end(), [&](const unsigned int a, const unsigned int b) {
+      for (unsigned int d = dim; d-- > 0;)
+        if (lattice[a][d] != lattice[b][d])
+          return lattice[a][d] < lattice[b][d];
+      return false;
+    });
+    kernel_index.assign(n_local, 0);
+    for (unsigned int k = 0; k < n_local; ++k)
+      kernel_index[order[k]] = k;
+
+    // Bond classes (lattice vectors), ranked with the first component slowest so that the
+    // neighbour ranges of consecutive blocks of a group are a lattice line apart.
+    const auto lattice_vector = [&](const unsigned int i, const unsigned int b) {
+      std::array<long, dim> q;
+      for (unsigned int d = 0; d < dim; ++d)
+        q[d] = lattice[bonds.neighbor[b]][d] - lattice[i][d];
+      return q;
+    };
+    std::map<std::array<long, dim>, unsigned int> class_of;
+    for (unsigned int i = 0; i < n_owned; ++i)
+      for (unsigned int b = bonds.row_start[i]; b < bonds.row_start[i + 1]; ++b)
+        class_of.emplace(lattice_vector(i, b), 0u);
+    class_list.clear();
+    for (auto &[q, index] : class_of)
+      {
+        index = class_list.size();
+        BondClass c;
+        double    length2 = 0.;
+        for (unsigned int d = 0; d < dim; ++d)
+          {
+            c.xi[d] = q[d] * dx;
+            length2 += c.xi[d] * c.xi[d];
+          }
+        c.length         = std::sqrt(length2);
+        c.inverse_length = 1. / c.length;
+        class_list.push_back(c);
+      }
+
+    struct Pair
+    {
+      unsigned int a;
+      int          offset;
+      unsigned int bond_class;
+      unsigned int bond;
+    };
+    std::vector<Pair> pairs;
+    pairs.reserve(bonds.size());
+    for (unsigned int i = 0; i < n_owned; ++i)
+      for (unsigned int b = bonds.row_start[i]; b < bonds.row_start[i + 1]; ++b)
+        pairs.push_back({kernel_index[i],
+                         int(kernel_index[bonds.neighbor[b]]) - int(kernel_index[i]),
+                         class_of.at(lattice_vector(i, b)),
+                         b});
+
+    // Blocks: a group of width particles, one class, one offset.
+    std::sort(pairs.begin(), pairs.end(), [](const Pair &x, const Pair &y) {
+      if (x.a / width != y.a / width)
+        return x.a / width < y.a / width;
+      if (x.bond_class != y.bond_class)
+        return x.bond_class < y.bond_class;
+      if (x.offset != y.offset)
+        return x.offset < y.offset;
+      return x.a < y.a;
+    });
+    group_list.clear();
+    block_list.clear();
+    lane_bond.clear();
+    const unsigned int none = numbers::invalid_unsigned_int;
+    for (std::size_t s = 0; s < pairs.size();)
+      {
+        const unsigned int group = pairs[s].a / width;
+        if (group_list.empty() || group_list.back().first_particle != group * width)
+          group_list.push_back({group * width, static_cast<unsigned int>(block_list.size())});
+        block_list.push_back({pairs[s].offset, pairs[s].bond_class});
+        lane_bond.resize(lane_bond.size() + width, none);
+        unsigned int *lanes = lane_bond.data() + lane_bond.size() - width;
+        std::size_t   e     = s;
+        for (; e < pairs.size() && pairs[e].a / width == group &&
+               pairs[e].bond_class == pairs[s].bond_class && pairs[e].offset == pairs[s].offset;
+             ++e)
+          lanes[pairs[e].a % width] = pairs[e].bond;
+        s = e;
+      }
+    group_list.push_back(
+      {numbers::invalid_unsigned_int, static_cast<unsigned int>(block_list.size())});
+
+    field_stride = (std::size_t(n_local) + width - 1) / width * width + 2 * width;
+    lane_state.assign(lane_bond.size(), 0);
+    synced_revision = bonds.revision + 1;
+    sync_state(bonds);
+  }
+
+  template <int dim>
+  void
+  BondBlocks<dim>::to_lanes(const std::vector<double> &per_bond,
+                            std::vector<double>       &per_lane) const
+  {
+    per_lane.resize(lane_bond.size());
+    for (std::size_t l = 0; l < lane_bond.size(); ++l)
+      per_lane[l] = (lane_bond[l] == numbers::invalid_unsigned_int ? 0. : per_bond[lane_bond[l]]);
+  }
+
+  template <int dim>
+  void
+  BondBlocks<dim>::sync_state(const BondList &bonds)
+  {
+    if (bonds.revision == synced_revision)
+      return;
+    for (std::size_t l = 0; l < lane_bond.size(); ++l)
+      lane_state[l] =
+        (lane_bond[l] == numbers::invalid_unsigned_int ? 0 : bonds.intact[lane_bond[l]]);
+    synced_revision = bonds.revision;
+  }
+
+  template <int dim>
+  bond_simd::Mask
+  BondBlocks<dim>::break_lanes(const bond_simd::Mask &overstretched,
+                               const unsigned int     q,
+                               BondList              &bonds)
+  {
+    bond_simd::Mask broken(false);
+    std::uint8_t   *state = lane_state.data() + std::size_t(q) * width;
+    for (unsigned int l = 0; l < width; ++l)
+      if (overstretched[l] && state[l] == 1)
+        {
+          state[l]                                            = 0;
+          bonds.intact[lane_bond[std::size_t(q) * width + l]] = 0;
+          broken[l]                                           = true;
+        }
+    return broken;
+  }
+
+  template <int dim>
+  void
+  BondBlocks<dim>::reinit_field(std::vector<double> &field, const unsigned int n_components) const
+  {
+    field.assign(field_stride * n_components, 0.);
+  }
+
+  template <int dim>
+  double *
+  BondBlocks<dim>::component(std::vector<double> &field, const unsigned int d) const
+  {
+    return field.data() + std::size_t(d) * field_stride + width;
+  }
+
+  template <int dim>
+  void
+  BondBlocks<dim>::gather(const double        *values,
+                          const unsigned int   n_components,
+                          std::vector<double> &field) const
+  {
+    for (unsigned int d = 0; d < n_components; ++d)
+      {
+        double *target = component(field, d);
+        for (unsigned int i = 0; i < n_local; ++i)
+          target[kernel_index[i]] = values[std::size_t(i) * n_components + d];
+      }
+  }
+
+  template <int dim>
+  void
+  BondBlocks<dim>::scatter_owned(std::vector<double> &field,
+                                 const unsigned int   n_components,
+                                 const double        *divisor,
+                                 double              *values) const
+  {
+    for (unsigned int d = 0; d < n_components; ++d)
+      {
+        const double *source = component(field, d);
+        for (unsigned int i = 0; i < n_owned; ++i)
+          values[std::size_t(i) * n_components + d] =
+            source[kernel_index[i]] / (divisor != nullptr ? divisor[i] : 1.);
+      }
+  }
+
+  template class BondBlocks<2>;
+  template class BondBlocks<3>;
+} // namespace perideal
