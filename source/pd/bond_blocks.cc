@@ -199,12 +199,10 @@ namespace perideal
                           const unsigned int   n_components,
                           std::vector<double> &field) const
   {
-    for (unsigned int d = 0; d < n_components; ++d)
-      {
-        double *target = component(field, d);
-        for (unsigned int i = 0; i < n_local; ++i)
-          target[kernel_index[i]] = values[std::size_t(i) * n_components + d];
-      }
+    double *target = component(field, 0);
+    for (unsigned int i = 0; i < n_local; ++i)
+      for (unsigned int d = 0; d < n_components; ++d)
+        target[d * field_stride + kernel_index[i]] = values[std::size_t(i) * n_components + d];
   }
 
   template <int dim>
@@ -214,12 +212,13 @@ namespace perideal
                                  const double        *divisor,
                                  double              *values) const
   {
-    for (unsigned int d = 0; d < n_components; ++d)
+    const double *source = component(field, 0);
+    for (unsigned int i = 0; i < n_owned; ++i)
       {
-        const double *source = component(field, d);
-        for (unsigned int i = 0; i < n_owned; ++i)
+        const double divide_by = (divisor != nullptr ? divisor[i] : 1.);
+        for (unsigned int d = 0; d < n_components; ++d)
           values[std::size_t(i) * n_components + d] =
-            source[kernel_index[i]] / (divisor != nullptr ? divisor[i] : 1.);
+            source[d * field_stride + kernel_index[i]] / divide_by;
       }
   }
 

@@ -229,13 +229,6 @@ namespace perideal
   }
 
   template <int dim>
-  bool
-  BoundaryConditions<dim>::is_prescribed(const unsigned int i, const unsigned int c) const
-  {
-    return prescribed[i * dim + c] != 0;
-  }
-
-  template <int dim>
   const std::vector<std::string> &
   BoundaryConditions<dim>::names() const
   {

@@ -690,13 +690,16 @@ namespace perideal
   void
   PDProblem<dim>::compute_work_load(ParticleVector &load) const
   {
-    const auto &volume = particle_system.volumes();
+    const double *volume   = particle_system.volumes().data();
+    const double *internal = internal_force.begin(), *external = external_force.begin();
+    double       *target = load.begin();
     for (unsigned int i = 0; i < particle_system.n_owned(); ++i)
       for (unsigned int d = 0; d < dim; ++d)
-        load.local_element(i * dim + d) =
-          volume[i] * (boundary_conditions.is_prescribed(i, d) ?
-                         -internal_force.local_element(i * dim + d) :
-                         external_force.local_element(i * dim + d));
+        {
+          const std::size_t k = std::size_t(i) * dim + d;
+          target[k] =
+            volume[i] * (boundary_conditions.is_prescribed(i, d) ? -internal[k] : external[k]);
+        }
   }
 
   template <int dim>
@@ -706,9 +709,10 @@ namespace perideal
     compute_work_load(load);
     // Trapezoidal rule over the step from previous_u to u; summed over ranks when reported.
     const std::size_t n_values = std::size_t(particle_system.n_owned()) * dim;
+    const double     *now = load.begin(), *before = previous_load.begin();
+    const double     *u_now = u.begin(), *u_before = previous_u.begin();
     for (std::size_t k = 0; k < n_values; ++k)
-      local_external_work += 0.5 * (previous_load.local_element(k) + load.local_element(k)) *
-                             (u.local_element(k) - previous_u.local_element(k));
+      local_external_work += 0.5 * (before[k] + now[k]) * (u_now[k] - u_before[k]);
     previous_load = load;
   }
 

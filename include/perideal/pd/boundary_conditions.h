@@ -71,7 +71,10 @@ namespace perideal
     add_loads(const double time, ParticleVector &force) const;
     /// Whether component @p c of owned particle @p i is prescribed.
     bool
-    is_prescribed(const unsigned int i, const unsigned int c) const;
+    is_prescribed(const unsigned int i, const unsigned int c) const
+    {
+      return prescribed[i * dim + c] != 0;
+    }
     /// Names of the conditions of type @p type.
     std::vector<std::string>
     names_of_type(const Type type) const;
