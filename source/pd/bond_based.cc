@@ -179,13 +179,12 @@ namespace perideal
             const Vector ratio2 = length2 * (bond.inverse_length * bond.inverse_length);
             const Vector rho    = inverse_sqrt(ratio2);
             const Vector s      = ratio2 * rho - 1.;
-            Mask         active =
-              stdx::static_simd_cast<Vector>(
-                stdx::fixed_size_simd<std::uint8_t, width>(state + lane, stdx::element_aligned)) !=
-              0.;
-            const Mask overstretched = active && (s > critical_stretch);
-            if (stdx::any_of(overstretched))
-              active = active && !blocks.break_lanes(overstretched, q, bonds);
+            Mask         active = intact_lanes(state + lane);
+            if (stdx::any_of(active && (s > critical_stretch)))
+              {
+                blocks.break_lanes(s, critical_stretch, q, bonds);
+                active = intact_lanes(state + lane);
+              }
             const Vector k(coefficient + lane, stdx::element_aligned);
             Vector       t         = 0.;
             stdx::where(active, t) = k * s * (rho * bond.inverse_length);

@@ -162,21 +162,19 @@ namespace perideal
   }
 
   template <int dim>
-  bond_simd::Mask
-  BondBlocks<dim>::break_lanes(const bond_simd::Mask &overstretched,
-                               const unsigned int     q,
-                               BondList              &bonds)
+  void
+  BondBlocks<dim>::break_lanes(const bond_simd::Vector &stretch,
+                               const double             critical_stretch,
+                               const unsigned int       q,
+                               BondList                &bonds)
   {
-    bond_simd::Mask broken(false);
-    std::uint8_t   *state = lane_state.data() + std::size_t(q) * width;
+    std::uint8_t *state = lane_state.data() + std::size_t(q) * width;
     for (unsigned int l = 0; l < width; ++l)
-      if (overstretched[l] && state[l] == 1)
+      if (state[l] == 1 && stretch[l] > critical_stretch)
         {
           state[l]                                            = 0;
           bonds.intact[lane_bond[std::size_t(q) * width + l]] = 0;
-          broken[l]                                           = true;
         }
-    return broken;
   }
 
   template <int dim>

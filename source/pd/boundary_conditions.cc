@@ -6,6 +6,8 @@
 #include <perideal/base/parameter_utilities.h>
 #include <perideal/pd/boundary_conditions.h>
 
+#include <algorithm>
+
 namespace perideal
 {
   using namespace dealii;
@@ -193,6 +195,15 @@ namespace perideal
             for (unsigned int k = 0; k < c.components.size(); ++k)
               u.local_element(i * dim + c.components[k]) = c.function->value(x[i], k);
         }
+  }
+
+  template <int dim>
+  bool
+  BoundaryConditions<dim>::has_loads() const
+  {
+    return has_body_force || std::any_of(conditions.begin(), conditions.end(), [](const auto &c) {
+             return c.type == Type::traction;
+           });
   }
 
   template <int dim>

@@ -167,11 +167,6 @@ namespace perideal
       rho                 = inverse_sqrt(ratio2);
       return Vector(ratio2 * rho - 1.);
     };
-    const auto intact_lanes = [&](const unsigned int q) {
-      return stdx::static_simd_cast<Vector>(
-               stdx::fixed_size_simd<std::uint8_t, width>(state + std::size_t(q) * width,
-                                                          stdx::element_aligned)) != 0.;
-    };
     const auto add_to = [](double *target, const Vector &value) {
       Vector sum(target, stdx::element_aligned);
       sum += value;
@@ -191,13 +186,15 @@ namespace perideal
         Vector theta_a = 0.;
         for (unsigned int q = groups[g].first_block; q < groups[g + 1].first_block; ++q)
           {
-            const auto  &block         = block_list[q];
-            const double xi            = classes[block.bond_class].length;
-            const Vector s             = bond_vectors(a, u_a, block, r, rho);
-            Mask         active        = intact_lanes(q);
-            const Mask   overstretched = active && (s > critical_stretch);
-            if (stdx::any_of(overstretched))
-              active = active && !blocks.break_lanes(overstretched, q, bonds);
+            const auto  &block  = block_list[q];
+            const double xi     = classes[block.bond_class].length;
+            const Vector s      = bond_vectors(a, u_a, block, r, rho);
+            Mask         active = intact_lanes(state + std::size_t(q) * width);
+            if (stdx::any_of(active && (s > critical_stretch)))
+              {
+                blocks.break_lanes(s, critical_stretch, q, bonds);
+                active = intact_lanes(state + std::size_t(q) * width);
+              }
             Vector pair = 0.;
             stdx::where(active, pair) =
               Vector(weight + std::size_t(q) * width, stdx::element_aligned) * s * (xi * xi);
@@ -252,7 +249,7 @@ namespace perideal
             const Vector      t = (dilatation_coefficient * bond.length) *
                                (theta_over_m_a + Vector(theta_over_m + b, stdx::element_aligned)) +
                              (alpha_a + alpha_b) * e;
-            const Mask active          = intact_lanes(q);
+            const Mask active          = intact_lanes(state + std::size_t(q) * width);
             Vector     scale           = 0.;
             stdx::where(active, scale) = t * p * (rho * bond.inverse_length);
             for (unsigned int d = 0; d < dim; ++d)

@@ -411,11 +411,13 @@ namespace perideal
                              internal_force,
                              energy_density.empty() ? nullptr : &energy_density,
                              critical_stretch);
-    external_force = 0.;
-    boundary_conditions.add_loads(time, external_force);
-    acceleration = internal_force;
-    acceleration += external_force;
-    acceleration *= 1. / density;
+    acceleration.equ(1. / density, internal_force);
+    if (boundary_conditions.has_loads())
+      {
+        external_force = 0.;
+        boundary_conditions.add_loads(time, external_force);
+        acceleration.add(1. / density, external_force);
+      }
   }
 
   template <int dim>
@@ -463,12 +465,11 @@ namespace perideal
     energy_density.assign(particle_system.n_owned(), 0.);
     stepper.initialize(0., u, a);
     compute_work_load(previous_load);
+    previous_u          = u;
     local_external_work = 0.;
     write_statistics(0, 0., false);
     write_particles(0, 0.);
 
-    ParticleVector load;
-    particle_system.reinit_vector(load, dim);
     const std::uint64_t n_bonds = particle_system.n_global_bonds();
     const auto          start   = std::chrono::steady_clock::now();
     for (unsigned int step = 1; step <= n_steps; ++step)
@@ -481,9 +482,8 @@ namespace perideal
           energy_density.assign(particle_system.n_owned(), 0.);
         else
           energy_density.clear();
-        previous_u = u;
         stepper.step(time, u, v, a);
-        accumulate_external_work(load);
+        accumulate_external_work();
         if (write_stats)
           write_statistics(step, step * dt, step * dt >= end_time * (1 - 1e-12));
         if (write_fields)
@@ -602,6 +602,7 @@ namespace perideal
     energy_density.assign(n_owned, 0.);
     evaluate(u, &energy_density);
     compute_work_load(previous_load);
+    previous_u          = u;
     local_external_work = 0.;
     write_statistics(0, 0., false);
 
@@ -609,7 +610,6 @@ namespace perideal
     for (unsigned int step = 1; step <= load_steps; ++step)
       {
         factor              = double(step) / load_steps;
-        previous_u          = u;
         unsigned int passes = 0, iterations = 0;
         double       residual = 0.;
         for (;; ++passes)
@@ -653,7 +653,7 @@ namespace perideal
           log << "Load step " << step << "/" << load_steps << ": " << passes + 1 << " solve(s), "
               << iterations << " iterations"
               << (relaxation ? ", relative residual " + std::to_string(residual) : "") << std::endl;
-        accumulate_external_work(load);
+        accumulate_external_work();
         write_statistics(step, factor, step == load_steps);
       }
     write_particles(load_steps, 1.);
@@ -704,16 +704,23 @@ namespace perideal
 
   template <int dim>
   void
-  PDProblem<dim>::accumulate_external_work(ParticleVector &load)
+  PDProblem<dim>::accumulate_external_work()
   {
-    compute_work_load(load);
     // Trapezoidal rule over the step from previous_u to u; summed over ranks when reported.
-    const std::size_t n_values = std::size_t(particle_system.n_owned()) * dim;
-    const double     *now = load.begin(), *before = previous_load.begin();
-    const double     *u_now = u.begin(), *u_before = previous_u.begin();
-    for (std::size_t k = 0; k < n_values; ++k)
-      local_external_work += 0.5 * (before[k] + now[k]) * (u_now[k] - u_before[k]);
-    previous_load = load;
+    const double *volume   = particle_system.volumes().data();
+    const double *internal = internal_force.begin(), *external = external_force.begin();
+    const double *u_now       = u.begin();
+    double       *load_before = previous_load.begin(), *u_before = previous_u.begin();
+    for (unsigned int i = 0; i < particle_system.n_owned(); ++i)
+      for (unsigned int d = 0; d < dim; ++d)
+        {
+          const std::size_t k = std::size_t(i) * dim + d;
+          const double      load =
+            volume[i] * (boundary_conditions.is_prescribed(i, d) ? -internal[k] : external[k]);
+          local_external_work += 0.5 * (load_before[k] + load) * (u_now[k] - u_before[k]);
+          load_before[k] = load;
+          u_before[k]    = u_now[k];
+        }
   }
 
   template <int dim>

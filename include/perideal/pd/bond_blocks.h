@@ -47,6 +47,16 @@ namespace perideal
       r                   = r * (1.5 - half_a * r * r);
       return r;
     }
+
+    /**
+     * @brief The lanes of a block whose bond carries force (state != 0).
+     */
+    inline Mask
+    intact_lanes(const std::uint8_t *state)
+    {
+      return stdx::static_simd_cast<Vector>(
+               stdx::fixed_size_simd<std::uint8_t, width>(state, stdx::element_aligned)) != 0.;
+    }
   } // namespace bond_simd
 
   /**
@@ -152,12 +162,15 @@ namespace perideal
     }
 
     /**
-     * @brief Break the bonds of block @p q whose lanes in @p overstretched are breakable
-     * (state 1), in the lanes and in @p bonds; returns the lanes broken now. Bonds that never
-     * break (state 2) are left alone.
+     * @brief Break the bonds of block @p q whose @p stretch exceeds @p critical_stretch and that
+     * are breakable (state 1), in the lanes and in @p bonds. Bonds that never break (state 2)
+     * are left alone. The rare path of the kernels: they re-read the lane states afterwards.
      */
-    bond_simd::Mask
-    break_lanes(const bond_simd::Mask &overstretched, const unsigned int q, BondList &bonds);
+    void
+    break_lanes(const bond_simd::Vector &stretch,
+                const double             critical_stretch,
+                const unsigned int       q,
+                BondList                &bonds);
 
     /**
      * @brief Size the @p n_components kernel-order arrays of @p field (with the padding the

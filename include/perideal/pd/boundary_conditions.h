@@ -66,6 +66,9 @@ namespace perideal
     /// Set the displacement of components with a prescribed displacement at @p time.
     void
     prescribe_displacement(const double time, ParticleVector &u) const;
+    /// Whether there is a body force or a traction condition.
+    bool
+    has_loads() const;
     /// Add the body force and traction loads [N/m^3] at @p time to @p force.
     void
     add_loads(const double time, ParticleVector &force) const;

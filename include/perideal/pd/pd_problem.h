@@ -133,11 +133,11 @@ namespace perideal
     void
     compute_work_load(ParticleVector &load) const;
     /**
-     * @brief Add the work done from previous_u to u (trapezoidal rule in the loads) and keep
-     * the current load, computed into @p load, for the next step.
+     * @brief Add the work done from previous_u to u (trapezoidal rule in the loads), then keep
+     * the current load in previous_load and u in previous_u for the next step (one pass).
      */
     void
-    accumulate_external_work(ParticleVector &load);
+    accumulate_external_work();
     void
     compute_acceleration(const double time, ParticleVector &u, ParticleVector &a);
     /**
