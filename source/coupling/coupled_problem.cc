@@ -57,13 +57,6 @@ namespace perideal
   {
     pd.parse_parameters(prm);
     fe.parse_parameters(prm, pd.planar, pd.discretization.thickness);
-    prm.enter_subsection("Material");
-    const std::string model = prm.get("Model");
-    prm.leave_subsection();
-    AssertThrow(model == "bond based",
-                ExcMessage("<Material/Model> = " + model +
-                           ": the blended coupling supports the model 'bond based' only (the "
-                           "blended energy of a state-based model is not implemented)."));
     AssertThrow(pd.solver_type == SolverType::explicit_dynamics,
                 ExcMessage("<Solver/Type>: coupled FE-PD problems run with 'explicit' only in "
                            "this version."));

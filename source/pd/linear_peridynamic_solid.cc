@@ -81,7 +81,7 @@ namespace perideal
     for (auto *field : {&u_field, &f_field})
       blocks.reinit_field(*field, dim);
     for (auto *field :
-         {&w_field, &theta_field, &theta_over_m_field, &alpha_field, &inverse_m_field})
+         {&w_field, &theta_field, &theta_over_m_field, &alpha_field, &beta_over_m_field})
       blocks.reinit_field(*field, 1);
 
     particles.reinit_vector(weighted_volume, 1);
@@ -112,11 +112,16 @@ namespace perideal
     alpha.resize(particles.n_local());
     for (unsigned int i = 0; i < particles.n_local(); ++i)
       alpha[i] = alpha_m / weighted_volume.local_element(i);
-    blocks.gather(alpha.data(), 1, alpha_field);
-    std::vector<double> inverse_m(particles.n_local());
+    // The kernels work with the particles' force states weighted by their energy weights
+    // beta_i (E = sum_i beta_i W_i V_i): beta alpha and beta theta / m.
+    const auto         &beta = particles.energy_weights();
+    std::vector<double> weighted(particles.n_local());
     for (unsigned int i = 0; i < particles.n_local(); ++i)
-      inverse_m[i] = 1. / weighted_volume.local_element(i);
-    blocks.gather(inverse_m.data(), 1, inverse_m_field);
+      weighted[i] = beta[i] * alpha[i];
+    blocks.gather(weighted.data(), 1, alpha_field);
+    for (unsigned int i = 0; i < particles.n_local(); ++i)
+      weighted[i] = beta[i] / weighted_volume.local_element(i);
+    blocks.gather(weighted.data(), 1, beta_over_m_field);
   }
 
   template <int dim>
@@ -212,7 +217,7 @@ namespace perideal
     const double *theta_k      = blocks.component(theta_field, 0);
     double       *theta_over_m = blocks.component(theta_over_m_field, 0);
     for (std::size_t k = 0; k < theta_field.size(); ++k)
-      theta_over_m_field[k] = theta_field[k] * inverse_m_field[k];
+      theta_over_m_field[k] = theta_field[k] * beta_over_m_field[k];
 
     // Pass 2: forces (and energy). Pair force
     // [(n k - (n + 2) mu) |xi| (theta_i / m_i + theta_j / m_j) + (alpha_i + alpha_j) e]
@@ -282,8 +287,9 @@ namespace perideal
       {
         energy_density->resize(n_owned);
         blocks.scatter_owned(w_field, 1, volume, energy_density->data());
+        const auto &beta = particles.energy_weights();
         for (unsigned int i = 0; i < n_owned; ++i)
-          (*energy_density)[i] += 0.5 * bulk_modulus * theta_owned[i] * theta_owned[i];
+          (*energy_density)[i] += beta[i] * 0.5 * bulk_modulus * theta_owned[i] * theta_owned[i];
       }
   }
 

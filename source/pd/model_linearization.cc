@@ -64,6 +64,7 @@ namespace perideal
     const double        n       = dim;
     const double        alpha_m = shear_modulus * n * (n + 2.);
     const double        kappa   = std::abs(n * bulk_modulus - (n + 2.) * shear_modulus);
+    const auto         &beta    = particles.energy_weights();
     std::vector<double> direct(n_owned, 0.), moment(n_owned, 0.);
     for (unsigned int i = 0; i < n_owned; ++i)
       for (unsigned int b = bonds.row_start[i]; b < bonds.row_start[i + 1]; ++b)
@@ -71,8 +72,8 @@ namespace perideal
           if (!bonds.intact[b])
             continue;
           const unsigned int j = bonds.neighbor[b];
-          const double       k = (alpha_m / weighted_volume.local_element(i) +
-                            alpha_m / weighted_volume.local_element(j)) *
+          const double       k = (beta[i] * alpha_m / weighted_volume.local_element(i) +
+                            beta[j] * alpha_m / weighted_volume.local_element(j)) *
                            pair_weight[b];
           const double r = pair_weight[b] * bonds.length[b];
           direct[i] += k / volume[i];
@@ -87,14 +88,16 @@ namespace perideal
     for (unsigned int i = 0; i < n_owned; ++i)
       {
         const double m_i = weighted_volume.local_element(i);
-        per_particle[i]  = 2. * (direct[i] + 2. * n * kappa * moment[i] * moment[i] / (m_i * m_i));
+        per_particle[i] =
+          2. * (direct[i] + 2. * n * kappa * beta[i] * moment[i] * moment[i] / (m_i * m_i));
       }
   }
 
   // LPS linearized (doc/theory/models.md): W_i = (n k - (n+2) mu)/(2 n) theta_i^2
   // + (alpha_i / 2) sum_j omega e^2 V_j beta, because the deviatoric sum expands to
-  // sum omega e^2 V - theta_i^2 m_i / n^2 and alpha_i m_i = mu n (n + 2). Hence
-  // k_b = (alpha_i + alpha_j) omega beta V_i V_j, w_i = V_i (n k - (n+2) mu) / n,
+  // sum omega e^2 V - theta_i^2 m_i / n^2 and alpha_i m_i = mu n (n + 2). Hence, with the
+  // energy weights b_i of a blended coupling (E = sum_i b_i W_i V_i),
+  // k_b = (b_i alpha_i + b_j alpha_j) omega beta V_i V_j, w_i = b_i V_i (n k - (n+2) mu) / n,
   // g_b^(i) = (n / m_i) omega beta |xi| V_j.
   template <int dim>
   void
@@ -106,6 +109,7 @@ namespace perideal
     const unsigned int n_owned = particles.n_owned();
     const double       n       = dim;
     const double       alpha_m = shear_modulus * n * (n + 2.);
+    const auto        &beta    = particles.energy_weights();
     linearized.bond_stiffness.assign(bonds.size(), 0.);
     linearized.dilatation_row.assign(bonds.size(), 0.);
     linearized.dilatation_column.assign(bonds.size(), 0.);
@@ -113,15 +117,16 @@ namespace perideal
     for (unsigned int i = 0; i < n_owned; ++i)
       {
         linearized.dilatation_weight[i] =
-          volume[i] * (n * bulk_modulus - (n + 2.) * shear_modulus) / n;
+          beta[i] * volume[i] * (n * bulk_modulus - (n + 2.) * shear_modulus) / n;
         const double m_i = weighted_volume.local_element(i);
         for (unsigned int b = bonds.row_start[i]; b < bonds.row_start[i + 1]; ++b)
           {
             if (!bonds.intact[b])
               continue;
-            const unsigned int j            = bonds.neighbor[b];
-            const double       m_j          = weighted_volume.local_element(j);
-            linearized.bond_stiffness[b]    = (alpha_m / m_i + alpha_m / m_j) * pair_weight[b];
+            const unsigned int j   = bonds.neighbor[b];
+            const double       m_j = weighted_volume.local_element(j);
+            linearized.bond_stiffness[b] =
+              (beta[i] * alpha_m / m_i + beta[j] * alpha_m / m_j) * pair_weight[b];
             const double r                  = n * pair_weight[b] * bonds.length[b];
             linearized.dilatation_row[b]    = r / m_i / volume[i];
             linearized.dilatation_column[b] = r / m_j / volume[j];

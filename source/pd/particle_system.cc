@@ -195,6 +195,7 @@ namespace perideal
 
     const double volume = (dim == 2 ? dx * dx * settings.thickness : dx * dx * dx);
     particle_volumes.assign(reference_positions.size(), volume);
+    particle_energy_weights.assign(reference_positions.size(), 1.);
     flat_coordinates.resize(reference_positions.size() * dim);
     for (std::size_t i = 0; i < reference_positions.size(); ++i)
       for (unsigned int d = 0; d < dim; ++d)
@@ -403,6 +404,25 @@ namespace perideal
   ParticleSystem<dim>::volumes() const
   {
     return particle_volumes;
+  }
+
+  template <int dim>
+  const std::vector<double> &
+  ParticleSystem<dim>::energy_weights() const
+  {
+    return particle_energy_weights;
+  }
+
+  template <int dim>
+  void
+  ParticleSystem<dim>::set_energy_weights(const std::function<double(const Point<dim> &)> &weight)
+  {
+    for (std::size_t i = 0; i < reference_positions.size(); ++i)
+      particle_energy_weights[i] = weight(reference_positions[i]);
+    for (unsigned int i = 0; i < n_owned_particles; ++i)
+      for (unsigned int b = bond_list.row_start[i]; b < bond_list.row_start[i + 1]; ++b)
+        bond_list.energy_weight[b] =
+          0.5 * (particle_energy_weights[i] + particle_energy_weights[bond_list.neighbor[b]]);
   }
 
   template <int dim>

@@ -366,16 +366,7 @@ namespace perideal
                            "smaller than the lattice spacing or empty."));
 
     if (energy_weight)
-      {
-        const auto         &x = particle_system.positions();
-        std::vector<double> weight(x.size());
-        for (unsigned int i = 0; i < x.size(); ++i)
-          weight[i] = energy_weight(x[i]);
-        BondList &bonds = particle_system.bonds();
-        for (unsigned int i = 0; i < particle_system.n_owned(); ++i)
-          for (unsigned int b = bonds.row_start[i]; b < bonds.row_start[i + 1]; ++b)
-            bonds.energy_weight[b] = 0.5 * (weight[i] + weight[bonds.neighbor[b]]);
-      }
+      particle_system.set_energy_weights(energy_weight);
 
     ModelContext context;
     context.horizon            = discretization.horizon;

@@ -2,8 +2,8 @@
 // Bad input of a coupled problem: a valid file is accepted; each bad case stops with a message
 // naming the entry, before the time stepping starts: a blending function outside [0, 1], an overlap
 // narrower than the horizon, particles outside the mesh, a PD condition on particles that follow
-// the FE field, two FE conditions on the same component of a boundary, a state-based model, an
-// implicit solver.
+// the FE field, two FE conditions on the same component of a boundary, an implicit solver. A
+// state-based model is accepted (its energy is blended through the particles' weights).
 // ---------------------------------------------------------------------
 #include <deal.II/base/parameter_handler.h>
 
@@ -165,6 +165,6 @@ main(int argc, char **argv)
             {"FE_BLOCK",
              "    subsection left again\n      set Boundary ids = 0\n      set Components = y\n"
              "    end"}});
-  run_case("state-based model", {{"MODEL", "linear peridynamic solid"}});
+  run_case("valid input, state-based model", {{"MODEL", "linear peridynamic solid"}});
   run_case("implicit solver", {{"SOLVER", "static"}});
 }

@@ -34,8 +34,9 @@ namespace perideal
    *
    * Checked before any heavy work: beta in [0, 1]; the transition 0 < beta < 1 at least a
    * horizon wide (no bond joins a particle with beta = 1 to one with beta = 0); every particle
-   * inside the mesh; PD boundary conditions only on free particles; the material model
-   * bond based (the blended energy of a state-based model is not implemented).
+   * inside the mesh; PD boundary conditions only on free particles. Any material model: the
+   * PD energy is sum_i beta_i W_i V_i (ParticleSystem::energy_weights()), which for the
+   * bond-based model weights each bond by (beta_i + beta_j) / 2.
    */
   template <int dim>
   class CoupledProblem

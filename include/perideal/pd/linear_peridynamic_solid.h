@@ -108,9 +108,9 @@ namespace perideal
     BondBlocks<dim>     blocks;
     std::vector<double> lane_weight;
     /// Kernel-order work fields of compute_forces(): displacement, force, energy density,
-    /// dilatation, theta / m, alpha and 1 / m.
+    /// dilatation, beta theta / m, beta alpha and beta / m (beta: the particles' energy weights).
     std::vector<double> u_field, f_field, w_field, theta_field, theta_over_m_field, alpha_field,
-      inverse_m_field;
+      beta_over_m_field;
   };
 } // namespace perideal
 

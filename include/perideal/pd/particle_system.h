@@ -142,6 +142,16 @@ namespace perideal
     /// Volumes of owned then ghost particles [m^3].
     const std::vector<double> &
     volumes() const;
+    /// Energy weight of the owned then ghost particles: 1, or beta_i in the overlap of a blended
+    /// FE-PD coupling (the model's energy is sum_i beta_i W_i V_i).
+    const std::vector<double> &
+    energy_weights() const;
+    /**
+     * @brief Weight the particles' energies by @p weight(x) (before the model is initialized):
+     * sets energy_weights() and BondList::energy_weight = (beta_i + beta_j) / 2.
+     */
+    void
+    set_energy_weights(const std::function<double(const dealii::Point<dim> &)> &weight);
     /// Global index of local particle @p i.
     dealii::types::global_dof_index
     global_index(const unsigned int i) const;
@@ -206,6 +216,7 @@ namespace perideal
     std::vector<dealii::Point<dim>>                                    reference_positions;
     std::vector<double>                                                flat_coordinates;
     std::vector<double>                                                particle_volumes;
+    std::vector<double>                                                particle_energy_weights;
     std::vector<dealii::types::global_dof_index>                       global_indices;
     BondList                                                           bond_list;
     mutable std::map<unsigned int, std::shared_ptr<const Partitioner>> partitioners;

@@ -94,7 +94,7 @@ namespace perideal
      * @brief Generate the particles and bonds, initialize the model, choose the time step.
      * Particles fill the lattice points of the body that also satisfy @p keep (if given; a
      * coupled problem keeps only the PD region); @p energy_weight (if given) weights each
-     * bond's energy by the mean of its ends' values (BondList::energy_weight).
+     * particle's energy (ParticleSystem::set_energy_weights()).
      */
     void
     setup(const std::function<bool(const dealii::Point<dim> &)>   &keep          = {},
