@@ -646,9 +646,17 @@ namespace perideal
           local_work += 0.5 * (pd.previous_load.local_element(k) + particle_load.local_element(k)) *
                         (pd.u.local_element(k) - pd.previous_u.local_element(k));
 
-        if (is_root && pd.show_progress)
-          log << "Load step " << step << "/" << pd.load_steps << ": " << passes + 1 << " solve(s), "
-              << iterations << " CG iterations" << std::endl;
+        // Solves and broken bonds per step always (they are the same on every rank count);
+        // iteration counts only with progress output.
+        const auto broken = n_broken_bonds(ps);
+        if (is_root)
+          {
+            log << "Load step " << step << "/" << pd.load_steps << ": " << passes + 1
+                << " solve(s), " << broken << " broken bonds";
+            if (pd.show_progress)
+              log << ", " << iterations << " CG iterations";
+            log << std::endl;
+          }
         write_static_statistics(step, factor, iterations, pd_energy, step == pd.load_steps);
       }
 
