@@ -4,6 +4,7 @@
 #include <deal.II/base/mpi.h>
 #include <deal.II/dofs/dof_tools.h>
 #include <deal.II/fe/component_mask.h>
+#include <deal.II/lac/affine_constraints.h>
 #include <deal.II/lac/dynamic_sparsity_pattern.h>
 #include <deal.II/lac/solver_cg.h>
 #include <deal.II/lac/solver_control.h>
@@ -77,6 +78,17 @@ namespace perideal
     transfer  = &transfer_operator;
     comm      = particle_system.get_communicator();
 
+    // T = [P; I] acts on the raw FE dofs: hanging-node constraints would have to enter it.
+    {
+      IndexSet relevant;
+      DoFTools::extract_locally_relevant_dofs(fe_solid.get_dof_handler(), relevant);
+      AffineConstraints<double> hanging(relevant);
+      DoFTools::make_hanging_node_constraints(fe_solid.get_dof_handler(), hanging);
+      AssertThrow(Utilities::MPI::sum(hanging.n_constraints(), comm) == 0,
+                  ExcMessage("The FE mesh of <Finite elements> has hanging nodes, which the "
+                             "static coupled solve (<Solver/Type> = static) does not support; "
+                             "use a conforming mesh (global refinement only)."));
+    }
     fe_owned = fe_solid.get_dof_handler().locally_owned_dofs();
     AssertThrow(fe_owned.is_contiguous(),
                 ExcInternalError("The owned FE dofs are not contiguous."));
