@@ -525,13 +525,12 @@ namespace perideal
             prescribed.local_element(i * dim + d) = 1.;
             constrained[d] += 1.;
           }
-    const char axis[3] = {'x', 'y', 'z'};
     for (unsigned int d = 0; d < dim; ++d)
       AssertThrow(Utilities::MPI::sum(constrained[d], comm) > 0.,
-                  ExcMessage(std::string("No displacement condition prescribes the ") + axis[d] +
+                  ExcMessage("No displacement condition prescribes the " + axis_name(d) +
                              " component anywhere (boundary conditions: " +
                              (condition_list.empty() ? std::string("none") : condition_list) +
-                             "), so a rigid translation in " + axis[d] +
+                             "), so a rigid translation in " + axis_name(d) +
                              " is free and the static system (<Solver/Type> = static) is "
                              "singular. Prescribe it in <Finite elements/Boundary conditions> "
                              "(type 'displacement') or on free particles in <Boundary "

@@ -151,6 +151,9 @@ end
       {
         std::cout << name << ": " << perideal_tests::exception_text(exc) << std::endl;
       }
+    // No rank may write the next case's file while another still reads this one (a rank that
+    // stops early would otherwise hand the others the next case's input).
+    MPI_Barrier(MPI_COMM_WORLD);
   }
 } // namespace
 
