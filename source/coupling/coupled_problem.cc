@@ -1,13 +1,18 @@
 // ---------------------------------------------------------------------
 // PeriDeal: a problem with an FE region and particles joined through an overlap zone.
 // ---------------------------------------------------------------------
+#include <deal.II/dofs/dof_tools.h>
+#include <deal.II/fe/component_mask.h>
 #include <deal.II/numerics/vector_tools.h>
 
 #include <perideal/base/parameter_utilities.h>
 #include <perideal/base/progress_reporter.h>
 #include <perideal/coupling/coupled_problem.h>
+#include <perideal/pd/boundary_conditions.h>
 #include <perideal/pd/damage_model.h>
 
+#include <algorithm>
+#include <array>
 #include <chrono>
 #include <cmath>
 #include <filesystem>
@@ -17,6 +22,16 @@
 namespace perideal
 {
   using namespace dealii;
+
+  namespace
+  {
+    /// "x", "y" or "z".
+    std::string
+    axis_name(const unsigned int d)
+    {
+      return std::string(1, "xyz"[d]);
+    }
+  } // namespace
 
   template <int dim>
   CoupledProblem<dim>::CoupledProblem(const MPI_Comm comm, std::ostream &log)
@@ -48,6 +63,18 @@ namespace perideal
                       "beta(x, y, (z)) in [0, 1]: 1 where only PD acts, 0 where only FE acts, in "
                       "between in the overlap, which must be at least a horizon wide (e.g. "
                       "'min(1, max(0, (x - 0.04) / 0.01))').");
+    prm.declare_entry("Exact displacement",
+                      "",
+                      Patterns::Anything(),
+                      "Static runs, for verification: the exact displacement (one expression per "
+                      "component, separated by ';', in x, y(, z)); if given, the summary prints "
+                      "the largest error at the FE nodes and at the particles relative to the "
+                      "largest exact value. Empty: no comparison.");
+    prm.declare_entry("Exact displacement tolerance",
+                      "0",
+                      Patterns::Double(0.),
+                      "Static runs with <Exact displacement>: the summary states whether both "
+                      "relative errors are below this value (0: no verdict).");
     prm.leave_subsection();
   }
 
@@ -57,13 +84,27 @@ namespace perideal
   {
     pd.parse_parameters(prm);
     fe.parse_parameters(prm, pd.planar, pd.discretization.thickness);
-    AssertThrow(pd.solver_type == SolverType::explicit_dynamics,
-                ExcMessage("<Solver/Type>: coupled FE-PD problems run with 'explicit' only in "
-                           "this version."));
+    AssertThrow(pd.solver_type == SolverType::explicit_dynamics ||
+                  pd.solver_type == SolverType::static_linear,
+                ExcMessage("<Solver/Type> = adaptive dynamic relaxation: coupled FE-PD problems "
+                           "accept 'explicit' or 'static'."));
     prm.enter_subsection("Coupling");
     blending_expression = prm.get("Blending function");
     beta =
       ParameterUtilities::make_function<dim>(blending_expression, 1, "Coupling/Blending function");
+    const std::string exact = prm.get("Exact displacement");
+    exact_displacement.reset();
+    if (!exact.empty())
+      exact_displacement =
+        ParameterUtilities::make_function<dim>(exact, dim, "Coupling/Exact displacement");
+    exact_tolerance = prm.get_double("Exact displacement tolerance");
+    AssertThrow(exact_tolerance == 0. || exact_displacement,
+                ExcMessage("<Coupling/Exact displacement tolerance> is set, but <Coupling/Exact "
+                           "displacement> is empty: give the exact field or remove the "
+                           "tolerance."));
+    AssertThrow(!exact_displacement || pd.solver_type == SolverType::static_linear,
+                ExcMessage("<Coupling/Exact displacement> is compared in static runs only "
+                           "(<Solver/Type> = static); remove it or change the solver type."));
     prm.leave_subsection();
   }
 
@@ -215,6 +256,15 @@ namespace perideal
                   "with FE unknowns); prescribe it there with <Finite elements/Boundary "
                   "conditions>, or move its region into the PD-only zone (beta = 1)."));
 
+    const std::string fe_summary = fe.summary();
+    const auto        n_slaved   = transfer.n_global_slaved();
+    if (is_root)
+      log << fe_summary << "\n"
+          << "Coupling: blended, " << n_slaved << " particles slaved to the FE field, "
+          << pd.particle_system.n_global() - n_slaved << " free" << std::endl;
+    if (pd.solver_type == SolverType::static_linear)
+      return;
+
     // The FE mass: lumped (1 - beta) rho plus P^T of the slaved particles' masses.
     fe.initialize_vector(mass);
     mass = fe.lumped_mass();
@@ -239,13 +289,8 @@ namespace perideal
     stable_dt          = std::min(fe_dt, pd.stable_dt);
     dt = ParameterUtilities::choose_time_step(pd.requested_time_step, pd.safety_factor, stable_dt);
 
-    const std::string fe_summary = fe.summary();
-    const auto        n_slaved   = transfer.n_global_slaved();
     if (is_root)
-      log << fe_summary << "\n"
-          << "Coupling: blended, " << n_slaved << " particles slaved to the FE field, "
-          << pd.particle_system.n_global() - n_slaved << " free\n"
-          << "Stable time step: FE " << fe_dt << " s, PD " << pd.stable_dt << " s" << std::endl;
+      log << "Stable time step: FE " << fe_dt << " s, PD " << pd.stable_dt << " s" << std::endl;
   }
 
   template <int dim>
@@ -308,6 +353,16 @@ namespace perideal
   template <int dim>
   void
   CoupledProblem<dim>::run()
+  {
+    if (pd.solver_type == SolverType::static_linear)
+      run_static();
+    else
+      run_explicit();
+  }
+
+  template <int dim>
+  void
+  CoupledProblem<dim>::run_explicit()
   {
     const unsigned int n_steps =
       std::max<unsigned int>(1, static_cast<unsigned int>(std::ceil(pd.end_time / dt - 1e-6)));
@@ -409,6 +464,398 @@ namespace perideal
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     if (is_root && pd.show_progress)
       log << "Wall time of the time loop: " << seconds << " s" << std::endl;
+  }
+
+  template <int dim>
+  void
+  CoupledProblem<dim>::run_static()
+  {
+    auto              &ps      = pd.particle_system;
+    const unsigned int n_owned = ps.n_owned();
+
+    // Conditions a static solve cannot apply, and components no condition holds.
+    std::string condition_list;
+    for (const auto &c : fe.conditions())
+      condition_list += (condition_list.empty() ? "" : ", ") + c.name;
+    for (const auto &name : pd.boundary_conditions.names())
+      condition_list += (condition_list.empty() ? "" : ", ") + name;
+    for (const auto &c : fe.conditions())
+      AssertThrow(c.type != FESolid<dim>::ConditionType::velocity,
+                  ExcMessage("The FE boundary condition <" + c.name +
+                             "> is of type 'velocity', which a static solve (<Solver/Type> = "
+                             "static) cannot apply; use 'displacement' (scaled by the load "
+                             "factor) instead."));
+    const auto velocity_conditions =
+      pd.boundary_conditions.names_of_type(BoundaryConditions<dim>::Type::velocity);
+    AssertThrow(velocity_conditions.empty(),
+                ExcMessage("The boundary condition <" + velocity_conditions.front() +
+                           "> is of type 'velocity', which a static solve (<Solver/Type> = "
+                           "static) cannot apply; use 'displacement' (scaled by the load "
+                           "factor) instead."));
+    ParticleVector prescribed, target, full_load;
+    for (ParticleVector *vec : {&pd.u,
+                                &pd.v,
+                                &pd.a,
+                                &pd.internal_force,
+                                &pd.external_force,
+                                &pd.previous_u,
+                                &particle_load,
+                                &pd.previous_load,
+                                &static_pd_load,
+                                &prescribed,
+                                &target,
+                                &full_load})
+      ps.reinit_vector(*vec, dim);
+    std::array<double, dim> constrained{};
+    for (const auto &c : fe.conditions())
+      if (c.type == FESolid<dim>::ConditionType::displacement)
+        for (const unsigned int comp : c.components)
+          constrained[comp] = 1.;
+    for (unsigned int i = 0; i < n_owned; ++i)
+      for (unsigned int d = 0; d < dim; ++d)
+        if (free_particle[i] && pd.boundary_conditions.is_prescribed(i, d))
+          {
+            prescribed.local_element(i * dim + d) = 1.;
+            constrained[d] += 1.;
+          }
+    for (unsigned int d = 0; d < dim; ++d)
+      AssertThrow(Utilities::MPI::sum(constrained[d], comm) > 0.,
+                  ExcMessage("No displacement condition prescribes the " + axis_name(d) +
+                             " component anywhere (boundary conditions: " +
+                             (condition_list.empty() ? std::string("none") : condition_list) +
+                             "), so a rigid translation in " + axis_name(d) +
+                             " is free and the static system (<Solver/Type> = static) is "
+                             "singular. Prescribe it in <Finite elements/Boundary conditions> "
+                             "(type 'displacement') or on free particles in <Boundary "
+                             "conditions>."));
+
+    FEVector fe_target, fe_full_load;
+    for (FEVector *vec : {&U,
+                          &V,
+                          &f_ext,
+                          &residual,
+                          &fe_load,
+                          &previous_fe_load,
+                          &previous_U,
+                          &static_fe_load,
+                          &fe_target,
+                          &fe_full_load})
+      fe.initialize_vector(*vec);
+    {
+      std::vector<std::vector<bool>> modes;
+      DoFTools::extract_constant_modes(fe.get_dof_handler(), ComponentMask(dim, true), modes);
+      fe_dof_component.assign(U.locally_owned_size(), 0);
+      for (unsigned int d = 0; d < dim; ++d)
+        for (unsigned int k = 0; k < fe_dof_component.size(); ++k)
+          if (modes[d][k])
+            fe_dof_component[k] = d;
+    }
+    pd.energy_density.assign(n_owned, 0.);
+
+    if (is_root)
+      std::filesystem::create_directories(pd.output_directory);
+    statistics = std::make_unique<StatisticsFile>(comm, pd.output_directory + "/statistics.csv");
+    pd.particle_output = std::make_unique<ParticleOutput<dim>>(comm,
+                                                               pd.output_directory,
+                                                               pd.base_name,
+                                                               pd.write_hdf5,
+                                                               pd.write_vtu);
+
+    // The conditions at t = End time, scaled by the load factor.
+    pd.boundary_conditions.prescribe_displacement(pd.end_time, target);
+    pd.boundary_conditions.add_loads(pd.end_time, full_load);
+    fe.prescribe(pd.end_time, fe_target, V);
+    fe.assemble_load(pd.end_time, fe_full_load);
+
+    CoupledStaticSolver<dim> solver(pd.static_settings);
+    solver.reinit(fe, ps, transfer, prescribed);
+    if (is_root)
+      log << "Static solve: " << solver.n_unknowns()
+          << " unknowns (FE dofs and free particle components), " << pd.load_steps
+          << " load step(s)" << std::endl;
+
+    local_work = 0.;
+    write_static_statistics(0, 0., 0, 0., false);
+    const auto        &mask       = fe.prescribed_mask();
+    const auto        &volume     = ps.volumes();
+    const unsigned int max_passes = 100;
+    for (unsigned int step = 1; step <= pd.load_steps; ++step)
+      {
+        const double factor = double(step) / pd.load_steps;
+        previous_U          = U;
+        pd.previous_u       = pd.u;
+        previous_fe_load    = fe_load;
+        pd.previous_load    = particle_load;
+        static_fe_load.equ(factor, fe_full_load);
+        static_pd_load.equ(factor, full_load);
+
+        unsigned int passes = 0, iterations = 0;
+        for (;; ++passes)
+          {
+            const auto broken_before = n_broken_bonds(ps);
+            for (unsigned int k = 0; k < U.locally_owned_size(); ++k)
+              if (mask[k])
+                U.local_element(k) = factor * fe_target.local_element(k);
+            for (unsigned int k = 0; k < n_owned * dim; ++k)
+              if (prescribed.local_element(k) != 0.)
+                pd.u.local_element(k) = factor * target.local_element(k);
+            iterations +=
+              solver.solve(*pd.material, static_fe_load, static_pd_load, U, pd.u, condition_list);
+            // The model's own forces and energy density at the solution (breaks bonds).
+            pd.material->compute_forces(ps,
+                                        pd.u,
+                                        pd.internal_force,
+                                        &pd.energy_density,
+                                        pd.critical_stretch);
+            if (n_broken_bonds(ps) == broken_before)
+              break;
+            AssertThrow(passes + 1 < max_passes,
+                        ExcMessage("Load step " + std::to_string(step) +
+                                   ": bonds kept breaking through " + std::to_string(max_passes) +
+                                   " re-solves (unstable crack growth); use more "
+                                   "<Solver/Load steps>."));
+          }
+        const double pd_energy =
+          solver.forces(U, pd.u, static_fe_load, static_pd_load, residual, pd.internal_force);
+
+        // The loads that do work: the applied ones, and on prescribed components the support
+        // forces (the FE residual K z - F there; minus the internal force on particles).
+        for (unsigned int k = 0; k < U.locally_owned_size(); ++k)
+          fe_load.local_element(k) =
+            static_fe_load.local_element(k) + (mask[k] ? residual.local_element(k) : 0.);
+        for (unsigned int i = 0; i < n_owned; ++i)
+          for (unsigned int d = 0; d < dim; ++d)
+            {
+              const unsigned int k           = i * dim + d;
+              particle_load.local_element(k) = volume[i] * (prescribed.local_element(k) != 0. ?
+                                                              -pd.internal_force.local_element(k) :
+                                                              static_pd_load.local_element(k));
+            }
+        for (unsigned int k = 0; k < U.locally_owned_size(); ++k)
+          local_work += 0.5 * (previous_fe_load.local_element(k) + fe_load.local_element(k)) *
+                        (U.local_element(k) - previous_U.local_element(k));
+        for (unsigned int k = 0; k < n_owned * dim; ++k)
+          local_work += 0.5 * (pd.previous_load.local_element(k) + particle_load.local_element(k)) *
+                        (pd.u.local_element(k) - pd.previous_u.local_element(k));
+
+        // Solves and broken bonds per step always (they are the same on every rank count);
+        // iteration counts only with progress output.
+        const auto broken = n_broken_bonds(ps);
+        if (is_root)
+          {
+            log << "Load step " << step << "/" << pd.load_steps << ": " << passes + 1
+                << " solve(s), " << broken << " broken bonds";
+            if (pd.show_progress)
+              log << ", " << iterations << " CG iterations";
+            log << std::endl;
+          }
+        write_static_statistics(step, factor, iterations, pd_energy, step == pd.load_steps);
+      }
+
+    if (exact_displacement)
+      {
+        // The residual K z - F of the exact field (FE nodes and particles set to it): for a
+        // state the uncoupled models reproduce, the ghost force of the coupling, the number
+        // explicit runs print at t = 0.
+        FEVector       U_exact, fe_residual;
+        ParticleVector u_exact, force;
+        fe.initialize_vector(U_exact);
+        fe.initialize_vector(fe_residual);
+        ps.reinit_vector(u_exact, dim);
+        ps.reinit_vector(force, dim);
+        VectorTools::interpolate(fe.get_dof_handler(), *exact_displacement, U_exact);
+        U_exact.update_ghost_values();
+        const auto &x = ps.positions();
+        for (unsigned int i = 0; i < n_owned; ++i)
+          for (unsigned int d = 0; d < dim; ++d)
+            u_exact.local_element(i * dim + d) = exact_displacement->value(x[i], d);
+        transfer.interpolate(U_exact, u_exact);
+        u_exact.update_ghost_values();
+        solver.forces(U_exact, u_exact, static_fe_load, static_pd_load, fe_residual, force);
+        double largest = 0., scale = 0.;
+        for (unsigned int k = 0; k < U_exact.locally_owned_size(); ++k)
+          if (!mask[k])
+            largest = std::max(largest, std::abs(fe_residual.local_element(k)));
+        for (unsigned int i = 0; i < n_owned; ++i)
+          for (unsigned int d = 0; d < dim; ++d)
+            if (free_particle[i] && prescribed.local_element(i * dim + d) == 0.)
+              largest = std::max(largest,
+                                 std::abs(force.local_element(i * dim + d) +
+                                          static_pd_load.local_element(i * dim + d)) *
+                                   volume[i]);
+        for (const double sum : fe.absolute_row_sums(&U_exact))
+          scale = std::max(scale, sum);
+        largest = Utilities::MPI::max(largest, comm);
+        scale   = Utilities::MPI::max(scale, comm);
+        if (is_root)
+          log << "Force residual of the exact field: " << largest
+              << " N (largest unbalanced nodal force at free dofs and particles), relative to "
+                 "the FE internal-force scale: "
+              << (scale > 0. ? largest / scale : 0.) << std::endl;
+      }
+
+    pd.write_particles(pd.load_steps, 1.);
+    if (pd.write_hdf5)
+      fe.write_output(pd.output_directory, "solution", pd.load_steps, 1., U);
+  }
+
+  template <int dim>
+  void
+  CoupledProblem<dim>::write_static_statistics(const unsigned int step,
+                                               const double       factor,
+                                               const unsigned int iterations,
+                                               const double       pd_energy,
+                                               const bool         final_row)
+  {
+    const auto &ps      = pd.particle_system;
+    const auto &volume  = ps.volumes();
+    const auto &x       = ps.positions();
+    const auto  n_owned = ps.n_owned();
+
+    double max_u = 0.;
+    for (unsigned int i = 0; i < n_owned; ++i)
+      {
+        double u2 = 0.;
+        for (unsigned int d = 0; d < dim; ++d)
+          u2 += std::pow(pd.u.local_element(i * dim + d), 2);
+        max_u = std::max(max_u, std::sqrt(u2));
+      }
+    max_u                     = Utilities::MPI::max(max_u, comm);
+    const double fe_energy    = fe.strain_energy(U);
+    const double strain       = fe_energy + pd_energy;
+    const double work         = Utilities::MPI::sum(local_work, comm);
+    const double energy_error = work - strain;
+    const auto   broken       = n_broken_bonds(ps);
+
+    // Force balance: the applied loads against the reactions of the displacement conditions.
+    Tensor<1, dim> applied, reaction_sum;
+    for (unsigned int k = 0; k < static_fe_load.locally_owned_size(); ++k)
+      applied[fe_dof_component[k]] += static_fe_load.local_element(k);
+    for (unsigned int i = 0; i < n_owned; ++i)
+      for (unsigned int d = 0; d < dim; ++d)
+        applied[d] += static_pd_load.local_element(i * dim + d) * volume[i];
+    applied                 = Utilities::MPI::sum(applied, comm);
+    const auto fe_reactions = fe.reactions(residual);
+    const auto pd_reactions = pd.boundary_conditions.reactions(pd.internal_force);
+    const auto pd_types =
+      pd.boundary_conditions.names_of_type(BoundaryConditions<dim>::Type::displacement);
+    double largest = applied.norm();
+    for (unsigned int k = 0; k < fe_reactions.size(); ++k)
+      if (fe.conditions()[k].type == FESolid<dim>::ConditionType::displacement)
+        {
+          reaction_sum += fe_reactions[k];
+          largest = std::max(largest, fe_reactions[k].norm());
+        }
+    for (unsigned int k = 0; k < pd_reactions.size(); ++k)
+      if (std::find(pd_types.begin(), pd_types.end(), pd.boundary_conditions.names()[k]) !=
+          pd_types.end())
+        {
+          reaction_sum += pd_reactions[k];
+          largest = std::max(largest, pd_reactions[k].norm());
+        }
+    // Relative to the largest force involved; loads below 1e-10 of the internal-force scale
+    // (a rigid motion) are round-off and give no ratio.
+    double scale = 0.;
+    for (const double sum : fe.absolute_row_sums(&U))
+      scale = std::max(scale, sum);
+    scale                  = Utilities::MPI::max(scale, comm);
+    const double imbalance = (applied + reaction_sum).norm();
+    const double balance   = largest > 1e-10 * scale ? imbalance / largest : 0.;
+    // Likewise energies below 1e-10 of the force scale times the displacement.
+    const double relative_energy_error =
+      std::max(std::abs(work), strain) > 1e-10 * scale * max_u ? energy_error / work : 0.;
+
+    StatisticsFile &file = *statistics;
+    file.add_value("step", step);
+    file.add_value("time", factor);
+    file.add_value("strain_energy", strain);
+    file.add_value("fe_strain_energy", fe_energy);
+    file.add_value("pd_strain_energy", pd_energy);
+    file.add_value("external_work", work);
+    file.add_value("energy_error", energy_error);
+    file.add_value("broken_bonds", broken);
+    file.add_value("max_particle_displacement", max_u);
+    file.add_value("iterations", iterations);
+    for (unsigned int k = 0; k < pd_reactions.size(); ++k)
+      for (unsigned int d = 0; d < dim; ++d)
+        file.add_value("reaction_" + pd.boundary_conditions.names()[k] + "_" + axis_name(d),
+                       pd_reactions[k][d]);
+    for (unsigned int k = 0; k < fe_reactions.size(); ++k)
+      if (fe.conditions()[k].type != FESolid<dim>::ConditionType::traction)
+        for (unsigned int d = 0; d < dim; ++d)
+          file.add_value("reaction_" + fe.conditions()[k].name + "_" + axis_name(d),
+                         fe_reactions[k][d]);
+    for (unsigned int d = 0; d < dim; ++d)
+      file.add_value(std::string("applied_load_") + axis_name(d), applied[d]);
+    file.add_value("force_balance", balance);
+    file.end_row();
+    if (!final_row)
+      return;
+
+    // The error against the exact displacement: FE nodal values and particles.
+    double fe_error = 0., fe_exact = 0., pd_error = 0., pd_exact = 0.;
+    if (exact_displacement)
+      {
+        FEVector exact;
+        fe.initialize_vector(exact);
+        VectorTools::interpolate(fe.get_dof_handler(), *exact_displacement, exact);
+        for (unsigned int k = 0; k < exact.locally_owned_size(); ++k)
+          {
+            fe_error = std::max(fe_error, std::abs(U.local_element(k) - exact.local_element(k)));
+            fe_exact = std::max(fe_exact, std::abs(exact.local_element(k)));
+          }
+        Vector<double> value(dim);
+        for (unsigned int i = 0; i < n_owned; ++i)
+          {
+            exact_displacement->vector_value(x[i], value);
+            double e2 = 0., v2 = 0.;
+            for (unsigned int d = 0; d < dim; ++d)
+              {
+                e2 += std::pow(pd.u.local_element(i * dim + d) - value[d], 2);
+                v2 += value[d] * value[d];
+              }
+            pd_error = std::max(pd_error, std::sqrt(e2));
+            pd_exact = std::max(pd_exact, std::sqrt(v2));
+          }
+        fe_error = Utilities::MPI::max(fe_error, comm);
+        fe_exact = Utilities::MPI::max(fe_exact, comm);
+        pd_error = Utilities::MPI::max(pd_error, comm);
+        pd_exact = Utilities::MPI::max(pd_exact, comm);
+        fe_error = fe_exact > 0. ? fe_error / fe_exact : fe_error;
+        pd_error = pd_exact > 0. ? pd_error / pd_exact : pd_error;
+      }
+
+    if (is_root)
+      {
+        const auto flags = log.flags();
+        log << std::scientific << std::setprecision(6) << "Load factor: " << factor << "\n"
+            << "Strain energy: " << strain << " J (FE " << fe_energy << " J, particles "
+            << pd_energy << " J)\n"
+            << "External work: " << work << " J\n"
+            << "Energy error: " << energy_error << " J (relative " << relative_energy_error << ")\n"
+            << "Broken bonds: " << broken << "\n"
+            << "Max particle displacement: " << max_u << " m\n";
+        for (unsigned int k = 0; k < pd_reactions.size(); ++k)
+          log << "Reaction " << pd.boundary_conditions.names()[k] << ": "
+              << without_round_off(pd_reactions[k]) << " N\n";
+        for (unsigned int k = 0; k < fe_reactions.size(); ++k)
+          if (fe.conditions()[k].type != FESolid<dim>::ConditionType::traction)
+            log << "Reaction " << fe.conditions()[k].name << ": "
+                << without_round_off(fe_reactions[k]) << " N\n";
+        log << "Applied load: " << without_round_off(applied) << " N\n"
+            << "Force balance: |applied + reactions| = " << imbalance
+            << " N, relative to the largest force: " << balance << "\n";
+        if (exact_displacement)
+          {
+            log << "Displacement error (largest, relative to the largest exact value): FE nodes "
+                << fe_error << ", particles " << pd_error << "\n";
+            if (exact_tolerance > 0.)
+              log << "Displacement error below " << exact_tolerance << ": "
+                  << (std::max(fe_error, pd_error) < exact_tolerance ? "yes" : "no") << "\n";
+          }
+        log << std::flush;
+        log.flags(flags);
+      }
   }
 
   template <int dim>

@@ -318,6 +318,19 @@ namespace perideal
   }
 
   template <int dim>
+  void
+  StaticSolver<dim>::extension_matrix(const ParticleSystem<dim> &particles,
+                                      const LinearizedModel     &linearized,
+                                      SparseMatrix              &G,
+                                      SolverVector              &weights)
+  {
+    // Nothing is eliminated: the prescribed flags and constraint scales are not read.
+    ParticleVector none;
+    particles.reinit_vector(none, dim);
+    build_extension_matrix<dim>(particles, linearized, none, {}, false, G, weights);
+  }
+
+  template <int dim>
   const SparseMatrix &
   StaticSolver<dim>::matrix() const
   {

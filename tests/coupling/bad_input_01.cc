@@ -2,8 +2,11 @@
 // Bad input of a coupled problem: a valid file is accepted; each bad case stops with a message
 // naming the entry, before the time stepping starts: a blending function outside [0, 1], an overlap
 // narrower than the horizon, particles outside the mesh, a PD condition on particles that follow
-// the FE field, two FE conditions on the same component of a boundary, an implicit solver. A
-// state-based model is accepted (its energy is blended through the particles' weights).
+// the FE field, two FE conditions on the same component of a boundary, adaptive dynamic
+// relaxation. A state-based model is accepted (its energy is blended through the particles'
+// weights). Static solves (run as well): a valid file is solved; an FE velocity condition, a
+// component that no condition holds, and an exact-displacement tolerance without the exact field
+// are refused.
 // ---------------------------------------------------------------------
 #include <deal.II/base/parameter_handler.h>
 
@@ -70,12 +73,14 @@ subsection Finite elements
     set Names = FE_CONDITIONS
     subsection left
       set Boundary ids = 0
+LEFT_EXTRA
     end
 FE_BLOCK
   end
 end
 subsection Coupling
   set Blending function = BETA
+COUPLING_EXTRA
 end
 subsection Solver
   set Type = SOLVER
@@ -108,7 +113,9 @@ end
                                                  {"FE_CONDITIONS", "left"},
                                                  {"FE_BLOCK", ""},
                                                  {"BETA", "min(1, max(0, (x - 0.04) / 0.01))"},
-                                                 {"SOLVER", "explicit"}};
+                                                 {"SOLVER", "explicit"},
+                                                 {"LEFT_EXTRA", ""},
+                                                 {"COUPLING_EXTRA", ""}};
     for (const auto &[key, value] : changes)
       values[key] = value;
     std::string text = base;
@@ -137,12 +144,17 @@ end
         perideal::CoupledProblem<2> problem(MPI_COMM_WORLD, log);
         problem.parse_parameters(prm);
         problem.setup();
+        if (values["SOLVER"] == "static")
+          problem.run();
         std::cout << name << ": accepted" << std::endl;
       }
     catch (const ExceptionBase &exc)
       {
         std::cout << name << ": " << perideal_tests::exception_text(exc) << std::endl;
       }
+    // No rank may write the next case's file while another still reads this one (a rank that
+    // stops early would otherwise hand the others the next case's input).
+    MPI_Barrier(MPI_COMM_WORLD);
   }
 } // namespace
 
@@ -166,5 +178,16 @@ main(int argc, char **argv)
              "    subsection left again\n      set Boundary ids = 0\n      set Components = y\n"
              "    end"}});
   run_case("valid input, state-based model", {{"MODEL", "linear peridynamic solid"}});
-  run_case("implicit solver", {{"SOLVER", "static"}});
+  run_case("relaxation solver", {{"SOLVER", "adaptive dynamic relaxation"}});
+  run_case("static solver", {{"SOLVER", "static"}});
+  run_case("static solver, FE velocity condition",
+           {{"SOLVER", "static"},
+            {"FE_CONDITIONS", "left, push"},
+            {"FE_BLOCK",
+             "    subsection push\n      set Boundary ids = 3\n      set Type = velocity\n"
+             "      set Components = y\n      set Function = 1\n    end"}});
+  run_case("static solver, y held nowhere",
+           {{"SOLVER", "static"}, {"LEFT_EXTRA", "      set Components = x"}});
+  run_case("static solver, tolerance without the exact field",
+           {{"SOLVER", "static"}, {"COUPLING_EXTRA", "  set Exact displacement tolerance = 1e-3"}});
 }

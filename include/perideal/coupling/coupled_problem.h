@@ -9,6 +9,7 @@
 
 #include <perideal/base/energy_balance.h>
 #include <perideal/base/statistics_file.h>
+#include <perideal/coupling/coupled_static_solver.h>
 #include <perideal/coupling/transfer_operator.h>
 #include <perideal/fem/fe_solid.h>
 #include <perideal/pd/pd_problem.h>
@@ -29,8 +30,13 @@ namespace perideal
    * Particles fill the body (<Discretization/Body>) where beta > 0 and within a horizon of it;
    * FE cells where 1 - beta vanishes carry FE_Nothing. Particles inside FE-carrying cells are
    * slaved to the FE field through the TransferOperator P (u = P U, forces back with P^T), the
-   * others are free. Explicit dynamics: velocity Verlet on (FE dofs, free particles) with the
-   * lumped FE mass plus P^T of the slaved particles' masses.
+   * others are free. <Solver/Type> = explicit: velocity Verlet on (FE dofs, free particles) with
+   * the lumped FE mass plus P^T of the slaved particles' masses. <Solver/Type> = static: the
+   * equilibrium of the energy linearized about the reference configuration (CoupledStaticSolver)
+   * in <Solver/Load steps> load steps, re-solved while bonds break; it prints the reactions of
+   * the FE and PD displacement conditions against the applied loads (force balance), the strain
+   * energy against the work of the loads and, if <Coupling/Exact displacement> is given, the
+   * largest displacement error at the FE nodes and the particles.
    *
    * Checked before any heavy work: beta in [0, 1]; the transition 0 < beta < 1 at least a
    * horizon wide (no bond joins a particle with beta = 1 to one with beta = 0); every particle
@@ -65,6 +71,20 @@ namespace perideal
 
     void
     check_blending() const;
+    void
+    run_explicit();
+    void
+    run_static();
+    /**
+     * @brief One statistics row of a static run (and the summary after the last load step):
+     * energies, reactions, force balance, and the error against the exact displacement.
+     */
+    void
+    write_static_statistics(const unsigned int step,
+                            const double       factor,
+                            const unsigned int iterations,
+                            const double       pd_energy,
+                            const bool         final_row);
     /**
      * @brief Forces and accelerations of both regions at @p time (P U into the slaved
      * particles first); the particles' energy density only if @p with_energy.
@@ -91,6 +111,8 @@ namespace perideal
     TransferOperator<dim>                        transfer;
     std::string                                  blending_expression;
     std::unique_ptr<dealii::FunctionParser<dim>> beta;
+    std::unique_ptr<dealii::FunctionParser<dim>> exact_displacement;
+    double                                       exact_tolerance = 0.;
 
     double              dt = 0., stable_dt = 0.;
     FEVector            U, V, A, mass, f_ext, residual, fe_load, previous_fe_load, previous_U;
@@ -98,8 +120,12 @@ namespace perideal
     std::vector<bool>   free_particle;
     std::vector<double> particle_mass;
     ParticleVector      nodal_force, particle_load;
-    double              local_work = 0.;
-    EnergyBalance       energy_balance;
+    // Static runs: the applied loads at the current load factor and the FE residual K z - F.
+    FEVector                        static_fe_load;
+    ParticleVector                  static_pd_load;
+    std::vector<unsigned int>       fe_dof_component;
+    double                          local_work = 0.;
+    EnergyBalance                   energy_balance;
     std::unique_ptr<StatisticsFile> statistics;
   };
 } // namespace perideal

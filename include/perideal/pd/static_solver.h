@@ -72,6 +72,19 @@ namespace perideal
           const std::string         &conditions);
 
     /**
+     * @brief The unconstrained extension matrix G of @p linearized (rows: the bonds with a
+     * stiffness and, for state-based models, the dilatations; columns: the particle dofs) and
+     * its row weights, so that G^T diag(@p weights) G is the stiffness without boundary
+     * conditions. For solves that map the particle dofs to other unknowns (the coupled static
+     * solve: G T).
+     */
+    static void
+    extension_matrix(const ParticleSystem<dim> &particles,
+                     const LinearizedModel     &linearized,
+                     SparseMatrix              &G,
+                     SolverVector              &weights);
+
+    /**
      * @brief The matrix of the last solve (prescribed rows eliminated).
      */
     const SparseMatrix &

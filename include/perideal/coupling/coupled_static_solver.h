@@ -1,0 +1,138 @@
+// ---------------------------------------------------------------------
+// PeriDeal: static linear solve of the blended FE-PD coupling.
+// ---------------------------------------------------------------------
+#ifndef perideal_coupling_coupled_static_solver_h
+#define perideal_coupling_coupled_static_solver_h
+
+#include <perideal/base/linear_algebra.h>
+#include <perideal/coupling/transfer_operator.h>
+#include <perideal/fem/fe_solid.h>
+#include <perideal/pd/material_model.h>
+#include <perideal/pd/particle_system.h>
+#include <perideal/pd/static_solver.h>
+
+#include <string>
+#include <vector>
+
+namespace perideal
+{
+  /**
+   * @brief The static equilibrium of the blended FE-PD coupling linearized about the reference
+   * configuration: one symmetric positive definite Trilinos system for the FE dofs and the free
+   * particles, solved by CG + AMG or a direct solver (Amesos KLU).
+   *
+   * Unknowns z = (U, u_free): the FE dofs and the components of the particles in FE_Nothing
+   * cells. The particle displacements are u = T z with T = [P for the slaved particles;
+   * identity for the free ones] (P from TransferOperator). The blended energy of
+   * doc/theory/coupling.md, linearized,
+   *
+   *   E(z) = 1/2 U^T K_FE U + 1/2 (G T z)^T diag(w) (G T z) - F^T z,
+   *
+   * with K_FE the FE stiffness weighted by 1 - beta (FESolid) and G, w the extension matrix and
+   * row weights of the PD model's linearization (StaticSolver::extension_matrix(); the bond
+   * energies are already weighted by beta_b), has the stationarity condition K z = F with
+   *
+   *   K = E^T K_FE E + (G T)^T diag(w) (G T),   F = E^T f_FE + T^T (V f_PD),
+   *
+   * where E takes z to the FE dofs and V f_PD are the particle loads [N]. K is built with
+   * Trilinos matrix products (TrilinosWrappers::SparseMatrix::mmult, Tmmult) and one row-wise
+   * sum. Prescribed components (FE displacement conditions; PD displacement conditions on free
+   * particles) are eliminated symmetrically as in StaticSolver: their columns are dropped (E and
+   * T are multiplied by a 0/1 diagonal mask), the known values move to the right-hand side
+   * (F_f - K_fc g), and their rows read s z_c = s g_c with s the mean diagonal entry of the free
+   * rows.
+   *
+   * Numbering of z: contiguous per rank, the rank's owned FE dofs (in their order), then the
+   * components of its owned free particles.
+   */
+  template <int dim>
+  class CoupledStaticSolver
+  {
+  public:
+    using FEVector     = dealii::LinearAlgebra::distributed::Vector<double>;
+    using Settings     = typename StaticSolver<dim>::Settings;
+    using LinearSolver = typename StaticSolver<dim>::LinearSolver;
+
+    /**
+     * @brief A solver with the settings of <Solver> (linear solver, tolerance, iterations).
+     */
+    explicit CoupledStaticSolver(const Settings &settings);
+
+    /**
+     * @brief Number the unknowns, build T and the FE part of K for the FE region @p fe and the
+     * @p particles joined by @p transfer. The prescribed FE dofs are FESolid::prescribed_mask();
+     * @p particle_prescribed holds 1 on the prescribed components of owned free particles
+     * (owned entries; slaved particles cannot be prescribed).
+     */
+    void
+    reinit(const FESolid<dim>          &fe,
+           const ParticleSystem<dim>   &particles,
+           const TransferOperator<dim> &transfer,
+           const ParticleVector        &particle_prescribed);
+
+    /**
+     * @brief Solve K z = F. On entry @p U and @p u hold the prescribed values (owned entries;
+     * others are ignored); on exit the solution with ghost values, the slaved particles'
+     * u = P U included. @p f_fe is the FE load (FESolid::assemble_load()), @p f_pd the particle
+     * force density [N/m^3] (owned entries). @p material is linearized anew, so bonds broken
+     * since the last call drop out. @p conditions names the boundary conditions for the error
+     * messages. Returns the number of CG iterations (0 for the direct solver).
+     */
+    unsigned int
+    solve(const MaterialModel<dim> &material,
+          const FEVector           &f_fe,
+          const ParticleVector     &f_pd,
+          FEVector                 &U,
+          ParticleVector           &u,
+          const std::string        &conditions);
+
+    /**
+     * @brief The forces of the state (@p U, @p u) with the linearization of the last solve:
+     * @p fe_residual = (K z - F) restricted to the FE dofs (on prescribed dofs the force the
+     * supports exert, as FESolid::reactions() expects), @p pd_force the particles' internal force
+     * density -(G^T diag(w) G u)_i / V_i (owned entries). Returns the particles' strain energy
+     * 1/2 (G u)^T diag(w) (G u) [J].
+     */
+    double
+    forces(const FEVector       &U,
+           const ParticleVector &u,
+           const FEVector       &f_fe,
+           const ParticleVector &f_pd,
+           FEVector             &fe_residual,
+           ParticleVector       &pd_force) const;
+
+    /// Number of unknowns z (all ranks).
+    dealii::types::global_dof_index
+    n_unknowns() const;
+
+    /// The system matrix of the last solve (prescribed rows eliminated).
+    const SparseMatrix &
+    matrix() const;
+
+  private:
+    /// The index in z of the FE dof @p dof (owned by any rank).
+    dealii::types::global_dof_index
+    fe_to_z(const dealii::types::global_dof_index dof) const;
+    /// The particle displacements of owned particles as a Trilinos vector.
+    void
+    gather_particles(const ParticleVector &u, SolverVector &result) const;
+
+    Settings                        settings;
+    MPI_Comm                        comm      = MPI_COMM_SELF;
+    const FESolid<dim>             *fe        = nullptr;
+    const ParticleSystem<dim>      *particles = nullptr;
+    const TransferOperator<dim>    *transfer  = nullptr;
+    dealii::IndexSet                z_owned, fe_owned, particle_rows;
+    dealii::types::global_dof_index z_first = 0;
+    /// First FE dof, number of FE dofs and first z index of every rank (FE dofs are contiguous).
+    std::vector<dealii::types::global_dof_index> rank_fe_first, rank_fe_count, rank_z_first;
+    /// Per owned particle component: its index in z (free particles) or invalid (slaved).
+    std::vector<dealii::types::global_dof_index> particle_z;
+    /// Per locally owned z entry: prescribed or not.
+    std::vector<bool> prescribed;
+    SparseMatrix      T, T_free, fe_part, G, system_matrix;
+    SolverVector      weights;
+  };
+} // namespace perideal
+
+#endif

@@ -1,0 +1,442 @@
+// ---------------------------------------------------------------------
+// PeriDeal: static linear solve of the blended FE-PD coupling.
+// ---------------------------------------------------------------------
+#include <deal.II/base/mpi.h>
+#include <deal.II/dofs/dof_tools.h>
+#include <deal.II/fe/component_mask.h>
+#include <deal.II/lac/affine_constraints.h>
+#include <deal.II/lac/dynamic_sparsity_pattern.h>
+#include <deal.II/lac/solver_cg.h>
+#include <deal.II/lac/solver_control.h>
+#include <deal.II/lac/trilinos_index_access.h>
+#include <deal.II/lac/trilinos_precondition.h>
+#include <deal.II/lac/trilinos_solver.h>
+
+#include <perideal/coupling/coupled_static_solver.h>
+
+#include <algorithm>
+#include <cmath>
+
+namespace perideal
+{
+  using namespace dealii;
+
+  namespace
+  {
+    /// Visit the locally owned rows of @p matrix: f(row, n, global columns, values).
+    template <typename Function>
+    void
+    for_each_local_row(const SparseMatrix &matrix, const Function &f)
+    {
+      const auto                          &A = matrix.trilinos_matrix();
+      std::vector<types::global_dof_index> columns;
+      for (int row = 0; row < A.NumMyRows(); ++row)
+        {
+          int     n_entries = 0;
+          double *values    = nullptr;
+          int    *local     = nullptr;
+          A.ExtractMyRowView(row, n_entries, values, local);
+          columns.resize(n_entries);
+          for (int k = 0; k < n_entries; ++k)
+            columns[k] = TrilinosWrappers::global_column_index(A, local[k]);
+          f(static_cast<types::global_dof_index>(TrilinosWrappers::global_row_index(A, row)),
+            columns,
+            values);
+        }
+    }
+  } // namespace
+
+  template <int dim>
+  CoupledStaticSolver<dim>::CoupledStaticSolver(const Settings &settings)
+    : settings(settings)
+  {}
+
+  template <int dim>
+  types::global_dof_index
+  CoupledStaticSolver<dim>::fe_to_z(const types::global_dof_index dof) const
+  {
+    // The last rank whose first dof is <= dof and that owns dofs.
+    for (unsigned int r = rank_fe_first.size(); r-- > 0;)
+      if (rank_fe_count[r] > 0 && rank_fe_first[r] <= dof)
+        {
+          Assert(dof < rank_fe_first[r] + rank_fe_count[r], ExcInternalError());
+          return rank_z_first[r] + (dof - rank_fe_first[r]);
+        }
+    Assert(false, ExcInternalError());
+    return numbers::invalid_dof_index;
+  }
+
+  template <int dim>
+  void
+  CoupledStaticSolver<dim>::reinit(const FESolid<dim>          &fe_solid,
+                                   const ParticleSystem<dim>   &particle_system,
+                                   const TransferOperator<dim> &transfer_operator,
+                                   const ParticleVector        &particle_prescribed)
+  {
+    fe        = &fe_solid;
+    particles = &particle_system;
+    transfer  = &transfer_operator;
+    comm      = particle_system.get_communicator();
+
+    // T = [P; I] acts on the raw FE dofs: hanging-node constraints would have to enter it.
+    {
+      IndexSet relevant;
+      DoFTools::extract_locally_relevant_dofs(fe_solid.get_dof_handler(), relevant);
+      AffineConstraints<double> hanging(relevant);
+      DoFTools::make_hanging_node_constraints(fe_solid.get_dof_handler(), hanging);
+      AssertThrow(Utilities::MPI::sum(hanging.n_constraints(), comm) == 0,
+                  ExcMessage("The FE mesh of <Finite elements> has hanging nodes, which the "
+                             "static coupled solve (<Solver/Type> = static) does not support; "
+                             "use a conforming mesh (global refinement only)."));
+    }
+    fe_owned = fe_solid.get_dof_handler().locally_owned_dofs();
+    AssertThrow(fe_owned.is_contiguous(),
+                ExcInternalError("The owned FE dofs are not contiguous."));
+    particle_rows              = particle_system.partitioner(dim)->locally_owned_range();
+    const unsigned int n_owned = particle_system.n_owned();
+
+    // z: the owned FE dofs, then the owned free particles' components.
+    const types::global_dof_index n_fe_owned = fe_owned.n_elements();
+    types::global_dof_index       n_free     = 0;
+    for (unsigned int i = 0; i < n_owned; ++i)
+      n_free += transfer_operator.is_slaved(i) ? 0 : dim;
+    const types::global_dof_index n_local = n_fe_owned + n_free;
+    unsigned long long            local = n_local, first = 0;
+    MPI_Exscan(&local, &first, 1, MPI_UNSIGNED_LONG_LONG, MPI_SUM, comm);
+    if (Utilities::MPI::this_mpi_process(comm) == 0)
+      first = 0;
+    const types::global_dof_index n_total = Utilities::MPI::sum(n_local, comm);
+    z_first                               = first;
+    z_owned                               = IndexSet(n_total);
+    z_owned.add_range(z_first, z_first + n_local);
+    z_owned.compress();
+    rank_fe_first =
+      Utilities::MPI::all_gather(comm, n_fe_owned > 0 ? fe_owned.nth_index_in_set(0) : 0);
+    rank_fe_count = Utilities::MPI::all_gather(comm, n_fe_owned);
+    rank_z_first  = Utilities::MPI::all_gather(comm, z_first);
+
+    particle_z.assign(std::size_t(n_owned) * dim, numbers::invalid_dof_index);
+    prescribed.assign(n_local, false);
+    const auto &fe_mask = fe_solid.prescribed_mask();
+    for (types::global_dof_index k = 0; k < n_fe_owned; ++k)
+      prescribed[k] = fe_mask[k];
+    types::global_dof_index next = n_fe_owned;
+    for (unsigned int i = 0; i < n_owned; ++i)
+      if (!transfer_operator.is_slaved(i))
+        for (unsigned int d = 0; d < dim; ++d, ++next)
+          {
+            particle_z[i * dim + d] = z_first + next;
+            prescribed[next]        = particle_prescribed.local_element(i * dim + d) != 0.;
+          }
+
+    // T: rows of P for slaved particles, the identity for free ones.
+    {
+      DynamicSparsityPattern dsp(particle_rows.size(), n_total, particle_rows);
+      for_each_local_row(transfer_operator.matrix(),
+                         [&](const auto row, const auto &columns, const double *) {
+                           for (const auto column : columns)
+                             dsp.add(row, fe_to_z(column));
+                         });
+      for (std::size_t k = 0; k < particle_z.size(); ++k)
+        if (particle_z[k] != numbers::invalid_dof_index)
+          dsp.add(particle_rows.nth_index_in_set(k), particle_z[k]);
+      T.reinit(particle_rows, z_owned, dsp, comm);
+      for_each_local_row(transfer_operator.matrix(),
+                         [&](const auto row, const auto &columns, const double *values) {
+                           for (std::size_t k = 0; k < columns.size(); ++k)
+                             T.set(row, fe_to_z(columns[k]), values[k]);
+                         });
+      for (std::size_t k = 0; k < particle_z.size(); ++k)
+        if (particle_z[k] != numbers::invalid_dof_index)
+          T.set(particle_rows.nth_index_in_set(k), particle_z[k], 1.);
+      T.compress(VectorOperation::insert);
+    }
+
+    // The 0/1 masks of the free unknowns: D (z to z) and E_f (z to the FE dofs).
+    SparseMatrix D, E_free;
+    {
+      DynamicSparsityPattern dsp(n_total, n_total, z_owned);
+      for (types::global_dof_index k = 0; k < n_local; ++k)
+        if (!prescribed[k])
+          dsp.add(z_first + k, z_first + k);
+      D.reinit(z_owned, z_owned, dsp, comm);
+      for (types::global_dof_index k = 0; k < n_local; ++k)
+        if (!prescribed[k])
+          D.set(z_first + k, z_first + k, 1.);
+      D.compress(VectorOperation::insert);
+    }
+    {
+      DynamicSparsityPattern dsp(fe_owned.size(), n_total, fe_owned);
+      for (types::global_dof_index k = 0; k < n_fe_owned; ++k)
+        if (!prescribed[k])
+          dsp.add(fe_owned.nth_index_in_set(k), z_first + k);
+      E_free.reinit(fe_owned, z_owned, dsp, comm);
+      for (types::global_dof_index k = 0; k < n_fe_owned; ++k)
+        if (!prescribed[k])
+          E_free.set(fe_owned.nth_index_in_set(k), z_first + k, 1.);
+      E_free.compress(VectorOperation::insert);
+    }
+    // T with the prescribed columns dropped, and E_f^T K_FE E_f.
+    T.mmult(T_free, D);
+    SparseMatrix K_E;
+    fe_solid.stiffness_matrix().mmult(K_E, E_free);
+    E_free.Tmmult(fe_part, K_E);
+  }
+
+  template <int dim>
+  void
+  CoupledStaticSolver<dim>::gather_particles(const ParticleVector &u, SolverVector &result) const
+  {
+    result.reinit(particle_rows, comm);
+    auto *values = result.begin();
+    for (std::size_t k = 0; k < particle_rows.n_elements(); ++k)
+      values[k] = u.local_element(k);
+  }
+
+  template <int dim>
+  unsigned int
+  CoupledStaticSolver<dim>::solve(const MaterialModel<dim> &material,
+                                  const FEVector           &f_fe,
+                                  const ParticleVector     &f_pd,
+                                  FEVector                 &U,
+                                  ParticleVector           &u,
+                                  const std::string        &conditions)
+  {
+    Assert(fe != nullptr, ExcMessage("Call reinit() first."));
+    const std::size_t n_local    = prescribed.size();
+    const std::size_t n_fe_owned = fe_owned.n_elements();
+    const auto       &volume     = particles->volumes();
+
+    // The PD part (G T_f)^T diag(w) (G T_f) of the linearization about the reference state.
+    LinearizedModel linearized;
+    material.linearize(*particles, linearized);
+    StaticSolver<dim>::extension_matrix(*particles, linearized, G, weights);
+    SparseMatrix pd_part;
+    {
+      SparseMatrix GT;
+      G.mmult(GT, T_free);
+      GT.Tmmult(pd_part, GT, weights);
+    }
+
+    // K = E_f^T K_FE E_f + (G T_f)^T diag(w) (G T_f) + s on the prescribed diagonal, summed
+    // row by row (both parts have the rows of z).
+    std::vector<double> diagonal(n_local, 0.);
+    {
+      DynamicSparsityPattern dsp(z_owned.size(), z_owned.size(), z_owned);
+      for (const SparseMatrix *part : {&fe_part, &pd_part})
+        for_each_local_row(*part, [&](const auto row, const auto &columns, const double *values) {
+          dsp.add_entries(row, columns.begin(), columns.end());
+          for (std::size_t k = 0; k < columns.size(); ++k)
+            if (columns[k] == row)
+              diagonal[row - z_first] += values[k];
+        });
+      for (std::size_t k = 0; k < n_local; ++k)
+        dsp.add(z_first + k, z_first + k);
+      system_matrix.reinit(z_owned, z_owned, dsp, comm);
+    }
+    for (const SparseMatrix *part : {&fe_part, &pd_part})
+      for_each_local_row(*part, [&](const auto row, const auto &columns, const double *values) {
+        system_matrix.add(row, columns.size(), columns.data(), values, false, false);
+      });
+    double diagonal_sum = 0., n_free = 0.;
+    for (std::size_t k = 0; k < n_local; ++k)
+      if (!prescribed[k])
+        {
+          diagonal_sum += diagonal[k];
+          n_free += 1.;
+        }
+    diagonal_sum     = Utilities::MPI::sum(diagonal_sum, comm);
+    n_free           = Utilities::MPI::sum(n_free, comm);
+    const double s   = (n_free > 0. && diagonal_sum > 0.) ? diagonal_sum / n_free : 1.;
+    double       n_p = 0.;
+    for (std::size_t k = 0; k < n_local; ++k)
+      if (prescribed[k])
+        {
+          system_matrix.add(z_first + k, z_first + k, s);
+          n_p += 1.;
+        }
+    system_matrix.compress(VectorOperation::add);
+    AssertThrow(Utilities::MPI::sum(n_p, comm) > 0.,
+                ExcMessage("The coupled static system is singular: no displacement is prescribed "
+                           "(boundary conditions: " +
+                           (conditions.empty() ? std::string("none") : conditions) +
+                           "), so rigid-body motions are free. Add a 'displacement' condition in "
+                           "<Finite elements/Boundary conditions> (or on free particles in "
+                           "<Boundary conditions>) that holds the rigid-body modes."));
+
+    // Right-hand side: F - K g on free rows, s g on prescribed rows.
+    SolverVector g(z_owned, comm), F(z_owned, comm), rhs(z_owned, comm), z(z_owned, comm);
+    for (std::size_t k = 0; k < n_fe_owned; ++k)
+      if (prescribed[k])
+        g.begin()[k] = U.local_element(k);
+    for (std::size_t k = 0; k < particle_z.size(); ++k)
+      if (particle_z[k] != numbers::invalid_dof_index && prescribed[particle_z[k] - z_first])
+        g.begin()[particle_z[k] - z_first] = u.local_element(k);
+    {
+      // F = E^T f_FE + T^T (V f_PD).
+      SolverVector load;
+      gather_particles(f_pd, load);
+      for (std::size_t k = 0; k < load.locally_owned_size(); ++k)
+        load.begin()[k] *= volume[k / dim];
+      T.Tvmult(F, load);
+      for (std::size_t k = 0; k < n_fe_owned; ++k)
+        F.begin()[k] += f_fe.local_element(k);
+      // K g of the unconstrained operator: E^T K_FE E g + T^T G^T diag(w) G T g.
+      SolverVector g_fe(fe_owned, comm), Kg_fe(fe_owned, comm), Tg(particle_rows, comm),
+        Gg(weights), GtGg(particle_rows, comm), Kg(z_owned, comm);
+      for (std::size_t k = 0; k < n_fe_owned; ++k)
+        g_fe.begin()[k] = g.begin()[k];
+      fe->stiffness_matrix().vmult(Kg_fe, g_fe);
+      T.vmult(Tg, g);
+      G.vmult(Gg, Tg);
+      Gg.scale(weights);
+      G.Tvmult(GtGg, Gg);
+      T.Tvmult(Kg, GtGg);
+      for (std::size_t k = 0; k < n_fe_owned; ++k)
+        Kg.begin()[k] += Kg_fe.begin()[k];
+      for (std::size_t k = 0; k < n_local; ++k)
+        {
+          rhs.begin()[k] = prescribed[k] ? s * g.begin()[k] : F.begin()[k] - Kg.begin()[k];
+          z.begin()[k]   = prescribed[k] ? g.begin()[k] : 0.;
+        }
+    }
+
+    unsigned int iterations = 0;
+    const double rhs_norm   = rhs.l2_norm();
+    if (rhs_norm > 0.)
+      {
+        SolverControl     control(settings.max_iterations, settings.tolerance * rhs_norm);
+        const std::string advice =
+          " The boundary conditions (" + conditions +
+          ") may leave rigid-body modes free (2D: 3, 3D: 6 must be held by 'displacement' "
+          "conditions), or broken bonds may have split off free pieces of the PD region.";
+        try
+          {
+            if (settings.linear_solver == LinearSolver::direct)
+              {
+                TrilinosWrappers::SolverDirect solver(control);
+                solver.solve(system_matrix, z, rhs);
+              }
+            else
+              {
+                // Near-null space: the translations (component of each FE dof and particle
+                // unknown).
+                std::vector<std::vector<bool>> fe_modes;
+                DoFTools::extract_constant_modes(fe->get_dof_handler(),
+                                                 ComponentMask(dim, true),
+                                                 fe_modes);
+                TrilinosWrappers::PreconditionAMG::AdditionalData data;
+                data.elliptic = true;
+                data.constant_modes.assign(dim, std::vector<bool>(n_local, false));
+                for (unsigned int d = 0; d < dim; ++d)
+                  for (std::size_t k = 0; k < n_fe_owned; ++k)
+                    data.constant_modes[d][k] = fe_modes[d][k];
+                for (std::size_t k = 0; k < particle_z.size(); ++k)
+                  if (particle_z[k] != numbers::invalid_dof_index)
+                    data.constant_modes[k % dim][particle_z[k] - z_first] = true;
+                data.higher_order_elements = fe->get_fe_collection()[0].degree > 1;
+                data.smoother_sweeps       = 2;
+                data.aggregation_threshold = 0.02;
+                TrilinosWrappers::PreconditionAMG amg;
+                amg.initialize(system_matrix, data);
+                SolverCG<SolverVector> cg(control);
+                cg.solve(system_matrix, z, rhs, amg);
+                iterations = control.last_step();
+              }
+          }
+        catch (const SolverControl::NoConvergence &e)
+          {
+            AssertThrow(false,
+                        ExcMessage(
+                          "The coupled static solve did not converge: residual " +
+                          std::to_string(e.last_residual / rhs_norm) + " after " +
+                          std::to_string(e.last_step) + " CG iterations (<Solver/Tolerance> = " +
+                          std::to_string(settings.tolerance) + ", <Solver/Maximum iterations> = " +
+                          std::to_string(settings.max_iterations) + ")." + advice));
+          }
+        catch (const std::exception &e)
+          {
+            AssertThrow(false,
+                        ExcMessage(std::string("The coupled static solve failed (the stiffness "
+                                               "matrix is singular?).") +
+                                   advice + " Solver message: " + e.what()));
+          }
+        AssertThrow(std::isfinite(z.l2_norm()),
+                    ExcMessage("The coupled static solve produced a non-finite displacement: the "
+                               "stiffness matrix is singular." +
+                               advice));
+        SolverVector residual(rhs);
+        system_matrix.vmult(residual, z);
+        residual -= rhs;
+        AssertThrow(residual.l2_norm() <= std::max(1e3 * settings.tolerance, 1e-8) * rhs_norm,
+                    ExcMessage("The coupled static solve left the residual " +
+                               std::to_string(residual.l2_norm() / rhs_norm) +
+                               " (relative): the stiffness matrix is singular or nearly so." +
+                               advice));
+      }
+
+    // Back to the FE dofs and the particles (slaved ones through P).
+    for (std::size_t k = 0; k < n_fe_owned; ++k)
+      U.local_element(k) = z.begin()[k];
+    U.update_ghost_values();
+    for (std::size_t k = 0; k < particle_z.size(); ++k)
+      if (particle_z[k] != numbers::invalid_dof_index)
+        u.local_element(k) = z.begin()[particle_z[k] - z_first];
+    transfer->interpolate(U, u);
+    u.update_ghost_values();
+    return iterations;
+  }
+
+  template <int dim>
+  double
+  CoupledStaticSolver<dim>::forces(const FEVector       &U,
+                                   const ParticleVector &u,
+                                   const FEVector       &f_fe,
+                                   const ParticleVector &f_pd,
+                                   FEVector             &fe_residual,
+                                   ParticleVector       &pd_force) const
+  {
+    const auto &volume = particles->volumes();
+    // Particles: e = G u, energy 1/2 e^T diag(w) e, force -G^T diag(w) e.
+    SolverVector up, extension(weights), stress(weights), force(particle_rows, comm);
+    gather_particles(u, up);
+    G.vmult(extension, up);
+    stress.scale(extension);
+    const double energy = 0.5 * (stress * extension);
+    stress              = extension;
+    stress.scale(weights);
+    G.Tvmult(force, stress);
+    ParticleVector nodal_force;
+    particles->reinit_vector(nodal_force, dim);
+    for (std::size_t k = 0; k < particle_rows.n_elements(); ++k)
+      {
+        const double V            = volume[k / dim];
+        pd_force.local_element(k) = -force.begin()[k] / V;
+        // The particles' unbalanced force, internal plus applied, for P^T.
+        nodal_force.local_element(k) = -force.begin()[k] + f_pd.local_element(k) * V;
+      }
+    // FE: K_FE U - f_FE - P^T (f_int + f_ext) of the slaved particles.
+    fe->stiffness_matrix().vmult(fe_residual, U);
+    fe_residual -= f_fe;
+    nodal_force *= -1.;
+    transfer->add_transpose(nodal_force, fe_residual);
+    return energy;
+  }
+
+  template <int dim>
+  types::global_dof_index
+  CoupledStaticSolver<dim>::n_unknowns() const
+  {
+    return z_owned.size();
+  }
+
+  template <int dim>
+  const SparseMatrix &
+  CoupledStaticSolver<dim>::matrix() const
+  {
+    return system_matrix;
+  }
+
+  template class CoupledStaticSolver<2>;
+  template class CoupledStaticSolver<3>;
+} // namespace perideal
