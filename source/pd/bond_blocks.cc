@@ -141,10 +141,9 @@ namespace perideal
 
   template <int dim>
   void
-  BondBlocks<dim>::to_lanes(const std::vector<double> &per_bond,
-                            std::vector<double>       &per_lane) const
+  BondBlocks<dim>::to_lanes(const std::vector<double> &per_bond, Array &per_lane) const
   {
-    per_lane.resize(lane_bond.size());
+    per_lane.resize_fast(lane_bond.size());
     for (std::size_t l = 0; l < lane_bond.size(); ++l)
       per_lane[l] = (lane_bond[l] == numbers::invalid_unsigned_int ? 0. : per_bond[lane_bond[l]]);
   }
@@ -179,23 +178,22 @@ namespace perideal
 
   template <int dim>
   void
-  BondBlocks<dim>::reinit_field(std::vector<double> &field, const unsigned int n_components) const
+  BondBlocks<dim>::reinit_field(Array &field, const unsigned int n_components) const
   {
-    field.assign(field_stride * n_components, 0.);
+    field.resize_fast(field_stride * n_components);
+    field.fill(0.);
   }
 
   template <int dim>
   double *
-  BondBlocks<dim>::component(std::vector<double> &field, const unsigned int d) const
+  BondBlocks<dim>::component(Array &field, const unsigned int d) const
   {
     return field.data() + std::size_t(d) * field_stride + width;
   }
 
   template <int dim>
   void
-  BondBlocks<dim>::gather(const double        *values,
-                          const unsigned int   n_components,
-                          std::vector<double> &field) const
+  BondBlocks<dim>::gather(const double *values, const unsigned int n_components, Array &field) const
   {
     double *target = component(field, 0);
     for (unsigned int i = 0; i < n_local; ++i)
@@ -205,10 +203,10 @@ namespace perideal
 
   template <int dim>
   void
-  BondBlocks<dim>::scatter_owned(std::vector<double> &field,
-                                 const unsigned int   n_components,
-                                 const double        *divisor,
-                                 double              *values) const
+  BondBlocks<dim>::scatter_owned(Array             &field,
+                                 const unsigned int n_components,
+                                 const double      *divisor,
+                                 double            *values) const
   {
     const double *source = component(field, 0);
     for (unsigned int i = 0; i < n_owned; ++i)

@@ -702,16 +702,18 @@ namespace perideal
     const double *internal = internal_force.begin(), *external = external_force.begin();
     const double *u_now       = u.begin();
     double       *load_before = previous_load.begin(), *u_before = previous_u.begin();
+    double        work = 0.;
     for (unsigned int i = 0; i < particle_system.n_owned(); ++i)
       for (unsigned int d = 0; d < dim; ++d)
         {
           const std::size_t k = std::size_t(i) * dim + d;
           const double      load =
             volume[i] * (boundary_conditions.is_prescribed(i, d) ? -internal[k] : external[k]);
-          local_external_work += 0.5 * (load_before[k] + load) * (u_now[k] - u_before[k]);
+          work += 0.5 * (load_before[k] + load) * (u_now[k] - u_before[k]);
           load_before[k] = load;
           u_before[k]    = u_now[k];
         }
+    local_external_work += work;
   }
 
   template <int dim>

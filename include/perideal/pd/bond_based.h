@@ -91,10 +91,10 @@ namespace perideal
     /// c G beta V_i V_j per bond (the pair force per unit stretch).
     std::vector<double> bond_coefficient;
     /// The bonds in SIMD blocks, and bond_coefficient per lane.
-    BondBlocks<dim>     blocks;
-    std::vector<double> lane_coefficient;
+    BondBlocks<dim>                 blocks;
+    typename BondBlocks<dim>::Array lane_coefficient;
     /// Kernel-order work fields: displacement, force, energy density.
-    std::vector<double> u_field, f_field, w_field;
+    typename BondBlocks<dim>::Array u_field, f_field, w_field;
 
     /**
      * @brief Set bond_coefficient from the micromodulus, the partial-volume factors, the

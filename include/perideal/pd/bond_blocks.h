@@ -4,6 +4,8 @@
 #ifndef perideal_pd_bond_blocks_h
 #define perideal_pd_bond_blocks_h
 
+#include <deal.II/base/aligned_vector.h>
+
 #include <perideal/pd/particle_system.h>
 
 #include <array>
@@ -88,6 +90,10 @@ namespace perideal
   public:
     static constexpr unsigned int width = bond_simd::width;
 
+    /// A kernel-order field or per-lane array (64-byte aligned, so that the particle side of a
+    /// block and the lane arrays are aligned vector loads).
+    using Array = dealii::AlignedVector<double>;
+
     /// A lattice vector of the family: its components, length and inverse length.
     struct BondClass
     {
@@ -146,7 +152,7 @@ namespace perideal
      * @brief @p per_lane[q * width + l] = @p per_bond[bond_index(q, l)], 0 for empty lanes.
      */
     void
-    to_lanes(const std::vector<double> &per_bond, std::vector<double> &per_lane) const;
+    to_lanes(const std::vector<double> &per_bond, Array &per_lane) const;
 
     /**
      * @brief Copy BondList::intact into the lane states if it changed since the last copy.
@@ -177,28 +183,28 @@ namespace perideal
      * blocks read and write), zeroed.
      */
     void
-    reinit_field(std::vector<double> &field, const unsigned int n_components) const;
+    reinit_field(Array &field, const unsigned int n_components) const;
 
     /// Component @p d of a kernel-order field sized by reinit_field(): index by kernel index.
     double *
-    component(std::vector<double> &field, const unsigned int d) const;
+    component(Array &field, const unsigned int d) const;
 
     /**
      * @brief The @p n_components values per local particle of @p values (particle order,
      * values[i * n_components + d], owned then ghost) into the kernel-order @p field.
      */
     void
-    gather(const double *values, const unsigned int n_components, std::vector<double> &field) const;
+    gather(const double *values, const unsigned int n_components, Array &field) const;
 
     /**
      * @brief The owned particles' entries of the kernel-order @p field, each divided by the
      * particle's entry of @p divisor, into @p values (particle order).
      */
     void
-    scatter_owned(std::vector<double> &field,
-                  const unsigned int   n_components,
-                  const double        *divisor,
-                  double              *values) const;
+    scatter_owned(Array             &field,
+                  const unsigned int n_components,
+                  const double      *divisor,
+                  double            *values) const;
 
   private:
     unsigned int              n_owned = 0, n_local = 0;

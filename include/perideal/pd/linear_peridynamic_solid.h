@@ -105,12 +105,12 @@ namespace perideal
     /// alpha = mu n (n + 2) / m per local particle.
     std::vector<double> alpha;
     /// The bonds in SIMD blocks, and pair_weight per lane.
-    BondBlocks<dim>     blocks;
-    std::vector<double> lane_weight;
+    BondBlocks<dim>                 blocks;
+    typename BondBlocks<dim>::Array lane_weight;
     /// Kernel-order work fields of compute_forces(): displacement, force, energy density,
     /// dilatation, beta theta / m, beta alpha and beta / m (beta: the particles' energy weights).
-    std::vector<double> u_field, f_field, w_field, theta_field, theta_over_m_field, alpha_field,
-      beta_over_m_field;
+    typename BondBlocks<dim>::Array u_field, f_field, w_field, theta_field, theta_over_m_field,
+      alpha_field, beta_over_m_field;
   };
 } // namespace perideal
 
