@@ -301,79 +301,33 @@ namespace perideal
         }
     }
 
-    unsigned int iterations = 0;
-    const double rhs_norm   = rhs.l2_norm();
-    if (rhs_norm > 0.)
-      {
-        SolverControl     control(settings.max_iterations, settings.tolerance * rhs_norm);
-        const std::string advice =
-          " The boundary conditions (" + conditions +
-          ") may leave rigid-body modes free (2D: 3, 3D: 6 must be held by 'displacement' "
-          "conditions), or broken bonds may have split off free pieces of the PD region.";
-        try
-          {
-            if (settings.linear_solver == LinearSolver::direct)
-              {
-                TrilinosWrappers::SolverDirect solver(control);
-                solver.solve(system_matrix, z, rhs);
-              }
-            else
-              {
-                // Near-null space: the translations (component of each FE dof and particle
-                // unknown).
-                std::vector<std::vector<bool>> fe_modes;
-                DoFTools::extract_constant_modes(fe->get_dof_handler(),
-                                                 ComponentMask(dim, true),
-                                                 fe_modes);
-                TrilinosWrappers::PreconditionAMG::AdditionalData data;
-                data.elliptic = true;
-                data.constant_modes.assign(dim, std::vector<bool>(n_local, false));
-                for (unsigned int d = 0; d < dim; ++d)
-                  for (std::size_t k = 0; k < n_fe_owned; ++k)
-                    data.constant_modes[d][k] = fe_modes[d][k];
-                for (std::size_t k = 0; k < particle_z.size(); ++k)
-                  if (particle_z[k] != numbers::invalid_dof_index)
-                    data.constant_modes[k % dim][particle_z[k] - z_first] = true;
-                data.higher_order_elements = fe->get_fe_collection()[0].degree > 1;
-                data.smoother_sweeps       = 2;
-                data.aggregation_threshold = 0.02;
-                TrilinosWrappers::PreconditionAMG amg;
-                amg.initialize(system_matrix, data);
-                SolverCG<SolverVector> cg(control);
-                cg.solve(system_matrix, z, rhs, amg);
-                iterations = control.last_step();
-              }
-          }
-        catch (const SolverControl::NoConvergence &e)
-          {
-            AssertThrow(false,
-                        ExcMessage(
-                          "The coupled static solve did not converge: residual " +
-                          std::to_string(e.last_residual / rhs_norm) + " after " +
-                          std::to_string(e.last_step) + " CG iterations (<Solver/Tolerance> = " +
-                          std::to_string(settings.tolerance) + ", <Solver/Maximum iterations> = " +
-                          std::to_string(settings.max_iterations) + ")." + advice));
-          }
-        catch (const std::exception &e)
-          {
-            AssertThrow(false,
-                        ExcMessage(std::string("The coupled static solve failed (the stiffness "
-                                               "matrix is singular?).") +
-                                   advice + " Solver message: " + e.what()));
-          }
-        AssertThrow(std::isfinite(z.l2_norm()),
-                    ExcMessage("The coupled static solve produced a non-finite displacement: the "
-                               "stiffness matrix is singular." +
-                               advice));
-        SolverVector residual(rhs);
-        system_matrix.vmult(residual, z);
-        residual -= rhs;
-        AssertThrow(residual.l2_norm() <= std::max(1e3 * settings.tolerance, 1e-8) * rhs_norm,
-                    ExcMessage("The coupled static solve left the residual " +
-                               std::to_string(residual.l2_norm() / rhs_norm) +
-                               " (relative): the stiffness matrix is singular or nearly so." +
-                               advice));
-      }
+    const unsigned int iterations = StaticSolver<dim>::solve_linear_system(
+      system_matrix,
+      rhs,
+      z,
+      settings,
+      [&]() {
+        // Near-null space: the translations (component of each FE dof and particle unknown).
+        std::vector<std::vector<bool>> fe_modes;
+        DoFTools::extract_constant_modes(fe->get_dof_handler(), ComponentMask(dim, true), fe_modes);
+        TrilinosWrappers::PreconditionAMG::AdditionalData data;
+        data.elliptic = true;
+        data.constant_modes.assign(dim, std::vector<bool>(n_local, false));
+        for (unsigned int d = 0; d < dim; ++d)
+          for (std::size_t k = 0; k < n_fe_owned; ++k)
+            data.constant_modes[d][k] = fe_modes[d][k];
+        for (std::size_t k = 0; k < particle_z.size(); ++k)
+          if (particle_z[k] != numbers::invalid_dof_index)
+            data.constant_modes[k % dim][particle_z[k] - z_first] = true;
+        data.higher_order_elements = fe->get_fe_collection()[0].degree > 1;
+        data.smoother_sweeps       = 2;
+        data.aggregation_threshold = 0.02;
+        return data;
+      },
+      "coupled static solve",
+      " The boundary conditions (" + conditions +
+        ") may leave rigid-body modes free (2D: 3, 3D: 6 must be held by 'displacement' "
+        "conditions), or broken bonds may have split off free pieces of the PD region.");
 
     // Back to the FE dofs and the particles (slaved ones through P).
     for (std::size_t k = 0; k < n_fe_owned; ++k)

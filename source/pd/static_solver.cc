@@ -249,71 +249,93 @@ namespace perideal
       G.Tmmult(system_matrix, G, weights);
     }
 
-    unsigned int iterations = 0;
-    const double rhs_norm   = rhs.l2_norm();
-    if (rhs_norm > 0.)
-      {
-        SolverControl     control(settings.max_iterations, settings.tolerance * rhs_norm);
-        const std::string advice =
-          " The boundary conditions (" + conditions +
-          ") may leave rigid-body modes free (2D: 3, 3D: 6 must be held by 'displacement' "
-          "conditions), or broken bonds may have split the body into free pieces.";
-        try
-          {
-            if (settings.linear_solver == LinearSolver::direct)
-              {
-                TrilinosWrappers::SolverDirect solver(control);
-                solver.solve(system_matrix, solution, rhs);
-              }
-            else
-              {
-                TrilinosWrappers::PreconditionAMG                 amg;
-                TrilinosWrappers::PreconditionAMG::AdditionalData data;
-                data.elliptic = true;
-                data.constant_modes.assign(dim, std::vector<bool>(dofs.n_elements(), false));
-                for (std::size_t k = 0; k < dofs.n_elements(); ++k)
-                  data.constant_modes[k % dim][k] = true;
-                amg.initialize(system_matrix, data);
-                SolverCG<SolverVector> cg(control);
-                cg.solve(system_matrix, solution, rhs, amg);
-                iterations = control.last_step();
-              }
-          }
-        catch (const SolverControl::NoConvergence &e)
-          {
-            AssertThrow(false,
-                        ExcMessage("The static solve did not converge: residual " +
-                                   std::to_string(e.last_residual / rhs_norm) + " after " +
-                                   std::to_string(e.last_step) +
-                                   " CG iterations (<Solver/Tolerance> = " +
-                                   std::to_string(settings.tolerance) + ")." + advice));
-          }
-        catch (const std::exception &e)
-          {
-            AssertThrow(false,
-                        ExcMessage(std::string("The static solve failed (the stiffness matrix "
-                                               "is singular?).") +
-                                   advice + " Solver message: " + e.what()));
-          }
-        // A singular system can yield a solution that is not finite.
-        AssertThrow(std::isfinite(solution.l2_norm()),
-                    ExcMessage("The static solve produced a non-finite displacement: the "
-                               "stiffness matrix is singular." +
-                               advice));
-        // Check the residual independently of the solver's own test.
-        SolverVector residual(rhs);
-        system_matrix.vmult(residual, solution);
-        residual -= rhs;
-        AssertThrow(residual.l2_norm() <= std::max(1e3 * settings.tolerance, 1e-8) * rhs_norm,
-                    ExcMessage("The static solve left the residual " +
-                               std::to_string(residual.l2_norm() / rhs_norm) +
-                               " (relative): the stiffness matrix is singular or nearly so." +
-                               advice));
-      }
+    const unsigned int iterations = solve_linear_system(
+      system_matrix,
+      rhs,
+      solution,
+      settings,
+      [&]() {
+        TrilinosWrappers::PreconditionAMG::AdditionalData data;
+        data.elliptic = true;
+        data.constant_modes.assign(dim, std::vector<bool>(dofs.n_elements(), false));
+        for (std::size_t k = 0; k < dofs.n_elements(); ++k)
+          data.constant_modes[k % dim][k] = true;
+        return data;
+      },
+      "static solve",
+      " The boundary conditions (" + conditions +
+        ") may leave rigid-body modes free (2D: 3, 3D: 6 must be held by 'displacement' "
+        "conditions), or broken bonds may have split the body into free pieces.");
 
     for (std::size_t k = 0; k < std::size_t(n_owned) * dim; ++k)
       u.local_element(k) = solution[dofs.nth_index_in_set(k)];
     u.update_ghost_values();
+    return iterations;
+  }
+
+  template <int dim>
+  unsigned int
+  StaticSolver<dim>::solve_linear_system(
+    const SparseMatrix                                                       &K,
+    const SolverVector                                                       &b,
+    SolverVector                                                             &x,
+    const Settings                                                           &settings,
+    const std::function<TrilinosWrappers::PreconditionAMG::AdditionalData()> &amg_data,
+    const std::string                                                        &what,
+    const std::string                                                        &advice)
+  {
+    const double rhs_norm = b.l2_norm();
+    if (rhs_norm == 0.)
+      return 0;
+    unsigned int  iterations = 0;
+    SolverControl control(settings.max_iterations, settings.tolerance * rhs_norm);
+    try
+      {
+        if (settings.linear_solver == LinearSolver::direct)
+          {
+            TrilinosWrappers::SolverDirect solver(control);
+            solver.solve(K, x, b);
+          }
+        else
+          {
+            TrilinosWrappers::PreconditionAMG amg;
+            amg.initialize(K, amg_data());
+            SolverCG<SolverVector> cg(control);
+            cg.solve(K, x, b, amg);
+            iterations = control.last_step();
+          }
+      }
+    catch (const SolverControl::NoConvergence &e)
+      {
+        AssertThrow(false,
+                    ExcMessage(
+                      "The " + what + " did not converge: residual " +
+                      std::to_string(e.last_residual / rhs_norm) + " after " +
+                      std::to_string(e.last_step) +
+                      " CG iterations (<Solver/Tolerance> = " + std::to_string(settings.tolerance) +
+                      ", <Solver/Maximum iterations> = " + std::to_string(settings.max_iterations) +
+                      ")." + advice));
+      }
+    catch (const std::exception &e)
+      {
+        AssertThrow(false,
+                    ExcMessage("The " + what + " failed (the stiffness matrix is singular?)." +
+                               advice + " Solver message: " + e.what()));
+      }
+    // A singular system can yield a solution that is not finite.
+    AssertThrow(std::isfinite(x.l2_norm()),
+                ExcMessage("The " + what +
+                           " produced a non-finite displacement: the stiffness matrix is "
+                           "singular." +
+                           advice));
+    // Check the residual independently of the solver's own test.
+    SolverVector residual(b);
+    K.vmult(residual, x);
+    residual -= b;
+    AssertThrow(residual.l2_norm() <= std::max(1e3 * settings.tolerance, 1e-8) * rhs_norm,
+                ExcMessage("The " + what + " left the residual " +
+                           std::to_string(residual.l2_norm() / rhs_norm) +
+                           " (relative): the stiffness matrix is singular or nearly so." + advice));
     return iterations;
   }
 

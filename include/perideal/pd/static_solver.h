@@ -4,10 +4,13 @@
 #ifndef perideal_pd_static_solver_h
 #define perideal_pd_static_solver_h
 
+#include <deal.II/lac/trilinos_precondition.h>
+
 #include <perideal/base/linear_algebra.h>
 #include <perideal/pd/material_model.h>
 #include <perideal/pd/particle_system.h>
 
+#include <functional>
 #include <string>
 
 namespace perideal
@@ -83,6 +86,25 @@ namespace perideal
                      const LinearizedModel     &linearized,
                      SparseMatrix              &G,
                      SolverVector              &weights);
+
+    /**
+     * @brief Solve the symmetric positive definite system @p K x = @p b of a static solve as
+     * @p settings say: KLU, or CG preconditioned by ML AMG set up with @p amg_data() (the
+     * near-null space of the unknowns). @p what names the solve in the messages and @p advice
+     * ends them. Throws, naming the <Solver> entries, if CG does not converge, the solver fails,
+     * or the solution is not finite or leaves a residual above 1e3 times the tolerance (a
+     * singular system). For b = 0, x is left as it is. Returns the number of CG iterations (0
+     * for the direct solver).
+     */
+    static unsigned int
+    solve_linear_system(
+      const SparseMatrix                                                               &K,
+      const SolverVector                                                               &b,
+      SolverVector                                                                     &x,
+      const Settings                                                                   &settings,
+      const std::function<dealii::TrilinosWrappers::PreconditionAMG::AdditionalData()> &amg_data,
+      const std::string                                                                &what,
+      const std::string                                                                &advice);
 
     /**
      * @brief The matrix of the last solve (prescribed rows eliminated).
