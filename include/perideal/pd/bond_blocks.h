@@ -68,7 +68,7 @@ namespace perideal
    * The particles live on a lattice. The kernels number the local particles (owned and ghost)
    * lexicographically by their lattice coordinates ("kernel order"), so that lattice lines are
    * runs of consecutive indices, and keep per-particle fields component-wise in that order
-   * (gather_vector(), scatter_vector()). A *group* is a run of width particles a0 ... a0 + width
+   * (gather(), scatter_owned()). A *group* is a run of width particles a0 ... a0 + width
    * - 1 (a0 a multiple of width); a *block* of the group holds, in lane l, the bond of particle
    * a0 + l along one lattice vector (its *bond class*), with the other ends at a0 + offset + l.
    * So every load and store of a block is a contiguous vector: the particle's side once per
@@ -80,9 +80,10 @@ namespace perideal
    * The class depends on the SIMD width: it is compiled, like the kernels that use it, with
    * the kernel options of source/pd/CMakeLists.txt.
    *
-   * Each bond of the BondList is in exactly one lane (bond_index() maps back). The lane states
-   * are the kernels' copy of BondList::intact: a kernel that breaks a bond writes both (break_
-   * lanes()), and sync_state() re-reads BondList::intact when its revision has changed.
+   * Each bond of the BondList is in exactly one lane (to_lanes() copies per-bond values). The
+   * lane states are the kernels' copy of BondList::intact: a kernel that breaks a bond writes
+   * both (break_lanes()), and sync_state() re-reads BondList::intact when its revision has
+   * changed.
    */
   template <int dim>
   class BondBlocks
