@@ -835,13 +835,7 @@ namespace perideal
             << "Energy error: " << energy_error << " J (relative " << relative_energy_error << ")\n"
             << "Broken bonds: " << broken << "\n"
             << "Max particle displacement: " << max_u << " m\n";
-        for (unsigned int k = 0; k < pd_reactions.size(); ++k)
-          log << "Reaction " << pd.boundary_conditions.names()[k] << ": "
-              << without_round_off(pd_reactions[k]) << " N\n";
-        for (unsigned int k = 0; k < fe_reactions.size(); ++k)
-          if (fe.conditions()[k].type != FESolid<dim>::ConditionType::traction)
-            log << "Reaction " << fe.conditions()[k].name << ": "
-                << without_round_off(fe_reactions[k]) << " N\n";
+        log_reactions(pd_reactions, fe_reactions);
         log << "Applied load: " << without_round_off(applied) << " N\n"
             << "Force balance: |applied + reactions| = " << imbalance
             << " N, relative to the largest force: " << balance << "\n";
@@ -971,16 +965,24 @@ namespace perideal
             << "Energy error: " << energy_error << " J\n"
             << "Broken bonds: " << broken << "\n"
             << "Max particle displacement: " << max_u << " m\n";
-        for (unsigned int k = 0; k < pd_reactions.size(); ++k)
-          log << "Reaction " << pd.boundary_conditions.names()[k] << ": "
-              << without_round_off(pd_reactions[k]) << " N\n";
-        for (unsigned int k = 0; k < fe_reactions.size(); ++k)
-          if (fe.conditions()[k].type != FESolid<dim>::ConditionType::traction)
-            log << "Reaction " << fe.conditions()[k].name << ": "
-                << without_round_off(fe_reactions[k]) << " N\n";
+        log_reactions(pd_reactions, fe_reactions);
         log << std::flush;
         log.flags(flags);
       }
+  }
+
+  template <int dim>
+  void
+  CoupledProblem<dim>::log_reactions(const std::vector<Tensor<1, dim>> &pd_reactions,
+                                     const std::vector<Tensor<1, dim>> &fe_reactions) const
+  {
+    for (unsigned int k = 0; k < pd_reactions.size(); ++k)
+      log << "Reaction " << pd.boundary_conditions.names()[k] << ": "
+          << without_round_off(pd_reactions[k]) << " N\n";
+    for (unsigned int k = 0; k < fe_reactions.size(); ++k)
+      if (fe.conditions()[k].type != FESolid<dim>::ConditionType::traction)
+        log << "Reaction " << fe.conditions()[k].name << ": " << without_round_off(fe_reactions[k])
+            << " N\n";
   }
 
   template <int dim>

@@ -101,6 +101,12 @@ namespace perideal
     write_statistics(const unsigned int step, const double time, const bool final_row);
     void
     write_output(const unsigned int step, const double time);
+    /**
+     * @brief Print the reactions of the PD and FE displacement conditions (root only).
+     */
+    void
+    log_reactions(const std::vector<dealii::Tensor<1, dim>> &pd_reactions,
+                  const std::vector<dealii::Tensor<1, dim>> &fe_reactions) const;
 
     MPI_Comm      comm;
     std::ostream &log;
