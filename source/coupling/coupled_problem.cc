@@ -576,9 +576,8 @@ namespace perideal
 
     local_work = 0.;
     write_static_statistics(0, 0., 0, 0., false);
-    const auto        &mask       = fe.prescribed_mask();
-    const auto        &volume     = ps.volumes();
-    const unsigned int max_passes = 100;
+    const auto &mask   = fe.prescribed_mask();
+    const auto &volume = ps.volumes();
     for (unsigned int step = 1; step <= pd.load_steps; ++step)
       {
         const double factor = double(step) / pd.load_steps;
@@ -607,13 +606,8 @@ namespace perideal
                                         pd.internal_force,
                                         &pd.energy_density,
                                         pd.critical_stretch);
-            if (n_broken_bonds(ps) == broken_before)
+            if (breaking_settled(ps, broken_before, step, passes))
               break;
-            AssertThrow(passes + 1 < max_passes,
-                        ExcMessage("Load step " + std::to_string(step) +
-                                   ": bonds kept breaking through " + std::to_string(max_passes) +
-                                   " re-solves (unstable crack growth); use more "
-                                   "<Solver/Load steps>."));
           }
         const double pd_energy =
           solver.forces(U, pd.u, static_fe_load, static_pd_load, residual, pd.internal_force);

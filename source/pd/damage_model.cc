@@ -5,6 +5,7 @@
 
 #include <cmath>
 #include <limits>
+#include <string>
 
 namespace perideal
 {
@@ -92,6 +93,23 @@ namespace perideal
       std::llround(Utilities::MPI::sum(local, particles.get_communicator())));
   }
 
+  template <int dim>
+  bool
+  breaking_settled(const ParticleSystem<dim> &particles,
+                   const std::uint64_t        broken_before,
+                   const unsigned int         step,
+                   const unsigned int         pass)
+  {
+    if (n_broken_bonds(particles) == broken_before)
+      return true;
+    const unsigned int max_passes = 100;
+    AssertThrow(pass + 1 < max_passes,
+                ExcMessage("Load step " + std::to_string(step) + ": bonds kept breaking through " +
+                           std::to_string(max_passes) +
+                           " re-solves (unstable crack growth); use more <Solver/Load steps>."));
+    return false;
+  }
+
   template class NoDamage<2>;
   template class NoDamage<3>;
   template class CriticalStretch<2>;
@@ -104,6 +122,10 @@ namespace perideal
   n_broken_bonds<2>(const ParticleSystem<2> &);
   template std::uint64_t
   n_broken_bonds<3>(const ParticleSystem<3> &);
+  template bool
+  breaking_settled<2>(const ParticleSystem<2> &, std::uint64_t, unsigned int, unsigned int);
+  template bool
+  breaking_settled<3>(const ParticleSystem<3> &, std::uint64_t, unsigned int, unsigned int);
 } // namespace perideal
 
 PERIDEAL_REGISTER_DAMAGE_MODEL(perideal::NoDamage, "none", "bonds never break.")

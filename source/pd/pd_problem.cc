@@ -597,7 +597,6 @@ namespace perideal
     local_external_work = 0.;
     write_statistics(0, 0., false);
 
-    const unsigned int max_passes = 100;
     for (unsigned int step = 1; step <= load_steps; ++step)
       {
         factor              = double(step) / load_steps;
@@ -632,13 +631,8 @@ namespace perideal
                                                   condition_list);
               }
             evaluate(u, &energy_density);
-            if (n_broken_bonds(particle_system) == broken_before)
+            if (breaking_settled(particle_system, broken_before, step, passes))
               break;
-            AssertThrow(passes + 1 < max_passes,
-                        ExcMessage("Load step " + std::to_string(step) +
-                                   ": bonds kept breaking through " + std::to_string(max_passes) +
-                                   " re-solves (unstable crack growth); use more "
-                                   "<Solver/Load steps>."));
           }
         if (is_root && show_progress)
           log << "Load step " << step << "/" << load_steps << ": " << passes + 1 << " solve(s), "

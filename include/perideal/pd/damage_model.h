@@ -90,6 +90,18 @@ namespace perideal
   std::uint64_t
   n_broken_bonds(const ParticleSystem<dim> &particles);
 
+  /**
+   * @brief For the re-solves of a quasi-static load step (PD or coupled): whether no bond broke
+   * in re-solve @p pass of load step @p step (@p broken_before bonds were broken before it).
+   * Throws (unstable crack growth: use more <Solver/Load steps>) after 100 re-solves.
+   */
+  template <int dim>
+  bool
+  breaking_settled(const ParticleSystem<dim> &particles,
+                   const std::uint64_t        broken_before,
+                   const unsigned int         step,
+                   const unsigned int         pass);
+
 #define PERIDEAL_REGISTER_DAMAGE_MODEL(classname, name, description)                    \
   PERIDEAL_REGISTER_PLUGIN(::perideal::DamageModel<2>, classname<2>, name, description) \
   PERIDEAL_REGISTER_PLUGIN(::perideal::DamageModel<3>, classname<3>, name, description)
