@@ -15,7 +15,6 @@
 #include <array>
 #include <chrono>
 #include <cmath>
-#include <filesystem>
 #include <iomanip>
 #include <unordered_map>
 
@@ -394,14 +393,7 @@ namespace perideal
     VectorTools::interpolate(fe.get_dof_handler(), *pd.initial_velocity, V);
     pd.energy_density.assign(ps.n_owned(), 0.);
 
-    if (is_root)
-      std::filesystem::create_directories(pd.output_directory);
-    statistics = std::make_unique<StatisticsFile>(comm, pd.output_directory + "/statistics.csv");
-    pd.particle_output = std::make_unique<ParticleOutput<dim>>(comm,
-                                                               pd.output_directory,
-                                                               pd.base_name,
-                                                               pd.write_hdf5,
-                                                               pd.write_vtu);
+    pd.open_output(statistics);
 
     fe.prescribe(0., U, V);
     pd.boundary_conditions.prescribe_displacement(0., pd.u);
@@ -552,14 +544,7 @@ namespace perideal
     }
     pd.energy_density.assign(n_owned, 0.);
 
-    if (is_root)
-      std::filesystem::create_directories(pd.output_directory);
-    statistics = std::make_unique<StatisticsFile>(comm, pd.output_directory + "/statistics.csv");
-    pd.particle_output = std::make_unique<ParticleOutput<dim>>(comm,
-                                                               pd.output_directory,
-                                                               pd.base_name,
-                                                               pd.write_hdf5,
-                                                               pd.write_vtu);
+    pd.open_output(statistics);
 
     // The conditions at t = End time, scaled by the load factor.
     pd.boundary_conditions.prescribe_displacement(pd.end_time, target);

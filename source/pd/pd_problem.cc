@@ -660,9 +660,16 @@ namespace perideal
             v.local_element(i * dim + d) = initial_velocity->value(x[i], d);
         }
 
+    open_output(statistics);
+  }
+
+  template <int dim>
+  void
+  PDProblem<dim>::open_output(std::unique_ptr<StatisticsFile> &statistics_file)
+  {
     if (is_root)
       std::filesystem::create_directories(output_directory);
-    statistics =
+    statistics_file =
       std::make_unique<StatisticsFile>(communicator, output_directory + "/statistics.csv");
     particle_output = std::make_unique<ParticleOutput<dim>>(communicator,
                                                             output_directory,

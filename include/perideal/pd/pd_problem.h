@@ -146,6 +146,12 @@ namespace perideal
      */
     void
     start_run();
+    /**
+     * @brief Create <Output/Directory>, open its statistics file into @p statistics_file and
+     * the particle output (also used by the coupled problem, which keeps its own statistics).
+     */
+    void
+    open_output(std::unique_ptr<StatisticsFile> &statistics_file);
     void
     write_statistics(const unsigned int step, const double time, const bool final_row);
     void
