@@ -70,7 +70,10 @@ namespace perideal
    * runs of consecutive indices, and keep per-particle fields component-wise in that order
    * (gather(), scatter_owned()). A *group* is a run of width particles a0 ... a0 + width
    * - 1 (a0 a multiple of width); a *block* of the group holds, in lane l, the bond of particle
-   * a0 + l along one lattice vector (its *bond class*), with the other ends at a0 + offset + l.
+   * a0 + l along one lattice vector (its *bond class*), with the other ends at a0 + offset + l,
+   * offset > 0: a bond sits at its end of lower kernel index, owned or ghost, so a lattice
+   * vector and its reverse are one class and the lanes fill (97 % on the 41^3 benchmark lattice,
+   * 84 % when bonds sat at their owned end).
    * So every load and store of a block is a contiguous vector: the particle's side once per
    * group, the neighbours' side once per block, and the per-lane arrays of the block. Lanes
    * without a bond (line ends, ghosts, other offsets) have state 0 and coefficient 0: they
