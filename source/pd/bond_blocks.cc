@@ -61,37 +61,21 @@ namespace perideal
     // a bond and its reverse share one class), even if that end is a ghost: the kernels add
     // equal and opposite forces to both ends and only the owned ones are kept. Each lattice
     // vector then has one class, and the blocks of a group fill their lanes well.
-    struct Pair
-    {
-      unsigned int a;
-      int          offset;
-      unsigned int bond_class;
-      unsigned int bond;
+    const auto lattice_vector = [&](const unsigned int i, const unsigned int b) {
+      const unsigned int    j = bonds.neighbor[b];
+      std::array<long, dim> q;
+      for (unsigned int d = 0; d < dim; ++d)
+        q[d] = (kernel_index[i] < kernel_index[j] ? lattice[j][d] - lattice[i][d] :
+                                                    lattice[i][d] - lattice[j][d]);
+      return q;
     };
-    std::vector<Pair> pairs;
-    pairs.reserve(bonds.size());
-    std::vector<std::array<long, dim>> pair_vector;
-    pair_vector.reserve(bonds.size());
-    for (unsigned int i = 0; i < n_owned; ++i)
-      for (unsigned int b = bonds.row_start[i]; b < bonds.row_start[i + 1]; ++b)
-        {
-          const unsigned int    j     = bonds.neighbor[b];
-          const bool            i_low = kernel_index[i] < kernel_index[j];
-          std::array<long, dim> q;
-          for (unsigned int d = 0; d < dim; ++d)
-            q[d] = i_low ? lattice[j][d] - lattice[i][d] : lattice[i][d] - lattice[j][d];
-          pairs.push_back({std::min(kernel_index[i], kernel_index[j]),
-                           std::abs(int(kernel_index[j]) - int(kernel_index[i])),
-                           0u,
-                           b});
-          pair_vector.push_back(q);
-        }
 
     // Bond classes (lattice vectors), ranked with the first component slowest so that the
     // neighbour ranges of consecutive blocks of a group are a lattice line apart.
     std::map<std::array<long, dim>, unsigned int> class_of;
-    for (const auto &q : pair_vector)
-      class_of.emplace(q, 0u);
+    for (unsigned int i = 0; i < n_owned; ++i)
+      for (unsigned int b = bonds.row_start[i]; b < bonds.row_start[i + 1]; ++b)
+        class_of.emplace(lattice_vector(i, b), 0u);
     class_list.clear();
     for (auto &[q, index] : class_of)
       {
@@ -107,8 +91,25 @@ namespace perideal
         c.inverse_length = 1. / c.length;
         class_list.push_back(c);
       }
-    for (std::size_t p = 0; p < pairs.size(); ++p)
-      pairs[p].bond_class = class_of.at(pair_vector[p]);
+
+    struct Pair
+    {
+      unsigned int a;
+      int          offset;
+      unsigned int bond_class;
+      unsigned int bond;
+    };
+    std::vector<Pair> pairs;
+    pairs.reserve(bonds.size());
+    for (unsigned int i = 0; i < n_owned; ++i)
+      for (unsigned int b = bonds.row_start[i]; b < bonds.row_start[i + 1]; ++b)
+        {
+          const unsigned int j = bonds.neighbor[b];
+          pairs.push_back({std::min(kernel_index[i], kernel_index[j]),
+                           std::abs(int(kernel_index[j]) - int(kernel_index[i])),
+                           class_of.at(lattice_vector(i, b)),
+                           b});
+        }
 
     // Blocks: a group of width particles, one class, one offset.
     std::sort(pairs.begin(), pairs.end(), [](const Pair &x, const Pair &y) {
