@@ -8,6 +8,7 @@
 #include <perideal/base/parameter_utilities.h>
 #include <perideal/base/progress_reporter.h>
 #include <perideal/coupling/coupled_problem.h>
+#include <perideal/pd/adaptive_dynamic_relaxation.h>
 #include <perideal/pd/boundary_conditions.h>
 #include <perideal/pd/damage_model.h>
 
@@ -83,10 +84,6 @@ namespace perideal
   {
     pd.parse_parameters(prm);
     fe.parse_parameters(prm, pd.planar, pd.discretization.thickness);
-    AssertThrow(pd.solver_type == SolverType::explicit_dynamics ||
-                  pd.solver_type == SolverType::static_linear,
-                ExcMessage("<Solver/Type> = adaptive dynamic relaxation: coupled FE-PD problems "
-                           "accept 'explicit' or 'static'."));
     prm.enter_subsection("Coupling");
     blending_expression = prm.get("Blending function");
     beta =
@@ -101,9 +98,10 @@ namespace perideal
                 ExcMessage("<Coupling/Exact displacement tolerance> is set, but <Coupling/Exact "
                            "displacement> is empty: give the exact field or remove the "
                            "tolerance."));
-    AssertThrow(!exact_displacement || pd.solver_type == SolverType::static_linear,
-                ExcMessage("<Coupling/Exact displacement> is compared in static runs only "
-                           "(<Solver/Type> = static); remove it or change the solver type."));
+    AssertThrow(!exact_displacement || pd.solver_type != SolverType::explicit_dynamics,
+                ExcMessage("<Coupling/Exact displacement> is compared in quasi-static runs only "
+                           "(<Solver/Type> = static or adaptive dynamic relaxation); remove it or "
+                           "change the solver type."));
     prm.leave_subsection();
   }
 
@@ -261,7 +259,7 @@ namespace perideal
       log << fe_summary << "\n"
           << "Coupling: blended, " << n_slaved << " particles slaved to the FE field, "
           << pd.particle_system.n_global() - n_slaved << " free" << std::endl;
-    if (pd.solver_type == SolverType::static_linear)
+    if (pd.solver_type != SolverType::explicit_dynamics)
       return;
 
     // The FE mass: lumped (1 - beta) rho plus P^T of the slaved particles' masses.
@@ -353,10 +351,10 @@ namespace perideal
   void
   CoupledProblem<dim>::run()
   {
-    if (pd.solver_type == SolverType::static_linear)
-      run_static();
-    else
+    if (pd.solver_type == SolverType::explicit_dynamics)
       run_explicit();
+    else
+      run_static();
   }
 
   template <int dim>
@@ -474,16 +472,18 @@ namespace perideal
     for (const auto &c : fe.conditions())
       AssertThrow(c.type != FESolid<dim>::ConditionType::velocity,
                   ExcMessage("The FE boundary condition <" + c.name +
-                             "> is of type 'velocity', which a static solve (<Solver/Type> = "
-                             "static) cannot apply; use 'displacement' (scaled by the load "
-                             "factor) instead."));
+                             "> is of type 'velocity', which a quasi-static solve (<Solver/Type> "
+                             "= static or adaptive dynamic relaxation) cannot apply; use "
+                             "'displacement' (scaled by the load factor) instead."));
     const auto velocity_conditions =
       pd.boundary_conditions.names_of_type(BoundaryConditions<dim>::Type::velocity);
     AssertThrow(velocity_conditions.empty(),
                 ExcMessage("The boundary condition <" + velocity_conditions.front() +
-                           "> is of type 'velocity', which a static solve (<Solver/Type> = "
-                           "static) cannot apply; use 'displacement' (scaled by the load "
-                           "factor) instead."));
+                           "> is of type 'velocity', which a quasi-static solve (<Solver/Type> = "
+                           "static or adaptive dynamic relaxation) cannot apply; use "
+                           "'displacement' (scaled by the load factor) instead."));
+    const std::string solver_name =
+      pd.solver_type == SolverType::static_linear ? "static" : "adaptive dynamic relaxation";
     ParticleVector prescribed, target, full_load;
     for (ParticleVector *vec : {&pd.u,
                                 &pd.v,
@@ -494,6 +494,7 @@ namespace perideal
                                 &particle_load,
                                 &pd.previous_load,
                                 &static_pd_load,
+                                &nodal_force,
                                 &prescribed,
                                 &target,
                                 &full_load})
@@ -512,14 +513,15 @@ namespace perideal
           }
     for (unsigned int d = 0; d < dim; ++d)
       AssertThrow(Utilities::MPI::sum(constrained[d], comm) > 0.,
-                  ExcMessage("No displacement condition prescribes the " + axis_name(d) +
-                             " component anywhere (boundary conditions: " +
-                             (condition_list.empty() ? std::string("none") : condition_list) +
-                             "), so a rigid translation in " + axis_name(d) +
-                             " is free and the static system (<Solver/Type> = static) is "
-                             "singular. Prescribe it in <Finite elements/Boundary conditions> "
-                             "(type 'displacement') or on free particles in <Boundary "
-                             "conditions>."));
+                  ExcMessage(
+                    "No displacement condition prescribes the " + axis_name(d) +
+                    " component anywhere (boundary conditions: " +
+                    (condition_list.empty() ? std::string("none") : condition_list) +
+                    "), so a rigid translation in " + axis_name(d) +
+                    " is free and the quasi-static problem (<Solver/Type> = " + solver_name +
+                    ") is singular. Prescribe it in <Finite elements/Boundary "
+                    "conditions> (type 'displacement') or on free particles in <Boundary "
+                    "conditions>."));
 
     FEVector fe_target, fe_full_load;
     for (FEVector *vec : {&U,
@@ -554,10 +556,54 @@ namespace perideal
 
     CoupledStaticSolver<dim> solver(pd.static_settings);
     solver.reinit(fe, ps, transfer, prescribed);
+    const bool relax = (pd.solver_type == SolverType::adaptive_dynamic_relaxation);
     if (is_root)
-      log << "Static solve: " << solver.n_unknowns()
+      log << (relax ? "Adaptive dynamic relaxation: " : "Static solve: ") << solver.n_unknowns()
           << " unknowns (FE dofs and free particle components), " << pd.load_steps
           << " load step(s)" << std::endl;
+
+    // Adaptive dynamic relaxation on the unknowns z of the static solve, with the model's own
+    // forces; its fictitious density comes from the Gershgorin bound of the linearized K.
+    ParticleVector                             z, z_target, z_force;
+    std::unique_ptr<AdaptiveDynamicRelaxation> relaxation;
+    AdaptiveDynamicRelaxation::Operations      operations;
+    double                                     factor = 0.;
+    if (relax)
+      {
+        for (ParticleVector *vec : {&z, &z_target, &z_force})
+          solver.reinit_unknowns(*vec);
+        solver.to_unknowns(fe_target, target, z_target);
+        const auto clear_prescribed = [&solver](ParticleVector &v) {
+          for (std::size_t k = 0; k < v.locally_owned_size(); ++k)
+            if (solver.is_prescribed(k))
+              v.local_element(k) = 0.;
+        };
+        operations.prescribe_displacement = [&](ParticleVector &zz) {
+          for (std::size_t k = 0; k < zz.locally_owned_size(); ++k)
+            if (solver.is_prescribed(k))
+              zz.local_element(k) = factor * z_target.local_element(k);
+        };
+        operations.clear_prescribed = clear_prescribed;
+        operations.residual = [&, clear_prescribed](ParticleVector &zz, ParticleVector &force) {
+          solver.from_unknowns(zz, U, pd.u);
+          model_forces(residual, false);
+          residual *= -1.;
+          solver.to_unknowns(residual, nodal_force, force);
+          clear_prescribed(force);
+        };
+        solver.assemble(*pd.material, condition_list);
+        std::vector<double> bound;
+        solver.row_bounds(bound);
+        ParticleVector density;
+        solver.reinit_unknowns(density);
+        AdaptiveDynamicRelaxation::fictitious_density(bound, 1, pd.relaxation_safety, density);
+        AdaptiveDynamicRelaxation::Settings settings;
+        settings.tolerance      = pd.relaxation_tolerance;
+        settings.max_iterations = pd.relaxation_max_iterations;
+        settings.length_scale   = pd.discretization.horizon;
+        relaxation =
+          std::make_unique<AdaptiveDynamicRelaxation>(operations, density, settings, comm);
+      }
 
     local_work = 0.;
     write_static_statistics(0, 0., 0, 0., false);
@@ -565,11 +611,11 @@ namespace perideal
     const auto &volume = ps.volumes();
     for (unsigned int step = 1; step <= pd.load_steps; ++step)
       {
-        const double factor = double(step) / pd.load_steps;
-        previous_U          = U;
-        pd.previous_u       = pd.u;
-        previous_fe_load    = fe_load;
-        pd.previous_load    = particle_load;
+        factor           = double(step) / pd.load_steps;
+        previous_U       = U;
+        pd.previous_u    = pd.u;
+        previous_fe_load = fe_load;
+        pd.previous_load = particle_load;
         static_fe_load.equ(factor, fe_full_load);
         static_pd_load.equ(factor, full_load);
 
@@ -583,8 +629,23 @@ namespace perideal
             for (unsigned int k = 0; k < n_owned * dim; ++k)
               if (prescribed.local_element(k) != 0.)
                 pd.u.local_element(k) = factor * target.local_element(k);
-            iterations +=
-              solver.solve(*pd.material, static_fe_load, static_pd_load, U, pd.u, condition_list);
+            if (relaxation)
+              {
+                // ||F_ext|| over the free unknowns: the FE loads and the particle loads [N].
+                for (unsigned int i = 0; i < n_owned; ++i)
+                  for (unsigned int d = 0; d < dim; ++d)
+                    nodal_force.local_element(i * dim + d) =
+                      static_pd_load.local_element(i * dim + d) * volume[i];
+                solver.to_unknowns(static_fe_load, nodal_force, z_force);
+                operations.clear_prescribed(z_force);
+                solver.to_unknowns(U, pd.u, z);
+                const auto result = relaxation->solve(z, z_force.l2_norm());
+                iterations += result.iterations;
+                solver.from_unknowns(z, U, pd.u);
+              }
+            else
+              iterations +=
+                solver.solve(*pd.material, static_fe_load, static_pd_load, U, pd.u, condition_list);
             // The model's own forces and energy density at the solution (breaks bonds).
             pd.material->compute_forces(ps,
                                         pd.u,
@@ -595,7 +656,9 @@ namespace perideal
               break;
           }
         const double pd_energy =
-          solver.forces(U, pd.u, static_fe_load, static_pd_load, residual, pd.internal_force);
+          relaxation ?
+            model_forces(residual, true) :
+            solver.forces(U, pd.u, static_fe_load, static_pd_load, residual, pd.internal_force);
 
         // The loads that do work: the applied ones, and on prescribed components the support
         // forces (the FE residual K z - F there; minus the internal force on particles).
@@ -625,7 +688,7 @@ namespace perideal
             log << "Load step " << step << "/" << pd.load_steps << ": " << passes + 1
                 << " solve(s), " << broken << " broken bonds";
             if (pd.show_progress)
-              log << ", " << iterations << " CG iterations";
+              log << ", " << iterations << (relaxation ? " relaxation" : " CG") << " iterations";
             log << std::endl;
           }
         write_static_statistics(step, factor, iterations, pd_energy, step == pd.load_steps);
@@ -676,6 +739,39 @@ namespace perideal
     pd.write_particles(pd.load_steps, 1.);
     if (pd.write_hdf5)
       fe.write_output(pd.output_directory, "solution", pd.load_steps, 1., U);
+  }
+
+  template <int dim>
+  double
+  CoupledProblem<dim>::model_forces(FEVector &fe_residual, const bool with_energy)
+  {
+    auto &ps = pd.particle_system;
+    pd.material->compute_forces(ps,
+                                pd.u,
+                                pd.internal_force,
+                                with_energy ? &pd.energy_density : nullptr,
+                                pd.critical_stretch);
+    const auto        &volume  = ps.volumes();
+    const unsigned int n_owned = ps.n_owned();
+    double             energy  = 0.;
+    for (unsigned int i = 0; i < n_owned; ++i)
+      {
+        for (unsigned int d = 0; d < dim; ++d)
+          {
+            const unsigned int k = i * dim + d;
+            nodal_force.local_element(k) =
+              (pd.internal_force.local_element(k) + static_pd_load.local_element(k)) * volume[i];
+          }
+        if (with_energy)
+          energy += pd.energy_density[i] * volume[i];
+      }
+    // K_FE U - f_FE - P^T (f_int + f_ext) of the slaved particles.
+    fe.stiffness_matrix().vmult(fe_residual, U);
+    fe_residual -= static_fe_load;
+    nodal_force *= -1.;
+    transfer.add_transpose(nodal_force, fe_residual);
+    nodal_force *= -1.;
+    return Utilities::MPI::sum(energy, comm);
   }
 
   template <int dim>

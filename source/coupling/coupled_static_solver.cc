@@ -194,18 +194,12 @@ namespace perideal
   }
 
   template <int dim>
-  unsigned int
-  CoupledStaticSolver<dim>::solve(const MaterialModel<dim> &material,
-                                  const FEVector           &f_fe,
-                                  const ParticleVector     &f_pd,
-                                  FEVector                 &U,
-                                  ParticleVector           &u,
-                                  const std::string        &conditions)
+  void
+  CoupledStaticSolver<dim>::assemble(const MaterialModel<dim> &material,
+                                     const std::string        &conditions)
   {
     Assert(fe != nullptr, ExcMessage("Call reinit() first."));
-    const std::size_t n_local    = prescribed.size();
-    const std::size_t n_fe_owned = fe_owned.n_elements();
-    const auto       &volume     = particles->volumes();
+    const std::size_t n_local = prescribed.size();
 
     // The PD part (G T_f)^T diag(w) (G T_f) of the linearization about the reference state.
     LinearizedModel linearized;
@@ -247,12 +241,12 @@ namespace perideal
         }
     diagonal_sum     = Utilities::MPI::sum(diagonal_sum, comm);
     n_free           = Utilities::MPI::sum(n_free, comm);
-    const double s   = (n_free > 0. && diagonal_sum > 0.) ? diagonal_sum / n_free : 1.;
-    double       n_p = 0.;
+    prescribed_scale = (n_free > 0. && diagonal_sum > 0.) ? diagonal_sum / n_free : 1.;
+    double n_p       = 0.;
     for (std::size_t k = 0; k < n_local; ++k)
       if (prescribed[k])
         {
-          system_matrix.add(z_first + k, z_first + k, s);
+          system_matrix.add(z_first + k, z_first + k, prescribed_scale);
           n_p += 1.;
         }
     system_matrix.compress(VectorOperation::add);
@@ -263,6 +257,22 @@ namespace perideal
                            "), so rigid-body motions are free. Add a 'displacement' condition in "
                            "<Finite elements/Boundary conditions> (or on free particles in "
                            "<Boundary conditions>) that holds the rigid-body modes."));
+  }
+
+  template <int dim>
+  unsigned int
+  CoupledStaticSolver<dim>::solve(const MaterialModel<dim> &material,
+                                  const FEVector           &f_fe,
+                                  const ParticleVector     &f_pd,
+                                  FEVector                 &U,
+                                  ParticleVector           &u,
+                                  const std::string        &conditions)
+  {
+    assemble(material, conditions);
+    const std::size_t n_local    = prescribed.size();
+    const std::size_t n_fe_owned = fe_owned.n_elements();
+    const auto       &volume     = particles->volumes();
+    const double      s          = prescribed_scale;
 
     // Right-hand side: F - K g on free rows, s g on prescribed rows.
     SolverVector g(z_owned, comm), F(z_owned, comm), rhs(z_owned, comm), z(z_owned, comm);
@@ -330,14 +340,11 @@ namespace perideal
         "conditions), or broken bonds may have split off free pieces of the PD region.");
 
     // Back to the FE dofs and the particles (slaved ones through P).
-    for (std::size_t k = 0; k < n_fe_owned; ++k)
-      U.local_element(k) = z.begin()[k];
-    U.update_ghost_values();
-    for (std::size_t k = 0; k < particle_z.size(); ++k)
-      if (particle_z[k] != numbers::invalid_dof_index)
-        u.local_element(k) = z.begin()[particle_z[k] - z_first];
-    transfer->interpolate(U, u);
-    u.update_ghost_values();
+    ParticleVector solution;
+    reinit_unknowns(solution);
+    for (std::size_t k = 0; k < n_local; ++k)
+      solution.local_element(k) = z.begin()[k];
+    from_unknowns(solution, U, u);
     return iterations;
   }
 
@@ -375,6 +382,61 @@ namespace perideal
     nodal_force *= -1.;
     transfer->add_transpose(nodal_force, fe_residual);
     return energy;
+  }
+
+  template <int dim>
+  void
+  CoupledStaticSolver<dim>::reinit_unknowns(ParticleVector &z) const
+  {
+    z.reinit(z_owned, comm);
+  }
+
+  template <int dim>
+  void
+  CoupledStaticSolver<dim>::to_unknowns(const FEVector       &U,
+                                        const ParticleVector &u,
+                                        ParticleVector       &z) const
+  {
+    for (std::size_t k = 0; k < fe_owned.n_elements(); ++k)
+      z.local_element(k) = U.local_element(k);
+    for (std::size_t k = 0; k < particle_z.size(); ++k)
+      if (particle_z[k] != numbers::invalid_dof_index)
+        z.local_element(particle_z[k] - z_first) = u.local_element(k);
+  }
+
+  template <int dim>
+  void
+  CoupledStaticSolver<dim>::from_unknowns(const ParticleVector &z,
+                                          FEVector             &U,
+                                          ParticleVector       &u) const
+  {
+    for (std::size_t k = 0; k < fe_owned.n_elements(); ++k)
+      U.local_element(k) = z.local_element(k);
+    U.update_ghost_values();
+    for (std::size_t k = 0; k < particle_z.size(); ++k)
+      if (particle_z[k] != numbers::invalid_dof_index)
+        u.local_element(k) = z.local_element(particle_z[k] - z_first);
+    transfer->interpolate(U, u);
+    u.update_ghost_values();
+  }
+
+  template <int dim>
+  bool
+  CoupledStaticSolver<dim>::is_prescribed(const std::size_t k) const
+  {
+    return prescribed[k];
+  }
+
+  template <int dim>
+  void
+  CoupledStaticSolver<dim>::row_bounds(std::vector<double> &bound) const
+  {
+    bound.assign(prescribed.size(), 0.);
+    for_each_local_row(system_matrix,
+                       [&](const auto row, const auto &columns, const double *values) {
+                         for (std::size_t k = 0; k < columns.size(); ++k)
+                           bound[row - z_first] += std::abs(values[k]);
+                       });
   }
 
   template <int dim>

@@ -22,6 +22,7 @@ namespace perideal
     , lambda(density)
     , settings(settings)
     , communicator(comm)
+    , round_off_force(1e-12 * settings.length_scale * density.l2_norm())
   {}
 
   void
@@ -50,7 +51,7 @@ namespace perideal
     const double initial_norm = force.l2_norm();
     const double scale        = std::max(external_norm, initial_norm);
     Result       result;
-    if (scale == 0.)
+    if (scale <= round_off_force)
       return result;
 
     std::vector<std::pair<unsigned int, double>> history;

@@ -585,6 +585,7 @@ namespace perideal
         AdaptiveDynamicRelaxation::Settings settings;
         settings.tolerance      = relaxation_tolerance;
         settings.max_iterations = relaxation_max_iterations;
+        settings.length_scale   = discretization.horizon;
         relaxation =
           std::make_unique<AdaptiveDynamicRelaxation>(operations, density, settings, communicator);
       }

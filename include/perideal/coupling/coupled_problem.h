@@ -36,7 +36,10 @@ namespace perideal
    * in <Solver/Load steps> load steps, re-solved while bonds break; it prints the reactions of
    * the FE and PD displacement conditions against the applied loads (force balance), the strain
    * energy against the work of the loads and, if <Coupling/Exact displacement> is given, the
-   * largest displacement error at the FE nodes and the particles.
+   * largest displacement error at the FE nodes and the particles. <Solver/Type> = adaptive
+   * dynamic relaxation: the same load steps, the unknowns of the static solve relaxed with the
+   * model's own forces (model_forces()), fictitious density from the Gershgorin bound of the
+   * static K (CoupledStaticSolver::row_bounds()).
    *
    * Checked before any heavy work: beta in [0, 1]; the transition 0 < beta < 1 at least a
    * horizon wide (no bond joins a particle with beta = 1 to one with beta = 0); every particle
@@ -85,6 +88,16 @@ namespace perideal
                             const unsigned int iterations,
                             const double       pd_energy,
                             const bool         final_row);
+    /**
+     * @brief Quasi-static runs: the forces of the state (U, pd.u) with the model's own forces
+     * (bonds over the critical stretch break) under the current loads: @p fe_residual = K_FE U -
+     * f_FE - P^T (V (f_int + f_ext)) of the slaved particles (the sign of
+     * CoupledStaticSolver::forces()), pd.internal_force, and in nodal_force the particles'
+     * unbalanced force V (f_int + f_ext) [N]. Returns the particles' strain energy if
+     * @p with_energy (0 otherwise).
+     */
+    double
+    model_forces(FEVector &fe_residual, const bool with_energy);
     /**
      * @brief Forces and accelerations of both regions at @p time (P U into the slaved
      * particles first); the particles' energy density only if @p with_energy.

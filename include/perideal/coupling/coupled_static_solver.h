@@ -71,12 +71,19 @@ namespace perideal
            const ParticleVector        &particle_prescribed);
 
     /**
-     * @brief Solve K z = F. On entry @p U and @p u hold the prescribed values (owned entries;
-     * others are ignored); on exit the solution with ghost values, the slaved particles'
-     * u = P U included. @p f_fe is the FE load (FESolid::assemble_load()), @p f_pd the particle
-     * force density [N/m^3] (owned entries). @p material is linearized anew, so bonds broken
-     * since the last call drop out. @p conditions names the boundary conditions for the error
-     * messages. Returns the number of CG iterations (0 for the direct solver).
+     * @brief Linearize @p material about the reference state (bonds broken since the last call
+     * drop out) and build K with the prescribed rows eliminated. @p conditions names the
+     * boundary conditions for the error message of a singular system.
+     */
+    void
+    assemble(const MaterialModel<dim> &material, const std::string &conditions);
+
+    /**
+     * @brief assemble(), then solve K z = F. On entry @p U and @p u hold the prescribed values
+     * (owned entries; others are ignored); on exit the solution with ghost values, the slaved
+     * particles' u = P U included. @p f_fe is the FE load (FESolid::assemble_load()), @p f_pd
+     * the particle force density [N/m^3] (owned entries). Returns the number of CG iterations
+     * (0 for the direct solver).
      */
     unsigned int
     solve(const MaterialModel<dim> &material,
@@ -100,6 +107,32 @@ namespace perideal
            const ParticleVector &f_pd,
            FEVector             &fe_residual,
            ParticleVector       &pd_force) const;
+
+    /// Size @p z as the unknowns z (owned entries, no ghosts).
+    void
+    reinit_unknowns(ParticleVector &z) const;
+
+    /// The unknowns z of the FE dofs @p U and the free particles' components of @p u.
+    void
+    to_unknowns(const FEVector &U, const ParticleVector &u, ParticleVector &z) const;
+
+    /**
+     * @brief The FE dofs @p U and the particle displacements @p u (free ones from @p z, slaved
+     * ones u = P U) of the unknowns @p z, with ghost values.
+     */
+    void
+    from_unknowns(const ParticleVector &z, FEVector &U, ParticleVector &u) const;
+
+    /// Whether the owned unknown with local index @p k is prescribed.
+    bool
+    is_prescribed(const std::size_t k) const;
+
+    /**
+     * @brief The Gershgorin bound sum_j |K_ij| of every owned row of the assembled K (the
+     * stiffness bound of adaptive dynamic relaxation), one value per owned unknown.
+     */
+    void
+    row_bounds(std::vector<double> &bound) const;
 
     /// Number of unknowns z (all ranks).
     dealii::types::global_dof_index
@@ -130,8 +163,10 @@ namespace perideal
     std::vector<dealii::types::global_dof_index> particle_z;
     /// Per locally owned z entry: prescribed or not.
     std::vector<bool> prescribed;
-    SparseMatrix      T, T_free, fe_part, G, system_matrix;
-    SolverVector      weights;
+    /// The diagonal entry of the prescribed rows: the mean diagonal entry of the free rows.
+    double       prescribed_scale = 1.;
+    SparseMatrix T, T_free, fe_part, G, system_matrix;
+    SolverVector weights;
   };
 } // namespace perideal
 

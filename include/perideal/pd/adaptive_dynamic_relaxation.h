@@ -28,7 +28,8 @@ namespace perideal
    * - Update v^{n+1/2} = ((2 - c) v^{n-1/2} + 2 F^n / lambda) / (2 + c), u^{n+1} = u^n + v^{n+1/2},
    *   starting from v^{1/2} = F^0 / (2 lambda).
    * - Convergence when ||F||_2 < tolerance * max(||F_ext||_2, ||F^0||_2), with F the residual
-   *   force density on the free components (prescribed components carry reactions).
+   *   force density on the free components (prescribed components carry reactions); nothing to
+   *   do when both norms are round-off (Settings::length_scale).
    *
    * It works on any ParticleVector through callbacks, like VelocityVerlet.
    */
@@ -52,6 +53,14 @@ namespace perideal
       double tolerance = 1e-8;
       /// Largest number of iterations of one solve.
       unsigned int max_iterations = 100000;
+      /**
+       * A length of the problem (the horizon) [m]: forces below 1e-12 * length_scale *
+       * ||lambda||_2, those of a strain of 1e-12, are round-off of the force evaluation (a
+       * stretch is computed to about 1e-16). A solve whose external and initial forces are
+       * both below it (no load, nothing prescribed) returns at once instead of relaxing
+       * round-off. 0: no floor.
+       */
+      double length_scale = 0.;
     };
 
     /// What a solve did.
@@ -94,7 +103,9 @@ namespace perideal
     Operations     operations;
     ParticleVector lambda;
     Settings       settings;
-    MPI_Comm       communicator;
+    /// Forces below this are round-off (Settings::length_scale).
+    double   round_off_force = 0.;
+    MPI_Comm communicator;
   };
 } // namespace perideal
 
