@@ -8,7 +8,6 @@
 #include <perideal/base/parameter_utilities.h>
 #include <perideal/base/progress_reporter.h>
 #include <perideal/coupling/coupled_problem.h>
-#include <perideal/pd/adaptive_dynamic_relaxation.h>
 #include <perideal/pd/boundary_conditions.h>
 #include <perideal/pd/damage_model.h>
 
@@ -52,11 +51,13 @@ namespace perideal
     PDProblem<dim>::declare_parameters(prm, region_names, condition_names);
     FESolid<dim>::declare_parameters(prm, fe_condition_names);
     prm.enter_subsection("Coupling");
+    using Methods = PluginRegistry<CouplingMethod<dim>>;
     prm.declare_entry("Method",
                       "blended",
-                      Patterns::Selection("blended"),
-                      "How the FE region and the particles are joined: 'blended' (energy "
-                      "blending in the overlap, particles there slaved to the FE field).");
+                      Patterns::Selection(Methods::pattern_string()),
+                      "How the FE region and the particles are joined: " +
+                        Methods::documentation() + "Each method reads its own subsection.");
+    Methods::declare_parameters(prm);
     prm.declare_entry("Blending function",
                       "0",
                       Patterns::Anything(),
@@ -85,6 +86,12 @@ namespace perideal
     pd.parse_parameters(prm);
     fe.parse_parameters(prm, pd.planar, pd.discretization.thickness);
     prm.enter_subsection("Coupling");
+    method_name = prm.get("Method");
+    method      = PluginRegistry<CouplingMethod<dim>>::create(method_name, "Coupling/Method");
+    prm.enter_subsection(method_name);
+    method->parse_parameters(prm);
+    prm.leave_subsection();
+    method->check_solver(pd.solver_type);
     blending_expression = prm.get("Blending function");
     beta =
       ParameterUtilities::make_function<dim>(blending_expression, 1, "Coupling/Blending function");
@@ -170,10 +177,11 @@ namespace perideal
   void
   CoupledProblem<dim>::setup()
   {
-    const auto weight_fe = [this](const Point<dim> &x) { return 1. - blending(x); };
+    const auto weight_fe = [this](const Point<dim> &x) { return method->fe_weight(blending(x)); };
     fe.setup(weight_fe);
 
-    // Particles where beta > 0 and within a horizon of such points (lattice offsets up to
+    // Particles where the method's particle weight is positive and within a horizon of such
+    // points (lattice offsets up to
     // delta + dx cover every bond).
     const double                dx = pd.discretization.spacing, delta = pd.discretization.horizon;
     const int                   reach = static_cast<int>(std::ceil(delta / dx)) + 1;
@@ -215,7 +223,7 @@ namespace perideal
       const auto found = beta_at.find(key);
       if (found != beta_at.end())
         return found->second;
-      return beta_at[key] = blending(y);
+      return beta_at[key] = method->particle_weight(blending(y));
     };
     const auto in_pd_region = [&](const Point<dim> &x) {
       for (const auto &offset : offsets)
@@ -223,23 +231,29 @@ namespace perideal
           return true;
       return false;
     };
-    pd.setup(in_pd_region, [this](const Point<dim> &x) { return blending(x); });
+    pd.setup(in_pd_region,
+             [this](const Point<dim> &x) { return method->particle_weight(blending(x)); });
 
     transfer.reinit(fe, pd.particle_system);
     check_blending();
+    CoupledRegions<dim> regions;
+    regions.fe               = &fe;
+    regions.particles        = &pd.particle_system;
+    regions.material         = pd.material.get();
+    regions.transfer         = &transfer;
+    regions.density          = pd.density;
+    regions.horizon          = pd.discretization.horizon;
+    regions.critical_stretch = pd.critical_stretch;
+    method->initialize(regions);
 
     // Free particles (in FE_Nothing cells) carry their own mass; PD boundary conditions may act
     // only on them.
     const unsigned int n_owned = pd.particle_system.n_owned();
-    const auto        &x       = pd.particle_system.positions();
-    const auto        &volume  = pd.particle_system.volumes();
     free_particle.assign(n_owned, false);
-    particle_mass.assign(n_owned, 0.);
     std::uint64_t n_constrained_slaved = 0;
     for (unsigned int i = 0; i < n_owned; ++i)
       {
         free_particle[i] = !transfer.is_slaved(i);
-        particle_mass[i] = blending(x[i]) * pd.density * volume[i];
         for (unsigned int d = 0; d < dim; ++d)
           if (!free_particle[i] && pd.boundary_conditions.is_prescribed(i, d))
             ++n_constrained_slaved;
@@ -253,33 +267,16 @@ namespace perideal
                   "with FE unknowns); prescribe it there with <Finite elements/Boundary "
                   "conditions>, or move its region into the PD-only zone (beta = 1)."));
 
-    const std::string fe_summary = fe.summary();
-    const auto        n_slaved   = transfer.n_global_slaved();
+    const std::string fe_summary = fe.summary(), coupling_summary = method->summary();
     if (is_root)
       log << fe_summary << "\n"
-          << "Coupling: blended, " << n_slaved << " particles slaved to the FE field, "
-          << pd.particle_system.n_global() - n_slaved << " free" << std::endl;
+          << "Coupling: " << method_name << ", " << coupling_summary << std::endl;
     if (pd.solver_type != SolverType::explicit_dynamics)
       return;
 
-    // The FE mass: lumped (1 - beta) rho plus P^T of the slaved particles' masses.
     fe.initialize_vector(mass);
-    mass = fe.lumped_mass();
     pd.particle_system.reinit_vector(nodal_force, dim);
-    for (unsigned int i = 0; i < n_owned; ++i)
-      if (!free_particle[i])
-        for (unsigned int d = 0; d < dim; ++d)
-          nodal_force.local_element(i * dim + d) = particle_mass[i];
-    transfer.add_transpose(nodal_force, mass);
-    std::uint64_t n_massless = 0;
-    for (unsigned int k = 0; k < mass.locally_owned_size(); ++k)
-      n_massless += (mass.local_element(k) <= 0.);
-    n_massless = Utilities::MPI::sum(n_massless, comm);
-    AssertThrow(n_massless == 0,
-                ExcMessage(std::to_string(n_massless) +
-                           " FE dofs carry no mass: their cells have 1 - beta = 0 at the nodes and "
-                           "no particles. Check <Coupling/Blending function> against "
-                           "<Discretization/Body>."));
+    method->lumped_masses(mass, particle_mass);
 
     // The time step: the smaller of the two regions' stable steps.
     const double fe_dt = fe.stable_time_step(&mass);
@@ -494,7 +491,6 @@ namespace perideal
                                 &particle_load,
                                 &pd.previous_load,
                                 &static_pd_load,
-                                &nodal_force,
                                 &prescribed,
                                 &target,
                                 &full_load})
@@ -554,56 +550,19 @@ namespace perideal
     fe.prescribe(pd.end_time, fe_target, V);
     fe.assemble_load(pd.end_time, fe_full_load);
 
-    CoupledStaticSolver<dim> solver(pd.static_settings);
-    solver.reinit(fe, ps, transfer, prescribed);
+    EquilibriumSettings<dim> settings;
+    settings.type                      = pd.solver_type;
+    settings.linear                    = pd.static_settings;
+    settings.relaxation.tolerance      = pd.relaxation_tolerance;
+    settings.relaxation.max_iterations = pd.relaxation_max_iterations;
+    settings.relaxation.length_scale   = pd.discretization.horizon;
+    settings.relaxation_safety         = pd.relaxation_safety;
+    method->initialize_equilibrium(prescribed, settings, condition_list);
     const bool relax = (pd.solver_type == SolverType::adaptive_dynamic_relaxation);
     if (is_root)
-      log << (relax ? "Adaptive dynamic relaxation: " : "Static solve: ") << solver.n_unknowns()
+      log << (relax ? "Adaptive dynamic relaxation: " : "Static solve: ") << method->n_unknowns()
           << " unknowns (FE dofs and free particle components), " << pd.load_steps
           << " load step(s)" << std::endl;
-
-    // Adaptive dynamic relaxation on the unknowns z of the static solve, with the model's own
-    // forces; its fictitious density comes from the Gershgorin bound of the linearized K.
-    ParticleVector                             z, z_target, z_force;
-    std::unique_ptr<AdaptiveDynamicRelaxation> relaxation;
-    AdaptiveDynamicRelaxation::Operations      operations;
-    double                                     factor = 0.;
-    if (relax)
-      {
-        for (ParticleVector *vec : {&z, &z_target, &z_force})
-          solver.reinit_unknowns(*vec);
-        solver.to_unknowns(fe_target, target, z_target);
-        const auto clear_prescribed = [&solver](ParticleVector &v) {
-          for (std::size_t k = 0; k < v.locally_owned_size(); ++k)
-            if (solver.is_prescribed(k))
-              v.local_element(k) = 0.;
-        };
-        operations.prescribe_displacement = [&](ParticleVector &zz) {
-          for (std::size_t k = 0; k < zz.locally_owned_size(); ++k)
-            if (solver.is_prescribed(k))
-              zz.local_element(k) = factor * z_target.local_element(k);
-        };
-        operations.clear_prescribed = clear_prescribed;
-        operations.residual = [&, clear_prescribed](ParticleVector &zz, ParticleVector &force) {
-          solver.from_unknowns(zz, U, pd.u);
-          model_forces(residual, false);
-          residual *= -1.;
-          solver.to_unknowns(residual, nodal_force, force);
-          clear_prescribed(force);
-        };
-        solver.assemble(*pd.material, condition_list);
-        std::vector<double> bound;
-        solver.row_bounds(bound);
-        ParticleVector density;
-        solver.reinit_unknowns(density);
-        AdaptiveDynamicRelaxation::fictitious_density(bound, 1, pd.relaxation_safety, density);
-        AdaptiveDynamicRelaxation::Settings settings;
-        settings.tolerance      = pd.relaxation_tolerance;
-        settings.max_iterations = pd.relaxation_max_iterations;
-        settings.length_scale   = pd.discretization.horizon;
-        relaxation =
-          std::make_unique<AdaptiveDynamicRelaxation>(operations, density, settings, comm);
-      }
 
     local_work = 0.;
     write_static_statistics(0, 0., 0, 0., false);
@@ -611,11 +570,11 @@ namespace perideal
     const auto &volume = ps.volumes();
     for (unsigned int step = 1; step <= pd.load_steps; ++step)
       {
-        factor           = double(step) / pd.load_steps;
-        previous_U       = U;
-        pd.previous_u    = pd.u;
-        previous_fe_load = fe_load;
-        pd.previous_load = particle_load;
+        const double factor = double(step) / pd.load_steps;
+        previous_U          = U;
+        pd.previous_u       = pd.u;
+        previous_fe_load    = fe_load;
+        pd.previous_load    = particle_load;
         static_fe_load.equ(factor, fe_full_load);
         static_pd_load.equ(factor, full_load);
 
@@ -629,23 +588,7 @@ namespace perideal
             for (unsigned int k = 0; k < n_owned * dim; ++k)
               if (prescribed.local_element(k) != 0.)
                 pd.u.local_element(k) = factor * target.local_element(k);
-            if (relaxation)
-              {
-                // ||F_ext|| over the free unknowns: the FE loads and the particle loads [N].
-                for (unsigned int i = 0; i < n_owned; ++i)
-                  for (unsigned int d = 0; d < dim; ++d)
-                    nodal_force.local_element(i * dim + d) =
-                      static_pd_load.local_element(i * dim + d) * volume[i];
-                solver.to_unknowns(static_fe_load, nodal_force, z_force);
-                operations.clear_prescribed(z_force);
-                solver.to_unknowns(U, pd.u, z);
-                const auto result = relaxation->solve(z, z_force.l2_norm());
-                iterations += result.iterations;
-                solver.from_unknowns(z, U, pd.u);
-              }
-            else
-              iterations +=
-                solver.solve(*pd.material, static_fe_load, static_pd_load, U, pd.u, condition_list);
+            iterations += method->solve_equilibrium(static_fe_load, static_pd_load, U, pd.u);
             // The model's own forces and energy density at the solution (breaks bonds).
             pd.material->compute_forces(ps,
                                         pd.u,
@@ -655,10 +598,12 @@ namespace perideal
             if (breaking_settled(ps, broken_before, step, passes))
               break;
           }
-        const double pd_energy =
-          relaxation ?
-            model_forces(residual, true) :
-            solver.forces(U, pd.u, static_fe_load, static_pd_load, residual, pd.internal_force);
+        const double pd_energy = method->equilibrium_forces(U,
+                                                            pd.u,
+                                                            static_fe_load,
+                                                            static_pd_load,
+                                                            residual,
+                                                            pd.internal_force);
 
         // The loads that do work: the applied ones, and on prescribed components the support
         // forces (the FE residual K z - F there; minus the internal force on particles).
@@ -688,7 +633,7 @@ namespace perideal
             log << "Load step " << step << "/" << pd.load_steps << ": " << passes + 1
                 << " solve(s), " << broken << " broken bonds";
             if (pd.show_progress)
-              log << ", " << iterations << (relaxation ? " relaxation" : " CG") << " iterations";
+              log << ", " << iterations << (relax ? " relaxation" : " CG") << " iterations";
             log << std::endl;
           }
         write_static_statistics(step, factor, iterations, pd_energy, step == pd.load_steps);
@@ -713,7 +658,12 @@ namespace perideal
             u_exact.local_element(i * dim + d) = exact_displacement->value(x[i], d);
         transfer.interpolate(U_exact, u_exact);
         u_exact.update_ghost_values();
-        solver.forces(U_exact, u_exact, static_fe_load, static_pd_load, fe_residual, force);
+        method->equilibrium_forces(U_exact,
+                                   u_exact,
+                                   static_fe_load,
+                                   static_pd_load,
+                                   fe_residual,
+                                   force);
         double largest = 0., scale = 0.;
         for (unsigned int k = 0; k < U_exact.locally_owned_size(); ++k)
           if (!mask[k])
@@ -739,39 +689,6 @@ namespace perideal
     pd.write_particles(pd.load_steps, 1.);
     if (pd.write_hdf5)
       fe.write_output(pd.output_directory, "solution", pd.load_steps, 1., U);
-  }
-
-  template <int dim>
-  double
-  CoupledProblem<dim>::model_forces(FEVector &fe_residual, const bool with_energy)
-  {
-    auto &ps = pd.particle_system;
-    pd.material->compute_forces(ps,
-                                pd.u,
-                                pd.internal_force,
-                                with_energy ? &pd.energy_density : nullptr,
-                                pd.critical_stretch);
-    const auto        &volume  = ps.volumes();
-    const unsigned int n_owned = ps.n_owned();
-    double             energy  = 0.;
-    for (unsigned int i = 0; i < n_owned; ++i)
-      {
-        for (unsigned int d = 0; d < dim; ++d)
-          {
-            const unsigned int k = i * dim + d;
-            nodal_force.local_element(k) =
-              (pd.internal_force.local_element(k) + static_pd_load.local_element(k)) * volume[i];
-          }
-        if (with_energy)
-          energy += pd.energy_density[i] * volume[i];
-      }
-    // K_FE U - f_FE - P^T (f_int + f_ext) of the slaved particles.
-    fe.stiffness_matrix().vmult(fe_residual, U);
-    fe_residual -= static_fe_load;
-    nodal_force *= -1.;
-    transfer.add_transpose(nodal_force, fe_residual);
-    nodal_force *= -1.;
-    return Utilities::MPI::sum(energy, comm);
   }
 
   template <int dim>

@@ -9,7 +9,7 @@
 
 #include <perideal/base/energy_balance.h>
 #include <perideal/base/statistics_file.h>
-#include <perideal/coupling/coupled_static_solver.h>
+#include <perideal/coupling/coupling_method.h>
 #include <perideal/coupling/transfer_operator.h>
 #include <perideal/fem/fe_solid.h>
 #include <perideal/pd/pd_problem.h>
@@ -89,16 +89,6 @@ namespace perideal
                             const double       pd_energy,
                             const bool         final_row);
     /**
-     * @brief Quasi-static runs: the forces of the state (U, pd.u) with the model's own forces
-     * (bonds over the critical stretch break) under the current loads: @p fe_residual = K_FE U -
-     * f_FE - P^T (V (f_int + f_ext)) of the slaved particles (the sign of
-     * CoupledStaticSolver::forces()), pd.internal_force, and in nodal_force the particles'
-     * unbalanced force V (f_int + f_ext) [N]. Returns the particles' strain energy if
-     * @p with_energy (0 otherwise).
-     */
-    double
-    model_forces(FEVector &fe_residual, const bool with_energy);
-    /**
      * @brief Forces and accelerations of both regions at @p time (P U into the slaved
      * particles first); the particles' energy density only if @p with_energy.
      */
@@ -128,6 +118,8 @@ namespace perideal
     PDProblem<dim>                               pd;
     FESolid<dim>                                 fe;
     TransferOperator<dim>                        transfer;
+    std::string                                  method_name;
+    std::unique_ptr<CouplingMethod<dim>>         method;
     std::string                                  blending_expression;
     std::unique_ptr<dealii::FunctionParser<dim>> beta;
     std::unique_ptr<dealii::FunctionParser<dim>> exact_displacement;

@@ -1,0 +1,171 @@
+// ---------------------------------------------------------------------
+// PeriDeal: the interface of the methods that join an FE region and particles.
+// ---------------------------------------------------------------------
+#ifndef perideal_coupling_coupling_method_h
+#define perideal_coupling_coupling_method_h
+
+#include <deal.II/base/parameter_handler.h>
+#include <deal.II/lac/la_parallel_vector.h>
+
+#include <perideal/base/plugin_registry.h>
+#include <perideal/coupling/transfer_operator.h>
+#include <perideal/fem/fe_solid.h>
+#include <perideal/pd/adaptive_dynamic_relaxation.h>
+#include <perideal/pd/material_model.h>
+#include <perideal/pd/particle_system.h>
+#include <perideal/pd/pd_problem.h>
+#include <perideal/pd/static_solver.h>
+
+#include <string>
+#include <vector>
+
+namespace perideal
+{
+  /**
+   * @brief What a coupling method works on, owned by CoupledProblem: the FE region, the
+   * particles and their model, and the transfer operator P between them (particles in cells
+   * with FE unknowns are slaved to the FE field, the others free).
+   */
+  template <int dim>
+  struct CoupledRegions
+  {
+    const FESolid<dim>          *fe        = nullptr;
+    ParticleSystem<dim>         *particles = nullptr;
+    MaterialModel<dim>          *material  = nullptr;
+    const TransferOperator<dim> *transfer  = nullptr;
+    /// The particles' mass density [kg/m^3].
+    double density = 0.;
+    /// The horizon [m].
+    double horizon = 0.;
+    /// The critical stretch of the damage model (infinite without damage).
+    double critical_stretch = 0.;
+  };
+
+  /**
+   * @brief How a quasi-static solve finds equilibrium (<Solver>).
+   */
+  template <int dim>
+  struct EquilibriumSettings
+  {
+    /// static or adaptive dynamic relaxation.
+    SolverType type = SolverType::static_linear;
+    /// The linear solver of the static type.
+    typename StaticSolver<dim>::Settings linear;
+    /// Tolerance and iterations of adaptive dynamic relaxation.
+    AdaptiveDynamicRelaxation::Settings relaxation;
+    /// Safety factor on the fictitious density of adaptive dynamic relaxation.
+    double relaxation_safety = 1.;
+  };
+
+  /**
+   * @brief A method that joins the FE region and the particles of a CoupledProblem
+   * (<Coupling/Method>): it decides how the two energies share the overlap, the masses, and how
+   * a quasi-static load step reaches equilibrium.
+   *
+   * The solvers of CoupledProblem (the explicit time loop, the quasi-static load stepping with
+   * re-solves while bonds break, the statistics, reactions and output) call only this
+   * interface, so a method plugs in through the registry (PERIDEAL_REGISTER_COUPLING_METHOD)
+   * without a change to them. The overlap is given by <Coupling/Blending function> beta(x)
+   * (1: PD only, 0: FE only); particles exist where the method's particle weight is positive
+   * and within a horizon of such points, FE unknowns where its FE weight is positive.
+   *
+   * One object per run; the virtual calls are per solve or per time step, never per bond.
+   */
+  template <int dim>
+  class CouplingMethod
+  {
+  public:
+    using FEVector = dealii::LinearAlgebra::distributed::Vector<double>;
+
+    virtual ~CouplingMethod() = default;
+
+    /// Read the method's subsection <Coupling/name> (entered by the caller); none by default.
+    virtual void
+    parse_parameters(dealii::ParameterHandler &)
+    {}
+
+    /**
+     * @brief Stop with a message naming <Solver/Type> if the method cannot run @p type; every
+     * type by default.
+     */
+    virtual void
+    check_solver(const SolverType) const
+    {}
+
+    /// The weight of the FE energy density at a point whose overlap value is @p beta.
+    virtual double
+    fe_weight(const double beta) const = 0;
+
+    /// The weight of a particle's energy (and mass) at a point whose overlap value is @p beta.
+    virtual double
+    particle_weight(const double beta) const = 0;
+
+    /**
+     * @brief Build what the method needs once the FE region (set up with fe_weight()) and the
+     * particles (with particle_weight() as energy weights) exist.
+     */
+    virtual void
+    initialize(const CoupledRegions<dim> &regions) = 0;
+
+    /// What initialize() did, for the log line "Coupling: <name>, <summary>".
+    virtual std::string
+    summary() const = 0;
+
+    /**
+     * @brief Explicit dynamics: the lumped masses of the FE dofs (@p fe_mass, sized like the FE
+     * vectors) and of the owned particles (@p particle_mass, used for free particles).
+     */
+    virtual void
+    lumped_masses(FEVector &fe_mass, std::vector<double> &particle_mass) const = 0;
+
+    /**
+     * @brief Quasi-static runs: prepare the equilibrium solves. @p particle_prescribed holds
+     * 1 on the prescribed components of owned free particles; the prescribed FE dofs are
+     * FESolid::prescribed_mask().
+     */
+    virtual void
+    initialize_equilibrium(const ParticleVector           &particle_prescribed,
+                           const EquilibriumSettings<dim> &settings,
+                           const std::string              &conditions) = 0;
+
+    /// Number of unknowns of the equilibrium solves (all ranks), for the log.
+    virtual dealii::types::global_dof_index
+    n_unknowns() const = 0;
+
+    /**
+     * @brief The equilibrium of the FE load @p f_fe (FESolid::assemble_load()) and the particle
+     * force density @p f_pd [N/m^3]. On entry @p U and @p u hold the prescribed values and the
+     * initial guess (owned entries); on exit the solution with ghost values, slaved particles
+     * included. Bonds may break on the way. Returns the number of iterations.
+     */
+    virtual unsigned int
+    solve_equilibrium(const FEVector       &f_fe,
+                      const ParticleVector &f_pd,
+                      FEVector             &U,
+                      ParticleVector       &u) = 0;
+
+    /**
+     * @brief The forces of the state (@p U, @p u) under the loads @p f_fe, @p f_pd, in the
+     * method's model of equilibrium: @p fe_residual = K_FE U - f_FE - P^T (particle forces) on
+     * the FE dofs (on prescribed dofs the force the supports exert, as FESolid::reactions()
+     * expects), @p pd_force the particles' internal force density (owned entries). Returns the
+     * particles' strain energy [J].
+     */
+    virtual double
+    equilibrium_forces(const FEVector       &U,
+                       const ParticleVector &u,
+                       const FEVector       &f_fe,
+                       const ParticleVector &f_pd,
+                       FEVector             &fe_residual,
+                       ParticleVector       &pd_force) = 0;
+  };
+} // namespace perideal
+
+/**
+ * Register the coupling method @p classname (a template in dim) under @p name.
+ */
+#define PERIDEAL_REGISTER_COUPLING_METHOD(classname, name, description)                    \
+  PERIDEAL_REGISTER_PLUGIN(::perideal::CouplingMethod<2>, classname<2>, name, description) \
+  PERIDEAL_REGISTER_PLUGIN(::perideal::CouplingMethod<3>, classname<3>, name, description)
+
+#endif

@@ -1,0 +1,232 @@
+// ---------------------------------------------------------------------
+// PeriDeal: energy blending of the FE region and the particles in the overlap.
+// ---------------------------------------------------------------------
+#include <perideal/coupling/blended_coupling.h>
+
+#include <cmath>
+
+namespace perideal
+{
+  using namespace dealii;
+
+  template <int dim>
+  void
+  BlendedCoupling<dim>::declare_parameters(ParameterHandler &)
+  {}
+
+  template <int dim>
+  double
+  BlendedCoupling<dim>::fe_weight(const double beta) const
+  {
+    return 1. - beta;
+  }
+
+  template <int dim>
+  double
+  BlendedCoupling<dim>::particle_weight(const double beta) const
+  {
+    return beta;
+  }
+
+  template <int dim>
+  void
+  BlendedCoupling<dim>::initialize(const CoupledRegions<dim> &coupled_regions)
+  {
+    regions = coupled_regions;
+  }
+
+  template <int dim>
+  std::string
+  BlendedCoupling<dim>::summary() const
+  {
+    const auto n_slaved = regions.transfer->n_global_slaved();
+    return std::to_string(n_slaved) + " particles slaved to the FE field, " +
+           std::to_string(regions.particles->n_global() - n_slaved) + " free";
+  }
+
+  template <int dim>
+  void
+  BlendedCoupling<dim>::lumped_masses(FEVector &fe_mass, std::vector<double> &particle_mass) const
+  {
+    // Particles: beta_i rho V_i. FE: the lumped (1 - beta) rho plus P^T of the slaved
+    // particles' masses.
+    const auto        &particles = *regions.particles;
+    const auto        &volume    = particles.volumes();
+    const auto        &weights   = particles.energy_weights();
+    const unsigned int n_owned   = particles.n_owned();
+    particle_mass.assign(n_owned, 0.);
+    ParticleVector slaved_mass;
+    particles.reinit_vector(slaved_mass, dim);
+    for (unsigned int i = 0; i < n_owned; ++i)
+      {
+        particle_mass[i] = weights[i] * regions.density * volume[i];
+        if (regions.transfer->is_slaved(i))
+          for (unsigned int d = 0; d < dim; ++d)
+            slaved_mass.local_element(i * dim + d) = particle_mass[i];
+      }
+    fe_mass = regions.fe->lumped_mass();
+    regions.transfer->add_transpose(slaved_mass, fe_mass);
+    std::uint64_t n_massless = 0;
+    for (unsigned int k = 0; k < fe_mass.locally_owned_size(); ++k)
+      n_massless += (fe_mass.local_element(k) <= 0.);
+    n_massless = Utilities::MPI::sum(n_massless, particles.get_communicator());
+    AssertThrow(n_massless == 0,
+                ExcMessage(std::to_string(n_massless) +
+                           " FE dofs carry no mass: their cells have 1 - beta = 0 at the nodes and "
+                           "no particles. Check <Coupling/Blending function> against "
+                           "<Discretization/Body>."));
+  }
+
+  template <int dim>
+  void
+  BlendedCoupling<dim>::initialize_equilibrium(const ParticleVector           &particle_prescribed,
+                                               const EquilibriumSettings<dim> &settings,
+                                               const std::string              &condition_list)
+  {
+    conditions    = condition_list;
+    static_solver = std::make_unique<CoupledStaticSolver<dim>>(settings.linear);
+    static_solver->reinit(*regions.fe, *regions.particles, *regions.transfer, particle_prescribed);
+    relaxation.reset();
+    if (settings.type != SolverType::adaptive_dynamic_relaxation)
+      return;
+
+    // Adaptive dynamic relaxation of the unknowns z of the static solve with the model's own
+    // forces; its fictitious density is the Gershgorin bound of the linearized K.
+    for (ParticleVector *vec : {&z, &z_prescribed, &z_force})
+      static_solver->reinit_unknowns(*vec);
+    regions.particles->reinit_vector(nodal_force, dim);
+    regions.particles->reinit_vector(pd_work, dim);
+    regions.particles->reinit_vector(particle_state, dim);
+    regions.fe->initialize_vector(fe_work);
+    regions.fe->initialize_vector(fe_state);
+    const auto clear_prescribed = [this](ParticleVector &v) {
+      for (std::size_t k = 0; k < v.locally_owned_size(); ++k)
+        if (static_solver->is_prescribed(k))
+          v.local_element(k) = 0.;
+    };
+    relaxation_operations.clear_prescribed       = clear_prescribed;
+    relaxation_operations.prescribe_displacement = [this](ParticleVector &zz) {
+      for (std::size_t k = 0; k < zz.locally_owned_size(); ++k)
+        if (static_solver->is_prescribed(k))
+          zz.local_element(k) = z_prescribed.local_element(k);
+    };
+    relaxation_operations.residual = [this, clear_prescribed](ParticleVector &zz,
+                                                              ParticleVector &force) {
+      static_solver->from_unknowns(zz, fe_state, particle_state);
+      model_forces(fe_state,
+                   particle_state,
+                   *current_fe_load,
+                   *current_pd_load,
+                   fe_work,
+                   pd_work,
+                   false);
+      fe_work *= -1.;
+      static_solver->to_unknowns(fe_work, nodal_force, force);
+      clear_prescribed(force);
+    };
+    static_solver->assemble(*regions.material, conditions);
+    std::vector<double> bound;
+    static_solver->row_bounds(bound);
+    ParticleVector density;
+    static_solver->reinit_unknowns(density);
+    AdaptiveDynamicRelaxation::fictitious_density(bound, 1, settings.relaxation_safety, density);
+    relaxation = std::make_unique<AdaptiveDynamicRelaxation>(relaxation_operations,
+                                                             density,
+                                                             settings.relaxation,
+                                                             regions.particles->get_communicator());
+  }
+
+  template <int dim>
+  types::global_dof_index
+  BlendedCoupling<dim>::n_unknowns() const
+  {
+    return static_solver->n_unknowns();
+  }
+
+  template <int dim>
+  unsigned int
+  BlendedCoupling<dim>::solve_equilibrium(const FEVector       &f_fe,
+                                          const ParticleVector &f_pd,
+                                          FEVector             &U,
+                                          ParticleVector       &u)
+  {
+    if (!relaxation)
+      return static_solver->solve(*regions.material, f_fe, f_pd, U, u, conditions);
+
+    // ||F_ext|| over the free unknowns: the FE loads and the particle loads [N].
+    const auto &volume = regions.particles->volumes();
+    for (unsigned int i = 0; i < regions.particles->n_owned(); ++i)
+      for (unsigned int d = 0; d < dim; ++d)
+        nodal_force.local_element(i * dim + d) = f_pd.local_element(i * dim + d) * volume[i];
+    static_solver->to_unknowns(f_fe, nodal_force, z_force);
+    relaxation_operations.clear_prescribed(z_force);
+    static_solver->to_unknowns(U, u, z);
+    z_prescribed      = z;
+    current_fe_load   = &f_fe;
+    current_pd_load   = &f_pd;
+    const auto result = relaxation->solve(z, z_force.l2_norm());
+    static_solver->from_unknowns(z, U, u);
+    return result.iterations;
+  }
+
+  template <int dim>
+  double
+  BlendedCoupling<dim>::equilibrium_forces(const FEVector       &U,
+                                           const ParticleVector &u,
+                                           const FEVector       &f_fe,
+                                           const ParticleVector &f_pd,
+                                           FEVector             &fe_residual,
+                                           ParticleVector       &pd_force)
+  {
+    if (relaxation)
+      return model_forces(U, u, f_fe, f_pd, fe_residual, pd_force, true);
+    return static_solver->forces(U, u, f_fe, f_pd, fe_residual, pd_force);
+  }
+
+  template <int dim>
+  double
+  BlendedCoupling<dim>::model_forces(const FEVector       &U,
+                                     const ParticleVector &u,
+                                     const FEVector       &f_fe,
+                                     const ParticleVector &f_pd,
+                                     FEVector             &fe_residual,
+                                     ParticleVector       &pd_force,
+                                     const bool            with_energy)
+  {
+    auto &particles = *regions.particles;
+    regions.material->compute_forces(particles,
+                                     u,
+                                     pd_force,
+                                     with_energy ? &energy_density : nullptr,
+                                     regions.critical_stretch);
+    const auto        &volume  = particles.volumes();
+    const unsigned int n_owned = particles.n_owned();
+    double             energy  = 0.;
+    for (unsigned int i = 0; i < n_owned; ++i)
+      {
+        for (unsigned int d = 0; d < dim; ++d)
+          {
+            const unsigned int k = i * dim + d;
+            nodal_force.local_element(k) =
+              (pd_force.local_element(k) + f_pd.local_element(k)) * volume[i];
+          }
+        if (with_energy)
+          energy += energy_density[i] * volume[i];
+      }
+    // K_FE U - f_FE - P^T (f_int + f_ext) of the slaved particles.
+    regions.fe->stiffness_matrix().vmult(fe_residual, U);
+    fe_residual -= f_fe;
+    nodal_force *= -1.;
+    regions.transfer->add_transpose(nodal_force, fe_residual);
+    nodal_force *= -1.;
+    return Utilities::MPI::sum(energy, particles.get_communicator());
+  }
+
+  template class BlendedCoupling<2>;
+  template class BlendedCoupling<3>;
+} // namespace perideal
+
+PERIDEAL_REGISTER_COUPLING_METHOD(perideal::BlendedCoupling,
+                                  "blended",
+                                  "energy blending in the overlap, particles there slaved to the "
+                                  "FE field; explicit, static and adaptive dynamic relaxation.")
