@@ -829,6 +829,7 @@ namespace perideal
         log << std::flush;
         log.flags(flags);
       }
+    pd.log_probes();
   }
 
   template <int dim>
@@ -948,6 +949,8 @@ namespace perideal
         log << std::flush;
         log.flags(flags);
       }
+    if (final_row)
+      pd.log_probes();
   }
 
   template <int dim>
