@@ -855,11 +855,8 @@ namespace perideal
                       "<Output/Probe points>: the point (" + point.str() +
                       ") has no particle within one lattice spacing (" +
                       ParameterUtilities::format_number(discretization.spacing) +
-                      " m); the nearest is " +
-                      (distance == std::numeric_limits<double>::max() ?
-                         std::string("none") :
-                         ParameterUtilities::format_number(distance) + " m away") +
-                      ". Put each probe on the particles of <Discretization/Body> (coupled "
+                      " m); the nearest is " + ParameterUtilities::format_number(distance) +
+                      " m away. Put each probe on the particles of <Discretization/Body> (coupled "
                       "runs: the PD region and its overlap)."));
         for (unsigned int d = 0; d < dim; ++d)
           probe_particles[p][d] = all[best][p * width + d + 1];
