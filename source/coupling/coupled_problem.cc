@@ -842,6 +842,7 @@ namespace perideal
         log << std::flush;
         log.flags(flags);
       }
+    pd.log_probes();
   }
 
   template <int dim>
@@ -961,6 +962,8 @@ namespace perideal
         log << std::flush;
         log.flags(flags);
       }
+    if (final_row)
+      pd.log_probes();
   }
 
   template <int dim>

@@ -9,6 +9,7 @@
 #include <perideal/pd/explicit_solver.h>
 #include <perideal/pd/pd_problem.h>
 
+#include <algorithm>
 #include <array>
 #include <chrono>
 #include <cmath>
@@ -16,6 +17,7 @@
 #include <iomanip>
 #include <limits>
 #include <map>
+#include <sstream>
 
 namespace perideal
 {
@@ -237,6 +239,13 @@ namespace perideal
     prm.declare_entry("Write HDF5", "true", Patterns::Bool(), "Particle fields as HDF5 + XDMF.");
     prm.declare_entry("Write VTU", "false", Patterns::Bool(), "Particle fields as VTU + PVD.");
     prm.declare_entry("Progress", "true", Patterns::Bool(), "Print progress and timing lines.");
+    prm.declare_entry("Probe points",
+                      "",
+                      Patterns::Anything(),
+                      "Points (coordinates separated by ',', points by ';') whose nearest "
+                      "particle's displacement the final summary prints, in micrometres (um). "
+                      "Each point needs a particle within one lattice spacing (coupled runs: in "
+                      "the PD region or its overlap). Empty: none.");
     prm.leave_subsection();
   }
 
@@ -345,6 +354,10 @@ namespace perideal
     write_hdf5          = prm.get_bool("Write HDF5");
     write_vtu           = prm.get_bool("Write VTU");
     show_progress       = prm.get_bool("Progress");
+    probe_points.clear();
+    for (const auto &item : Utilities::split_string_list(prm.get("Probe points"), ';'))
+      if (!item.empty())
+        probe_points.push_back(ParameterUtilities::parse_point<dim>(item, "Output/Probe points"));
     prm.leave_subsection();
   }
 
@@ -377,6 +390,7 @@ namespace perideal
     critical_stretch = damage->critical_stretch(*material);
 
     boundary_conditions.setup(particle_system);
+    locate_probes();
 
     stable_dt = material->stable_time_step(particle_system, density);
     dt        = ParameterUtilities::choose_time_step(requested_time_step, safety_factor, stable_dt);
@@ -790,6 +804,92 @@ namespace perideal
           }
         log << std::defaultfloat;
       }
+    if (step > 0 && final_row)
+      log_probes();
+  }
+
+  template <int dim>
+  void
+  PDProblem<dim>::locate_probes()
+  {
+    // Per probe and rank: the distance to the nearest owned particle, then its coordinates.
+    const unsigned int        n_probes = probe_points.size(), width = dim + 1;
+    const unsigned int        n_owned = particle_system.n_owned();
+    const auto               &x       = particle_system.positions();
+    std::vector<double>       nearest(n_probes * width, std::numeric_limits<double>::max());
+    std::vector<unsigned int> nearest_index(n_probes, numbers::invalid_unsigned_int);
+    for (unsigned int p = 0; p < n_probes; ++p)
+      for (unsigned int i = 0; i < n_owned; ++i)
+        {
+          std::array<double, dim + 1> candidate;
+          candidate[0] = x[i].distance(probe_points[p]);
+          for (unsigned int d = 0; d < dim; ++d)
+            candidate[d + 1] = x[i][d];
+          if (std::lexicographical_compare(candidate.begin(),
+                                           candidate.end(),
+                                           nearest.begin() + p * width,
+                                           nearest.begin() + (p + 1) * width))
+            {
+              std::copy(candidate.begin(), candidate.end(), nearest.begin() + p * width);
+              nearest_index[p] = i;
+            }
+        }
+    const auto all = Utilities::MPI::all_gather(communicator, nearest);
+    const auto me  = Utilities::MPI::this_mpi_process(communicator);
+
+    probe_particles.resize(n_probes);
+    probe_local_index.assign(n_probes, numbers::invalid_unsigned_int);
+    for (unsigned int p = 0; p < n_probes; ++p)
+      {
+        unsigned int best = 0;
+        for (unsigned int r = 1; r < all.size(); ++r)
+          if (std::lexicographical_compare(all[r].begin() + p * width,
+                                           all[r].begin() + (p + 1) * width,
+                                           all[best].begin() + p * width,
+                                           all[best].begin() + (p + 1) * width))
+            best = r;
+        const double       distance = all[best][p * width];
+        std::ostringstream point;
+        point << probe_points[p];
+        AssertThrow(distance <= discretization.spacing,
+                    ExcMessage(
+                      "<Output/Probe points>: the point (" + point.str() +
+                      ") has no particle within one lattice spacing (" +
+                      ParameterUtilities::format_number(discretization.spacing) +
+                      " m); the nearest is " + ParameterUtilities::format_number(distance) +
+                      " m away. Put each probe on the particles of <Discretization/Body> (coupled "
+                      "runs: the PD region and its overlap)."));
+        for (unsigned int d = 0; d < dim; ++d)
+          probe_particles[p][d] = all[best][p * width + d + 1];
+        if (best == me)
+          probe_local_index[p] = nearest_index[p];
+      }
+  }
+
+  template <int dim>
+  void
+  PDProblem<dim>::log_probes() const
+  {
+    std::vector<double> values(probe_points.size() * dim, 0.);
+    for (unsigned int p = 0; p < probe_points.size(); ++p)
+      if (probe_local_index[p] != numbers::invalid_unsigned_int)
+        for (unsigned int d = 0; d < dim; ++d)
+          values[p * dim + d] = u.local_element(probe_local_index[p] * dim + d);
+    Utilities::MPI::sum(values, communicator, values);
+    if (!is_root)
+      return;
+    const auto flags = log.flags();
+    for (unsigned int p = 0; p < probe_points.size(); ++p)
+      {
+        log << std::defaultfloat << "Probe " << p + 1 << " (" << probe_points[p]
+            << "): particle at (" << probe_particles[p]
+            << "), displacement [um]:" << std::scientific << std::setprecision(6);
+        for (unsigned int d = 0; d < dim; ++d)
+          log << ' ' << 1e6 * values[p * dim + d];
+        log << '\n';
+      }
+    log << std::flush;
+    log.flags(flags);
   }
 
   template <int dim>

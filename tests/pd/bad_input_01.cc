@@ -89,4 +89,7 @@ main(int argc, char **argv)
         "end\nend\n");
   check("damage without energy",
         "subsection Material\n set Damage model = critical stretch\nend\n");
+  check("probe point with one coordinate", "subsection Output\n set Probe points = 0.01\nend\n");
+  check("probe point off the particles",
+        "subsection Output\n set Probe points = 0.01, 0.005; 0.01, 0.0125\nend\n");
 }

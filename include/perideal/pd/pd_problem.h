@@ -156,6 +156,21 @@ namespace perideal
     write_statistics(const unsigned int step, const double time, const bool final_row);
     void
     write_particles(const unsigned int step, const double time);
+    /**
+     * @brief Find the particle nearest to each of <Output/Probe points> (ties go to the
+     * lexicographically smallest position, so the choice does not depend on the partition);
+     * throws, naming the entry, if a point has no particle within one lattice spacing.
+     * Collective.
+     */
+    void
+    locate_probes();
+    /**
+     * @brief Print the displacement of each probe's particle (rank 0, in micrometres: the final
+     * summaries' values that application tests compare must lie above numdiff's absolute
+     * tolerance of 1e-6). Collective.
+     */
+    void
+    log_probes() const;
 
     MPI_Comm      communicator;
     std::ostream &log;
@@ -178,6 +193,7 @@ namespace perideal
     double                                       end_time = 0., requested_time_step = 0.;
     double                                       safety_factor = 0.8, damping = 0.;
     std::string                                  output_directory, base_name;
+    std::vector<dealii::Point<dim>>              probe_points;
     unsigned int                                 particle_interval = 0, statistics_interval = 1;
     bool                                 write_hdf5 = true, write_vtu = false, show_progress = true;
     SolverType                           solver_type               = SolverType::explicit_dynamics;
@@ -199,6 +215,10 @@ namespace perideal
     ParticleVector                       previous_u, previous_load;
     std::unique_ptr<StatisticsFile>      statistics;
     std::unique_ptr<ParticleOutput<dim>> particle_output;
+    // Per probe: the position of its particle, and the particle's local index on the rank that
+    // owns it (numbers::invalid_unsigned_int elsewhere).
+    std::vector<dealii::Point<dim>> probe_particles;
+    std::vector<unsigned int>       probe_local_index;
   };
 } // namespace perideal
 
