@@ -85,6 +85,15 @@ namespace perideal
   {
     pd.parse_parameters(prm);
     fe.parse_parameters(prm, pd.planar, pd.discretization.thickness);
+    // One body force for the whole body: the particles take it with their weights beta_i
+    // (BoundaryConditions::add_loads), the FE region with 1 - beta (FESolid's load).
+    AssertThrow(!fe.has_body_force(),
+                ExcMessage("<Finite elements/Body force/Function> is set in a coupled FE-PD run; "
+                           "give the body force once, in <Body force/Function>: it acts on the "
+                           "whole body, weighted by 1 - beta on the FE region and by beta on the "
+                           "particles. Leave <Finite elements/Body force/Function> at 0."));
+    if (const auto body_force = pd.boundary_conditions.body_force_function())
+      fe.set_body_force(body_force);
     prm.enter_subsection("Coupling");
     method_name = prm.get("Method");
     method      = PluginRegistry<CouplingMethod<dim>>::create(method_name, "Coupling/Method");

@@ -287,12 +287,12 @@ namespace perideal
     C = material.tensor<dim>(planar);
     prm.enter_subsection("Body force");
     const std::string body_force_expression = prm.get("Function");
-    body_force     = ParameterUtilities::make_function<dim>(body_force_expression,
+    body_force         = ParameterUtilities::make_function<dim>(body_force_expression,
                                                         dim,
                                                         section + "/Body force/Function");
-    has_body_force = false;
+    nonzero_body_force = false;
     for (const auto &part : Utilities::split_string_list(body_force_expression, ';'))
-      has_body_force = has_body_force || (part != "0");
+      nonzero_body_force = nonzero_body_force || (part != "0");
     prm.leave_subsection();
 
     condition_list.clear();
@@ -365,8 +365,15 @@ namespace perideal
   FESolid<dim>::set_body_force(const std::shared_ptr<Function<dim>> &function)
   {
     AssertDimension(function->n_components, dim);
-    body_force     = function;
-    has_body_force = true;
+    body_force         = function;
+    nonzero_body_force = true;
+  }
+
+  template <int dim>
+  bool
+  FESolid<dim>::has_body_force() const
+  {
+    return nonzero_body_force;
   }
 
   template <int dim>
@@ -560,7 +567,7 @@ namespace perideal
     dealii::Vector<double> value(dim);
     for (const unsigned int q : fe_values.quadrature_point_indices())
       {
-        if (!has_body_force)
+        if (!nonzero_body_force)
           break;
         const Point<dim> &x = fe_values.quadrature_point(q);
         const double      w = weight(x) * thickness * fe_values.JxW(q);
@@ -643,7 +650,7 @@ namespace perideal
       std::any_of(condition_list.begin(), condition_list.end(), [](const Condition &c) {
         return c.type == ConditionType::traction;
       });
-    if (!has_body_force && !has_traction)
+    if (!nonzero_body_force && !has_traction)
       {
         f = 0.;
         return;

@@ -221,11 +221,19 @@ namespace perideal
         }
     if (has_body_force)
       {
+        const auto &weight = particle_system->energy_weights();
         body_force->set_time(time);
         for (unsigned int i = 0; i < particle_system->n_owned(); ++i)
           for (unsigned int d = 0; d < dim; ++d)
-            force.local_element(i * dim + d) += body_force->value(x[i], d);
+            force.local_element(i * dim + d) += weight[i] * body_force->value(x[i], d);
       }
+  }
+
+  template <int dim>
+  std::shared_ptr<Function<dim>>
+  BoundaryConditions<dim>::body_force_function() const
+  {
+    return has_body_force ? body_force : nullptr;
   }
 
   template <int dim>

@@ -2,11 +2,12 @@
 // Bad input of a coupled problem: a valid file is accepted; each bad case stops with a message
 // naming the entry, before the time stepping starts: a blending function outside [0, 1], an overlap
 // narrower than the horizon, particles outside the mesh, a PD condition on particles that follow
-// the FE field, two FE conditions on the same component of a boundary. A state-based model is
-// accepted (its energy is blended through the particles' weights). Quasi-static solves (run as
-// well): a valid file is solved statically and by adaptive dynamic relaxation; an FE velocity
-// condition, a component that no condition holds, and an exact-displacement tolerance without
-// the exact field are refused.
+// the FE field, two FE conditions on the same component of a boundary, a body force in
+// <Finite elements> (a coupled run takes the body force of <Body force> only). A state-based
+// model is accepted (its energy is blended through the particles' weights). Quasi-static solves
+// (run as well): a valid file is solved statically and by adaptive dynamic relaxation; an FE
+// velocity condition, a component that no condition holds, and an exact-displacement tolerance
+// without the exact field are refused.
 // ---------------------------------------------------------------------
 #include <deal.II/base/parameter_handler.h>
 
@@ -65,6 +66,7 @@ subsection Finite elements
   set Generator           = subdivided_hyper_rectangle
   set Generator arguments = 20, 10 : 0, 0 : 0.1, 0.05 : true
   set Density             = 7800
+FE_EXTRA
   subsection Elasticity
     set Young's modulus = 200e9
     set Poisson's ratio = 0.3333333333333333
@@ -112,6 +114,7 @@ end
                                                  {"PD_BLOCK", ""},
                                                  {"FE_CONDITIONS", "left"},
                                                  {"FE_BLOCK", ""},
+                                                 {"FE_EXTRA", ""},
                                                  {"BETA", "min(1, max(0, (x - 0.04) / 0.01))"},
                                                  {"SOLVER", "explicit"},
                                                  {"LEFT_EXTRA", ""},
@@ -177,6 +180,8 @@ main(int argc, char **argv)
             {"FE_BLOCK",
              "    subsection left again\n      set Boundary ids = 0\n      set Components = y\n"
              "    end"}});
+  run_case("FE body force in a coupled run",
+           {{"FE_EXTRA", "  subsection Body force\n    set Function = 0; -1e6\n  end"}});
   run_case("valid input, state-based model", {{"MODEL", "linear peridynamic solid"}});
   run_case("relaxation solver", {{"SOLVER", "adaptive dynamic relaxation"}});
   run_case("static solver", {{"SOLVER", "static"}});

@@ -21,7 +21,12 @@ run() { # name ux uy W dx ncells
   echo "| $1 | $(python3 -c "print(f'{$4*1e3:g}')") | $(python3 -c "print(f'{$5*1e3:g}')") | $h | $abs | $rel |"
 }
 run translation "1e-6 + 0*x" "2e-6 + 0*y" 0.01 1e-3 25
-run "rotation 1e-6 rad" "-1e-6*(y-0.05)" "1e-6*(x-0.05)" 0.01 1e-3 25
+for theta in 1e-6 1e-4 1e-3; do
+  run "rotation $theta rad" "-$theta*(y-0.05)" "$theta*(x-0.05)" 0.01 1e-3 25
+done
+# The PD stretch of a rotation, sqrt(1 + theta^2) - 1 = theta^2 / 2, as a uniform dilatation
+# (FE and PD both strained: only the blending's ghost force remains).
+run "dilatation 5e-7" "5e-7*(x-0.05)" "5e-7*(y-0.05)" 0.01 1e-3 25
 for state in "tension:1e-4*x:0" "shear:1e-4*y:1e-4*x"; do
   IFS=: read -r name ux uy <<< "$state"
   for W in 0.005 0.01 0.02; do run "$name" "$ux" "$uy" $W 1e-3 25; done

@@ -116,6 +116,13 @@ namespace perideal
     set_body_force(const std::shared_ptr<dealii::Function<dim>> &function);
 
     /**
+     * @brief Whether a body force acts (<Finite elements/Body force/Function> is not zero, or
+     * set_body_force() was called).
+     */
+    bool
+    has_body_force() const;
+
+    /**
      * @brief Create the mesh, the FE space (FE_Nothing where @p weight is 0 on a whole cell),
      * the sparsity, the stiffness and the lumped mass. Without @p weight, the weight is 1.
      */
@@ -258,8 +265,8 @@ namespace perideal
     dealii::SymmetricTensor<4, dim>        C;
     std::vector<Condition>                 condition_list;
     std::shared_ptr<dealii::Function<dim>> body_force;
-    bool                                   has_body_force   = false;
-    double                                 solver_tolerance = 1e-10;
+    bool                                   nonzero_body_force = false;
+    double                                 solver_tolerance   = 1e-10;
     std::vector<std::pair<dealii::types::boundary_id, dealii::Point<2>>> circular_boundaries;
 
     // State.

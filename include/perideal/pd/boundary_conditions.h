@@ -28,6 +28,12 @@ namespace perideal
    *   the resultant is T times the area of the layer's face, to within the lattice resolution.
    * Functions are deal.II FunctionParser expressions of x, y, (z) and t. A component may be
    * prescribed by one condition only.
+   *
+   * The body force b(x, t) [N/m^3] ('Body force/Function') acts on every particle with the
+   * particle's energy weight (ParticleSystem::energy_weights(): 1 in a PD problem, beta_i in a
+   * blended coupled problem, whose FE region carries the rest, 1 - beta), so that the load is
+   * weighted like the energy and a body force is not counted twice in the overlap. Tractions act
+   * in full on the particles of their region.
    */
   template <int dim>
   class BoundaryConditions
@@ -69,9 +75,13 @@ namespace perideal
     /// Whether there is a body force or a traction condition.
     bool
     has_loads() const;
-    /// Add the body force and traction loads [N/m^3] at @p time to @p force.
+    /// Add the body force (times the energy weights) and traction loads [N/m^3] at @p time to
+    /// @p force.
     void
     add_loads(const double time, ParticleVector &force) const;
+    /// The body force b(x, t) of <Body force/Function>, or nullptr if it is zero.
+    std::shared_ptr<dealii::Function<dim>>
+    body_force_function() const;
     /// Whether component @p c of owned particle @p i is prescribed.
     bool
     is_prescribed(const unsigned int i, const unsigned int c) const
@@ -102,7 +112,7 @@ namespace perideal
     };
     std::vector<Condition>                       conditions;
     std::vector<std::string>                     condition_names;
-    std::unique_ptr<dealii::FunctionParser<dim>> body_force;
+    std::shared_ptr<dealii::FunctionParser<dim>> body_force;
     bool                                         has_body_force = false;
     std::vector<std::uint8_t>                    prescribed;
     const ParticleSystem<dim>                   *particle_system = nullptr;
