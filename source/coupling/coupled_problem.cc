@@ -686,13 +686,7 @@ namespace perideal
                                    volume[i]);
         for (const double sum : fe.absolute_row_sums(&U_exact))
           scale = std::max(scale, sum);
-        largest = Utilities::MPI::max(largest, comm);
-        scale   = Utilities::MPI::max(scale, comm);
-        if (is_root)
-          log << "Force residual of the exact field: " << largest
-              << " N (largest unbalanced nodal force at free dofs and particles), relative to "
-                 "the FE internal-force scale: "
-              << (scale > 0. ? largest / scale : 0.) << std::endl;
+        log_residual("Force residual of the exact field", largest, scale);
       }
 
     pd.write_particles(pd.load_steps, 1.);
@@ -876,12 +870,25 @@ namespace perideal
       for (unsigned int d = 0; d < dim; ++d)
         if (free_particle[i] && !pd.boundary_conditions.is_prescribed(i, d))
           residual_max = std::max(residual_max, std::abs(nodal_force.local_element(i * dim + d)));
-    residual_max = Utilities::MPI::max(residual_max, comm);
-    scale        = Utilities::MPI::max(scale, comm);
+    log_residual("Force residual at t = 0", residual_max, scale);
+  }
+
+  template <int dim>
+  void
+  CoupledProblem<dim>::log_residual(const std::string &what,
+                                    const double       local_largest,
+                                    const double       local_scale) const
+  {
+    const double largest  = Utilities::MPI::max(local_largest, comm);
+    const double scale    = Utilities::MPI::max(local_scale, comm);
+    const double relative = scale > 0. ? largest / scale : 0.;
+    // A residual below 1e-12 of the force scale is round-off: printed as 0 N (the ratio shows
+    // it), so that it reads the same on every rank count and build.
     if (is_root)
-      log << "Force residual at t = 0: " << residual_max << " N (largest unbalanced nodal force "
-          << "at free dofs and particles), relative to the FE internal-force scale: "
-          << (scale > 0. ? residual_max / scale : 0.) << std::endl;
+      log << what << ": " << (relative < 1e-12 ? 0. : largest)
+          << " N (largest unbalanced nodal force at free dofs and particles), relative to the FE "
+             "internal-force scale: "
+          << relative << std::endl;
   }
 
   template <int dim>

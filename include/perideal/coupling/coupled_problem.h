@@ -100,6 +100,15 @@ namespace perideal
      */
     void
     report_initial_residual();
+    /**
+     * @brief Print "@p what: R N ..., relative to the FE internal-force scale: R / S" with R, S
+     * the largest of @p local_largest and @p local_scale over the ranks (root only; R below
+     * 1e-12 S is round-off and printed as 0).
+     */
+    void
+    log_residual(const std::string &what,
+                 const double       local_largest,
+                 const double       local_scale) const;
     void
     write_statistics(const unsigned int step, const double time, const bool final_row);
     void
