@@ -447,6 +447,12 @@ namespace perideal
             }
       }
     dof_handler.distribute_dofs(fe_collection);
+    AssertThrow(dof_handler.n_dofs() > 0,
+                ExcMessage("No cell of the mesh of <Finite elements> carries FE unknowns: the FE "
+                           "energy weight (1 - <Coupling/Blending function>) vanishes on every "
+                           "cell, so the coupled problem has no FE part. Make beta smaller than "
+                           "1 where the FE region should be, or run the PD problem alone (no "
+                           "<Finite elements> section)."));
     owned_dofs = dof_handler.locally_owned_dofs();
     DoFTools::extract_locally_relevant_dofs(dof_handler, relevant_dofs);
     hanging_constraints.clear();

@@ -375,8 +375,13 @@ namespace perideal
                              pre_cracks,
                              regions.union_of(no_fail_regions, "Material/No-fail regions"));
     AssertThrow(particle_system.n_global() > 0,
-                ExcMessage("The body (<Discretization/Body>) holds no particle: its regions are "
-                           "smaller than the lattice spacing or empty."));
+                ExcMessage(keep ? "No particle lies in the PD region of the coupled problem: "
+                                  "<Coupling/Blending function> is 0 on the whole body "
+                                  "(<Discretization/Body>), so the problem has no PD part. "
+                                  "Make beta positive where the particles should be, or run "
+                                  "the FE problem alone (no particle sections)." :
+                                  "The body (<Discretization/Body>) holds no particle: its "
+                                  "regions are smaller than the lattice spacing or empty."));
 
     if (energy_weight)
       particle_system.set_energy_weights(energy_weight);
