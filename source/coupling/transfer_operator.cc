@@ -4,7 +4,6 @@
 #include <deal.II/base/bounding_box.h>
 #include <deal.II/base/mpi.h>
 #include <deal.II/fe/mapping_q1.h>
-#include <deal.II/grid/filtered_iterator.h>
 #include <deal.II/grid/grid_tools.h>
 #include <deal.II/grid/grid_tools_cache.h>
 #include <deal.II/lac/dynamic_sparsity_pattern.h>
@@ -13,11 +12,60 @@
 #include <perideal/base/parameter_utilities.h>
 #include <perideal/coupling/transfer_operator.h>
 
+#include <algorithm>
 #include <cmath>
+#include <optional>
 
 namespace perideal
 {
   using namespace dealii;
+
+  namespace
+  {
+    /**
+     * @brief Boxes that cover the locally owned cells: the cells' bounding boxes gathered into
+     * at most 4^dim tiles of the rank's bounding box (by cell centre), one box per non-empty
+     * tile. The owner guess of the point search tests every particle against every box of
+     * every rank; deal.II's boxes of the coarse cells (one per cell of an unrefined gmsh mesh)
+     * made it quadratic, and its merging of them is quadratic too.
+     */
+    template <int dim>
+    std::vector<BoundingBox<dim>>
+    owned_cell_boxes(const Triangulation<dim> &tria)
+    {
+      constexpr unsigned int        tiles = 4;
+      std::vector<BoundingBox<dim>> cell_boxes;
+      for (const auto &cell : tria.active_cell_iterators())
+        if (cell->is_locally_owned())
+          cell_boxes.push_back(cell->bounding_box());
+      if (cell_boxes.empty())
+        return {};
+      BoundingBox<dim> all = cell_boxes.front();
+      for (const auto &box : cell_boxes)
+        all.merge_with(box);
+      std::vector<std::optional<BoundingBox<dim>>> tile_box(Utilities::fixed_power<dim>(tiles));
+      for (const auto &box : cell_boxes)
+        {
+          const Point<dim> centre = box.center();
+          unsigned int     index  = 0;
+          for (unsigned int d = dim; d-- > 0;)
+            {
+              const double extent = all.side_length(d);
+              const double t = extent > 0. ? (centre[d] - all.lower_bound(d)) / extent * tiles : 0.;
+              index          = index * tiles + std::min(tiles - 1, static_cast<unsigned int>(t));
+            }
+          if (tile_box[index])
+            tile_box[index]->merge_with(box);
+          else
+            tile_box[index] = box;
+        }
+      std::vector<BoundingBox<dim>> result;
+      for (const auto &box : tile_box)
+        if (box)
+          result.push_back(*box);
+      return result;
+    }
+  } // namespace
 
   template <int dim>
   void
@@ -36,11 +84,10 @@ namespace perideal
     // Locate the owned particles in the locally owned cells of all ranks (one cell each).
     const MappingQ1<dim>        mapping;
     const GridTools::Cache<dim> cache(tria, mapping);
-    const auto                  local_boxes =
-      GridTools::compute_mesh_predicate_bounding_box(tria, IteratorFilters::LocallyOwnedCell());
-    const auto              global_boxes = Utilities::MPI::all_gather(comm, local_boxes);
-    std::vector<Point<dim>> points(x.begin(), x.begin() + n_owned);
-    const auto              located =
+    const auto                  local_boxes  = owned_cell_boxes(tria);
+    const auto                  global_boxes = Utilities::MPI::all_gather(comm, local_boxes);
+    std::vector<Point<dim>>     points(x.begin(), x.begin() + n_owned);
+    const auto                  located =
       GridTools::internal::distributed_compute_point_locations(cache,
                                                                points,
                                                                global_boxes,
@@ -119,9 +166,16 @@ namespace perideal
     // Sparsity with the rows of other ranks, sent to their owners; then the matrix.
     const auto  row_partitioner = particles.partitioner(dim);
     const auto &owned_rows      = row_partitioner->locally_owned_range();
-    IndexSet    touched_rows(owned_rows.size());
+    // The rows as one sorted list: IndexSet::add_index() of unsorted rows one by one inserts into
+    // the middle of its ranges, quadratic in the particles (5 s of the set-up for 140 000).
+    std::vector<types::global_dof_index> rows;
+    rows.reserve(entries.size());
     for (const auto &e : entries)
-      touched_rows.add_index(e.row);
+      rows.push_back(e.row);
+    std::sort(rows.begin(), rows.end());
+    rows.erase(std::unique(rows.begin(), rows.end()), rows.end());
+    IndexSet touched_rows(owned_rows.size());
+    touched_rows.add_indices(rows.begin(), rows.end());
     touched_rows.add_indices(owned_rows);
     touched_rows.compress();
     DynamicSparsityPattern dsp(owned_rows.size(), dof_handler.n_dofs(), touched_rows);
