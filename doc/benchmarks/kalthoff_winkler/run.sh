@@ -6,9 +6,11 @@
 # their wall times and both crack angles.
 #
 # Usage: run.sh [--dx SPACING] [--np N] [--prm FILE] [--app NAME]
-#   --dx SPACING  lattice spacing [m] instead of the 1e-3 of the parameter file (horizon =
+#   --dx SPACING  lattice spacing [m] instead of the 1e-3 of the parameter files (horizon =
 #                 3.015 dx; the output intervals are scaled to keep ~25 snapshots), e.g.
-#                 --dx 5e-4 (1 min on 2 cores) or --dx 2.5e-4 (about 6 min, 322 400 particles);
+#                 --dx 1e-3 (10 s on 2 cores) or --dx 5e-4 (20 s); the flagship pair runs at
+#                 2.5e-4 unless --dx or --prm is given (about 1 min; the coupled band of PD
+#                 needs dx <= 0.5 mm, see kalthoff_coupled.prm);
 #   --np N        MPI ranks (default 2);
 #   --prm FILE    run only this parameter file of the case (e.g. kalthoff_pd.prm, the all-PD
 #                 state-based variant); every variant keeps the same output names and
@@ -52,6 +54,10 @@ fi
 "$top/contrib/build.sh"
 build=${PERIDEAL_BUILD_DIR:-$top/build}
 
+# The flagship pair at the resolution its coupled region needs.
+if [ -z "$dx" ] && [ "${prms[0]}" = "$here/kalthoff_coupled.prm" ] && [ ${#prms[@]} -eq 2 ]; then
+  dx=2.5e-4
+fi
 results_top=${PERIDEAL_RESULTS_DIR:-$top/results/kalthoff_winkler${dx:+_dx$dx}}
 summary=()
 for prm in "${prms[@]}"; do
