@@ -16,6 +16,8 @@
 #include <perideal/base/region.h>
 #include <perideal/coupling/coupled_problem.h>
 
+#include "coupling_tests.h"
+
 #include <fstream>
 #include <iostream>
 #include <map>
@@ -131,22 +133,9 @@ end
     MPI_Barrier(MPI_COMM_WORLD);
     try
       {
-        ParameterHandler first;
-        first.declare_entry("Dimension", "2", Patterns::Integer(2, 3), "");
-        perideal::RegionCollection<2>::declare_names(first);
-        perideal::BoundaryConditions<2>::declare_names(first);
-        perideal::FESolid<2>::declare_names(first);
-        perideal::ParameterUtilities::parse_partially(first, file);
-        ParameterHandler prm;
-        perideal::CoupledProblem<2>::declare_parameters(
-          prm,
-          perideal::RegionCollection<2>::parse_names(first),
-          perideal::BoundaryConditions<2>::parse_names(first),
-          perideal::FESolid<2>::parse_names(first));
-        perideal::ParameterUtilities::parse_file(prm, file);
         std::ostringstream          log;
         perideal::CoupledProblem<2> problem(MPI_COMM_WORLD, log);
-        problem.parse_parameters(prm);
+        coupling_tests::parse(problem, file);
         problem.setup();
         if (values["SOLVER"] != "explicit")
           problem.run();

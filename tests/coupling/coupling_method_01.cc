@@ -15,6 +15,8 @@
 #include <perideal/coupling/blended_coupling.h>
 #include <perideal/coupling/coupled_problem.h>
 
+#include "coupling_tests.h"
+
 #include <fstream>
 #include <iostream>
 #include <sstream>
@@ -136,22 +138,9 @@ end
     if (Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0)
       std::ofstream(file) << text;
     MPI_Barrier(MPI_COMM_WORLD);
-    ParameterHandler first;
-    first.declare_entry("Dimension", "2", Patterns::Integer(2, 3), "");
-    perideal::RegionCollection<2>::declare_names(first);
-    perideal::BoundaryConditions<2>::declare_names(first);
-    perideal::FESolid<2>::declare_names(first);
-    perideal::ParameterUtilities::parse_partially(first, file);
-    ParameterHandler prm;
-    perideal::CoupledProblem<2>::declare_parameters(
-      prm,
-      perideal::RegionCollection<2>::parse_names(first),
-      perideal::BoundaryConditions<2>::parse_names(first),
-      perideal::FESolid<2>::parse_names(first));
-    perideal::ParameterUtilities::parse_file(prm, file);
     std::ostringstream          log;
     perideal::CoupledProblem<2> problem(MPI_COMM_WORLD, log);
-    problem.parse_parameters(prm);
+    coupling_tests::parse(problem, file);
     problem.setup();
     problem.run();
     MPI_Barrier(MPI_COMM_WORLD);
