@@ -4,6 +4,7 @@
 #include <perideal/coupling/blended_coupling.h>
 
 #include <cmath>
+#include <limits>
 
 namespace perideal
 {
@@ -194,11 +195,13 @@ namespace perideal
                                      const bool            with_energy)
   {
     auto &particles = *regions.particles;
+    // No bond breaks here: the relaxation's transients overshoot the equilibrium; bonds break
+    // between solves, at the converged state (CoupledProblem's load stepping).
     regions.material->compute_forces(particles,
                                      u,
                                      pd_force,
                                      with_energy ? &energy_density : nullptr,
-                                     regions.critical_stretch);
+                                     std::numeric_limits<double>::infinity());
     const auto        &volume  = particles.volumes();
     const unsigned int n_owned = particles.n_owned();
     double             energy  = 0.;

@@ -246,13 +246,12 @@ namespace perideal
     transfer.reinit(fe, pd.particle_system);
     check_blending();
     CoupledRegions<dim> regions;
-    regions.fe               = &fe;
-    regions.particles        = &pd.particle_system;
-    regions.material         = pd.material.get();
-    regions.transfer         = &transfer;
-    regions.density          = pd.density;
-    regions.horizon          = pd.discretization.horizon;
-    regions.critical_stretch = pd.critical_stretch;
+    regions.fe        = &fe;
+    regions.particles = &pd.particle_system;
+    regions.material  = pd.material.get();
+    regions.transfer  = &transfer;
+    regions.density   = pd.density;
+    regions.horizon   = pd.discretization.horizon;
     method->initialize(regions);
 
     // Free particles (in FE_Nothing cells) carry their own mass; PD boundary conditions may act

@@ -570,17 +570,27 @@ namespace perideal
         if (prescribed.local_element(k) != 0.)
           uu.local_element(k) = factor * target.local_element(k);
     };
-    // Internal and external force density at the current load factor (breaks bonds).
-    const auto evaluate = [&](ParticleVector &uu, std::vector<double> *energy) {
-      uu.update_ghost_values();
-      material->compute_forces(particle_system, uu, internal_force, energy, critical_stretch);
-      external_force = full_load;
-      external_force *= factor;
-    };
+    // Internal and external force density at the current load factor; bonds over the critical
+    // stretch break if @p may_break. The relaxation iterates without breaking: its transients
+    // overshoot the equilibrium, and bonds that broke on the way made the relaxation chase a
+    // growing crack (it stalled at a relative residual of 1e-5). Bonds break between solves,
+    // at the converged state, and the step is re-solved while they do.
+    const auto evaluate =
+      [&](ParticleVector &uu, std::vector<double> *energy, const bool may_break) {
+        uu.update_ghost_values();
+        material->compute_forces(particle_system,
+                                 uu,
+                                 internal_force,
+                                 energy,
+                                 may_break ? critical_stretch :
+                                             std::numeric_limits<double>::infinity());
+        external_force = full_load;
+        external_force *= factor;
+      };
 
     AdaptiveDynamicRelaxation::Operations operations;
     operations.residual = [&](ParticleVector &uu, ParticleVector &force) {
-      evaluate(uu, nullptr);
+      evaluate(uu, nullptr, false);
       force = internal_force;
       force += external_force;
       for (std::size_t k = 0; k < n_values; ++k)
@@ -611,7 +621,7 @@ namespace perideal
     StaticSolver<dim> static_solver(static_settings);
 
     energy_density.assign(n_owned, 0.);
-    evaluate(u, &energy_density);
+    evaluate(u, &energy_density, true);
     compute_work_load(previous_load);
     previous_u          = u;
     local_external_work = 0.;
@@ -650,7 +660,7 @@ namespace perideal
                                                   u,
                                                   condition_list);
               }
-            evaluate(u, &energy_density);
+            evaluate(u, &energy_density, true);
             if (breaking_settled(particle_system, broken_before, step, passes))
               break;
           }

@@ -64,10 +64,10 @@ namespace perideal
 
   private:
     /**
-     * @brief The forces of (@p U, @p u) with the model's own forces (bonds over the critical
-     * stretch break): @p fe_residual as in equilibrium_forces(), @p pd_force the internal force
-     * density, and in nodal_force the particles' unbalanced force V (f_int + f_pd) [N]. Returns
-     * the particles' strain energy if @p with_energy (0 otherwise).
+     * @brief The forces of (@p U, @p u) with the model's own forces (no bond breaks here): @p
+     * fe_residual as in equilibrium_forces(), @p pd_force the internal force density, and in
+     * nodal_force the particles' unbalanced force V (f_int + f_pd) [N]. Returns the particles'
+     * strain energy if @p with_energy (0 otherwise).
      */
     double
     model_forces(const FEVector       &U,

@@ -37,8 +37,6 @@ namespace perideal
     double density = 0.;
     /// The horizon [m].
     double horizon = 0.;
-    /// The critical stretch of the damage model (infinite without damage).
-    double critical_stretch = 0.;
   };
 
   /**
