@@ -216,12 +216,7 @@ namespace perideal
         if (with_energy)
           energy += energy_density[i] * volume[i];
       }
-    // K_FE U - f_FE - P^T (f_int + f_ext) of the slaved particles.
-    regions.fe->stiffness_matrix().vmult(fe_residual, U);
-    fe_residual -= f_fe;
-    nodal_force *= -1.;
-    regions.transfer->add_transpose(nodal_force, fe_residual);
-    nodal_force *= -1.;
+    static_solver->fe_forces(U, f_fe, nodal_force, fe_residual);
     return Utilities::MPI::sum(energy, particles.get_communicator());
   }
 

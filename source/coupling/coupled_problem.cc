@@ -251,7 +251,6 @@ namespace perideal
     regions.material  = pd.material.get();
     regions.transfer  = &transfer;
     regions.density   = pd.density;
-    regions.horizon   = pd.discretization.horizon;
     method->initialize(regions);
 
     // Free particles (in FE_Nothing cells) carry their own mass; PD boundary conditions may act

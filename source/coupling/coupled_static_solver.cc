@@ -376,12 +376,22 @@ namespace perideal
         // The particles' unbalanced force, internal plus applied, for P^T.
         nodal_force.local_element(k) = -force.begin()[k] + f_pd.local_element(k) * V;
       }
-    // FE: K_FE U - f_FE - P^T (f_int + f_ext) of the slaved particles.
-    fe->stiffness_matrix().vmult(fe_residual, U);
-    fe_residual -= f_fe;
-    nodal_force *= -1.;
-    transfer->add_transpose(nodal_force, fe_residual);
+    fe_forces(U, f_fe, nodal_force, fe_residual);
     return energy;
+  }
+
+  template <int dim>
+  void
+  CoupledStaticSolver<dim>::fe_forces(const FEVector       &U,
+                                      const FEVector       &f_fe,
+                                      const ParticleVector &nodal_force,
+                                      FEVector             &fe_residual) const
+  {
+    // K_FE U - f_FE - P^T (nodal force) of the slaved particles: -(f_FE - K_FE U + P^T f).
+    fe->stiffness_matrix().vmult(fe_residual, U);
+    fe_residual.sadd(-1., 1., f_fe);
+    transfer->add_transpose(nodal_force, fe_residual);
+    fe_residual *= -1.;
   }
 
   template <int dim>

@@ -108,6 +108,17 @@ namespace perideal
            FEVector             &fe_residual,
            ParticleVector       &pd_force) const;
 
+    /**
+     * @brief @p fe_residual = K_FE @p U - @p f_fe - P^T @p nodal_force: the FE part of the
+     * forces of forces(), for the particles' unbalanced forces @p nodal_force [N] (internal plus
+     * applied; only the slaved particles' rows of P^T contribute).
+     */
+    void
+    fe_forces(const FEVector       &U,
+              const FEVector       &f_fe,
+              const ParticleVector &nodal_force,
+              FEVector             &fe_residual) const;
+
     /// Size @p z as the unknowns z (owned entries, no ghosts).
     void
     reinit_unknowns(ParticleVector &z) const;

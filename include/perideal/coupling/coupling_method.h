@@ -35,8 +35,6 @@ namespace perideal
     const TransferOperator<dim> *transfer  = nullptr;
     /// The particles' mass density [kg/m^3].
     double density = 0.;
-    /// The horizon [m].
-    double horizon = 0.;
   };
 
   /**
