@@ -6,6 +6,8 @@
 
 #include <perideal/base/parameter_utilities.h>
 
+#include <algorithm>
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <iomanip>
@@ -193,6 +195,15 @@ namespace perideal
                     " s of this discretization; accepted: 0 (automatic) or a "
                     "value up to the limit."));
       return requested;
+    }
+
+    unsigned int
+    equal_time_steps(const double end_time, double &dt)
+    {
+      const unsigned int n_steps =
+        std::max<unsigned int>(1, static_cast<unsigned int>(std::ceil(end_time / dt - 1e-6)));
+      dt = end_time / n_steps;
+      return n_steps;
     }
 
     std::vector<unsigned int>

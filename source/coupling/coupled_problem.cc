@@ -1,9 +1,7 @@
 // ---------------------------------------------------------------------
 // PeriDeal: a problem with an FE region and particles joined through an overlap zone.
 // ---------------------------------------------------------------------
-#include <deal.II/dofs/dof_tools.h>
 #include <deal.II/fe/component_mask.h>
-#include <deal.II/numerics/vector_tools.h>
 
 #include <perideal/base/parameter_utilities.h>
 #include <perideal/base/progress_reporter.h>
@@ -119,6 +117,20 @@ namespace perideal
                            "(<Solver/Type> = static or adaptive dynamic relaxation); remove it or "
                            "change the solver type."));
     prm.leave_subsection();
+  }
+
+  template <int dim>
+  const ParticleVector &
+  CoupledProblem<dim>::particle_displacement() const
+  {
+    return pd.u;
+  }
+
+  template <int dim>
+  const LinearAlgebra::distributed::Vector<double> &
+  CoupledProblem<dim>::fe_displacement() const
+  {
+    return U;
   }
 
   template <int dim>
@@ -365,9 +377,7 @@ namespace perideal
   void
   CoupledProblem<dim>::run_explicit()
   {
-    const unsigned int n_steps =
-      std::max<unsigned int>(1, static_cast<unsigned int>(std::ceil(pd.end_time / dt - 1e-6)));
-    dt = pd.end_time / n_steps;
+    const unsigned int n_steps = ParameterUtilities::equal_time_steps(pd.end_time, dt);
     if (is_root)
       log << "Time step: " << dt << " s, steps: " << n_steps << std::endl;
 
@@ -391,8 +401,8 @@ namespace perideal
           pd.u.local_element(i * dim + d) = pd.initial_displacement->value(x[i], d);
           pd.v.local_element(i * dim + d) = pd.initial_velocity->value(x[i], d);
         }
-    VectorTools::interpolate(fe.get_dof_handler(), *pd.initial_displacement, U);
-    VectorTools::interpolate(fe.get_dof_handler(), *pd.initial_velocity, V);
+    fe.interpolate(*pd.initial_displacement, U);
+    fe.interpolate(*pd.initial_velocity, V);
     pd.energy_density.assign(ps.n_owned(), 0.);
 
     pd.open_output(statistics);
@@ -539,8 +549,7 @@ namespace perideal
                           &fe_full_load})
       fe.initialize_vector(*vec);
     {
-      std::vector<std::vector<bool>> modes;
-      DoFTools::extract_constant_modes(fe.get_dof_handler(), ComponentMask(dim, true), modes);
+      const auto modes = fe.component_masks();
       fe_dof_component.assign(U.locally_owned_size(), 0);
       for (unsigned int d = 0; d < dim; ++d)
         for (unsigned int k = 0; k < fe_dof_component.size(); ++k)
@@ -657,7 +666,7 @@ namespace perideal
         fe.initialize_vector(fe_residual);
         ps.reinit_vector(u_exact, dim);
         ps.reinit_vector(force, dim);
-        VectorTools::interpolate(fe.get_dof_handler(), *exact_displacement, U_exact);
+        fe.interpolate(*exact_displacement, U_exact);
         U_exact.update_ghost_values();
         const auto &x = ps.positions();
         for (unsigned int i = 0; i < n_owned; ++i)
@@ -749,6 +758,7 @@ namespace perideal
     // Relative to the largest force involved; loads below 1e-10 of the internal-force scale
     // (a rigid motion) are round-off and give no ratio.
     double scale = 0.;
+    U.update_ghost_values();
     for (const double sum : fe.absolute_row_sums(&U))
       scale = std::max(scale, sum);
     scale                  = Utilities::MPI::max(scale, comm);
@@ -791,7 +801,7 @@ namespace perideal
       {
         FEVector exact;
         fe.initialize_vector(exact);
-        VectorTools::interpolate(fe.get_dof_handler(), *exact_displacement, exact);
+        fe.interpolate(*exact_displacement, exact);
         for (unsigned int k = 0; k < exact.locally_owned_size(); ++k)
           {
             fe_error = std::max(fe_error, std::abs(U.local_element(k) - exact.local_element(k)));
@@ -882,7 +892,11 @@ namespace perideal
     const double relative = scale > 0. ? largest / scale : 0.;
     // A residual below 1e-12 of the force scale is round-off: printed as 0 N (the ratio shows
     // it), so that it reads the same on every rank count and build.
-    if (is_root)
+    // Without FE unknowns (an empty FE region) there is no scale: the force itself.
+    if (is_root && fe.n_dofs() == 0)
+      log << what << ": " << largest
+          << " N (largest unbalanced nodal force at free particles; no FE region)" << std::endl;
+    else if (is_root)
       log << what << ": " << (relative < 1e-12 ? 0. : largest)
           << " N (largest unbalanced nodal force at free dofs and particles), relative to the FE "
              "internal-force scale: "

@@ -2,9 +2,7 @@
 // PeriDeal: static linear solve of the blended FE-PD coupling.
 // ---------------------------------------------------------------------
 #include <deal.II/base/mpi.h>
-#include <deal.II/dofs/dof_tools.h>
 #include <deal.II/fe/component_mask.h>
-#include <deal.II/lac/affine_constraints.h>
 #include <deal.II/lac/dynamic_sparsity_pattern.h>
 #include <deal.II/lac/solver_cg.h>
 #include <deal.II/lac/solver_control.h>
@@ -79,16 +77,10 @@ namespace perideal
     comm      = particle_system.get_communicator();
 
     // T = [P; I] acts on the raw FE dofs: hanging-node constraints would have to enter it.
-    {
-      IndexSet relevant;
-      DoFTools::extract_locally_relevant_dofs(fe_solid.get_dof_handler(), relevant);
-      AffineConstraints<double> hanging(relevant);
-      DoFTools::make_hanging_node_constraints(fe_solid.get_dof_handler(), hanging);
-      AssertThrow(Utilities::MPI::sum(hanging.n_constraints(), comm) == 0,
-                  ExcMessage("The FE mesh of <Finite elements> has hanging nodes, which the "
-                             "static coupled solve (<Solver/Type> = static) does not support; "
-                             "use a conforming mesh (global refinement only)."));
-    }
+    AssertThrow(!fe_solid.has_hanging_nodes(),
+                ExcMessage("The FE mesh of <Finite elements> has hanging nodes, which the "
+                           "static coupled solve (<Solver/Type> = static) does not support; "
+                           "use a conforming mesh (global refinement only)."));
     fe_owned = fe_solid.get_dof_handler().locally_owned_dofs();
     AssertThrow(fe_owned.is_contiguous(),
                 ExcInternalError("The owned FE dofs are not contiguous."));
@@ -152,9 +144,9 @@ namespace perideal
       T.compress(VectorOperation::insert);
     }
 
-    // The 0/1 masks of the free unknowns: D (z to z) and E_f (z to the FE dofs).
-    SparseMatrix D, E_free;
+    // T with the prescribed columns dropped: T D with D the 0/1 mask of the free unknowns.
     {
+      SparseMatrix           D;
       DynamicSparsityPattern dsp(n_total, n_total, z_owned);
       for (types::global_dof_index k = 0; k < n_local; ++k)
         if (!prescribed[k])
@@ -164,23 +156,31 @@ namespace perideal
         if (!prescribed[k])
           D.set(z_first + k, z_first + k, 1.);
       D.compress(VectorOperation::insert);
+      T.mmult(T_free, D);
     }
-    {
-      DynamicSparsityPattern dsp(fe_owned.size(), n_total, fe_owned);
-      for (types::global_dof_index k = 0; k < n_fe_owned; ++k)
-        if (!prescribed[k])
-          dsp.add(fe_owned.nth_index_in_set(k), z_first + k);
-      E_free.reinit(fe_owned, z_owned, dsp, comm);
-      for (types::global_dof_index k = 0; k < n_fe_owned; ++k)
-        if (!prescribed[k])
-          E_free.set(fe_owned.nth_index_in_set(k), z_first + k, 1.);
-      E_free.compress(VectorOperation::insert);
-    }
-    // T with the prescribed columns dropped, and E_f^T K_FE E_f.
-    T.mmult(T_free, D);
-    SparseMatrix K_E;
-    fe_solid.stiffness_matrix().mmult(K_E, E_free);
-    E_free.Tmmult(fe_part, K_E);
+    // E_f^T K_FE E_f with E_f the 0/1 map of the free unknowns to the FE dofs. Without FE
+    // unknowns (the FE region is empty) the FE part is empty: Trilinos' products of matrices
+    // without rows corrupt the heap on more than one rank.
+    if (fe_owned.size() > 0)
+      {
+        SparseMatrix           E_free, K_E;
+        DynamicSparsityPattern dsp(fe_owned.size(), n_total, fe_owned);
+        for (types::global_dof_index k = 0; k < n_fe_owned; ++k)
+          if (!prescribed[k])
+            dsp.add(fe_owned.nth_index_in_set(k), z_first + k);
+        E_free.reinit(fe_owned, z_owned, dsp, comm);
+        for (types::global_dof_index k = 0; k < n_fe_owned; ++k)
+          if (!prescribed[k])
+            E_free.set(fe_owned.nth_index_in_set(k), z_first + k, 1.);
+        E_free.compress(VectorOperation::insert);
+        fe_solid.stiffness_matrix().mmult(K_E, E_free);
+        E_free.Tmmult(fe_part, K_E);
+      }
+    else
+      {
+        DynamicSparsityPattern dsp(n_total, n_total, z_owned);
+        fe_part.reinit(z_owned, z_owned, dsp, comm);
+      }
   }
 
   template <int dim>
@@ -202,15 +202,26 @@ namespace perideal
     const std::size_t n_local = prescribed.size();
 
     // The PD part (G T_f)^T diag(w) (G T_f) of the linearization about the reference state.
+    // Without FE unknowns it is formed as T_f^T (G^T diag(w) G) T_f: the first form then
+    // overflows a heap buffer inside deal.II's Trilinos product (ML) on two ranks, the second
+    // overflows it with FE unknowns (3D linear-strain test); both found with AddressSanitizer.
     LinearizedModel linearized;
     material.linearize(*particles, linearized);
     StaticSolver<dim>::extension_matrix(*particles, linearized, G, weights);
     SparseMatrix pd_part;
-    {
-      SparseMatrix GT;
-      G.mmult(GT, T_free);
-      GT.Tmmult(pd_part, GT, weights);
-    }
+    if (fe->n_dofs() > 0)
+      {
+        SparseMatrix GT;
+        G.mmult(GT, T_free);
+        GT.Tmmult(pd_part, GT, weights);
+      }
+    else
+      {
+        SparseMatrix K_pd, KT;
+        G.Tmmult(K_pd, G, weights);
+        K_pd.mmult(KT, T_free);
+        T_free.Tmmult(pd_part, KT);
+      }
 
     // K = E_f^T K_FE E_f + (G T_f)^T diag(w) (G T_f) + s on the prescribed diagonal, summed
     // row by row (both parts have the rows of z).
@@ -318,8 +329,7 @@ namespace perideal
       settings,
       [&]() {
         // Near-null space: the translations (component of each FE dof and particle unknown).
-        std::vector<std::vector<bool>> fe_modes;
-        DoFTools::extract_constant_modes(fe->get_dof_handler(), ComponentMask(dim, true), fe_modes);
+        const auto                                        fe_modes = fe->component_masks();
         TrilinosWrappers::PreconditionAMG::AdditionalData data;
         data.elliptic = true;
         data.constant_modes.assign(dim, std::vector<bool>(n_local, false));

@@ -181,7 +181,10 @@ namespace perideal
     DynamicSparsityPattern dsp(owned_rows.size(), dof_handler.n_dofs(), touched_rows);
     for (const auto &e : entries)
       dsp.add(e.row, e.column);
-    SparsityTools::distribute_sparsity_pattern(dsp, owned_rows, comm, touched_rows);
+    // An empty region (no particles or no FE unknowns) has no entries to send (and deal.II
+    // divides by the number of rows there).
+    if (owned_rows.size() > 0 && dof_handler.n_dofs() > 0)
+      SparsityTools::distribute_sparsity_pattern(dsp, owned_rows, comm, touched_rows);
     P.reinit(owned_rows, dof_handler.locally_owned_dofs(), dsp, comm);
     for (const auto &e : entries)
       P.add(e.row, e.column, e.value);

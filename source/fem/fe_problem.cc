@@ -203,9 +203,8 @@ namespace perideal
   FEProblem<dim>::run_explicit()
   {
     const double stable_dt = fe.stable_time_step();
-    const double dt =
-      ParameterUtilities::choose_time_step(requested_time_step, safety_factor, stable_dt);
-    const unsigned int n_steps = static_cast<unsigned int>(std::ceil(end_time / dt - 1e-12));
+    double dt = ParameterUtilities::choose_time_step(requested_time_step, safety_factor, stable_dt);
+    const unsigned int n_steps = ParameterUtilities::equal_time_steps(end_time, dt);
     if (is_root)
       log << "explicit dynamics: dt = " << dt << " s (stable " << stable_dt << " s), " << n_steps
           << " steps" << std::endl;
@@ -258,18 +257,17 @@ namespace perideal
     unsigned int     output_step = 1;
     for (unsigned int step = 1; step <= n_steps; ++step)
       {
-        const double step_dt          = std::min(dt, end_time - time);
         const double previous_kinetic = prescribed_kinetic_energy();
-        v.add(0.5 * step_dt, a);
-        fe.prescribe(time + 0.5 * step_dt, u, v);
+        v.add(0.5 * dt, a);
+        fe.prescribe(time + 0.5 * dt, u, v);
         previous_u    = u;
         previous_load = load;
-        u.add(step_dt, v);
-        time += step_dt;
+        u.add(dt, v);
+        time = step * dt;
         fe.prescribe(time, u, v);
         u.update_ghost_values();
         compute_acceleration_and_load(time);
-        v.add(0.5 * step_dt, a);
+        v.add(0.5 * dt, a);
         fe.prescribe(time, u, v);
         // Trapezoidal rule in the loads for the work.
         double work = 0.;

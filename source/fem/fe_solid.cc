@@ -447,22 +447,26 @@ namespace perideal
             }
       }
     dof_handler.distribute_dofs(fe_collection);
-    AssertThrow(dof_handler.n_dofs() > 0,
-                ExcMessage("No cell of the mesh of <Finite elements> carries FE unknowns: the FE "
-                           "energy weight (1 - <Coupling/Blending function>) vanishes on every "
-                           "cell, so the coupled problem has no FE part. Make beta smaller than "
-                           "1 where the FE region should be, or run the PD problem alone (no "
-                           "<Finite elements> section)."));
-    owned_dofs = dof_handler.locally_owned_dofs();
-    DoFTools::extract_locally_relevant_dofs(dof_handler, relevant_dofs);
+    // A coupled problem may leave the FE region empty (beta = 1 everywhere): no dofs, empty
+    // vectors and matrices, and none of deal.II's dof functions (which require dofs) called.
+    const bool has_dofs = dof_handler.n_dofs() > 0;
+    owned_dofs          = dof_handler.locally_owned_dofs();
+    relevant_dofs       = owned_dofs;
     hanging_constraints.clear();
-    hanging_constraints.reinit(relevant_dofs);
-    DoFTools::make_hanging_node_constraints(dof_handler, hanging_constraints);
+    if (has_dofs)
+      {
+        DoFTools::extract_locally_relevant_dofs(dof_handler, relevant_dofs);
+        hanging_constraints.reinit(relevant_dofs);
+        DoFTools::make_hanging_node_constraints(dof_handler, hanging_constraints);
+      }
     hanging_constraints.close();
 
     DynamicSparsityPattern dsp(relevant_dofs);
-    DoFTools::make_sparsity_pattern(dof_handler, dsp, hanging_constraints, false);
-    SparsityTools::distribute_sparsity_pattern(dsp, owned_dofs, comm, relevant_dofs);
+    if (has_dofs)
+      {
+        DoFTools::make_sparsity_pattern(dof_handler, dsp, hanging_constraints, false);
+        SparsityTools::distribute_sparsity_pattern(dsp, owned_dofs, comm, relevant_dofs);
+      }
     stiffness.reinit(owned_dofs, owned_dofs, dsp, comm);
     system_matrix.reinit(owned_dofs, owned_dofs, dsp, comm);
     initialize_vector(mass);
@@ -524,10 +528,46 @@ namespace perideal
   }
 
   template <int dim>
+  types::global_dof_index
+  FESolid<dim>::n_dofs() const
+  {
+    return dof_handler.n_dofs();
+  }
+
+  template <int dim>
+  bool
+  FESolid<dim>::has_hanging_nodes() const
+  {
+    return Utilities::MPI::sum(hanging_constraints.n_constraints(), comm) > 0;
+  }
+
+  template <int dim>
+  void
+  FESolid<dim>::interpolate(const Function<dim> &function, Vector &vector) const
+  {
+    if (n_dofs() > 0)
+      VectorTools::interpolate(dof_handler, function, vector);
+  }
+
+  template <int dim>
+  std::vector<std::vector<bool>>
+  FESolid<dim>::component_masks() const
+  {
+    std::vector<std::vector<bool>> masks(dim);
+    if (n_dofs() > 0)
+      DoFTools::extract_constant_modes(dof_handler, ComponentMask(dim, true), masks);
+    return masks;
+  }
+
+  template <int dim>
   void
   FESolid<dim>::initialize_vector(Vector &vector) const
   {
-    vector.reinit(owned_dofs, relevant_dofs, comm);
+    // Without FE unknowns there are no ghosts (deal.II's owner lookup divides by the size).
+    if (n_dofs() == 0)
+      vector.reinit(owned_dofs, comm);
+    else
+      vector.reinit(owned_dofs, relevant_dofs, comm);
   }
 
   template <int dim>
@@ -750,9 +790,7 @@ namespace perideal
 
     TrilinosWrappers::PreconditionAMG                 amg;
     TrilinosWrappers::PreconditionAMG::AdditionalData amg_data;
-    std::vector<std::vector<bool>>                    constant_modes;
-    DoFTools::extract_constant_modes(dof_handler, ComponentMask(dim, true), constant_modes);
-    amg_data.constant_modes        = constant_modes;
+    amg_data.constant_modes        = component_masks();
     amg_data.elliptic              = true;
     amg_data.higher_order_elements = degree > 1;
     amg_data.smoother_sweeps       = 2;
@@ -880,6 +918,8 @@ namespace perideal
                              const double       time,
                              const Vector      &u)
   {
+    if (n_dofs() == 0)
+      return;
     const StressPostprocessor<dim> stress(C, material.voigt_stiffness(), planar);
     DataOut<dim>                   data_out;
     data_out.attach_dof_handler(dof_handler);

@@ -482,7 +482,11 @@ namespace perideal
         ghosts.add_indices(ghost_list.begin(), ghost_list.end());
         owned.compress();
         ghosts.compress();
-        cached = std::make_shared<const Partitioner>(owned, ghosts, communicator);
+        // No particles at all (the empty PD region of a coupled problem): no ghosts either
+        // (deal.II's owner lookup divides by the size).
+        cached = n_global_particles == 0 ?
+                   std::make_shared<const Partitioner>(owned, communicator) :
+                   std::make_shared<const Partitioner>(owned, ghosts, communicator);
       }
     return cached;
   }

@@ -374,14 +374,11 @@ namespace perideal
                                     std::function<bool(const Point<dim> &)>(in_body),
                              pre_cracks,
                              regions.union_of(no_fail_regions, "Material/No-fail regions"));
-    AssertThrow(particle_system.n_global() > 0,
-                ExcMessage(keep ? "No particle lies in the PD region of the coupled problem: "
-                                  "<Coupling/Blending function> is 0 on the whole body "
-                                  "(<Discretization/Body>), so the problem has no PD part. "
-                                  "Make beta positive where the particles should be, or run "
-                                  "the FE problem alone (no particle sections)." :
-                                  "The body (<Discretization/Body>) holds no particle: its "
-                                  "regions are smaller than the lattice spacing or empty."));
+    // A coupled problem may leave the PD region empty (beta = 0 on the whole body): the FE
+    // problem alone through the coupled code path.
+    AssertThrow(keep || particle_system.n_global() > 0,
+                ExcMessage("The body (<Discretization/Body>) holds no particle: its regions are "
+                           "smaller than the lattice spacing or empty."));
 
     if (energy_weight)
       particle_system.set_energy_weights(energy_weight);
@@ -450,9 +447,7 @@ namespace perideal
   void
   PDProblem<dim>::run_explicit()
   {
-    const unsigned int n_steps =
-      std::max<unsigned int>(1, static_cast<unsigned int>(std::ceil(end_time / dt - 1e-6)));
-    dt = end_time / n_steps;
+    const unsigned int n_steps = ParameterUtilities::equal_time_steps(end_time, dt);
     if (is_root)
       log << "Time step: " << dt << " s, steps: " << n_steps << std::endl;
 

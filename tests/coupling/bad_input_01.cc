@@ -1,14 +1,13 @@
 // ---------------------------------------------------------------------
 // Bad input of a coupled problem: a valid file is accepted; each bad case stops with a message
 // naming the entry, before the time stepping starts: a blending function outside [0, 1], an overlap
-// narrower than the horizon, particles outside the mesh, a blending function that leaves no FE
-// unknowns or no particles, a PD condition on particles that follow the FE field, two FE
-// conditions on the same component of a boundary, a body force in <Finite elements> (a coupled
-// run takes the body force of <Body force> only). A state-based
-// model is accepted (its energy is blended through the particles' weights). Quasi-static solves
-// (run as well): a valid file is solved statically and by adaptive dynamic relaxation; an FE
-// velocity condition, a component that no condition holds, and an exact-displacement tolerance
-// without the exact field are refused.
+// narrower than the horizon, particles outside the mesh, a PD condition on particles that follow
+// the FE field, two FE conditions on the same component of a boundary, a body force in <Finite
+// elements> (a coupled run takes the body force of <Body force> only). A state-based model is
+// accepted (its energy is blended through the particles' weights). Quasi-static solves (run as
+// well): a valid file is solved statically and by adaptive dynamic relaxation; an FE velocity
+// condition, a component that no condition holds, and an exact-displacement tolerance without the
+// exact field are refused.
 // ---------------------------------------------------------------------
 #include <deal.II/base/parameter_handler.h>
 
@@ -161,8 +160,6 @@ main(int argc, char **argv)
   run_case("beta above 1", {{"BETA", "(x - 0.04) / 0.01"}});
   run_case("overlap narrower than the horizon", {{"BETA", "min(1, max(0, (x - 0.04) / 0.002))"}});
   run_case("particles outside the mesh", {{"PLATE_X", "0.12"}});
-  run_case("blending function 1 everywhere (no FE unknowns)", {{"BETA", "1"}});
-  run_case("blending function 0 everywhere (no particles)", {{"BETA", "0"}});
   run_case("PD condition on slaved particles",
            {{"PD_CONDITIONS", "hold"},
             {"PD_BLOCK", "  subsection hold\n    set Region = corner\n  end"},

@@ -118,6 +118,13 @@ namespace perideal
     choose_time_step(const double requested, const double safety_factor, const double stable_dt);
 
     /**
+     * @brief The number of equal steps, none longer than @p dt, that reach @p end_time (at least
+     * one); @p dt becomes end_time / steps. Every explicit run (PD, FE, coupled) steps this way.
+     */
+    unsigned int
+    equal_time_steps(const double end_time, double &dt);
+
+    /**
      * @brief The component indices listed in the entry "Components".
      */
     std::vector<unsigned int>

@@ -46,6 +46,11 @@ namespace perideal
    * inside the mesh; PD boundary conditions only on free particles. Any material model: the
    * PD energy is sum_i beta_i W_i V_i (ParticleSystem::energy_weights()), which for the
    * bond-based model weights each bond by (beta_i + beta_j) / 2.
+   *
+   * Either region may be empty: beta = 1 on the whole mesh leaves no FE unknowns (every
+   * particle free), beta = 0 on the whole body leaves no particles. The run is then the other
+   * region's problem alone through this code path, with the same numbers as PDProblem and
+   * FEProblem (tests/coupling/empty_region_01).
    */
   template <int dim>
   class CoupledProblem
@@ -64,6 +69,14 @@ namespace perideal
     setup();
     void
     run();
+
+    /// The particles' displacement after run() (owned entries).
+    const ParticleVector &
+    particle_displacement() const;
+
+    /// The FE displacement after run() (owned entries).
+    const dealii::LinearAlgebra::distributed::Vector<double> &
+    fe_displacement() const;
 
     /// beta at @p x (values within 1e-10 of 0 or 1 snapped to them).
     double
@@ -103,7 +116,7 @@ namespace perideal
     /**
      * @brief Print "@p what: R N ..., relative to the FE internal-force scale: R / S" with R, S
      * the largest of @p local_largest and @p local_scale over the ranks (root only; R below
-     * 1e-12 S is round-off and printed as 0).
+     * 1e-12 S is round-off and printed as 0; without FE unknowns only R).
      */
     void
     log_residual(const std::string &what,

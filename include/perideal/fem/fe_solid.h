@@ -186,7 +186,8 @@ namespace perideal
 
     /**
      * @brief Write displacement, (velocity), strain, stress and von Mises stress of the
-     * FE-carrying cells as `<directory>/<base_name>_<step>.h5` plus `<base_name>.xdmf`.
+     * FE-carrying cells as `<directory>/<base_name>_<step>.h5` plus `<base_name>.xdmf`
+     * (nothing without FE unknowns).
      */
     void
     write_output(const std::string                                        &directory,
@@ -198,6 +199,25 @@ namespace perideal
     /// A vector with the layout of the solution (owned + ghosted dofs).
     void
     initialize_vector(dealii::LinearAlgebra::distributed::Vector<double> &vector) const;
+
+    /// The number of FE unknowns: 0 if no cell carries FE_Q (the empty FE region of a coupled
+    /// problem), and then no function of deal.II's DoFTools may be called on get_dof_handler().
+    dealii::types::global_dof_index
+    n_dofs() const;
+
+    /// Whether the FE-carrying cells have hanging nodes (collective).
+    bool
+    has_hanging_nodes() const;
+
+    /// The nodal interpolation of @p function (dim components) into @p vector (owned entries).
+    void
+    interpolate(const dealii::Function<dim>                        &function,
+                dealii::LinearAlgebra::distributed::Vector<double> &vector) const;
+
+    /// Per component, which owned dofs belong to it (the translations, the near-null space of
+    /// AMG).
+    std::vector<std::vector<bool>>
+    component_masks() const;
 
     /// One line describing the region, for the log (collective).
     std::string
