@@ -365,6 +365,24 @@ namespace perideal
 
   template <int dim>
   void
+  CoupledProblem<dim>::add_damping()
+  {
+    // a -= c v with the half-step velocity, as VelocityVerlet does, on the dofs and particle
+    // components that move by their acceleration.
+    const auto &mask = fe.prescribed_mask();
+    for (unsigned int k = 0; k < U.locally_owned_size(); ++k)
+      if (!mask[k])
+        A.local_element(k) -= pd.damping * V.local_element(k);
+    const unsigned int n_owned = pd.particle_system.n_owned();
+    for (unsigned int i = 0; i < n_owned; ++i)
+      if (free_particle[i])
+        for (unsigned int d = 0; d < dim; ++d)
+          if (!pd.boundary_conditions.is_prescribed(i, d))
+            pd.a.local_element(i * dim + d) -= pd.damping * pd.v.local_element(i * dim + d);
+  }
+
+  template <int dim>
+  void
   CoupledProblem<dim>::run()
   {
     if (pd.solver_type == SolverType::explicit_dynamics)
@@ -445,6 +463,8 @@ namespace perideal
         const bool write_fields =
           (step == n_steps || (pd.particle_interval > 0 && step % pd.particle_interval == 0));
         compute_acceleration(time + dt, write_stats || write_fields);
+        if (pd.damping > 0.)
+          add_damping();
         V.add(0.5 * dt, A);
         pd.v.add(0.5 * dt, pd.a);
         fe.prescribe(time + dt, U, V);

@@ -5,6 +5,7 @@
 // region (PDProblem, FEProblem) and compared:
 //  - PD alone, explicit: a plane-stress PMB plate pulled by two grips (velocity conditions),
 //    every statistics column (energies, external work, reactions) and the final displacements;
+//    without and with mass-proportional damping (<Time stepping/Damping> = 2e5 / s);
 //  - PD alone, static with bond breaking: the same plate with a central pre-crack, grips moved
 //    apart in 3 load steps (the crack grows in the last); the broken bonds per step and the
 //    final displacements (the reactions are not compared: the coupled solve reports those of
@@ -105,6 +106,7 @@ subsection Solver
 end
 subsection Time stepping
   set End time = 4e-6
+  set Damping  = DAMPING
 end
 subsection Output
   set Directory  = DIRECTORY
@@ -319,22 +321,27 @@ end
       }
   }
 
+  // Explicit with damping @p damping [1/s] if it is not negative, else static.
   void
-  pd_alone(const bool explicit_dynamics)
+  pd_alone(const double damping)
   {
-    const std::string                  what = explicit_dynamics ? "FE region empty, explicit" :
-                                                                  "FE region empty, static with bond breaking";
+    const bool        explicit_dynamics = damping >= 0.;
+    const std::string what = !explicit_dynamics ? "FE region empty, static with bond breaking" :
+                             damping > 0.       ? "FE region empty, explicit with damping" :
+                                                  "FE region empty, explicit";
     std::map<std::string, std::string> values{{"CRACKS", ""},
                                               {"DAMAGE", "none"},
                                               {"TYPE", "velocity"},
                                               {"PULL", "10"},
-                                              {"SOLVER", "explicit"}};
+                                              {"SOLVER", "explicit"},
+                                              {"DAMPING", std::to_string(damping)}};
     if (!explicit_dynamics)
       values = {{"CRACKS", "0.0035, 0.005 : 0.0065, 0.005"},
                 {"DAMAGE", "critical stretch"},
                 {"TYPE", "displacement"},
                 {"PULL", "2.25e-6"},
-                {"SOLVER", "static"}};
+                {"SOLVER", "static"},
+                {"DAMPING", "0"}};
 
     std::ostringstream log_alone, log_coupled;
     values["DIRECTORY"] = "pd_alone";
@@ -443,8 +450,9 @@ main(int argc, char **argv)
   Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
   if (Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) != 0)
     std::cout.setstate(std::ios::failbit);
-  pd_alone(true);
-  pd_alone(false);
+  pd_alone(0.);
+  pd_alone(2e5);
+  pd_alone(-1.);
   fe_alone(true);
   fe_alone(false);
 }

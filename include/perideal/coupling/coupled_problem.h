@@ -31,7 +31,8 @@ namespace perideal
    * FE cells where 1 - beta vanishes carry FE_Nothing. Particles inside FE-carrying cells are
    * slaved to the FE field through the TransferOperator P (u = P U, forces back with P^T), the
    * others are free. <Solver/Type> = explicit: velocity Verlet on (FE dofs, free particles) with
-   * the lumped FE mass plus P^T of the slaved particles' masses. <Solver/Type> = static: the
+   * the lumped FE mass plus P^T of the slaved particles' masses, and the mass-proportional
+   * damping of <Time stepping/Damping> on both. <Solver/Type> = static: the
    * equilibrium of the energy linearized about the reference configuration (CoupledStaticSolver)
    * in <Solver/Load steps> load steps, re-solved while bonds break; it prints the reactions of
    * the FE and PD displacement conditions against the applied loads (force balance), the strain
@@ -107,6 +108,12 @@ namespace perideal
      */
     void
     compute_acceleration(const double time, const bool with_energy);
+    /**
+     * @brief The mass-proportional damping of <Time stepping/Damping>: A -= c V on the free FE
+     * dofs, a -= c v on the free components of free particles.
+     */
+    void
+    add_damping();
     /**
      * @brief Print the largest unbalanced force at t = 0 relative to the FE internal-force
      * scale: the ghost force when the initial state is one the model reproduces exactly.
