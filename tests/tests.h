@@ -9,8 +9,10 @@
 
 #include <fstream>
 #include <iomanip>
+#include <map>
 #include <sstream>
 #include <string>
+#include <vector>
 
 namespace perideal_tests
 {
@@ -35,6 +37,28 @@ namespace perideal_tests
     while (!text.empty() && (text.back() == '\n' || text.back() == ' '))
       text.pop_back();
     return text;
+  }
+
+  /**
+   * The columns of a statistics.csv by name. Not collective: a rank that did not write the file
+   * must wait until it is complete (MPI_Barrier after the run).
+   */
+  inline std::map<std::string, std::vector<double>>
+  read_statistics(const std::string &filename)
+  {
+    std::ifstream                              file(filename);
+    std::string                                line;
+    std::map<std::string, std::vector<double>> columns;
+    AssertThrow(std::getline(file, line), dealii::ExcIO());
+    const auto names = dealii::Utilities::split_string_list(line, ',');
+    while (std::getline(file, line))
+      {
+        const auto values = dealii::Utilities::split_string_list(line, ',');
+        AssertThrow(values.size() == names.size(), dealii::ExcIO());
+        for (unsigned int c = 0; c < names.size(); ++c)
+          columns[names[c]].push_back(dealii::Utilities::string_to_double(values[c]));
+      }
+    return columns;
   }
 } // namespace perideal_tests
 

@@ -99,14 +99,6 @@ subsection Output
 end
 )";
 
-  std::string
-  replace(std::string text, const std::string &key, const std::string &value)
-  {
-    for (auto p = text.find(key); p != std::string::npos; p = text.find(key, p + value.size()))
-      text.replace(p, key.size(), value);
-    return text;
-  }
-
   void
   run_case(const std::string &name, const std::vector<std::pair<std::string, std::string>> &changes)
   {
@@ -123,13 +115,8 @@ end
                                                  {"COUPLING_EXTRA", ""}};
     for (const auto &[key, value] : changes)
       values[key] = value;
-    std::string text = base;
-    for (const auto &[key, value] : values)
-      text = replace(text, key, value);
     const std::string file = "bad_input.prm";
-    if (Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0)
-      std::ofstream(file) << text;
-    MPI_Barrier(MPI_COMM_WORLD);
+    coupling_tests::write_file(file, coupling_tests::substitute(base, values));
     try
       {
         std::ostringstream          log;

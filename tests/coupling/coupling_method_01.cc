@@ -119,25 +119,18 @@ end
       set Function     = 20e6; 0
     end)";
 
-  std::string
-  replace(std::string text, const std::string &key, const std::string &value)
-  {
-    const auto p = text.find(key);
-    return p == std::string::npos ? text : text.replace(p, key.size(), value);
-  }
-
   void
   run_case(const std::string &method,
            const std::string &conditions,
            const std::string &exact,
            const std::string &name)
   {
-    const std::string text =
-      replace(replace(replace(base, "CONDITIONS", conditions), "METHOD", method), "EXACT", exact);
     const std::string file = "coupling_method.prm";
-    if (Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0)
-      std::ofstream(file) << text;
-    MPI_Barrier(MPI_COMM_WORLD);
+    coupling_tests::write_file(file,
+                               coupling_tests::substitute(base,
+                                                          {{"CONDITIONS", conditions},
+                                                           {"METHOD", method},
+                                                           {"EXACT", exact}}));
     std::ostringstream          log;
     perideal::CoupledProblem<2> problem(MPI_COMM_WORLD, log);
     coupling_tests::parse(problem, file);

@@ -204,24 +204,6 @@ subsection Coupling
 end
 )";
 
-  std::string
-  substitute(std::string text, const std::map<std::string, std::string> &values)
-  {
-    for (const auto &[key, value] : values)
-      for (std::size_t at = text.find(key); at != std::string::npos; at = text.find(key, at))
-        text.replace(at, key.size(), value);
-    return text;
-  }
-
-  // Write @p text to @p file on rank 0 (all ranks wait for it).
-  void
-  write_file(const std::string &file, const std::string &text)
-  {
-    if (Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0)
-      std::ofstream(file) << text;
-    MPI_Barrier(MPI_COMM_WORLD);
-  }
-
   template <typename Problem>
   void
   parse_pd(Problem &problem, const std::string &file)
@@ -250,26 +232,6 @@ end
     perideal::FEProblem<2>::declare_parameters(prm, perideal::FESolid<2>::parse_names(first));
     perideal::ParameterUtilities::parse_file(prm, file);
     problem.parse_parameters(prm);
-  }
-
-  // The columns of a statistics.csv (read on every rank after the run).
-  std::map<std::string, std::vector<double>>
-  read_statistics(const std::string &filename)
-  {
-    MPI_Barrier(MPI_COMM_WORLD);
-    std::ifstream                              file(filename);
-    std::string                                line;
-    std::map<std::string, std::vector<double>> columns;
-    AssertThrow(std::getline(file, line), ExcIO());
-    const auto names = Utilities::split_string_list(line, ',');
-    while (std::getline(file, line))
-      {
-        const auto values = Utilities::split_string_list(line, ',');
-        AssertThrow(values.size() == names.size(), ExcIO());
-        for (unsigned int c = 0; c < names.size(); ++c)
-          columns[names[c]].push_back(Utilities::string_to_double(values[c]));
-      }
-    return columns;
   }
 
   // The largest difference between two sets of values relative to their largest magnitude,
@@ -360,21 +322,23 @@ end
 
     std::ostringstream log_alone, log_coupled;
     values["DIRECTORY"] = "pd_alone";
-    write_file("pd_alone.prm", substitute(pd_plate, values));
+    coupling_tests::write_file("pd_alone.prm", coupling_tests::substitute(pd_plate, values));
     perideal::PDProblem<2> alone(MPI_COMM_WORLD, log_alone);
     parse_pd(alone, "pd_alone.prm");
     alone.setup();
     alone.run();
 
     values["DIRECTORY"] = "pd_coupled";
-    write_file("pd_coupled.prm", substitute(pd_plate, values) + pd_plate_mesh);
+    coupling_tests::write_file("pd_coupled.prm",
+                               coupling_tests::substitute(pd_plate, values) + pd_plate_mesh);
     perideal::CoupledProblem<2> coupled(MPI_COMM_WORLD, log_coupled);
     coupling_tests::parse(coupled, "pd_coupled.prm");
     coupled.setup();
     coupled.run();
 
-    const auto a = read_statistics("pd_alone/statistics.csv");
-    const auto c = read_statistics("pd_coupled/statistics.csv");
+    MPI_Barrier(MPI_COMM_WORLD);
+    const auto a = perideal_tests::read_statistics("pd_alone/statistics.csv");
+    const auto c = perideal_tests::read_statistics("pd_coupled/statistics.csv");
     if (explicit_dynamics)
       compare_statistics(what,
                          a,
@@ -431,7 +395,7 @@ end
     values["FE_ONLY"]      = "set Planar assumption = plane stress\n  set Thickness = 0.001\n"
                              "  set Solver tolerance = 1e-12";
     values["COUPLED_ONLY"] = "";
-    write_file("fe_alone.prm", substitute(fe_bar, values));
+    coupling_tests::write_file("fe_alone.prm", coupling_tests::substitute(fe_bar, values));
     perideal::FEProblem<2> alone(MPI_COMM_WORLD, log_alone);
     parse_fe(alone, "fe_alone.prm");
     alone.setup();
@@ -440,16 +404,18 @@ end
     values["DIRECTORY"]    = "fe_coupled";
     values["FE_ONLY"]      = "";
     values["COUPLED_ONLY"] = "set Tolerance = 1e-12";
-    write_file("fe_coupled.prm", substitute(fe_bar, values) + fe_bar_particles);
+    coupling_tests::write_file("fe_coupled.prm",
+                               coupling_tests::substitute(fe_bar, values) + fe_bar_particles);
     perideal::CoupledProblem<2> coupled(MPI_COMM_WORLD, log_coupled);
     coupling_tests::parse(coupled, "fe_coupled.prm");
     coupled.setup();
     coupled.run();
 
+    MPI_Barrier(MPI_COMM_WORLD);
     if (explicit_dynamics)
       compare_statistics(what,
-                         read_statistics("fe_alone/statistics.csv"),
-                         read_statistics("fe_coupled/statistics.csv"),
+                         perideal_tests::read_statistics("fe_alone/statistics.csv"),
+                         perideal_tests::read_statistics("fe_coupled/statistics.csv"),
                          {"time",
                           "kinetic_energy",
                           "strain_energy",

@@ -24,26 +24,6 @@
 
 namespace
 {
-  // The columns of a statistics.csv written by PDProblem (rank 0 only).
-  std::map<std::string, std::vector<double>>
-  read_statistics(const std::string &filename)
-  {
-    std::ifstream                              file(filename);
-    std::string                                line;
-    std::vector<std::string>                   names;
-    std::map<std::string, std::vector<double>> columns;
-    AssertThrow(std::getline(file, line), dealii::ExcIO());
-    names = dealii::Utilities::split_string_list(line, ',');
-    while (std::getline(file, line))
-      {
-        const auto values = dealii::Utilities::split_string_list(line, ',');
-        AssertThrow(values.size() == names.size(), dealii::ExcIO());
-        for (unsigned int c = 0; c < names.size(); ++c)
-          columns[names[c]].push_back(dealii::Utilities::string_to_double(values[c]));
-      }
-    return columns;
-  }
-
   struct Result
   {
     unsigned int steps;
@@ -102,7 +82,7 @@ namespace
     Result result{0, 0., 0., 0.};
     if (Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0)
       {
-        auto         stats = read_statistics(directory + "/statistics.csv");
+        auto         stats = perideal_tests::read_statistics(directory + "/statistics.csv");
         const double E0    = stats["kinetic_energy"][0] + stats["strain_energy"][0];
         const auto  &error = stats["energy_error"];
         result.steps       = static_cast<unsigned int>(std::lround(stats["step"].back()));
