@@ -213,6 +213,9 @@ namespace perideal
   void
   TransferOperator<dim>::interpolate(const FEVector &U, ParticleVector &u_particles) const
   {
+    // No slaved particle anywhere (an empty FE region): nothing to interpolate.
+    if (n_slaved == 0)
+      return;
     P.vmult(particle_buffer, U);
     for (unsigned int i = 0; i < slaved.size(); ++i)
       if (slaved[i])
@@ -224,6 +227,9 @@ namespace perideal
   void
   TransferOperator<dim>::add_transpose(const ParticleVector &f, FEVector &F) const
   {
+    // P^T f = 0 without slaved particles (the rows of free particles are empty).
+    if (n_slaved == 0)
+      return;
     P.Tvmult(fe_buffer, f);
     F += fe_buffer;
   }
