@@ -517,7 +517,56 @@ namespace perideal
                 }
     }
 
+    check_conditions_act();
     assemble_matrices();
+  }
+
+  template <int dim>
+  void
+  FESolid<dim>::check_conditions_act() const
+  {
+    // Per condition, the boundary faces with its ids: on cells with FE unknowns, and on any.
+    std::vector<std::uint64_t>   on_fe(condition_list.size(), 0), on_mesh(condition_list.size(), 0);
+    std::set<types::boundary_id> mesh_ids;
+    for (const auto &cell : dof_handler.active_cell_iterators())
+      if (cell->is_locally_owned())
+        for (const unsigned int f : cell->face_indices())
+          if (cell->face(f)->at_boundary())
+            {
+              const auto id = cell->face(f)->boundary_id();
+              mesh_ids.insert(id);
+              for (unsigned int k = 0; k < condition_list.size(); ++k)
+                if (condition_list[k].boundary_ids.count(id) > 0)
+                  {
+                    ++on_mesh[k];
+                    on_fe[k] += (cell->active_fe_index() == 0);
+                  }
+            }
+    std::vector<types::boundary_id> all_ids;
+    for (const auto &ids :
+         Utilities::MPI::all_gather(comm,
+                                    std::vector<types::boundary_id>(mesh_ids.begin(),
+                                                                    mesh_ids.end())))
+      all_ids.insert(all_ids.end(), ids.begin(), ids.end());
+    std::sort(all_ids.begin(), all_ids.end());
+    all_ids.erase(std::unique(all_ids.begin(), all_ids.end()), all_ids.end());
+    for (unsigned int k = 0; k < condition_list.size(); ++k)
+      {
+        const std::string entry =
+          "<Finite elements/Boundary conditions/" + condition_list[k].name + "/Boundary ids>";
+        std::string ids;
+        for (const auto id : all_ids)
+          ids += (ids.empty() ? "" : ", ") + std::to_string(id);
+        AssertThrow(Utilities::MPI::sum(on_mesh[k], comm) > 0,
+                    ExcMessage(entry + " names no boundary of the mesh; its boundary ids are " +
+                               ids + "."));
+        AssertThrow(Utilities::MPI::sum(on_fe[k], comm) > 0,
+                    ExcMessage(entry + ": no cell with FE unknowns touches these boundaries "
+                                       "(1 - <Coupling/Blending function> is 0 on all cells "
+                                       "there), so the condition would act on nothing. Prescribe "
+                                       "it on the particles (<Boundary conditions>) or make the "
+                                       "blending function smaller than 1 there."));
+      }
   }
 
   template <int dim>

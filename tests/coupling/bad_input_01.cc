@@ -2,7 +2,8 @@
 // Bad input of a coupled problem: a valid file is accepted; each bad case stops with a message
 // naming the entry, before the time stepping starts: a blending function outside [0, 1], an overlap
 // narrower than the horizon, particles outside the mesh, a PD condition on particles that follow
-// the FE field, two FE conditions on the same component of a boundary, a body force in <Finite
+// the FE field, two FE conditions on the same component of a boundary, an FE condition on a
+// boundary id the mesh does not have or on a boundary without FE unknowns, a body force in <Finite
 // elements> (a coupled run takes the body force of <Body force> only). A state-based model is
 // accepted (its energy is blended through the particles' weights). Quasi-static solves (run as
 // well): a valid file is solved statically and by adaptive dynamic relaxation; an FE velocity
@@ -155,6 +156,16 @@ main(int argc, char **argv)
            {{"FE_CONDITIONS", "left, left again"},
             {"FE_BLOCK",
              "    subsection left again\n      set Boundary ids = 0\n      set Components = y\n"
+             "    end"}});
+  run_case("FE condition on a boundary id the mesh does not have",
+           {{"FE_CONDITIONS", "left, nowhere"},
+            {"FE_BLOCK",
+             "    subsection nowhere\n      set Boundary ids = 9\n      set Components = y\n"
+             "    end"}});
+  run_case("FE condition on a boundary without FE unknowns (beta = 1 there)",
+           {{"FE_CONDITIONS", "left, right"},
+            {"FE_BLOCK",
+             "    subsection right\n      set Boundary ids = 1\n      set Components = y\n"
              "    end"}});
   run_case("FE body force in a coupled run",
            {{"FE_EXTRA", "  subsection Body force\n    set Function = 0; -1e6\n  end"}});

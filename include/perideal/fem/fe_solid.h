@@ -258,6 +258,12 @@ namespace perideal
 
     void
     make_mesh();
+    /**
+     * @brief Stop, naming the entry, if a boundary condition's ids name no boundary of the
+     * mesh or only boundaries of cells without FE unknowns (it would act on nothing).
+     */
+    void
+    check_conditions_act() const;
     void
     assemble_cell_matrix(dealii::FEValues<dim>      &fe_values,
                          dealii::FullMatrix<double> &cell_matrix) const;
