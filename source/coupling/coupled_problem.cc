@@ -318,8 +318,12 @@ namespace perideal
                                 pd.internal_force,
                                 with_energy ? &pd.energy_density : nullptr,
                                 pd.critical_stretch);
-    pd.external_force = 0.;
-    pd.boundary_conditions.add_loads(time, pd.external_force);
+    // The applied forces (zero since the set-up if there are none).
+    if (pd.boundary_conditions.has_loads())
+      {
+        pd.external_force = 0.;
+        pd.boundary_conditions.add_loads(time, pd.external_force);
+      }
     const auto        &volume  = ps.volumes();
     const unsigned int n_owned = ps.n_owned();
     for (unsigned int i = 0; i < n_owned; ++i)
@@ -361,6 +365,50 @@ namespace perideal
           fe_load.local_element(k) = f_ext.local_element(k);
           A.local_element(k)       = residual.local_element(k) / mass.local_element(k);
         }
+  }
+
+  template <int dim>
+  void
+  CoupledProblem<dim>::start_work()
+  {
+    local_work       = 0.;
+    previous_U       = U;
+    pd.previous_u    = pd.u;
+    previous_fe_load = fe_load;
+    pd.previous_load = particle_load;
+  }
+
+  template <int dim>
+  void
+  CoupledProblem<dim>::accumulate_work()
+  {
+    // Trapezoidal rule in the loads over the step; one pass that also makes the current state
+    // the previous one.
+    // (A local sum: one in the member could alias the arrays and stay out of a register.)
+    const auto accumulate = [this](const unsigned int n,
+                                   double            *load_before,
+                                   const double      *load,
+                                   double            *u_before,
+                                   const double      *u_now) {
+      double work = local_work;
+      for (unsigned int k = 0; k < n; ++k)
+        {
+          work += 0.5 * (load_before[k] + load[k]) * (u_now[k] - u_before[k]);
+          load_before[k] = load[k];
+          u_before[k]    = u_now[k];
+        }
+      local_work = work;
+    };
+    accumulate(U.locally_owned_size(),
+               previous_fe_load.begin(),
+               fe_load.begin(),
+               previous_U.begin(),
+               U.begin());
+    accumulate(pd.particle_system.n_owned() * dim,
+               pd.previous_load.begin(),
+               particle_load.begin(),
+               pd.previous_u.begin(),
+               pd.u.begin());
   }
 
   template <int dim>
@@ -429,7 +477,7 @@ namespace perideal
     pd.boundary_conditions.prescribe_displacement(0., pd.u);
     compute_acceleration(0., true);
     report_initial_residual();
-    local_work = 0.;
+    start_work();
     write_statistics(0, 0., false);
     write_output(0, 0.);
 
@@ -440,10 +488,6 @@ namespace perideal
     for (unsigned int step = 1; step <= n_steps; ++step)
       {
         const double time = (step - 1) * dt;
-        previous_U        = U;
-        pd.previous_u     = pd.u;
-        previous_fe_load  = fe_load;
-        pd.previous_load  = particle_load;
 
         // Half step of the velocities, prescribed velocities over the step, positions.
         V.add(0.5 * dt, A);
@@ -469,13 +513,7 @@ namespace perideal
         pd.v.add(0.5 * dt, pd.a);
         fe.prescribe(time + dt, U, V);
 
-        // Work of the loads over the step (trapezoidal rule).
-        for (unsigned int k = 0; k < U.locally_owned_size(); ++k)
-          local_work += 0.5 * (previous_fe_load.local_element(k) + fe_load.local_element(k)) *
-                        (U.local_element(k) - previous_U.local_element(k));
-        for (unsigned int k = 0; k < n_owned * dim; ++k)
-          local_work += 0.5 * (pd.previous_load.local_element(k) + particle_load.local_element(k)) *
-                        (pd.u.local_element(k) - pd.previous_u.local_element(k));
+        accumulate_work();
 
         const double now = step * dt;
         if (write_stats)
@@ -600,17 +638,13 @@ namespace perideal
           << " unknowns (FE dofs and free particle components), " << pd.load_steps
           << " load step(s)" << std::endl;
 
-    local_work = 0.;
+    start_work();
     write_static_statistics(0, 0., 0, 0., false);
     const auto &mask   = fe.prescribed_mask();
     const auto &volume = ps.volumes();
     for (unsigned int step = 1; step <= pd.load_steps; ++step)
       {
         const double factor = double(step) / pd.load_steps;
-        previous_U          = U;
-        pd.previous_u       = pd.u;
-        previous_fe_load    = fe_load;
-        pd.previous_load    = particle_load;
         static_fe_load.equ(factor, fe_full_load);
         static_pd_load.equ(factor, full_load);
 
@@ -654,12 +688,7 @@ namespace perideal
                                                               -pd.internal_force.local_element(k) :
                                                               static_pd_load.local_element(k));
             }
-        for (unsigned int k = 0; k < U.locally_owned_size(); ++k)
-          local_work += 0.5 * (previous_fe_load.local_element(k) + fe_load.local_element(k)) *
-                        (U.local_element(k) - previous_U.local_element(k));
-        for (unsigned int k = 0; k < n_owned * dim; ++k)
-          local_work += 0.5 * (pd.previous_load.local_element(k) + particle_load.local_element(k)) *
-                        (pd.u.local_element(k) - pd.previous_u.local_element(k));
+        accumulate_work();
 
         // Solves and broken bonds per step always (they are the same on every rank count);
         // iteration counts only with progress output.

@@ -109,6 +109,17 @@ namespace perideal
     void
     compute_acceleration(const double time, const bool with_energy);
     /**
+     * @brief Start the work of the loads at 0 from the current state.
+     */
+    void
+    start_work();
+    /**
+     * @brief Add the work of the loads from the previous state to the current one (trapezoidal
+     * rule in the loads) and make the current state the previous one.
+     */
+    void
+    accumulate_work();
+    /**
      * @brief The mass-proportional damping of <Time stepping/Damping>: A -= c V on the free FE
      * dofs, a -= c v on the free components of free particles.
      */
