@@ -268,15 +268,17 @@ namespace perideal
     // Free particles (in FE_Nothing cells) carry their own mass; PD boundary conditions may act
     // only on them.
     const unsigned int n_owned = pd.particle_system.n_owned();
-    free_particle.assign(n_owned, false);
+    motion.assign(std::size_t(n_owned) * dim, Motion::follows_fe);
     std::uint64_t n_constrained_slaved = 0;
     for (unsigned int i = 0; i < n_owned; ++i)
-      {
-        free_particle[i] = !transfer.is_slaved(i);
-        for (unsigned int d = 0; d < dim; ++d)
-          if (!free_particle[i] && pd.boundary_conditions.is_prescribed(i, d))
-            ++n_constrained_slaved;
-      }
+      for (unsigned int d = 0; d < dim; ++d)
+        {
+          const bool prescribed = pd.boundary_conditions.is_prescribed(i, d);
+          if (transfer.is_slaved(i))
+            n_constrained_slaved += prescribed;
+          else
+            motion[i * dim + d] = prescribed ? Motion::prescribed : Motion::moves;
+        }
     n_constrained_slaved = Utilities::MPI::sum(n_constrained_slaved, comm);
     AssertThrow(n_constrained_slaved == 0,
                 ExcMessage(
@@ -333,15 +335,12 @@ namespace perideal
           nodal_force.local_element(k) =
             (pd.internal_force.local_element(k) + pd.external_force.local_element(k)) * volume[i];
           double load = 0., acceleration = 0.;
-          if (free_particle[i])
+          if (motion[k] == Motion::prescribed)
+            load = -pd.internal_force.local_element(k) * volume[i];
+          else if (motion[k] == Motion::moves)
             {
-              if (pd.boundary_conditions.is_prescribed(i, d))
-                load = -pd.internal_force.local_element(k) * volume[i];
-              else
-                {
-                  load         = pd.external_force.local_element(k) * volume[i];
-                  acceleration = nodal_force.local_element(k) / particle_mass[i];
-                }
+              load         = pd.external_force.local_element(k) * volume[i];
+              acceleration = nodal_force.local_element(k) / particle_mass[i];
             }
           particle_load.local_element(k) = load;
           pd.a.local_element(k)          = acceleration;
@@ -421,12 +420,9 @@ namespace perideal
     for (unsigned int k = 0; k < U.locally_owned_size(); ++k)
       if (!mask[k])
         A.local_element(k) -= pd.damping * V.local_element(k);
-    const unsigned int n_owned = pd.particle_system.n_owned();
-    for (unsigned int i = 0; i < n_owned; ++i)
-      if (free_particle[i])
-        for (unsigned int d = 0; d < dim; ++d)
-          if (!pd.boundary_conditions.is_prescribed(i, d))
-            pd.a.local_element(i * dim + d) -= pd.damping * pd.v.local_element(i * dim + d);
+    for (std::size_t k = 0; k < motion.size(); ++k)
+      if (motion[k] == Motion::moves)
+        pd.a.local_element(k) -= pd.damping * pd.v.local_element(k);
   }
 
   template <int dim>
@@ -481,10 +477,9 @@ namespace perideal
     write_statistics(0, 0., false);
     write_output(0, 0.);
 
-    ProgressReporter   progress(comm, log, n_steps, pd.end_time, pd.show_progress && is_root);
-    const unsigned int n_owned     = ps.n_owned();
-    unsigned int       output_step = 1;
-    const auto         start       = std::chrono::steady_clock::now();
+    ProgressReporter progress(comm, log, n_steps, pd.end_time, pd.show_progress && is_root);
+    unsigned int     output_step = 1;
+    const auto       start       = std::chrono::steady_clock::now();
     for (unsigned int step = 1; step <= n_steps; ++step)
       {
         const double time = (step - 1) * dt;
@@ -495,10 +490,9 @@ namespace perideal
         fe.prescribe(time + 0.5 * dt, U, V);
         pd.boundary_conditions.prescribe_step_velocity(time, dt, pd.v);
         U.add(dt, V);
-        for (unsigned int i = 0; i < n_owned; ++i)
-          if (free_particle[i])
-            for (unsigned int d = 0; d < dim; ++d)
-              pd.u.local_element(i * dim + d) += dt * pd.v.local_element(i * dim + d);
+        for (std::size_t k = 0; k < motion.size(); ++k)
+          if (motion[k] != Motion::follows_fe)
+            pd.u.local_element(k) += dt * pd.v.local_element(k);
         fe.prescribe(time + dt, U, V);
         pd.boundary_conditions.prescribe_displacement(time + dt, pd.u);
         U.update_ghost_values();
@@ -577,7 +571,7 @@ namespace perideal
           constrained[comp] = 1.;
     for (unsigned int i = 0; i < n_owned; ++i)
       for (unsigned int d = 0; d < dim; ++d)
-        if (free_particle[i] && pd.boundary_conditions.is_prescribed(i, d))
+        if (motion[i * dim + d] == Motion::prescribed)
           {
             prescribed.local_element(i * dim + d) = 1.;
             constrained[d] += 1.;
@@ -735,7 +729,7 @@ namespace perideal
             largest = std::max(largest, std::abs(fe_residual.local_element(k)));
         for (unsigned int i = 0; i < n_owned; ++i)
           for (unsigned int d = 0; d < dim; ++d)
-            if (free_particle[i] && prescribed.local_element(i * dim + d) == 0.)
+            if (motion[i * dim + d] == Motion::moves)
               largest = std::max(largest,
                                  std::abs(force.local_element(i * dim + d) +
                                           static_pd_load.local_element(i * dim + d)) *
@@ -925,7 +919,7 @@ namespace perideal
     const auto &ps = pd.particle_system;
     for (unsigned int i = 0; i < ps.n_owned(); ++i)
       for (unsigned int d = 0; d < dim; ++d)
-        if (free_particle[i] && !pd.boundary_conditions.is_prescribed(i, d))
+        if (motion[i * dim + d] == Motion::moves)
           residual_max = std::max(residual_max, std::abs(nodal_force.local_element(i * dim + d)));
     log_residual("Force residual at t = 0", residual_max, scale);
   }
@@ -975,12 +969,10 @@ namespace perideal
         for (unsigned int d = 0; d < dim; ++d)
           {
             const double vv = pd.v.local_element(i * dim + d);
-            if (free_particle[i])
-              {
-                kinetic += 0.5 * particle_mass[i] * vv * vv;
-                if (pd.boundary_conditions.is_prescribed(i, d))
-                  prescribed_kinetic += 0.5 * particle_mass[i] * vv * vv;
-              }
+            if (motion[i * dim + d] != Motion::follows_fe)
+              kinetic += 0.5 * particle_mass[i] * vv * vv;
+            if (motion[i * dim + d] == Motion::prescribed)
+              prescribed_kinetic += 0.5 * particle_mass[i] * vv * vv;
             u2 += std::pow(pd.u.local_element(i * dim + d), 2);
           }
         strain += pd.energy_density[i] * volume[i];

@@ -168,7 +168,15 @@ namespace perideal
     double              dt = 0., stable_dt = 0.;
     FEVector            U, V, A, mass, f_ext, residual, fe_load, previous_fe_load, previous_U;
     std::vector<double> particle_volume_weight;
-    std::vector<bool>   free_particle;
+    /// How each owned particle component moves: with the FE field (slaved particles), by its
+    /// acceleration (free), or by a PD displacement or velocity condition (free, prescribed).
+    enum class Motion : unsigned char
+    {
+      follows_fe,
+      moves,
+      prescribed
+    };
+    std::vector<Motion> motion;
     std::vector<double> particle_mass;
     ParticleVector      nodal_force, particle_load;
     // Static runs: the applied loads at the current load factor and the FE residual K z - F.
