@@ -8,9 +8,7 @@
 #include <perideal/base/parameter_utilities.h>
 #include <perideal/base/region.h>
 #include <perideal/coupling/coupled_problem.h>
-#include <perideal/fem/fe_problem.h>
 #include <perideal/pd/boundary_conditions.h>
-#include <perideal/pd/pd_problem.h>
 
 #include <iostream>
 #include <string>
@@ -22,25 +20,39 @@ namespace
   {
     std::cout
       << "Usage: perideal-solid [--validate] FILE.prm\n"
-         "       perideal-solid --print-parameters [2|3] [pd|fe]\n"
-         "  FILE.prm              run the problem described in FILE.prm\n"
+         "       perideal-solid --print-parameters [2|3]\n"
+         "  FILE.prm              run the problem described in FILE.prm: particles "
+         "(<Discretization/Body>),\n"
+         "                        an FE mesh (<Finite elements>), or both joined through an "
+         "overlap\n"
          "  --validate FILE.prm   check every entry of FILE.prm and exit (0: valid)\n"
-         "  --print-parameters    print a complete annotated parameter file of a particle (pd,\n"
-         "                        default) or finite-element (fe) problem, with one example\n"
-         "                        region 'body' and one boundary condition 'support'\n";
+         "  --print-parameters    print a complete annotated parameter file, with one example "
+         "region\n"
+         "                        'body', one particle boundary condition 'support' and one FE\n"
+         "                        boundary condition 'clamp'\n";
   }
 
-  // Run (or only check) a problem of type Problem whose parameters are declared with
-  // Problem::declare_parameters(prm, names...).
-  template <typename Problem, typename... Names>
+  template <int dim>
   void
-  parse_and_run(const std::string &file, const bool validate_only, const Names &...names)
+  run(const std::string &file, const bool validate_only)
   {
-    dealii::ParameterHandler prm;
-    Problem::declare_parameters(prm, names...);
-    perideal::ParameterUtilities::parse_file(prm, file);
+    using namespace perideal;
+    // First pass: the lists of names that decide which subsections exist.
+    dealii::ParameterHandler first_pass;
+    first_pass.declare_entry("Dimension", "2", dealii::Patterns::Integer(2, 3), "");
+    RegionCollection<dim>::declare_names(first_pass);
+    BoundaryConditions<dim>::declare_names(first_pass);
+    FESolid<dim>::declare_names(first_pass);
+    ParameterUtilities::parse_partially(first_pass, file);
 
-    Problem problem(MPI_COMM_WORLD, std::cout);
+    dealii::ParameterHandler prm;
+    CoupledProblem<dim>::declare_parameters(prm,
+                                            RegionCollection<dim>::parse_names(first_pass),
+                                            BoundaryConditions<dim>::parse_names(first_pass),
+                                            FESolid<dim>::parse_names(first_pass));
+    ParameterUtilities::parse_file(prm, file);
+
+    CoupledProblem<dim> problem(MPI_COMM_WORLD, std::cout);
     problem.parse_parameters(prm);
     if (validate_only)
       {
@@ -54,49 +66,10 @@ namespace
 
   template <int dim>
   void
-  run(const std::string &file, const bool validate_only)
-  {
-    using namespace perideal;
-    // First pass: the lists of names that decide which subsections exist, and which regions
-    // (particles, finite elements) the problem has.
-    dealii::ParameterHandler first_pass;
-    first_pass.declare_entry("Dimension", "2", dealii::Patterns::Integer(2, 3), "");
-    first_pass.enter_subsection("Discretization");
-    first_pass.declare_entry("Body", "", dealii::Patterns::Anything(), "");
-    first_pass.leave_subsection();
-    RegionCollection<dim>::declare_names(first_pass);
-    BoundaryConditions<dim>::declare_names(first_pass);
-    FESolid<dim>::declare_names(first_pass);
-    ParameterUtilities::parse_partially(first_pass, file);
-    first_pass.enter_subsection("Discretization");
-    const bool has_particles = !first_pass.get("Body").empty();
-    first_pass.leave_subsection();
-    const bool has_mesh = FESolid<dim>::is_enabled(first_pass);
-
-    if (has_mesh && has_particles)
-      parse_and_run<CoupledProblem<dim>>(file,
-                                         validate_only,
-                                         RegionCollection<dim>::parse_names(first_pass),
-                                         BoundaryConditions<dim>::parse_names(first_pass),
-                                         FESolid<dim>::parse_names(first_pass));
-    else if (has_mesh)
-      parse_and_run<FEProblem<dim>>(file, validate_only, FESolid<dim>::parse_names(first_pass));
-    else
-      parse_and_run<PDProblem<dim>>(file,
-                                    validate_only,
-                                    RegionCollection<dim>::parse_names(first_pass),
-                                    BoundaryConditions<dim>::parse_names(first_pass));
-  }
-
-  template <int dim>
-  void
-  print_parameters(const bool finite_elements)
+  print_parameters()
   {
     dealii::ParameterHandler prm;
-    if (finite_elements)
-      perideal::FEProblem<dim>::declare_parameters(prm, {"support"});
-    else
-      perideal::PDProblem<dim>::declare_parameters(prm, {"body"}, {"support"});
+    perideal::CoupledProblem<dim>::declare_parameters(prm, {"body"}, {"support"}, {"clamp"});
     prm.print_parameters(std::cout, dealii::ParameterHandler::PRM);
   }
 } // namespace
@@ -115,11 +88,10 @@ main(int argc, char **argv)
         }
       if (args[0] == "--print-parameters")
         {
-          const bool finite_elements = (args.size() > 2 && args[2] == "fe");
           if (args.size() > 1 && args[1] == "3")
-            print_parameters<3>(finite_elements);
+            print_parameters<3>();
           else
-            print_parameters<2>(finite_elements);
+            print_parameters<2>();
           return 0;
         }
       const bool validate = (args[0] == "--validate");

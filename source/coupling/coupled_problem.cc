@@ -83,13 +83,19 @@ namespace perideal
   {
     pd.parse_parameters(prm);
     fe.parse_parameters(prm, pd.planar, pd.discretization.thickness);
+    AssertThrow(pd.has_body() || fe.has_mesh(),
+                ExcMessage("The problem has neither particles nor an FE region: give "
+                           "<Discretization/Body> (the regions filled with particles), "
+                           "<Finite elements/Mesh file> or <Finite elements/Generator> (the FE "
+                           "mesh), or both (a coupled problem)."));
+    AssertThrow(pd.solver_type != SolverType::explicit_dynamics || !fe.has_mesh() ||
+                  fe.get_density() > 0.,
+                ExcMessage("The parameter <Finite elements/Density> is " +
+                           ParameterUtilities::format_number(fe.get_density()) +
+                           "; explicit dynamics (<Solver/Type> = explicit) needs the FE mass: "
+                           "accepted values are > 0."));
     // One body force for the whole body: the particles take it with their weights beta_i
     // (BoundaryConditions::add_loads), the FE region with 1 - beta (FESolid's load).
-    AssertThrow(!fe.has_body_force(),
-                ExcMessage("<Finite elements/Body force/Function> is set in a coupled FE-PD run; "
-                           "give the body force once, in <Body force/Function>: it acts on the "
-                           "whole body, weighted by 1 - beta on the FE region and by beta on the "
-                           "particles. Leave <Finite elements/Body force/Function> at 0."));
     if (const auto body_force = pd.boundary_conditions.body_force_function())
       fe.set_body_force(body_force);
     prm.enter_subsection("Coupling");
@@ -99,7 +105,17 @@ namespace perideal
     method->parse_parameters(prm);
     prm.leave_subsection();
     method->check_solver(pd.solver_type);
+    // With one region only, beta is fixed: 1 without a mesh, 0 without particles.
     blending_expression = prm.get("Blending function");
+    AssertThrow((pd.has_body() && fe.has_mesh()) || blending_expression == "0",
+                ExcMessage("<Coupling/Blending function> = <" + blending_expression +
+                           "> is given, but the problem has " +
+                           (fe.has_mesh() ? "no particles (<Discretization/Body> is empty)" :
+                                            "no FE region (no <Finite elements/Mesh file> or "
+                                            "<Finite elements/Generator>)") +
+                           ": the blending function joins two regions; remove it."));
+    if (!fe.has_mesh())
+      blending_expression = "1";
     beta =
       ParameterUtilities::make_function<dim>(blending_expression, 1, "Coupling/Blending function");
     const std::string exact = prm.get("Exact displacement");
@@ -117,6 +133,20 @@ namespace perideal
                            "(<Solver/Type> = static or adaptive dynamic relaxation); remove it or "
                            "change the solver type."));
     prm.leave_subsection();
+  }
+
+  template <int dim>
+  const ParticleSystem<dim> &
+  CoupledProblem<dim>::particles() const
+  {
+    return pd.particle_system;
+  }
+
+  template <int dim>
+  double
+  CoupledProblem<dim>::time_step() const
+  {
+    return dt;
   }
 
   template <int dim>
@@ -289,15 +319,33 @@ namespace perideal
                   "conditions>, or move its region into the PD-only zone (beta = 1)."));
 
     const std::string fe_summary = fe.summary(), coupling_summary = method->summary();
-    if (is_root)
-      log << fe_summary << "\n"
-          << "Coupling: " << method_name << ", " << coupling_summary << std::endl;
+    if (is_root && fe.has_mesh())
+      log << fe_summary << std::endl;
+    if (is_root && is_coupled())
+      log << "Coupling: " << method_name << ", " << coupling_summary << std::endl;
+    // Per particle component, the factors from the internal and the applied force density to
+    // the load that does work: -V_i on prescribed components (the support balances the
+    // internal force), V_i on the others (slaved particles too: they move with u = P U).
+    const auto &volume = pd.particle_system.volumes();
+    internal_work_factor.assign(motion.size(), 0.);
+    applied_work_factor.assign(motion.size(), 0.);
+    for (std::size_t k = 0; k < motion.size(); ++k)
+      if (motion[k] == Motion::prescribed)
+        internal_work_factor[k] = -volume[k / dim];
+      else
+        applied_work_factor[k] = volume[k / dim];
     if (pd.solver_type != SolverType::explicit_dynamics)
       return;
 
     fe.initialize_vector(mass);
     pd.particle_system.reinit_vector(nodal_force, dim);
     method->lumped_masses(mass, particle_mass);
+    // The factor from force density to acceleration: V_i / m_i on the components that move by
+    // their acceleration, 0 on the others.
+    acceleration_factor.assign(motion.size(), 0.);
+    for (std::size_t k = 0; k < motion.size(); ++k)
+      if (motion[k] == Motion::moves)
+        acceleration_factor[k] = volume[k / dim] / particle_mass[k / dim];
 
     // The time step: the smaller of the two regions' stable steps.
     const double fe_dt = fe.stable_time_step(&mass);
@@ -305,7 +353,21 @@ namespace perideal
     dt = ParameterUtilities::choose_time_step(pd.requested_time_step, pd.safety_factor, stable_dt);
 
     if (is_root)
-      log << "Stable time step: FE " << fe_dt << " s, PD " << pd.stable_dt << " s" << std::endl;
+      {
+        log << "Stable time step:";
+        if (fe.n_dofs() > 0)
+          log << " FE " << fe_dt << " s" << (pd.particle_system.n_global() > 0 ? "," : "");
+        if (pd.particle_system.n_global() > 0)
+          log << " PD " << pd.stable_dt << " s";
+        log << std::endl;
+      }
+  }
+
+  template <int dim>
+  bool
+  CoupledProblem<dim>::is_coupled() const
+  {
+    return pd.has_body() && fe.has_mesh();
   }
 
   template <int dim>
@@ -321,30 +383,33 @@ namespace perideal
                                 with_energy ? &pd.energy_density : nullptr,
                                 pd.critical_stretch);
     // The applied forces (zero since the set-up if there are none).
-    if (pd.boundary_conditions.has_loads())
+    const bool loads = pd.boundary_conditions.has_loads();
+    if (loads)
       {
         pd.external_force = 0.;
         pd.boundary_conditions.add_loads(time, pd.external_force);
       }
-    const auto        &volume  = ps.volumes();
-    const unsigned int n_owned = ps.n_owned();
-    for (unsigned int i = 0; i < n_owned; ++i)
-      for (unsigned int d = 0; d < dim; ++d)
-        {
-          const unsigned int k = i * dim + d;
-          nodal_force.local_element(k) =
-            (pd.internal_force.local_element(k) + pd.external_force.local_element(k)) * volume[i];
-          double load = 0., acceleration = 0.;
-          if (motion[k] == Motion::prescribed)
-            load = -pd.internal_force.local_element(k) * volume[i];
-          else if (motion[k] == Motion::moves)
-            {
-              load         = pd.external_force.local_element(k) * volume[i];
-              acceleration = nodal_force.local_element(k) / particle_mass[i];
-            }
-          particle_load.local_element(k) = load;
-          pd.a.local_element(k)          = acceleration;
-        }
+    // Particles: a = f V / m on the components that move by it (one pass, no branches); the
+    // nodal forces f V only where P^T carries them to the FE dofs.
+    const std::size_t n        = motion.size();
+    const double     *internal = pd.internal_force.begin(), *applied = pd.external_force.begin();
+    const double     *factor = acceleration_factor.data();
+    double           *a      = pd.a.begin();
+    if (loads)
+      for (std::size_t k = 0; k < n; ++k)
+        a[k] = (internal[k] + applied[k]) * factor[k];
+    else
+      for (std::size_t k = 0; k < n; ++k)
+        a[k] = internal[k] * factor[k];
+    if (fe.n_dofs() == 0)
+      return;
+    if (transfer.n_global_slaved() > 0)
+      {
+        const auto &volume = pd.particle_system.volumes();
+        double     *nodal  = nodal_force.begin();
+        for (std::size_t k = 0; k < n; ++k)
+          nodal[k] = (internal[k] + applied[k]) * volume[k / dim];
+      }
 
     // FE: R = f_ext - K U + P^T f; prescribed dofs do not move by it, and the work their
     // supports do is that of K U - P^T f (the part of R they balance).
@@ -368,46 +433,51 @@ namespace perideal
 
   template <int dim>
   void
-  CoupledProblem<dim>::start_work()
+  CoupledProblem<dim>::start_work(const ParticleVector &applied)
   {
-    local_work       = 0.;
-    previous_U       = U;
-    pd.previous_u    = pd.u;
-    previous_fe_load = fe_load;
-    pd.previous_load = particle_load;
+    local_work             = 0.;
+    previous_U             = U;
+    previous_fe_load       = fe_load;
+    pd.previous_u          = pd.u;
+    const double *internal = pd.internal_force.begin(), *applied_force = applied.begin();
+    double       *load = pd.previous_load.begin();
+    for (std::size_t k = 0; k < motion.size(); ++k)
+      load[k] = internal_work_factor[k] * internal[k] + applied_work_factor[k] * applied_force[k];
   }
 
   template <int dim>
   void
-  CoupledProblem<dim>::accumulate_work()
+  CoupledProblem<dim>::accumulate_work(const ParticleVector &applied)
   {
-    // Trapezoidal rule in the loads over the step; one pass that also makes the current state
-    // the previous one.
-    // (A local sum: one in the member could alias the arrays and stay out of a register.)
-    const auto accumulate = [this](const unsigned int n,
-                                   double            *load_before,
-                                   const double      *load,
-                                   double            *u_before,
-                                   const double      *u_now) {
-      double work = local_work;
-      for (unsigned int k = 0; k < n; ++k)
+    // Trapezoidal rule in the loads over the step; one pass per region that also makes the
+    // current state the previous one. (Local sums: one in the member could alias the arrays
+    // and stay out of a register.)
+    double work = local_work;
+    {
+      double       *load_before = previous_fe_load.begin(), *u_before = previous_U.begin();
+      const double *load = fe_load.begin(), *u_now = U.begin();
+      for (unsigned int k = 0; k < U.locally_owned_size(); ++k)
         {
           work += 0.5 * (load_before[k] + load[k]) * (u_now[k] - u_before[k]);
           load_before[k] = load[k];
           u_before[k]    = u_now[k];
         }
-      local_work = work;
-    };
-    accumulate(U.locally_owned_size(),
-               previous_fe_load.begin(),
-               fe_load.begin(),
-               previous_U.begin(),
-               U.begin());
-    accumulate(pd.particle_system.n_owned() * dim,
-               pd.previous_load.begin(),
-               particle_load.begin(),
-               pd.previous_u.begin(),
-               pd.u.begin());
+    }
+    {
+      // The particles' load: internal_work_factor f_int + applied_work_factor f_applied.
+      double       *load_before = pd.previous_load.begin(), *u_before = pd.previous_u.begin();
+      const double *u_now = pd.u.begin(), *internal = pd.internal_force.begin();
+      const double *applied_force = applied.begin(), *c_internal = internal_work_factor.data(),
+                   *c_applied = applied_work_factor.data();
+      for (std::size_t k = 0; k < motion.size(); ++k)
+        {
+          const double load = c_internal[k] * internal[k] + c_applied[k] * applied_force[k];
+          work += 0.5 * (load_before[k] + load) * (u_now[k] - u_before[k]);
+          load_before[k] = load;
+          u_before[k]    = u_now[k];
+        }
+    }
+    local_work = work;
   }
 
   template <int dim>
@@ -451,7 +521,6 @@ namespace perideal
                                 &pd.internal_force,
                                 &pd.external_force,
                                 &pd.previous_u,
-                                &particle_load,
                                 &pd.previous_load})
       ps.reinit_vector(*vec, dim);
     for (FEVector *vec : {&U, &V, &A, &f_ext, &residual, &fe_load, &previous_fe_load, &previous_U})
@@ -472,8 +541,9 @@ namespace perideal
     fe.prescribe(0., U, V);
     pd.boundary_conditions.prescribe_displacement(0., pd.u);
     compute_acceleration(0., true);
-    report_initial_residual();
-    start_work();
+    if (is_coupled())
+      report_initial_residual();
+    start_work(pd.external_force);
     write_statistics(0, 0., false);
     write_output(0, 0.);
 
@@ -490,16 +560,19 @@ namespace perideal
         fe.prescribe(time + 0.5 * dt, U, V);
         pd.boundary_conditions.prescribe_step_velocity(time, dt, pd.v);
         U.add(dt, V);
-        for (std::size_t k = 0; k < motion.size(); ++k)
-          if (motion[k] != Motion::follows_fe)
-            pd.u.local_element(k) += dt * pd.v.local_element(k);
+        if (transfer.n_global_slaved() == 0)
+          pd.u.add(dt, pd.v);
+        else
+          for (std::size_t k = 0; k < motion.size(); ++k)
+            if (motion[k] != Motion::follows_fe)
+              pd.u.local_element(k) += dt * pd.v.local_element(k);
         fe.prescribe(time + dt, U, V);
         pd.boundary_conditions.prescribe_displacement(time + dt, pd.u);
         U.update_ghost_values();
 
         const bool write_stats = (step % pd.statistics_interval == 0 || step == n_steps);
         const bool write_fields =
-          (step == n_steps || (pd.particle_interval > 0 && step % pd.particle_interval == 0));
+          (step == n_steps || (pd.output_interval > 0 && step % pd.output_interval == 0));
         compute_acceleration(time + dt, write_stats || write_fields);
         if (pd.damping > 0.)
           add_damping();
@@ -507,7 +580,7 @@ namespace perideal
         pd.v.add(0.5 * dt, pd.a);
         fe.prescribe(time + dt, U, V);
 
-        accumulate_work();
+        accumulate_work(pd.external_force);
 
         const double now = step * dt;
         if (write_stats)
@@ -518,8 +591,13 @@ namespace perideal
       }
     const double seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    const std::uint64_t n_bonds = ps.n_global_bonds();
     if (is_root && pd.show_progress)
-      log << "Wall time of the time loop: " << seconds << " s" << std::endl;
+      {
+        log << "Wall time of the time loop: " << seconds << " s" << std::endl;
+        if (n_bonds > 0)
+          log << "bond updates per second: " << double(n_bonds) * n_steps / seconds << std::endl;
+      }
   }
 
   template <int dim>
@@ -550,6 +628,7 @@ namespace perideal
                            "'displacement' (scaled by the load factor) instead."));
     const std::string solver_name =
       pd.solver_type == SolverType::static_linear ? "static" : "adaptive dynamic relaxation";
+    const bool     relax = (pd.solver_type == SolverType::adaptive_dynamic_relaxation);
     ParticleVector prescribed, target, full_load;
     for (ParticleVector *vec : {&pd.u,
                                 &pd.v,
@@ -557,7 +636,6 @@ namespace perideal
                                 &pd.internal_force,
                                 &pd.external_force,
                                 &pd.previous_u,
-                                &particle_load,
                                 &pd.previous_load,
                                 &static_pd_load,
                                 &prescribed,
@@ -576,17 +654,39 @@ namespace perideal
             prescribed.local_element(i * dim + d) = 1.;
             constrained[d] += 1.;
           }
+    // A component no displacement condition holds leaves a rigid translation free: the static
+    // system is singular; the relaxation leaves it at rest while it is not loaded, but needs at
+    // least one condition.
+    const std::string where = is_coupled()  ? "in <Finite elements/Boundary conditions> (type "
+                                              "'displacement') or on free particles in "
+                                              "<Boundary conditions>" :
+                              fe.has_mesh() ? "in <Finite elements/Boundary conditions> (type "
+                                              "'displacement')" :
+                                              "on a region in <Boundary conditions> (type "
+                                              "'displacement')";
+    const std::string conditions_named =
+      " (boundary conditions: " + (condition_list.empty() ? std::string("none") : condition_list) +
+      ")";
+    double n_constrained = 0.;
     for (unsigned int d = 0; d < dim; ++d)
-      AssertThrow(Utilities::MPI::sum(constrained[d], comm) > 0.,
-                  ExcMessage(
-                    "No displacement condition prescribes the " + axis_name(d) +
-                    " component anywhere (boundary conditions: " +
-                    (condition_list.empty() ? std::string("none") : condition_list) +
-                    "), so a rigid translation in " + axis_name(d) +
-                    " is free and the quasi-static problem (<Solver/Type> = " + solver_name +
-                    ") is singular. Prescribe it in <Finite elements/Boundary "
-                    "conditions> (type 'displacement') or on free particles in <Boundary "
-                    "conditions>."));
+      {
+        constrained[d] = Utilities::MPI::sum(constrained[d], comm);
+        n_constrained += constrained[d];
+        AssertThrow(constrained[d] > 0. || relax,
+                    ExcMessage("No displacement condition prescribes the " + axis_name(d) +
+                               " component anywhere" + conditions_named +
+                               ", so a rigid translation in " + axis_name(d) +
+                               " is free and the static system (<Solver/Type> = static) is "
+                               "singular. Prescribe it " +
+                               where +
+                               ", or use 'adaptive dynamic relaxation', which leaves unloaded "
+                               "rigid motions at rest."));
+      }
+    AssertThrow(n_constrained > 0.,
+                ExcMessage("A quasi-static solve (<Solver/Type> = " + solver_name +
+                           ") needs at least one displacement condition" + conditions_named +
+                           ": without one every rigid motion is free. Prescribe one " + where +
+                           "."));
 
     FEVector fe_target, fe_full_load;
     for (FEVector *vec : {&U,
@@ -626,13 +726,15 @@ namespace perideal
     settings.relaxation.length_scale   = pd.discretization.horizon;
     settings.relaxation_safety         = pd.relaxation_safety;
     method->initialize_equilibrium(prescribed, settings, condition_list);
-    const bool relax = (pd.solver_type == SolverType::adaptive_dynamic_relaxation);
     if (is_root)
       log << (relax ? "Adaptive dynamic relaxation: " : "Static solve: ") << method->n_unknowns()
-          << " unknowns (FE dofs and free particle components), " << pd.load_steps
-          << " load step(s)" << std::endl;
+          << " unknowns ("
+          << (is_coupled()  ? "FE dofs and free particle components" :
+              fe.has_mesh() ? "FE dofs" :
+                              "particle components")
+          << "), " << pd.load_steps << " load step(s)" << std::endl;
 
-    start_work();
+    start_work(static_pd_load);
     write_static_statistics(0, 0., 0, 0., false);
     const auto &mask   = fe.prescribed_mask();
     const auto &volume = ps.volumes();
@@ -674,15 +776,7 @@ namespace perideal
         for (unsigned int k = 0; k < U.locally_owned_size(); ++k)
           fe_load.local_element(k) =
             static_fe_load.local_element(k) + (mask[k] ? residual.local_element(k) : 0.);
-        for (unsigned int i = 0; i < n_owned; ++i)
-          for (unsigned int d = 0; d < dim; ++d)
-            {
-              const unsigned int k           = i * dim + d;
-              particle_load.local_element(k) = volume[i] * (prescribed.local_element(k) != 0. ?
-                                                              -pd.internal_force.local_element(k) :
-                                                              static_pd_load.local_element(k));
-            }
-        accumulate_work();
+        accumulate_work(static_pd_load);
 
         // Solves and broken bonds per step always (they are the same on every rank count);
         // iteration counts only with progress output.
@@ -690,7 +784,9 @@ namespace perideal
         if (is_root)
           {
             log << "Load step " << step << "/" << pd.load_steps << ": " << passes + 1
-                << " solve(s), " << broken << " broken bonds";
+                << " solve(s)";
+            if (pd.has_body())
+              log << ", " << broken << " broken bonds";
             if (pd.show_progress)
               log << ", " << iterations << (relax ? " relaxation" : " CG") << " iterations";
             log << std::endl;
@@ -766,6 +862,7 @@ namespace perideal
         max_u = std::max(max_u, std::sqrt(u2));
       }
     max_u                     = Utilities::MPI::max(max_u, comm);
+    const double max_fe_u     = U.linfty_norm();
     const double fe_energy    = fe.strain_energy(U);
     const double strain       = fe_energy + pd_energy;
     const double work         = Utilities::MPI::sum(local_work, comm);
@@ -819,8 +916,13 @@ namespace perideal
     file.add_value("pd_strain_energy", pd_energy);
     file.add_value("external_work", work);
     file.add_value("energy_error", energy_error);
-    file.add_value("broken_bonds", broken);
-    file.add_value("max_particle_displacement", max_u);
+    if (pd.particle_system.n_global() > 0)
+      {
+        file.add_value("broken_bonds", broken);
+        file.add_value("max_particle_displacement", max_u);
+      }
+    if (fe.n_dofs() > 0)
+      file.add_value("max_fe_displacement", max_fe_u);
     file.add_value("iterations", iterations);
     for (unsigned int k = 0; k < pd_reactions.size(); ++k)
       for (unsigned int d = 0; d < dim; ++d)
@@ -875,12 +977,14 @@ namespace perideal
       {
         const auto flags = log.flags();
         log << std::scientific << std::setprecision(6) << "Load factor: " << factor << "\n"
-            << "Strain energy: " << strain << " J (FE " << fe_energy << " J, particles "
-            << pd_energy << " J)\n"
+            << "Strain energy: " << strain << " J";
+        if (is_coupled())
+          log << " (FE " << fe_energy << " J, particles " << pd_energy << " J)";
+        log << "\n"
             << "External work: " << work << " J\n"
-            << "Energy error: " << energy_error << " J (relative " << relative_energy_error << ")\n"
-            << "Broken bonds: " << broken << "\n"
-            << "Max particle displacement: " << max_u << " m\n";
+            << "Energy error: " << energy_error << " J (relative " << relative_energy_error
+            << ")\n";
+        log_displacements(broken, max_u, max_fe_u);
         log_reactions(pd_reactions, fe_reactions);
         log << "Applied load: " << without_round_off(applied) << " N\n"
             << "Force balance: |applied + reactions| = " << imbalance
@@ -920,7 +1024,10 @@ namespace perideal
     for (unsigned int i = 0; i < ps.n_owned(); ++i)
       for (unsigned int d = 0; d < dim; ++d)
         if (motion[i * dim + d] == Motion::moves)
-          residual_max = std::max(residual_max, std::abs(nodal_force.local_element(i * dim + d)));
+          residual_max = std::max(residual_max,
+                                  std::abs(pd.internal_force.local_element(i * dim + d) +
+                                           pd.external_force.local_element(i * dim + d)) *
+                                    ps.volumes()[i]);
     log_residual("Force residual at t = 0", residual_max, scale);
   }
 
@@ -982,6 +1089,7 @@ namespace perideal
     prescribed_kinetic    = Utilities::MPI::sum(prescribed_kinetic, comm);
     strain                = Utilities::MPI::sum(strain, comm) + fe.strain_energy(U);
     max_u                 = Utilities::MPI::max(max_u, comm);
+    const double max_fe_u = U.linfty_norm();
     const double work_sum = Utilities::MPI::sum(local_work, comm);
     energy_balance.record(step, kinetic, strain, work_sum, prescribed_kinetic);
     energy_balance.check_stable(time, stable_dt);
@@ -1004,8 +1112,13 @@ namespace perideal
     file.add_value("strain_energy", strain);
     file.add_value("external_work", work);
     file.add_value("energy_error", energy_error);
-    file.add_value("broken_bonds", broken);
-    file.add_value("max_particle_displacement", max_u);
+    if (pd.particle_system.n_global() > 0)
+      {
+        file.add_value("broken_bonds", broken);
+        file.add_value("max_particle_displacement", max_u);
+      }
+    if (fe.n_dofs() > 0)
+      file.add_value("max_fe_displacement", max_fe_u);
     const char axis[3] = {'x', 'y', 'z'};
     for (unsigned int k = 0; k < pd_reactions.size(); ++k)
       for (unsigned int d = 0; d < dim; ++d)
@@ -1024,15 +1137,27 @@ namespace perideal
             << "Kinetic energy: " << kinetic << " J\n"
             << "Strain energy: " << strain << " J\n"
             << "External work: " << work << " J\n"
-            << "Energy error: " << energy_error << " J\n"
-            << "Broken bonds: " << broken << "\n"
-            << "Max particle displacement: " << max_u << " m\n";
+            << "Energy error: " << energy_error << " J\n";
+        log_displacements(broken, max_u, max_fe_u);
         log_reactions(pd_reactions, fe_reactions);
         log << std::flush;
         log.flags(flags);
       }
     if (final_row)
       pd.log_probes();
+  }
+
+  template <int dim>
+  void
+  CoupledProblem<dim>::log_displacements(const std::uint64_t broken,
+                                         const double        max_particle,
+                                         const double        max_fe) const
+  {
+    if (pd.particle_system.n_global() > 0)
+      log << "Broken bonds: " << broken << "\n"
+          << "Max particle displacement: " << max_particle << " m\n";
+    if (fe.n_dofs() > 0)
+      log << "Max FE displacement: " << max_fe << " m (largest nodal component)\n";
   }
 
   template <int dim>

@@ -81,85 +81,93 @@ namespace perideal
     const types::global_dof_index first_global = n_owned > 0 ? particles.global_index(0) : 0;
     const auto                    offsets      = Utilities::MPI::all_gather(comm, first_global);
 
-    // Locate the owned particles in the locally owned cells of all ranks (one cell each).
-    const MappingQ1<dim>        mapping;
-    const GridTools::Cache<dim> cache(tria, mapping);
-    const auto                  local_boxes  = owned_cell_boxes(tria);
-    const auto                  global_boxes = Utilities::MPI::all_gather(comm, local_boxes);
-    std::vector<Point<dim>>     points(x.begin(), x.begin() + n_owned);
-    const auto                  located =
-      GridTools::internal::distributed_compute_point_locations(cache,
-                                                               points,
-                                                               global_boxes,
-                                                               std::vector<bool>(),
-                                                               1e-10,
-                                                               /*perform_handshake=*/true,
-                                                               /*enforce_unique_mapping=*/true);
-
-    // Every particle must lie in the mesh (checked on all ranks together, so that all throw).
-    {
-      std::vector<bool> found(n_owned, false);
-      for (const auto &component : located.recv_components)
-        found[std::get<1>(component)] = true;
-      std::vector<Point<dim>> lost;
-      for (unsigned int i = 0; i < n_owned; ++i)
-        if (!found[i])
-          lost.push_back(x[i]);
-      const auto n_lost = Utilities::MPI::sum<types::global_dof_index>(lost.size(), comm);
-      if (n_lost > 0)
-        {
-          Point<dim> first;
-          for (const auto &points_of_rank : Utilities::MPI::all_gather(comm, lost))
-            if (!points_of_rank.empty())
-              {
-                first = points_of_rank.front();
-                break;
-              }
-          std::string where;
-          for (unsigned int d = 0; d < dim; ++d)
-            where += (d > 0 ? ", " : "") + ParameterUtilities::format_number(first[d]);
-          AssertThrow(false,
-                      ExcMessage(std::to_string(n_lost) + " particle(s), the first at (" + where +
-                                 "), lie outside the FE mesh: the PD region (<Discretization/"
-                                 "Body>, widened by the horizon where beta > 0) must lie inside "
-                                 "the mesh of <Finite elements>."));
-        }
-    }
-
-    // The rows this rank computes: for each located point in an FE-carrying cell, the shape
-    // functions of that cell.
-    const auto                          &fe_element = fe.get_fe_collection()[0];
-    const unsigned int                   n_dofs     = fe_element.n_dofs_per_cell();
-    std::vector<types::global_dof_index> dofs(n_dofs);
     struct Entry
     {
       types::global_dof_index row, column;
       double                  value;
     };
     std::vector<Entry> entries;
-    for (const auto &component : located.send_components)
+    // Without FE unknowns (an empty FE region) every particle is free: no point search, an
+    // empty P.
+    if (dof_handler.n_dofs() > 0)
       {
-        const auto &[level_index, rank, local, reference, real, permutation] = component;
-        (void)permutation;
-        const typename DoFHandler<dim>::active_cell_iterator cell(&tria,
-                                                                  level_index.first,
-                                                                  level_index.second,
-                                                                  &dof_handler);
-        AssertThrow(GeometryInfo<dim>::is_inside_unit_cell(reference, 1e-8),
-                    ExcInternalError(
-                      "The point search placed a particle outside its cell (" +
-                      std::to_string(reference[0]) + ", " + std::to_string(reference[1]) +
-                      ") at (" + std::to_string(real[0]) + ", " + std::to_string(real[1]) + ")."));
-        if (cell->active_fe_index() != 0)
-          continue; // FE_Nothing: the particle is free
-        cell->get_dof_indices(dofs);
-        const types::global_dof_index particle = offsets[rank] + local;
-        for (unsigned int a = 0; a < n_dofs; ++a)
+        // Locate the owned particles in the locally owned cells of all ranks (one cell each).
+        const MappingQ1<dim>        mapping;
+        const GridTools::Cache<dim> cache(tria, mapping);
+        const auto                  local_boxes  = owned_cell_boxes(tria);
+        const auto                  global_boxes = Utilities::MPI::all_gather(comm, local_boxes);
+        std::vector<Point<dim>>     points(x.begin(), x.begin() + n_owned);
+        const auto                  located =
+          GridTools::internal::distributed_compute_point_locations(cache,
+                                                                   points,
+                                                                   global_boxes,
+                                                                   std::vector<bool>(),
+                                                                   1e-10,
+                                                                   /*perform_handshake=*/true,
+                                                                   /*enforce_unique_mapping=*/true);
+
+        // Every particle must lie in the mesh (checked on all ranks together, so that all throw).
+        {
+          std::vector<bool> found(n_owned, false);
+          for (const auto &component : located.recv_components)
+            found[std::get<1>(component)] = true;
+          std::vector<Point<dim>> lost;
+          for (unsigned int i = 0; i < n_owned; ++i)
+            if (!found[i])
+              lost.push_back(x[i]);
+          const auto n_lost = Utilities::MPI::sum<types::global_dof_index>(lost.size(), comm);
+          if (n_lost > 0)
+            {
+              Point<dim> first;
+              for (const auto &points_of_rank : Utilities::MPI::all_gather(comm, lost))
+                if (!points_of_rank.empty())
+                  {
+                    first = points_of_rank.front();
+                    break;
+                  }
+              std::string where;
+              for (unsigned int d = 0; d < dim; ++d)
+                where += (d > 0 ? ", " : "") + ParameterUtilities::format_number(first[d]);
+              AssertThrow(false,
+                          ExcMessage(
+                            std::to_string(n_lost) + " particle(s), the first at (" + where +
+                            "), lie outside the FE mesh: the PD region (<Discretization/"
+                            "Body>, widened by the horizon where beta > 0) must lie inside "
+                            "the mesh of <Finite elements>."));
+            }
+        }
+
+        // The rows this rank computes: for each located point in an FE-carrying cell, the shape
+        // functions of that cell.
+        const auto                          &fe_element = fe.get_fe_collection()[0];
+        const unsigned int                   n_dofs     = fe_element.n_dofs_per_cell();
+        std::vector<types::global_dof_index> dofs(n_dofs);
+        for (const auto &component : located.send_components)
           {
-            const double value = fe_element.shape_value(a, reference);
-            if (value != 0.)
-              entries.push_back(
-                {particle * dim + fe_element.system_to_component_index(a).first, dofs[a], value});
+            const auto &[level_index, rank, local, reference, real, permutation] = component;
+            (void)permutation;
+            const typename DoFHandler<dim>::active_cell_iterator cell(&tria,
+                                                                      level_index.first,
+                                                                      level_index.second,
+                                                                      &dof_handler);
+            AssertThrow(GeometryInfo<dim>::is_inside_unit_cell(reference, 1e-8),
+                        ExcInternalError("The point search placed a particle outside its cell (" +
+                                         std::to_string(reference[0]) + ", " +
+                                         std::to_string(reference[1]) + ") at (" +
+                                         std::to_string(real[0]) + ", " + std::to_string(real[1]) +
+                                         ")."));
+            if (cell->active_fe_index() != 0)
+              continue; // FE_Nothing: the particle is free
+            cell->get_dof_indices(dofs);
+            const types::global_dof_index particle = offsets[rank] + local;
+            for (unsigned int a = 0; a < n_dofs; ++a)
+              {
+                const double value = fe_element.shape_value(a, reference);
+                if (value != 0.)
+                  entries.push_back({particle * dim + fe_element.system_to_component_index(a).first,
+                                     dofs[a],
+                                     value});
+              }
           }
       }
 

@@ -187,16 +187,6 @@ namespace perideal
   }
 
   template <int dim>
-  bool
-  FESolid<dim>::is_enabled(ParameterHandler &prm)
-  {
-    prm.enter_subsection(section);
-    const bool enabled = !prm.get("Mesh file").empty() || !prm.get("Generator").empty();
-    prm.leave_subsection();
-    return enabled;
-  }
-
-  template <int dim>
   void
   FESolid<dim>::declare_parameters(ParameterHandler               &prm,
                                    const std::vector<std::string> &condition_names)
@@ -224,19 +214,8 @@ namespace perideal
                       Patterns::Integer(1, 4),
                       "Degree p of the FE_Q(p) displacement elements.");
     prm.declare_entry("Density", "0", Patterns::Double(0.), "Mass density rho [kg/m^3].");
-    prm.declare_entry("Solver tolerance",
-                      "1e-10",
-                      Patterns::Double(0.),
-                      "Static solve: CG stops when |r| <= tolerance |f|.");
     prm.enter_subsection("Elasticity");
     ElasticMaterial::declare_parameters(prm);
-    prm.leave_subsection();
-    prm.enter_subsection("Body force");
-    prm.declare_entry("Function",
-                      dim == 2 ? "0; 0" : "0; 0; 0",
-                      Patterns::Anything(),
-                      "Body force density b(x, t) [N/m^3], one expression of x, y, (z), t per "
-                      "component, separated by ';'.");
     prm.leave_subsection();
     prm.enter_subsection("Boundary conditions");
     for (const auto &name : condition_names)
@@ -271,31 +250,33 @@ namespace perideal
     mesh_file           = prm.get("Mesh file");
     generator           = prm.get("Generator");
     generator_arguments = prm.get("Generator arguments");
-    AssertThrow(!mesh_file.empty() || !generator.empty(),
-                ExcMessage("The FE region needs <" + section + "/Mesh file> or <" + section +
-                           "/Generator>."));
+    condition_list.clear();
+    // No mesh: no FE region, and nothing else of this section is read.
+    if (!has_mesh())
+      {
+        AssertThrow(names.empty(),
+                    ExcMessage("<" + section +
+                               "/Boundary conditions/Names> lists FE boundary conditions, but "
+                               "there is no FE region: give <" +
+                               section + "/Mesh file> or <" + section +
+                               "/Generator>, or remove the conditions."));
+        prm.leave_subsection();
+        return;
+      }
     AssertThrow(mesh_file.empty() || std::filesystem::exists(mesh_file),
                 ExcMessage("The parameter <" + section + "/Mesh file> = <" + mesh_file +
                            "> names no file (paths are relative to the working directory)."));
     global_refinements = prm.get_integer("Global refinements");
     degree             = prm.get_integer("Polynomial degree");
     density            = prm.get_double("Density");
-    solver_tolerance   = prm.get_double("Solver tolerance");
     prm.enter_subsection("Elasticity");
     material.parse_parameters(prm, section + "/Elasticity");
     prm.leave_subsection();
     C = material.tensor<dim>(planar);
-    prm.enter_subsection("Body force");
-    const std::string body_force_expression = prm.get("Function");
-    body_force         = ParameterUtilities::make_function<dim>(body_force_expression,
-                                                        dim,
-                                                        section + "/Body force/Function");
+    // The body force is the problem's (<Body force/Function>), set by set_body_force().
+    body_force         = std::make_shared<Functions::ZeroFunction<dim>>(dim);
     nonzero_body_force = false;
-    for (const auto &part : Utilities::split_string_list(body_force_expression, ';'))
-      nonzero_body_force = nonzero_body_force || (part != "0");
-    prm.leave_subsection();
 
-    condition_list.clear();
     prm.enter_subsection("Boundary conditions");
     for (const auto &name : names)
       {
@@ -380,7 +361,11 @@ namespace perideal
   void
   FESolid<dim>::make_mesh()
   {
-    if (!mesh_file.empty())
+    // No FE region: one cell without FE unknowns (its position does not matter: no particle
+    // is looked up in a mesh without unknowns).
+    if (!has_mesh())
+      GridGenerator::hyper_cube(triangulation);
+    else if (!mesh_file.empty())
       {
         GridIn<dim>   grid_in(triangulation);
         std::ifstream in(mesh_file);
@@ -424,7 +409,7 @@ namespace perideal
   void
   FESolid<dim>::setup(const WeightFunction &weight)
   {
-    fe_weight = weight;
+    fe_weight = has_mesh() ? weight : [](const Point<dim> &) { return 0.; };
     make_mesh();
 
     fe_collection.push_back(FESystem<dim>(FE_Q<dim>(degree), dim));
@@ -574,6 +559,13 @@ namespace perideal
   FESolid<dim>::weight(const Point<dim> &p) const
   {
     return fe_weight ? fe_weight(p) : 1.;
+  }
+
+  template <int dim>
+  bool
+  FESolid<dim>::has_mesh() const
+  {
+    return !mesh_file.empty() || !generator.empty();
   }
 
   template <int dim>
@@ -799,7 +791,7 @@ namespace perideal
 
   template <int dim>
   unsigned int
-  FESolid<dim>::solve_static(const double time)
+  FESolid<dim>::solve_static(const double time, const double tolerance)
   {
     for (const auto &c : condition_list)
       AssertThrow(c.type != ConditionType::velocity,
@@ -847,7 +839,7 @@ namespace perideal
     amg.initialize(system_matrix, amg_data);
 
     const double     rhs_norm = rhs.l2_norm();
-    SolverControl    control(10000, solver_tolerance * std::max(rhs_norm, 1e-300));
+    SolverControl    control(10000, tolerance * std::max(rhs_norm, 1e-300));
     SolverCG<Vector> cg(control);
     if (rhs_norm > 0.)
       {
@@ -1020,6 +1012,8 @@ namespace perideal
   std::string
   FESolid<dim>::summary() const
   {
+    if (!has_mesh())
+      return "FE region: none";
     std::ostringstream out;
     const auto         n_active = Utilities::MPI::sum<std::uint64_t>(
       [&] {

@@ -4,9 +4,6 @@
 #include <deal.II/base/utilities.h>
 
 #include <perideal/base/parameter_utilities.h>
-#include <perideal/base/progress_reporter.h>
-#include <perideal/pd/adaptive_dynamic_relaxation.h>
-#include <perideal/pd/explicit_solver.h>
 #include <perideal/pd/pd_problem.h>
 
 #include <algorithm>
@@ -228,10 +225,12 @@ namespace perideal
     prm.enter_subsection("Output");
     prm.declare_entry("Directory", "output", Patterns::Anything(), "Where results are written.");
     prm.declare_entry("Base name", "particles", Patterns::Anything(), "Prefix of particle files.");
-    prm.declare_entry("Particle output interval",
+    prm.declare_entry("Output interval",
                       "0",
                       Patterns::Integer(0),
-                      "Write particle fields every this many steps (0: first and last step only).");
+                      "Explicit: write the particle and FE fields every this many steps (0: first "
+                      "and last step only); quasi-static runs write them after the last load "
+                      "step.");
     prm.declare_entry("Statistics interval",
                       "10",
                       Patterns::Integer(1),
@@ -254,8 +253,17 @@ namespace perideal
   PDProblem<dim>::parse_parameters(ParameterHandler &prm)
   {
     prm.enter_subsection("Discretization");
-    discretization.spacing = prm.get_double("Lattice spacing");
-    ParameterUtilities::require_positive(discretization.spacing, "Discretization/Lattice spacing");
+    // An empty <Body>: no particles (an FE-only problem); the PD entries are then not read,
+    // except those the FE region shares (planar assumption, thickness).
+    body_regions = ParameterUtilities::split_names(prm.get("Body"));
+    if (has_body())
+      {
+        discretization.spacing = prm.get_double("Lattice spacing");
+        ParameterUtilities::require_positive(discretization.spacing,
+                                             "Discretization/Lattice spacing");
+      }
+    else
+      discretization.spacing = 1.; // a lattice for no particles
     horizon_factor = prm.get_double("Horizon factor");
     AssertThrow(horizon_factor > 1.,
                 ExcMessage("The parameter <Discretization/Horizon factor> is " +
@@ -270,10 +278,6 @@ namespace perideal
                                      partial == "book" ? PartialVolume::book :
                                                          PartialVolume::geometric);
     surface_correction            = prm.get_bool("Surface correction");
-    body_regions                  = ParameterUtilities::split_names(prm.get("Body"));
-    AssertThrow(!body_regions.empty(),
-                ExcMessage("The parameter <Discretization/Body> is empty; list the regions that "
-                           "form the body."));
     prm.leave_subsection();
 
     regions.parse_parameters(prm);
@@ -286,22 +290,28 @@ namespace perideal
 
     prm.enter_subsection("Material");
     {
-      planar  = planar_assumption_from_name(prm.get("Planar assumption"), dim);
-      density = prm.get_double("Density");
-      ParameterUtilities::require_positive(density, "Material/Density");
+      planar                       = planar_assumption_from_name(prm.get("Planar assumption"), dim);
+      density                      = prm.get_double("Density");
       const std::string model_name = prm.get("Model");
       material = PluginRegistry<MaterialModel<dim>>::create(model_name, "Material/Model");
-      prm.enter_subsection(model_name);
-      material->parse_parameters(prm);
-      prm.leave_subsection();
+      if (has_body())
+        {
+          ParameterUtilities::require_positive(density, "Material/Density");
+          prm.enter_subsection(model_name);
+          material->parse_parameters(prm);
+          prm.leave_subsection();
+        }
       no_fail_regions = ParameterUtilities::split_names(prm.get("No-fail regions"));
       for (const auto &name : no_fail_regions)
         regions.get(name, "Material/No-fail regions");
       const std::string damage_name = prm.get("Damage model");
       damage = PluginRegistry<DamageModel<dim>>::create(damage_name, "Material/Damage model");
-      prm.enter_subsection(damage_name);
-      damage->parse_parameters(prm);
-      prm.leave_subsection();
+      if (has_body())
+        {
+          prm.enter_subsection(damage_name);
+          damage->parse_parameters(prm);
+          prm.leave_subsection();
+        }
     }
     prm.leave_subsection();
 
@@ -349,7 +359,7 @@ namespace perideal
     prm.enter_subsection("Output");
     output_directory    = prm.get("Directory");
     base_name           = prm.get("Base name");
-    particle_interval   = prm.get_integer("Particle output interval");
+    output_interval     = prm.get_integer("Output interval");
     statistics_interval = prm.get_integer("Statistics interval");
     write_hdf5          = prm.get_bool("Write HDF5");
     write_vtu           = prm.get_bool("Write VTU");
@@ -366,19 +376,27 @@ namespace perideal
   PDProblem<dim>::setup(const std::function<bool(const Point<dim> &)>   &keep,
                         const std::function<double(const Point<dim> &)> &energy_weight)
   {
-    const auto in_body = regions.union_of(body_regions, "Discretization/Body");
-    particle_system.generate(discretization,
-                             regions.bounding_box_of(body_regions, "Discretization/Body"),
-                             keep ? std::function<bool(const Point<dim> &)>(
-                                      [&](const Point<dim> &x) { return keep(x) && in_body(x); }) :
-                                    std::function<bool(const Point<dim> &)>(in_body),
-                             pre_cracks,
-                             regions.union_of(no_fail_regions, "Material/No-fail regions"));
-    // A coupled problem may leave the PD region empty (beta = 0 on the whole body): the FE
-    // problem alone through the coupled code path.
-    AssertThrow(keep || particle_system.n_global() > 0,
-                ExcMessage("The body (<Discretization/Body>) holds no particle: its regions are "
-                           "smaller than the lattice spacing or empty."));
+    if (has_body())
+      {
+        const auto in_body = regions.union_of(body_regions, "Discretization/Body");
+        particle_system.generate(discretization,
+                                 regions.bounding_box_of(body_regions, "Discretization/Body"),
+                                 keep ?
+                                   std::function<bool(const Point<dim> &)>(
+                                     [&](const Point<dim> &x) { return keep(x) && in_body(x); }) :
+                                   std::function<bool(const Point<dim> &)>(in_body),
+                                 pre_cracks,
+                                 regions.union_of(no_fail_regions, "Material/No-fail regions"));
+        // A coupled problem may leave the PD region empty (beta = 0 on the whole body).
+        AssertThrow(keep || particle_system.n_global() > 0,
+                    ExcMessage("The body (<Discretization/Body>) holds no particle: its regions "
+                               "are smaller than the lattice spacing or empty."));
+      }
+    else
+      particle_system.generate(discretization,
+                               BoundingBox<dim>(),
+                               [](const Point<dim> &) { return false; },
+                               {});
 
     if (energy_weight)
       particle_system.set_energy_weights(energy_weight);
@@ -395,297 +413,20 @@ namespace perideal
     locate_probes();
 
     stable_dt = material->stable_time_step(particle_system, density);
-    dt        = ParameterUtilities::choose_time_step(requested_time_step, safety_factor, stable_dt);
 
     const auto n_bonds = particle_system.n_global_bonds();
-    if (is_root)
+    if (is_root && has_body())
       log << "Particles: " << particle_system.n_global() << "\n"
           << "Bonds: " << n_bonds << "\n"
           << "Material: " << material->summary() << "\n"
-          << "Critical stretch: " << critical_stretch << "\n"
-          << "Stable time step: " << stable_dt << " s\n";
+          << "Critical stretch: " << critical_stretch << std::endl;
   }
 
   template <int dim>
-  void
-  PDProblem<dim>::compute_acceleration(const double    time,
-                                       ParticleVector &displacement,
-                                       ParticleVector &acceleration)
+  bool
+  PDProblem<dim>::has_body() const
   {
-    displacement.update_ghost_values();
-    material->compute_forces(particle_system,
-                             displacement,
-                             internal_force,
-                             energy_density.empty() ? nullptr : &energy_density,
-                             critical_stretch);
-    acceleration.equ(1. / density, internal_force);
-    if (boundary_conditions.has_loads())
-      {
-        external_force = 0.;
-        boundary_conditions.add_loads(time, external_force);
-        acceleration.add(1. / density, external_force);
-      }
-  }
-
-  template <int dim>
-  void
-  PDProblem<dim>::run()
-  {
-    switch (solver_type)
-      {
-        case SolverType::explicit_dynamics:
-          run_explicit();
-          break;
-        case SolverType::adaptive_dynamic_relaxation:
-        case SolverType::static_linear:
-          run_quasi_static();
-          break;
-      }
-  }
-
-  template <int dim>
-  void
-  PDProblem<dim>::run_explicit()
-  {
-    const unsigned int n_steps = ParameterUtilities::equal_time_steps(end_time, dt);
-    if (is_root)
-      log << "Time step: " << dt << " s, steps: " << n_steps << std::endl;
-
-    start_run();
-    ProgressReporter progress(communicator, log, n_steps, end_time, show_progress && is_root);
-
-    VelocityVerlet::Operations operations;
-    operations.acceleration = [this](const double t, ParticleVector &uu, ParticleVector &aa) {
-      compute_acceleration(t, uu, aa);
-    };
-    operations.prescribe_step_velocity =
-      [this](const double t, const double step, ParticleVector &vv) {
-        boundary_conditions.prescribe_step_velocity(t, step, vv);
-      };
-    operations.prescribe_displacement = [this](const double t, ParticleVector &uu) {
-      boundary_conditions.prescribe_displacement(t, uu);
-    };
-    VelocityVerlet stepper(operations, dt, damping);
-
-    energy_density.assign(particle_system.n_owned(), 0.);
-    stepper.initialize(0., u, a);
-    compute_work_load(previous_load);
-    previous_u          = u;
-    local_external_work = 0.;
-    write_statistics(0, 0., false);
-    write_particles(0, 0.);
-
-    const std::uint64_t n_bonds = particle_system.n_global_bonds();
-    const auto          start   = std::chrono::steady_clock::now();
-    for (unsigned int step = 1; step <= n_steps; ++step)
-      {
-        const double time        = (step - 1) * dt;
-        const bool   write_stats = (step % statistics_interval == 0 || step == n_steps);
-        const bool   write_fields =
-          (step == n_steps || (particle_interval > 0 && step % particle_interval == 0));
-        if (write_stats || write_fields)
-          energy_density.assign(particle_system.n_owned(), 0.);
-        else
-          energy_density.clear();
-        stepper.step(time, u, v, a);
-        accumulate_external_work();
-        if (write_stats)
-          write_statistics(step, step * dt, step * dt >= end_time * (1 - 1e-12));
-        if (write_fields)
-          write_particles(step, step * dt);
-        progress.update(step, step * dt);
-      }
-    const double seconds =
-      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    if (is_root && show_progress)
-      log << "Wall time of the time loop: " << seconds << " s\n"
-          << "bond updates per second: " << double(n_bonds) * n_steps / seconds << std::endl;
-  }
-
-  template <int dim>
-  void
-  PDProblem<dim>::run_quasi_static()
-  {
-    const auto velocity_conditions =
-      boundary_conditions.names_of_type(BoundaryConditions<dim>::Type::velocity);
-    AssertThrow(velocity_conditions.empty(),
-                ExcMessage("The boundary condition <" + velocity_conditions.front() +
-                           "> is of type 'velocity', which a quasi-static solve (<Solver/Type> "
-                           "= adaptive dynamic relaxation or static) cannot apply; use "
-                           "'displacement' (scaled by the load factor) instead."));
-    std::string condition_list;
-    for (const auto &name : boundary_conditions.names())
-      condition_list += (condition_list.empty() ? "" : ", ") + name;
-    const auto displacement_conditions =
-      boundary_conditions.names_of_type(BoundaryConditions<dim>::Type::displacement);
-    AssertThrow(!displacement_conditions.empty(),
-                ExcMessage("A quasi-static solve needs at least one 'displacement' boundary "
-                           "condition: without one the problem is singular (rigid-body motions "
-                           "are free). Boundary conditions: " +
-                           (condition_list.empty() ? std::string("none") : condition_list) + "."));
-
-    start_run();
-    ParticleVector target, full_load, prescribed, load;
-    for (ParticleVector *vec : {&target, &full_load, &prescribed, &load})
-      particle_system.reinit_vector(*vec, dim);
-    const unsigned int n_owned  = particle_system.n_owned();
-    const std::size_t  n_values = std::size_t(n_owned) * dim;
-    for (unsigned int i = 0; i < n_owned; ++i)
-      for (unsigned int d = 0; d < dim; ++d)
-        {
-          prescribed.local_element(i * dim + d) = boundary_conditions.is_prescribed(i, d) ? 1. : 0.;
-        }
-    if (solver_type == SolverType::static_linear)
-      {
-        // A component that no condition prescribes anywhere leaves a rigid translation free:
-        // the stiffness matrix is singular in that direction.
-        std::array<double, dim> constrained{};
-        for (unsigned int i = 0; i < n_owned; ++i)
-          for (unsigned int d = 0; d < dim; ++d)
-            constrained[d] += prescribed.local_element(i * dim + d);
-        const char axis[3] = {'x', 'y', 'z'};
-        for (unsigned int d = 0; d < dim; ++d)
-          AssertThrow(
-            Utilities::MPI::sum(constrained[d], communicator) > 0.,
-            ExcMessage(std::string("No displacement condition prescribes the ") + axis[d] +
-                       " component anywhere, so a rigid translation in " + axis[d] +
-                       " is free and the static system (<Solver/Type> = static) is "
-                       "singular. Prescribe " +
-                       axis[d] + " on at least one region (boundary conditions: " + condition_list +
-                       "), or use 'adaptive dynamic relaxation', which leaves "
-                       "unloaded rigid motions at rest."));
-      }
-    boundary_conditions.prescribe_displacement(end_time, target);
-    boundary_conditions.add_loads(end_time, full_load);
-
-
-    double     factor           = 0.;
-    const auto apply_prescribed = [&](ParticleVector &uu) {
-      for (std::size_t k = 0; k < n_values; ++k)
-        if (prescribed.local_element(k) != 0.)
-          uu.local_element(k) = factor * target.local_element(k);
-    };
-    // Internal and external force density at the current load factor; bonds over the critical
-    // stretch break if @p may_break. The relaxation iterates without breaking: its transients
-    // overshoot the equilibrium, and bonds that broke on the way made the relaxation chase a
-    // growing crack (it stalled at a relative residual of 1e-5). Bonds break between solves,
-    // at the converged state, and the step is re-solved while they do.
-    const auto evaluate =
-      [&](ParticleVector &uu, std::vector<double> *energy, const bool may_break) {
-        uu.update_ghost_values();
-        material->compute_forces(particle_system,
-                                 uu,
-                                 internal_force,
-                                 energy,
-                                 may_break ? critical_stretch :
-                                             std::numeric_limits<double>::infinity());
-        external_force = full_load;
-        external_force *= factor;
-      };
-
-    AdaptiveDynamicRelaxation::Operations operations;
-    operations.residual = [&](ParticleVector &uu, ParticleVector &force) {
-      evaluate(uu, nullptr, false);
-      force = internal_force;
-      force += external_force;
-      for (std::size_t k = 0; k < n_values; ++k)
-        if (prescribed.local_element(k) != 0.)
-          force.local_element(k) = 0.;
-    };
-    operations.prescribe_displacement = apply_prescribed;
-    operations.clear_prescribed       = [&](ParticleVector &vv) {
-      for (std::size_t k = 0; k < n_values; ++k)
-        if (prescribed.local_element(k) != 0.)
-          vv.local_element(k) = 0.;
-    };
-    std::unique_ptr<AdaptiveDynamicRelaxation> relaxation;
-    if (solver_type == SolverType::adaptive_dynamic_relaxation)
-      {
-        std::vector<double> bound;
-        material->stiffness_bound(particle_system, bound);
-        ParticleVector density;
-        particle_system.reinit_vector(density, dim);
-        AdaptiveDynamicRelaxation::fictitious_density(bound, dim, relaxation_safety, density);
-        AdaptiveDynamicRelaxation::Settings settings;
-        settings.tolerance      = relaxation_tolerance;
-        settings.max_iterations = relaxation_max_iterations;
-        settings.length_scale   = discretization.horizon;
-        relaxation =
-          std::make_unique<AdaptiveDynamicRelaxation>(operations, density, settings, communicator);
-      }
-    StaticSolver<dim> static_solver(static_settings);
-
-    energy_density.assign(n_owned, 0.);
-    evaluate(u, &energy_density, true);
-    compute_work_load(previous_load);
-    previous_u          = u;
-    local_external_work = 0.;
-    write_statistics(0, 0., false);
-
-    for (unsigned int step = 1; step <= load_steps; ++step)
-      {
-        factor              = double(step) / load_steps;
-        unsigned int passes = 0, iterations = 0;
-        double       residual = 0.;
-        for (;; ++passes)
-          {
-            const auto broken_before = n_broken_bonds(particle_system);
-            if (relaxation)
-              {
-                const auto result = relaxation->solve(u, [&]() {
-                  ParticleVector f = full_load;
-                  f *= factor;
-                  for (std::size_t k = 0; k < n_values; ++k)
-                    if (prescribed.local_element(k) != 0.)
-                      f.local_element(k) = 0.;
-                  return f.l2_norm();
-                }());
-                iterations += result.iterations;
-                residual = result.relative_residual;
-              }
-            else
-              {
-                apply_prescribed(u);
-                external_force = full_load;
-                external_force *= factor;
-                iterations += static_solver.solve(particle_system,
-                                                  *material,
-                                                  prescribed,
-                                                  external_force,
-                                                  u,
-                                                  condition_list);
-              }
-            evaluate(u, &energy_density, true);
-            if (breaking_settled(particle_system, broken_before, step, passes))
-              break;
-          }
-        if (is_root && show_progress)
-          log << "Load step " << step << "/" << load_steps << ": " << passes + 1 << " solve(s), "
-              << iterations << " iterations"
-              << (relaxation ? ", relative residual " + std::to_string(residual) : "") << std::endl;
-        accumulate_external_work();
-        write_statistics(step, factor, step == load_steps);
-      }
-    write_particles(load_steps, 1.);
-  }
-
-  template <int dim>
-  void
-  PDProblem<dim>::start_run()
-  {
-    for (ParticleVector *vec :
-         {&u, &v, &a, &internal_force, &external_force, &previous_u, &previous_load})
-      particle_system.reinit_vector(*vec, dim);
-    const auto &x = particle_system.positions();
-    for (unsigned int i = 0; i < particle_system.n_owned(); ++i)
-      for (unsigned int d = 0; d < dim; ++d)
-        {
-          u.local_element(i * dim + d) = initial_displacement->value(x[i], d);
-          if (solver_type == SolverType::explicit_dynamics)
-            v.local_element(i * dim + d) = initial_velocity->value(x[i], d);
-        }
-
-    open_output(statistics);
+    return !body_regions.empty();
   }
 
   template <int dim>
@@ -701,121 +442,6 @@ namespace perideal
                                                             base_name,
                                                             write_hdf5,
                                                             write_vtu);
-  }
-
-  template <int dim>
-  void
-  PDProblem<dim>::compute_work_load(ParticleVector &load) const
-  {
-    const double *volume   = particle_system.volumes().data();
-    const double *internal = internal_force.begin(), *external = external_force.begin();
-    double       *target = load.begin();
-    for (unsigned int i = 0; i < particle_system.n_owned(); ++i)
-      for (unsigned int d = 0; d < dim; ++d)
-        {
-          const std::size_t k = std::size_t(i) * dim + d;
-          target[k] =
-            volume[i] * (boundary_conditions.is_prescribed(i, d) ? -internal[k] : external[k]);
-        }
-  }
-
-  template <int dim>
-  void
-  PDProblem<dim>::accumulate_external_work()
-  {
-    // Trapezoidal rule over the step from previous_u to u; summed over ranks when reported.
-    const double *volume   = particle_system.volumes().data();
-    const double *internal = internal_force.begin(), *external = external_force.begin();
-    const double *u_now       = u.begin();
-    double       *load_before = previous_load.begin(), *u_before = previous_u.begin();
-    double        work = 0.;
-    for (unsigned int i = 0; i < particle_system.n_owned(); ++i)
-      for (unsigned int d = 0; d < dim; ++d)
-        {
-          const std::size_t k = std::size_t(i) * dim + d;
-          const double      load =
-            volume[i] * (boundary_conditions.is_prescribed(i, d) ? -internal[k] : external[k]);
-          work += 0.5 * (load_before[k] + load) * (u_now[k] - u_before[k]);
-          load_before[k] = load;
-          u_before[k]    = u_now[k];
-        }
-    local_external_work += work;
-  }
-
-  template <int dim>
-  void
-  PDProblem<dim>::write_statistics(const unsigned int step, const double time, const bool final_row)
-  {
-    StatisticsFile &file    = *statistics;
-    const auto     &volume  = particle_system.volumes();
-    double          kinetic = 0., strain = 0., max_u = 0., prescribed_kinetic = 0.;
-    for (unsigned int i = 0; i < particle_system.n_owned(); ++i)
-      {
-        double v2 = 0., u2 = 0.;
-        for (unsigned int d = 0; d < dim; ++d)
-          {
-            v2 += v.local_element(i * dim + d) * v.local_element(i * dim + d);
-            u2 += u.local_element(i * dim + d) * u.local_element(i * dim + d);
-          }
-        kinetic += 0.5 * density * v2 * volume[i];
-        for (unsigned int d = 0; d < dim; ++d)
-          if (boundary_conditions.is_prescribed(i, d))
-            prescribed_kinetic += 0.5 * density * v.local_element(i * dim + d) *
-                                  v.local_element(i * dim + d) * volume[i];
-        strain += energy_density[i] * volume[i];
-        max_u = std::max(max_u, std::sqrt(u2));
-      }
-    kinetic                    = Utilities::MPI::sum(kinetic, communicator);
-    const double external_work = Utilities::MPI::sum(local_external_work, communicator);
-    prescribed_kinetic         = Utilities::MPI::sum(prescribed_kinetic, communicator);
-    strain                     = Utilities::MPI::sum(strain, communicator);
-    max_u                      = Utilities::MPI::max(max_u, communicator);
-    energy_balance.record(step, kinetic, strain, external_work, prescribed_kinetic);
-    energy_balance.check_stable(time, stable_dt);
-    const double work         = energy_balance.work();
-    const double energy_error = energy_balance.error();
-    const auto   broken       = n_broken_bonds(particle_system);
-
-    file.add_value("step", step);
-    file.add_value("time", time);
-    file.add_value("kinetic_energy", kinetic);
-    file.add_value("strain_energy", strain);
-    file.add_value("external_work", work);
-    file.add_value("energy_error", energy_error);
-    file.add_value("broken_bonds", broken);
-    file.add_value("max_displacement", max_u);
-    const auto reactions = boundary_conditions.reactions(internal_force);
-    const char axis[3]   = {'x', 'y', 'z'};
-    for (unsigned int k = 0; k < reactions.size(); ++k)
-      for (unsigned int d = 0; d < dim; ++d)
-        file.add_value("reaction_" + boundary_conditions.names()[k] + "_" + axis[d],
-                       reactions[k][d]);
-    file.end_row();
-
-    if (is_root && step > 0 && final_row)
-      {
-        log << std::scientific << std::setprecision(6);
-        if (solver_type == SolverType::explicit_dynamics)
-          log << "Final time: " << time << " s\n";
-        else
-          log << "Load factor: " << time << "\n";
-        log << "Kinetic energy: " << kinetic << " J\n"
-            << "Strain energy: " << strain << " J\n"
-            << "External work: " << work << " J\n"
-            << "Broken bonds: " << broken << "\n"
-            << "Max displacement: " << max_u << " m\n";
-        for (unsigned int k = 0; k < reactions.size(); ++k)
-          {
-            log << "Reaction " << boundary_conditions.names()[k] << ":";
-            const auto reaction = without_round_off(reactions[k]);
-            for (unsigned int d = 0; d < dim; ++d)
-              log << ' ' << reaction[d];
-            log << " N\n";
-          }
-        log << std::defaultfloat;
-      }
-    if (step > 0 && final_row)
-      log_probes();
   }
 
   template <int dim>
@@ -907,7 +533,7 @@ namespace perideal
   PDProblem<dim>::write_particles(const unsigned int step, const double time)
   {
     ParticleOutput<dim> &output = *particle_output;
-    if (!write_hdf5 && !write_vtu)
+    if ((!write_hdf5 && !write_vtu) || !has_body())
       return;
     const unsigned int      n_owned = particle_system.n_owned();
     const auto             &x       = particle_system.positions();
@@ -924,27 +550,6 @@ namespace perideal
     if (energy_density.size() == n_owned)
       output.add_scalar_field("strain_energy_density", energy_density);
     output.write(step, time);
-  }
-
-  template <int dim>
-  const ParticleSystem<dim> &
-  PDProblem<dim>::particles() const
-  {
-    return particle_system;
-  }
-
-  template <int dim>
-  const ParticleVector &
-  PDProblem<dim>::displacement() const
-  {
-    return u;
-  }
-
-  template <int dim>
-  double
-  PDProblem<dim>::time_step() const
-  {
-    return dt;
   }
 
   template class PDProblem<2>;

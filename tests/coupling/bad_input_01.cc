@@ -167,8 +167,6 @@ main(int argc, char **argv)
             {"FE_BLOCK",
              "    subsection right\n      set Boundary ids = 1\n      set Components = y\n"
              "    end"}});
-  run_case("FE body force in a coupled run",
-           {{"FE_EXTRA", "  subsection Body force\n    set Function = 0; -1e6\n  end"}});
   run_case("valid input, state-based model", {{"MODEL", "linear peridynamic solid"}});
   run_case("relaxation solver", {{"SOLVER", "adaptive dynamic relaxation"}});
   run_case("static solver", {{"SOLVER", "static"}});

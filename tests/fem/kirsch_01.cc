@@ -74,7 +74,7 @@ main(int argc, char **argv)
                                   "  set Global refinements = " +
                                   std::to_string(level) +
                                   "\n"
-                                  "  set Solver tolerance = 1e-12\n"
+
                                   "  subsection Elasticity\n"
                                   "    set Young's modulus = 200e9\n"
                                   "    set Poisson's ratio = 0.3\n"
@@ -108,7 +108,7 @@ main(int argc, char **argv)
       perideal::FESolid<2> fe(comm);
       fe.parse_parameters(prm, perideal::PlanarAssumption::plane_strain, 1.);
       fe.setup();
-      fe.solve_static(0.);
+      fe.solve_static(0., 1e-12);
 
       // Relative L2 error of the stress, and the stress at the vertex (0, a) from the cell
       // that owns it (averaged over the owning cells).

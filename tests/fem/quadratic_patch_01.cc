@@ -15,6 +15,7 @@
 #include <deal.II/lac/vector.h>
 #include <deal.II/numerics/vector_tools.h>
 
+#include <perideal/base/parameter_utilities.h>
 #include <perideal/fem/fe_solid.h>
 
 #include <cstdio>
@@ -45,16 +46,11 @@ namespace
       "  set Polynomial degree = " +
       std::to_string(degree) +
       "\n"
-      "  set Solver tolerance = 1e-13\n"
+
       "  subsection Elasticity\n"
       "    set Young's modulus = 200e9\n"
       "    set Poisson's ratio = " +
       poisson_ratio +
-      "\n"
-      "  end\n"
-      "  subsection Body force\n"
-      "    set Function = " +
-      body_force +
       "\n"
       "  end\n"
       "  subsection Boundary conditions\n"
@@ -71,8 +67,10 @@ namespace
       "end\n");
     perideal::FESolid<dim> fe(MPI_COMM_WORLD);
     fe.parse_parameters(prm, PlanarAssumption::plane_stress, 1e-3);
+    fe.set_body_force(
+      perideal::ParameterUtilities::make_function<dim>(body_force, dim, "body force"));
     fe.setup();
-    fe.solve_static(0.);
+    fe.solve_static(0., 1e-13);
 
     FunctionParser<dim> exact(dim);
     exact.initialize(dim == 2 ? "x,y" : "x,y,z", field, {});

@@ -2,8 +2,6 @@
 // leaves no output behind.
 #include <deal.II/base/parameter_handler.h>
 
-#include <perideal/pd/pd_problem.h>
-
 #include "../tests.h"
 #include "pd_tests.h"
 
@@ -92,4 +90,10 @@ main(int argc, char **argv)
   check("probe point with one coordinate", "subsection Output\n set Probe points = 0.01\nend\n");
   check("probe point off the particles",
         "subsection Output\n set Probe points = 0.01, 0.005; 0.01, 0.0125\nend\n");
+  check("blending function without a mesh",
+        "subsection Coupling\n set Blending function = 0.5\nend\n");
+  check("no particles and no mesh", "subsection Discretization\n set Body =\nend\n");
+  check("FE boundary condition without a mesh",
+        "subsection Finite elements\n subsection Boundary conditions\n set Names = clamp\n "
+        "end\nend\n");
 }

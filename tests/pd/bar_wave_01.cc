@@ -15,7 +15,7 @@
 #include <deal.II/base/parameter_handler.h>
 #include <deal.II/base/utilities.h>
 
-#include <perideal/pd/pd_problem.h>
+#include <perideal/coupling/coupled_problem.h>
 
 #include "../tests.h"
 
@@ -107,17 +107,17 @@ namespace
          << "end\n";
 
     ParameterHandler prm;
-    perideal::PDProblem<2>::declare_parameters(prm, {"bar"}, {});
+    perideal::CoupledProblem<2>::declare_parameters(prm, {"bar"}, {}, {});
     prm.parse_input_from_string(text.str());
-    std::ostringstream     log;
-    perideal::PDProblem<2> problem(MPI_COMM_WORLD, log);
+    std::ostringstream          log;
+    perideal::CoupledProblem<2> problem(MPI_COMM_WORLD, log);
     problem.parse_parameters(prm);
     problem.setup();
     problem.run();
 
     const auto  &particles = problem.particles();
     const auto  &x         = particles.positions();
-    const auto  &u         = problem.displacement();
+    const auto  &u         = problem.particle_displacement();
     const double cut       = x0 + 0.5 * c0 * end_time;
     double       sums[3]   = {0., 0., 0.}; // sum u_x (window), sum x u_x (window), sum u_x(0)
     for (unsigned int i = 0; i < particles.n_owned(); ++i)

@@ -9,7 +9,7 @@
 #include <deal.II/base/parameter_handler.h>
 #include <deal.II/base/utilities.h>
 
-#include <perideal/pd/pd_problem.h>
+#include <perideal/coupling/coupled_problem.h>
 
 #include "../tests.h"
 
@@ -61,20 +61,20 @@ namespace
     double dt = 0.;
     {
       ParameterHandler prm;
-      perideal::PDProblem<dim>::declare_parameters(prm, {region}, {});
+      perideal::CoupledProblem<dim>::declare_parameters(prm, {region}, {}, {});
       prm.parse_input_from_string(make_text(1.));
-      std::ostringstream       log;
-      perideal::PDProblem<dim> problem(MPI_COMM_WORLD, log);
+      std::ostringstream            log;
+      perideal::CoupledProblem<dim> problem(MPI_COMM_WORLD, log);
       problem.parse_parameters(prm);
       problem.setup();
       dt = problem.time_step();
     }
 
     ParameterHandler prm;
-    perideal::PDProblem<dim>::declare_parameters(prm, {region}, {});
+    perideal::CoupledProblem<dim>::declare_parameters(prm, {region}, {}, {});
     prm.parse_input_from_string(make_text(n_steps * dt));
-    std::ostringstream       log;
-    perideal::PDProblem<dim> problem(MPI_COMM_WORLD, log);
+    std::ostringstream            log;
+    perideal::CoupledProblem<dim> problem(MPI_COMM_WORLD, log);
     problem.parse_parameters(prm);
     problem.setup();
     problem.run();

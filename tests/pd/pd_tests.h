@@ -9,9 +9,9 @@
 #include <deal.II/base/point.h>
 #include <deal.II/base/tensor.h>
 
+#include <perideal/coupling/coupled_problem.h>
 #include <perideal/pd/material_model.h>
 #include <perideal/pd/particle_system.h>
-#include <perideal/pd/pd_problem.h>
 
 #include <algorithm>
 #include <array>
@@ -188,8 +188,8 @@ namespace pd_tests
     return context;
   }
 
-  // Parse input into a PDProblem<2>, set it up (and run it if asked) and print to deallog either
-  // "accepted (wrong)" or the message of the exception it throws.
+  // Parse input (a particles-only problem) into the driver, set it up (and run it if asked) and
+  // print to deallog either "accepted (wrong)" or the message of the exception it throws.
   inline void
   check_bad_input(const std::string              &name,
                   const std::string              &input,
@@ -198,12 +198,12 @@ namespace pd_tests
                   const bool                      run)
   {
     dealii::ParameterHandler prm;
-    perideal::PDProblem<2>::declare_parameters(prm, region_names, condition_names);
+    perideal::CoupledProblem<2>::declare_parameters(prm, region_names, condition_names, {});
     std::ostringstream log;
     try
       {
         prm.parse_input_from_string(input);
-        perideal::PDProblem<2> problem(MPI_COMM_WORLD, log);
+        perideal::CoupledProblem<2> problem(MPI_COMM_WORLD, log);
         problem.parse_parameters(prm);
         problem.setup();
         if (run)

@@ -81,7 +81,7 @@ for prm in "${prms[@]}"; do
       echo "  set Lattice spacing = $dx"
       echo "end"
       echo "subsection Output"
-      echo "  set Particle output interval = $((25 * scale))"
+      echo "  set Output interval = $((25 * scale))"
       echo "  set Statistics interval      = $((5 * scale))"
       echo "end"
     fi

@@ -71,6 +71,10 @@ namespace perideal
     void
     run();
 
+    /// The particles (after setup()).
+    const ParticleSystem<dim> &
+    particles() const;
+
     /// The particles' displacement after run() (owned entries).
     const ParticleVector &
     particle_displacement() const;
@@ -78,6 +82,10 @@ namespace perideal
     /// The FE displacement after run() (owned entries).
     const dealii::LinearAlgebra::distributed::Vector<double> &
     fe_displacement() const;
+
+    /// The explicit time step (after setup() of an explicit run) [s].
+    double
+    time_step() const;
 
     /// beta at @p x (values within 1e-10 of 0 or 1 snapped to them).
     double
@@ -112,13 +120,17 @@ namespace perideal
      * @brief Start the work of the loads at 0 from the current state.
      */
     void
-    start_work();
+    start_work(const ParticleVector &applied);
     /**
      * @brief Add the work of the loads from the previous state to the current one (trapezoidal
-     * rule in the loads) and make the current state the previous one.
+     * rule in the loads) and make the current state the previous one; @p applied is the
+     * applied force density on the particles.
      */
     void
-    accumulate_work();
+    accumulate_work(const ParticleVector &applied);
+    /// Whether the problem has both regions (particles and an FE mesh).
+    bool
+    is_coupled() const;
     /**
      * @brief The mass-proportional damping of <Time stepping/Damping>: A -= c V on the free FE
      * dofs, a -= c v on the free components of free particles.
@@ -144,6 +156,15 @@ namespace perideal
     write_statistics(const unsigned int step, const double time, const bool final_row);
     void
     write_output(const unsigned int step, const double time);
+    /**
+     * @brief Print the broken bonds and the largest particle displacement (if there are
+     * particles) and the largest FE nodal displacement component (if there are FE unknowns);
+     * root only.
+     */
+    void
+    log_displacements(const std::uint64_t broken,
+                      const double        max_particle,
+                      const double        max_fe) const;
     /**
      * @brief Print the reactions of the PD and FE displacement conditions (root only).
      */
@@ -178,7 +199,10 @@ namespace perideal
     };
     std::vector<Motion> motion;
     std::vector<double> particle_mass;
-    ParticleVector      nodal_force, particle_load;
+    // Per owned particle component: force density to acceleration (explicit runs), and the
+    // internal and applied force density to the load that does work (accumulate_work()).
+    std::vector<double> acceleration_factor, internal_work_factor, applied_work_factor;
+    ParticleVector      nodal_force;
     // Static runs: the applied loads at the current load factor and the FE residual K z - F.
     FEVector                        static_fe_load;
     ParticleVector                  static_pd_load;

@@ -40,8 +40,8 @@ namespace perideal
    * - 'displacement': u_c(x, t) = g_c(x, t) for the listed components c;
    * - 'velocity' (explicit dynamics only): v_c(x, t) = g_c(x, t);
    * - 'traction': the traction vector T(x, t) [Pa] on the boundary faces.
-   * and a body force b(x, t) [N/m^3] acts everywhere. In 2D forces are per unit thickness times
-   * the 'Thickness' (so that they are in N, like the particles' forces).
+   * and a body force b(x, t) [N/m^3] (set_body_force()) acts everywhere. In 2D forces are per unit
+   * thickness times the 'Thickness' (so that they are in N, like the particles' forces).
    *
    * The stiffness K = sum_cells int (1 - beta) B^T C B dx and the lumped mass (Gauss-Lobatto
    * nodal quadrature, so positive for every degree) are assembled unconstrained; the static
@@ -95,14 +95,9 @@ namespace perideal
     parse_names(dealii::ParameterHandler &prm);
 
     /**
-     * @brief Whether the file read with declare_names() defines an FE region (a mesh).
-     */
-    static bool
-    is_enabled(dealii::ParameterHandler &prm);
-
-    /**
      * @brief Read and check every entry of "Finite elements"; needs the planar assumption and
-     * the thickness of a 2D problem (read elsewhere). Creates nothing.
+     * the thickness of a 2D problem (read elsewhere). Creates nothing. Without <Mesh file> and
+     * <Generator> the problem has no FE region and nothing else of the section is read.
      */
     void
     parse_parameters(dealii::ParameterHandler &prm,
@@ -110,14 +105,14 @@ namespace perideal
                      const double              thickness);
 
     /**
-     * @brief Replace the body force (e.g. by a manufactured one in a test).
+     * @brief Set the body force (the problem's <Body force/Function>, weighted by 1 - beta
+     * here; or a manufactured one in a test). Without it there is none.
      */
     void
     set_body_force(const std::shared_ptr<dealii::Function<dim>> &function);
 
     /**
-     * @brief Whether a body force acts (<Finite elements/Body force/Function> is not zero, or
-     * set_body_force() was called).
+     * @brief Whether set_body_force() was called.
      */
     bool
     has_body_force() const;
@@ -125,16 +120,19 @@ namespace perideal
     /**
      * @brief Create the mesh, the FE space (FE_Nothing where @p weight is 0 on a whole cell),
      * the sparsity, the stiffness and the lumped mass. Without @p weight, the weight is 1.
+     * Without a mesh (has_mesh()), the FE region is empty: one cell without unknowns.
      */
     void
     setup(const WeightFunction &weight = WeightFunction());
 
     /**
-     * @brief Solve K u = f(t) with the displacement conditions at @p time.
+     * @brief Solve K u = f(t) with the displacement conditions at @p time, CG + AMG to the
+     * relative residual @p tolerance (the FE region alone, e.g. in its validation tests;
+     * problems solve through CoupledStaticSolver).
      * @return The number of CG iterations.
      */
     unsigned int
-    solve_static(const double time);
+    solve_static(const double time, const double tolerance = 1e-10);
 
     /**
      * @brief The external load f(t): tractions and body force.
@@ -199,6 +197,11 @@ namespace perideal
     /// A vector with the layout of the solution (owned + ghosted dofs).
     void
     initialize_vector(dealii::LinearAlgebra::distributed::Vector<double> &vector) const;
+
+    /// Whether the parameters give a mesh (<Mesh file> or <Generator>): otherwise the problem
+    /// has no FE region.
+    bool
+    has_mesh() const;
 
     /// The number of FE unknowns: 0 if no cell carries FE_Q (the empty FE region of a coupled
     /// problem), and then no function of deal.II's DoFTools may be called on get_dof_handler().
@@ -292,7 +295,6 @@ namespace perideal
     std::vector<Condition>                 condition_list;
     std::shared_ptr<dealii::Function<dim>> body_force;
     bool                                   nonzero_body_force = false;
-    double                                 solver_tolerance   = 1e-10;
     std::vector<std::pair<dealii::types::boundary_id, dealii::Point<2>>> circular_boundaries;
 
     // State.

@@ -7,7 +7,6 @@
 #include <deal.II/base/function_parser.h>
 #include <deal.II/base/parameter_handler.h>
 
-#include <perideal/base/energy_balance.h>
 #include <perideal/base/linear_algebra.h>
 #include <perideal/base/particle_output.h>
 #include <perideal/base/region.h>
@@ -30,13 +29,13 @@ namespace perideal
   class CoupledProblem;
 
   /**
-   * @brief How PDProblem::run() solves (<Solver/Type>).
+   * @brief How CoupledProblem::run() solves (<Solver/Type>).
    *
    * - explicit: velocity-Verlet time stepping to the end time (dynamics);
    * - adaptive_dynamic_relaxation: quasi-static equilibrium by AdaptiveDynamicRelaxation, in
    *   load steps, with bond breaking;
    * - static: quasi-static equilibrium of the model linearized about the reference
-   *   configuration (StaticSolver), in load steps, with bond breaking.
+   *   configuration (CoupledStaticSolver), in load steps, with bond breaking.
    */
   enum class SolverType
   {
@@ -52,26 +51,26 @@ namespace perideal
   solver_type_from_name(const std::string &name);
 
   /**
-   * @brief A peridynamic problem: particles, a material and damage model, boundary conditions,
-   * explicit time stepping or a quasi-static solve, and output, all read from a parameter file.
+   * @brief The particle region of a problem: its parameters (discretization, regions, material
+   * and damage model, boundary conditions, initial conditions, the solver and output entries),
+   * the particles with their bonds, and the particle state and output. CoupledProblem, the one
+   * driver of every run, reads the file through it and advances its state together with the FE
+   * region's.
    *
-   * Quasi-static solves (<Solver/Type> = adaptive dynamic relaxation or static) apply the
-   * prescribed displacements and the loads of the boundary conditions, evaluated at t = End
-   * time, scaled by the load factor k/N in N load steps. After each converged step the bonds are
-   * checked against the critical stretch; while bonds break, the step is solved again (at most
-   * 100 times). A statistics row is written per load step (column 'time' holds the load factor)
-   * and the particle fields at the end.
+   * An empty <Discretization/Body> gives no particles (an FE-only problem): only the entries the
+   * FE region shares are read then (<Material/Planar assumption>, <Discretization/Thickness>,
+   * the solver, time-stepping and output entries).
    *
    * Use: declare_parameters() with the region and boundary-condition names of a first pass,
    * parse the file, parse_parameters() (checks every entry), setup() (particles, bonds, model
-   * constants, stable time step; checks the time step), run().
+   * constants, stable time step).
    */
   template <int dim>
   class PDProblem
   {
   public:
     /**
-     * @brief A problem on @p comm that prints its log to @p log (rank 0 only).
+     * @brief A particle region on @p comm that prints its log to @p log (rank 0 only).
      */
     PDProblem(const MPI_Comm comm, std::ostream &log);
 
@@ -91,7 +90,7 @@ namespace perideal
     parse_parameters(dealii::ParameterHandler &prm);
 
     /**
-     * @brief Generate the particles and bonds, initialize the model, choose the time step.
+     * @brief Generate the particles and bonds, initialize the model, find the stable time step.
      * Particles fill the lattice points of the body that also satisfy @p keep (if given; a
      * coupled problem keeps only the PD region); @p energy_weight (if given) weights each
      * particle's energy (ParticleSystem::set_energy_weights()).
@@ -100,60 +99,20 @@ namespace perideal
     setup(const std::function<bool(const dealii::Point<dim> &)>   &keep          = {},
           const std::function<double(const dealii::Point<dim> &)> &energy_weight = {});
 
-    /**
-     * @brief Integrate to the end time or solve the load steps, writing statistics and particle
-     * output.
-     */
-    void
-    run();
-
-    /// The particles.
-    const ParticleSystem<dim> &
-    particles() const;
-    /// The displacement (owned and ghost values).
-    const ParticleVector &
-    displacement() const;
-    /// The time step in use [s].
-    double
-    time_step() const;
+    /// Whether <Discretization/Body> names regions (otherwise there are no particles).
+    bool
+    has_body() const;
 
   private:
-    // A coupled problem drives the particle side through the same state and output.
+    // The driver advances the particle state and writes its output.
     friend class CoupledProblem<dim>;
 
-    void
-    run_explicit();
-    void
-    run_quasi_static();
-    /**
-     * @brief The load that does work on the body, per particle [N]: the applied loads, and on
-     * prescribed components the force the constraint exerts (minus the internal force; the
-     * constrained particles' inertia is accounted for through their kinetic energy).
-     */
-    void
-    compute_work_load(ParticleVector &load) const;
-    /**
-     * @brief Add the work done from previous_u to u (trapezoidal rule in the loads), then keep
-     * the current load in previous_load and u in previous_u for the next step (one pass).
-     */
-    void
-    accumulate_external_work();
-    void
-    compute_acceleration(const double time, ParticleVector &u, ParticleVector &a);
-    /**
-     * @brief Size the state vectors, set the initial conditions (the initial velocity only for
-     * explicit runs) and open the output: shared by every solver type.
-     */
-    void
-    start_run();
     /**
      * @brief Create <Output/Directory>, open its statistics file into @p statistics_file and
-     * the particle output (also used by the coupled problem, which keeps its own statistics).
+     * the particle output.
      */
     void
     open_output(std::unique_ptr<StatisticsFile> &statistics_file);
-    void
-    write_statistics(const unsigned int step, const double time, const bool final_row);
     void
     write_particles(const unsigned int step, const double time);
     /**
@@ -194,7 +153,7 @@ namespace perideal
     double                                       safety_factor = 0.8, damping = 0.;
     std::string                                  output_directory, base_name;
     std::vector<dealii::Point<dim>>              probe_points;
-    unsigned int                                 particle_interval = 0, statistics_interval = 1;
+    unsigned int                                 output_interval = 0, statistics_interval = 1;
     bool                                 write_hdf5 = true, write_vtu = false, show_progress = true;
     SolverType                           solver_type               = SolverType::explicit_dynamics;
     double                               relaxation_tolerance      = 1e-8;
@@ -206,14 +165,10 @@ namespace perideal
     // State.
     ParticleSystem<dim>                  particle_system;
     double                               critical_stretch = 0.;
-    double                               dt               = 0.;
     double                               stable_dt        = 0.;
     ParticleVector                       u, v, a, internal_force, external_force;
     std::vector<double>                  energy_density;
-    double                               local_external_work = 0.;
-    EnergyBalance                        energy_balance;
     ParticleVector                       previous_u, previous_load;
-    std::unique_ptr<StatisticsFile>      statistics;
     std::unique_ptr<ParticleOutput<dim>> particle_output;
     // Per probe: the position of its particle, and the particle's local index on the rank that
     // owns it (numbers::invalid_unsigned_int elsewhere).
