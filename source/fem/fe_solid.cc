@@ -274,8 +274,7 @@ namespace perideal
     prm.leave_subsection();
     C = material.tensor<dim>(planar);
     // The body force is the problem's (<Body force/Function>), set by set_body_force().
-    body_force         = std::make_shared<Functions::ZeroFunction<dim>>(dim);
-    nonzero_body_force = false;
+    body_force.reset();
 
     prm.enter_subsection("Boundary conditions");
     for (const auto &name : names)
@@ -346,15 +345,7 @@ namespace perideal
   FESolid<dim>::set_body_force(const std::shared_ptr<Function<dim>> &function)
   {
     AssertDimension(function->n_components, dim);
-    body_force         = function;
-    nonzero_body_force = true;
-  }
-
-  template <int dim>
-  bool
-  FESolid<dim>::has_body_force() const
-  {
-    return nonzero_body_force;
+    body_force = function;
   }
 
   template <int dim>
@@ -650,11 +641,12 @@ namespace perideal
     const unsigned int n  = fe_values.dofs_per_cell;
     const auto        &fe = fe_values.get_fe();
     cell_rhs              = 0.;
-    body_force->set_time(time);
     dealii::Vector<double> value(dim);
+    if (body_force)
+      body_force->set_time(time);
     for (const unsigned int q : fe_values.quadrature_point_indices())
       {
-        if (!nonzero_body_force)
+        if (!body_force)
           break;
         const Point<dim> &x = fe_values.quadrature_point(q);
         const double      w = weight(x) * thickness * fe_values.JxW(q);
@@ -737,7 +729,7 @@ namespace perideal
       std::any_of(condition_list.begin(), condition_list.end(), [](const Condition &c) {
         return c.type == ConditionType::traction;
       });
-    if (!nonzero_body_force && !has_traction)
+    if (!body_force && !has_traction)
       {
         f = 0.;
         return;

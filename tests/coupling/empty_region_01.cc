@@ -33,6 +33,7 @@
 #include <fstream>
 #include <iostream>
 #include <map>
+#include <memory>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -203,15 +204,6 @@ subsection Coupling
 end
 )";
 
-  // Run the problem of @p file (through CoupledProblem, as perideal-solid does).
-  void
-  run(perideal::CoupledProblem<2> &problem, const std::string &file)
-  {
-    coupling_tests::parse(problem, file);
-    problem.setup();
-    problem.run();
-  }
-
   // The largest difference between two sets of values relative to their largest magnitude,
   // over all ranks.
   template <typename VectorType>
@@ -269,6 +261,57 @@ end
     AssertThrow(largest < 1e-10, ExcMessage(what + ": the statistics differ."));
   }
 
+  // The one-region problem and the coupled problem that empties the other region, both run
+  // through CoupledProblem (as perideal-solid does) from <name>_alone.prm and
+  // <name>_emptied.prm (output in the directories of the same names), with their statistics.
+  struct Runs
+  {
+    std::unique_ptr<perideal::CoupledProblem<2>> alone, emptied;
+    std::map<std::string, std::vector<double>>   alone_statistics, emptied_statistics;
+  };
+
+  Runs
+  run_both(const std::string                  &name,
+           const std::string                  &text,
+           const std::string                  &emptying_text,
+           std::map<std::string, std::string> &values)
+  {
+    Runs                                                runs;
+    std::ostringstream                                  log;
+    std::unique_ptr<perideal::CoupledProblem<2>> *const problems[] = {&runs.alone, &runs.emptied};
+    const std::string                                   kinds[]    = {"alone", "emptied"};
+    for (unsigned int k = 0; k < 2; ++k)
+      {
+        values["DIRECTORY"]    = name + "_" + kinds[k];
+        const std::string file = values["DIRECTORY"] + ".prm";
+        coupling_tests::write_file(file,
+                                   coupling_tests::substitute(text, values) +
+                                     (k == 1 ? emptying_text : ""));
+        *problems[k] = std::make_unique<perideal::CoupledProblem<2>>(MPI_COMM_WORLD, log);
+        coupling_tests::parse(**problems[k], file);
+        (*problems[k])->setup();
+        (*problems[k])->run();
+      }
+    MPI_Barrier(MPI_COMM_WORLD);
+    runs.alone_statistics   = perideal_tests::read_statistics(name + "_alone/statistics.csv");
+    runs.emptied_statistics = perideal_tests::read_statistics(name + "_emptied/statistics.csv");
+    return runs;
+  }
+
+  // The final displacements (@p kind: "particle" or "FE") of both runs, to round-off.
+  template <typename VectorType>
+  void
+  compare_displacements(const std::string &what,
+                        const std::string &kind,
+                        const VectorType  &alone,
+                        const VectorType  &emptied)
+  {
+    const double du = relative_difference(alone, emptied);
+    std::cout << what << ", final " << kind << " displacements: largest difference relative to "
+              << "the largest displacement: " << format(du) << std::endl;
+    AssertThrow(du < 1e-10, ExcMessage(what + ": the displacements differ."));
+  }
+
   enum class Run
   {
     explicit_dynamics,
@@ -304,33 +347,19 @@ end
                  run_type == Run::static_solve ? "static" : "adaptive dynamic relaxation"},
                 {"DAMPING", "0"}};
 
-    std::ostringstream log_alone, log_emptied;
-    values["DIRECTORY"] = "pd_alone";
-    coupling_tests::write_file("pd_alone.prm", coupling_tests::substitute(pd_plate, values));
-    perideal::CoupledProblem<2> alone(MPI_COMM_WORLD, log_alone);
-    run(alone, "pd_alone.prm");
-
-    values["DIRECTORY"] = "pd_emptied";
-    coupling_tests::write_file("pd_emptied.prm",
-                               coupling_tests::substitute(pd_plate, values) + pd_plate_mesh);
-    perideal::CoupledProblem<2> emptied(MPI_COMM_WORLD, log_emptied);
-    run(emptied, "pd_emptied.prm");
-
-    MPI_Barrier(MPI_COMM_WORLD);
-    const auto a = perideal_tests::read_statistics("pd_alone/statistics.csv");
+    const Runs runs = run_both("pd", pd_plate, pd_plate_mesh, values);
     if (run_type == Run::static_solve)
       {
         std::cout << what << ", broken bonds after load steps 0 (the pre-crack) to 3:";
-        for (const double n : a.at("broken_bonds"))
+        for (const double n : runs.alone_statistics.at("broken_bonds"))
           std::cout << " " << n;
         std::cout << std::endl;
       }
-    compare_statistics(what, a, perideal_tests::read_statistics("pd_emptied/statistics.csv"));
-    const double du =
-      relative_difference(alone.particle_displacement(), emptied.particle_displacement());
-    std::cout << what << ", final particle displacements: largest difference relative to the "
-              << "largest displacement: " << format(du) << std::endl;
-    AssertThrow(du < 1e-10, ExcMessage(what + ": the displacements differ."));
+    compare_statistics(what, runs.alone_statistics, runs.emptied_statistics);
+    compare_displacements(what,
+                          "particle",
+                          runs.alone->particle_displacement(),
+                          runs.emptied->particle_displacement());
   }
 
   void
@@ -343,26 +372,12 @@ end
     if (!explicit_dynamics)
       values = {{"TYPE", "displacement"}, {"PULL", "1e-5"}, {"SOLVER", "static"}};
 
-    std::ostringstream log_alone, log_emptied;
-    values["DIRECTORY"] = "fe_alone";
-    coupling_tests::write_file("fe_alone.prm", coupling_tests::substitute(fe_bar, values));
-    perideal::CoupledProblem<2> alone(MPI_COMM_WORLD, log_alone);
-    run(alone, "fe_alone.prm");
-
-    values["DIRECTORY"] = "fe_emptied";
-    coupling_tests::write_file("fe_emptied.prm",
-                               coupling_tests::substitute(fe_bar, values) + fe_bar_particles);
-    perideal::CoupledProblem<2> emptied(MPI_COMM_WORLD, log_emptied);
-    run(emptied, "fe_emptied.prm");
-
-    MPI_Barrier(MPI_COMM_WORLD);
-    compare_statistics(what,
-                       perideal_tests::read_statistics("fe_alone/statistics.csv"),
-                       perideal_tests::read_statistics("fe_emptied/statistics.csv"));
-    const double du = relative_difference(alone.fe_displacement(), emptied.fe_displacement());
-    std::cout << what << ", final FE displacements: largest difference relative to the largest "
-              << "displacement: " << format(du) << std::endl;
-    AssertThrow(du < 1e-10, ExcMessage(what + ": the displacements differ."));
+    const Runs runs = run_both("fe", fe_bar, fe_bar_particles, values);
+    compare_statistics(what, runs.alone_statistics, runs.emptied_statistics);
+    compare_displacements(what,
+                          "FE",
+                          runs.alone->fe_displacement(),
+                          runs.emptied->fe_displacement());
   }
 } // namespace
 

@@ -18,6 +18,7 @@
 #include <perideal/coupling/coupled_problem.h>
 
 #include "../tests.h"
+#include "pd_tests.h"
 
 #include <cmath>
 #include <iomanip>
@@ -106,12 +107,9 @@ namespace
          << "  set Progress = false\n"
          << "end\n";
 
-    ParameterHandler prm;
-    perideal::CoupledProblem<2>::declare_parameters(prm, {"bar"}, {}, {});
-    prm.parse_input_from_string(text.str());
     std::ostringstream          log;
     perideal::CoupledProblem<2> problem(MPI_COMM_WORLD, log);
-    problem.parse_parameters(prm);
+    pd_tests::parse_problem(problem, text.str(), {"bar"});
     problem.setup();
     problem.run();
 

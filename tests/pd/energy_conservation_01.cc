@@ -12,6 +12,7 @@
 #include <perideal/coupling/coupled_problem.h>
 
 #include "../tests.h"
+#include "pd_tests.h"
 
 #include <algorithm>
 #include <cmath>
@@ -60,22 +61,16 @@ namespace
     // A first set-up gives the time step (Safety factor x stable limit) of this body.
     double dt = 0.;
     {
-      ParameterHandler prm;
-      perideal::CoupledProblem<dim>::declare_parameters(prm, {region}, {}, {});
-      prm.parse_input_from_string(make_text(1.));
       std::ostringstream            log;
       perideal::CoupledProblem<dim> problem(MPI_COMM_WORLD, log);
-      problem.parse_parameters(prm);
+      pd_tests::parse_problem(problem, make_text(1.), {region});
       problem.setup();
       dt = problem.time_step();
     }
 
-    ParameterHandler prm;
-    perideal::CoupledProblem<dim>::declare_parameters(prm, {region}, {}, {});
-    prm.parse_input_from_string(make_text(n_steps * dt));
     std::ostringstream            log;
     perideal::CoupledProblem<dim> problem(MPI_COMM_WORLD, log);
-    problem.parse_parameters(prm);
+    pd_tests::parse_problem(problem, make_text(n_steps * dt), {region});
     problem.setup();
     problem.run();
 

@@ -188,6 +188,21 @@ namespace pd_tests
     return context;
   }
 
+  // Read @p input, a particles-only problem with the regions @p region_names and boundary
+  // conditions @p condition_names, into @p problem (the driver, as perideal-solid runs it).
+  template <int dim>
+  void
+  parse_problem(perideal::CoupledProblem<dim>  &problem,
+                const std::string              &input,
+                const std::vector<std::string> &region_names,
+                const std::vector<std::string> &condition_names = {})
+  {
+    dealii::ParameterHandler prm;
+    perideal::CoupledProblem<dim>::declare_parameters(prm, region_names, condition_names, {});
+    prm.parse_input_from_string(input);
+    problem.parse_parameters(prm);
+  }
+
   // Parse input (a particles-only problem) into the driver, set it up (and run it if asked) and
   // print to deallog either "accepted (wrong)" or the message of the exception it throws.
   inline void
@@ -197,14 +212,11 @@ namespace pd_tests
                   const std::vector<std::string> &condition_names,
                   const bool                      run)
   {
-    dealii::ParameterHandler prm;
-    perideal::CoupledProblem<2>::declare_parameters(prm, region_names, condition_names, {});
     std::ostringstream log;
     try
       {
-        prm.parse_input_from_string(input);
         perideal::CoupledProblem<2> problem(MPI_COMM_WORLD, log);
-        problem.parse_parameters(prm);
+        parse_problem(problem, input, region_names, condition_names);
         problem.setup();
         if (run)
           problem.run();

@@ -140,12 +140,9 @@ namespace
          << "  set Progress = false\n"
          << "end\n";
     {
-      dealii::ParameterHandler prm;
-      perideal::CoupledProblem<3>::declare_parameters(prm, {"pair"}, {}, {});
-      prm.parse_input_from_string(text.str());
       std::ostringstream          log;
       perideal::CoupledProblem<3> problem(MPI_COMM_WORLD, log);
-      problem.parse_parameters(prm);
+      pd_tests::parse_problem(problem, text.str(), {"pair"});
       problem.setup();
       problem.run();
     }
@@ -206,8 +203,8 @@ namespace
     const double bound = 0.25 * std::pow(omega * dt, 2);
     deallog << "  max |E/E0 - 1| over 10 periods = " << std::setprecision(3) << energy_error
             << std::setprecision(6) << ", bound (omega dt)^2/4 = " << std::setprecision(3) << bound
-            << std::setprecision(6) << ": "
-            << (energy_error <= bound + 1e-9 ? "ok" : "FAILED") << std::endl;
+            << std::setprecision(6) << ": " << (energy_error <= bound + 1e-9 ? "ok" : "FAILED")
+            << std::endl;
   }
 } // namespace
 

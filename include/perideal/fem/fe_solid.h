@@ -112,12 +112,6 @@ namespace perideal
     set_body_force(const std::shared_ptr<dealii::Function<dim>> &function);
 
     /**
-     * @brief Whether set_body_force() was called.
-     */
-    bool
-    has_body_force() const;
-
-    /**
      * @brief Create the mesh, the FE space (FE_Nothing where @p weight is 0 on a whole cell),
      * the sparsity, the stiffness and the lumped mass. Without @p weight, the weight is 1.
      * Without a mesh (has_mesh()), the FE region is empty: one cell without unknowns.
@@ -293,8 +287,7 @@ namespace perideal
     ElasticMaterial                        material;
     dealii::SymmetricTensor<4, dim>        C;
     std::vector<Condition>                 condition_list;
-    std::shared_ptr<dealii::Function<dim>> body_force;
-    bool                                   nonzero_body_force = false;
+    std::shared_ptr<dealii::Function<dim>> body_force; // null: none
     std::vector<std::pair<dealii::types::boundary_id, dealii::Point<2>>> circular_boundaries;
 
     // State.
