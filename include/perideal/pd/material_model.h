@@ -8,6 +8,7 @@
 #include <deal.II/base/symmetric_tensor.h>
 
 #include <perideal/base/elasticity.h>
+#include <perideal/base/field_layout.h>
 #include <perideal/base/linear_algebra.h>
 #include <perideal/base/plugin_registry.h>
 #include <perideal/pd/particle_system.h>
@@ -61,8 +62,8 @@ namespace perideal
    * @brief Interface of a peridynamic material model (a plugin, chosen per region by name).
    *
    * The plugin boundary is per region: one virtual call computes the forces of all particles
-   * with a tight loop over the bonds inside; no call per bond. The number of field components
-   * per particle is a property of the model (dim for the in-plane and 3D models here).
+   * with a tight loop over the bonds inside; no call per bond. The unknowns of a particle are
+   * the model's field_layout().
    */
   template <int dim>
   class MaterialModel
@@ -84,12 +85,13 @@ namespace perideal
     initialize(ParticleSystem<dim> &particles, const ModelContext &context) = 0;
 
     /**
-     * @brief Number of field components per particle.
+     * @brief The unknowns of a particle (FieldLayout): the displacement x, y(, z) unless the
+     * model says otherwise (a scalar antiplane field, translations and rotations).
      */
-    virtual unsigned int
-    n_components() const
+    virtual FieldLayout
+    field_layout() const
     {
-      return dim;
+      return FieldLayout::displacement(dim);
     }
 
     /**
