@@ -105,8 +105,8 @@ namespace perideal
         const char *word    = kind == ComponentKind::translation ? "translation" :
                               kind == ComponentKind::rotation    ? "rotation" :
                                                                    "scalar";
-        result += (result.empty() ? "" : "; ") + std::string(word) + (several ? "s " : " ") +
-                  names_of_kind;
+        result +=
+          (result.empty() ? "" : "; ") + std::string(word) + (several ? "s " : " ") + names_of_kind;
       }
     return result.empty() ? "no components" : result;
   }

@@ -154,35 +154,6 @@ namespace perideal
                         "all.");
     }
 
-    void
-    declare_time_stepping(dealii::ParameterHandler &prm)
-    {
-      prm.declare_entry("End time", "0", dealii::Patterns::Double(0.), "Simulated time [s].");
-      prm.declare_entry("Time step",
-                        "0",
-                        dealii::Patterns::Double(0.),
-                        "Time step [s]; 0 chooses Safety factor times the stable limit. A value "
-                        "above the stable limit is refused.");
-      prm.declare_entry("Safety factor",
-                        "0.8",
-                        dealii::Patterns::Double(0.),
-                        "Fraction of the stable time step used when 'Time step' is 0, in (0, 1].");
-    }
-
-    void
-    parse_time_stepping(dealii::ParameterHandler &prm,
-                        double                   &end_time,
-                        double                   &time_step,
-                        double                   &safety_factor)
-    {
-      end_time      = prm.get_double("End time");
-      time_step     = prm.get_double("Time step");
-      safety_factor = prm.get_double("Safety factor");
-      AssertThrow(safety_factor > 0. && safety_factor <= 1.,
-                  dealii::ExcMessage("The parameter <Time stepping/Safety factor> must lie in "
-                                     "(0, 1]."));
-    }
-
     double
     choose_time_step(const double requested, const double safety_factor, const double stable_dt)
     {

@@ -291,7 +291,7 @@ namespace perideal
     SolverControl control(settings.max_iterations, settings.tolerance * rhs_norm);
     try
       {
-        if (settings.linear_solver == LinearSolver::direct)
+        if (settings.linear_solver == LinearSolverType::direct)
           {
             TrilinosWrappers::SolverDirect solver(control);
             solver.solve(K, x, b);

@@ -4,7 +4,7 @@
 // velocity condition are refused.
 #include <deal.II/base/parameter_handler.h>
 
-#include <perideal/pd/pd_problem.h>
+#include <perideal/coupling/coupled_problem.h>
 
 #include "../tests.h"
 #include "pd_tests.h"

@@ -94,22 +94,6 @@ namespace perideal
     declare_prescribed_components(dealii::ParameterHandler &prm);
 
     /**
-     * @brief Declare "End time", "Time step" and "Safety factor" in the current subsection
-     * (the "Time stepping" of every problem type).
-     */
-    void
-    declare_time_stepping(dealii::ParameterHandler &prm);
-
-    /**
-     * @brief Read the entries of declare_time_stepping(); throws unless 0 < Safety factor <= 1.
-     */
-    void
-    parse_time_stepping(dealii::ParameterHandler &prm,
-                        double                   &end_time,
-                        double                   &time_step,
-                        double                   &safety_factor);
-
-    /**
      * @brief The time step of an explicit run: @p requested if it is positive (refused, naming
      * <Time stepping/Time step>, if above @p stable_dt), else @p safety_factor times
      * @p stable_dt.

@@ -49,9 +49,8 @@ namespace perideal
   class CoupledStaticSolver
   {
   public:
-    using FEVector     = dealii::LinearAlgebra::distributed::Vector<double>;
-    using Settings     = typename StaticSolver<dim>::Settings;
-    using LinearSolver = typename StaticSolver<dim>::LinearSolver;
+    using FEVector = dealii::LinearAlgebra::distributed::Vector<double>;
+    using Settings = typename StaticSolver<dim>::Settings;
 
     /**
      * @brief A solver with the settings of <Solver> (linear solver, tolerance, iterations).

@@ -8,12 +8,12 @@
 #include <deal.II/lac/la_parallel_vector.h>
 
 #include <perideal/base/plugin_registry.h>
+#include <perideal/base/problem_settings.h>
 #include <perideal/coupling/transfer_operator.h>
 #include <perideal/fem/fe_solid.h>
 #include <perideal/pd/adaptive_dynamic_relaxation.h>
 #include <perideal/pd/material_model.h>
 #include <perideal/pd/particle_system.h>
-#include <perideal/pd/pd_problem.h>
 #include <perideal/pd/static_solver.h>
 
 #include <string>

@@ -7,6 +7,7 @@
 #include <deal.II/lac/trilinos_precondition.h>
 
 #include <perideal/base/linear_algebra.h>
+#include <perideal/base/problem_settings.h>
 #include <perideal/pd/material_model.h>
 #include <perideal/pd/particle_system.h>
 
@@ -38,15 +39,10 @@ namespace perideal
   {
   public:
     /// The linear solver (Patterns::Selection "cg amg|direct" of <Solver/Linear solver>).
-    enum class LinearSolver
-    {
-      cg_amg,
-      direct
-    };
 
     struct Settings
     {
-      LinearSolver linear_solver = LinearSolver::cg_amg;
+      LinearSolverType linear_solver = LinearSolverType::cg_amg;
       /// Relative residual ||K u - F|| / ||F|| of CG.
       double tolerance = 1e-10;
       /// Largest number of CG iterations.

@@ -1,0 +1,90 @@
+// ---------------------------------------------------------------------
+// PeriDeal: the settings of a whole problem (solver, time stepping, initial conditions, output).
+// ---------------------------------------------------------------------
+#ifndef perideal_base_problem_settings_h
+#define perideal_base_problem_settings_h
+
+#include <deal.II/base/parameter_handler.h>
+#include <deal.II/base/point.h>
+
+#include <string>
+#include <vector>
+
+namespace perideal
+{
+  /**
+   * @brief How a problem is solved (<Solver/Type>).
+   *
+   * - explicit_dynamics: velocity-Verlet time stepping to the end time (dynamics);
+   * - adaptive_dynamic_relaxation: quasi-static equilibrium by adaptive dynamic relaxation, in
+   *   load steps, with bond breaking;
+   * - static_linear: quasi-static equilibrium of the model linearized about the reference
+   *   configuration (a sparse linear solve), in load steps, with bond breaking.
+   */
+  enum class SolverType
+  {
+    explicit_dynamics,
+    adaptive_dynamic_relaxation,
+    static_linear
+  };
+
+  /**
+   * @brief The solver type named by a value of <Solver/Type> (the one place that maps names).
+   */
+  SolverType
+  solver_type_from_name(const std::string &name);
+
+  /**
+   * @brief The linear solver of static solves (<Solver/Linear solver>): conjugate gradients with
+   * algebraic multigrid (Trilinos ML) or a direct solver (Amesos KLU).
+   */
+  enum class LinearSolverType
+  {
+    cg_amg,
+    direct
+  };
+
+  /**
+   * @brief The settings of a problem that belong to neither region: the solver (<Solver>),
+   * time stepping (<Time stepping>), initial conditions (<Initial conditions>) and output
+   * (<Output>), plus <Dimension>. Declared and read in one place; the regions, the solvers and
+   * the postprocessors read them from here.
+   */
+  template <int dim>
+  struct ProblemSettings
+  {
+    /// Declare <Dimension>, <Solver>, <Time stepping>, <Initial conditions> and <Output>.
+    static void
+    declare_parameters(dealii::ParameterHandler &prm);
+
+    /**
+     * @brief Read and check the entries of declare_parameters(). The initial-condition
+     * expressions are kept as text: their number of components is the field's (FieldLayout),
+     * which the driver knows once the regions are read.
+     */
+    void
+    parse_parameters(dealii::ParameterHandler &prm);
+
+    // <Solver>
+    SolverType       solver_type           = SolverType::explicit_dynamics;
+    unsigned int     load_steps            = 1;
+    double           tolerance             = 1e-8;
+    unsigned int     max_iterations        = 100000;
+    double           density_safety_factor = 1.;
+    LinearSolverType linear_solver         = LinearSolverType::cg_amg;
+
+    // <Time stepping>
+    double end_time = 0., time_step = 0., safety_factor = 0.8, damping = 0.;
+
+    // <Initial conditions>: one expression per component, or "0".
+    std::string initial_displacement = "0", initial_velocity = "0";
+
+    // <Output>
+    std::string                     output_directory = "output", base_name = "particles";
+    unsigned int                    output_interval = 0, statistics_interval = 10;
+    bool                            write_hdf5 = true, write_vtu = false, show_progress = true;
+    std::vector<dealii::Point<dim>> probe_points;
+  };
+} // namespace perideal
+
+#endif

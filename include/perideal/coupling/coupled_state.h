@@ -1,0 +1,170 @@
+// ---------------------------------------------------------------------
+// PeriDeal: the state of a problem that the solvers advance and the postprocessors read.
+// ---------------------------------------------------------------------
+#ifndef perideal_coupling_coupled_state_h
+#define perideal_coupling_coupled_state_h
+
+#include <deal.II/lac/la_parallel_vector.h>
+
+#include <perideal/base/field_layout.h>
+#include <perideal/base/problem_settings.h>
+#include <perideal/coupling/coupling_method.h>
+#include <perideal/coupling/transfer_operator.h>
+#include <perideal/fem/fe_solid.h>
+#include <perideal/pd/particle_region.h>
+
+#include <ostream>
+#include <string>
+#include <vector>
+
+namespace perideal
+{
+  /**
+   * @brief Everything a solver advances and a postprocessor reads (in the manner of ASPECT's
+   * SimulatorAccess): the two regions, the transfer operator and the coupling method (owned by
+   * CoupledProblem), the problem's settings, and the unknowns of both regions with what they
+   * derive from the set-up: how each particle component moves, the factors of the work of the
+   * loads, the masses.
+   *
+   * Vectors are laid out by the field (FieldLayout): component c of local particle i is entry
+   * i * n_components() + c of the particle vectors; the FE vectors are the FE region's.
+   */
+  template <int dim>
+  class CoupledState
+  {
+  public:
+    using FEVector = dealii::LinearAlgebra::distributed::Vector<double>;
+
+    /// How an owned particle component moves.
+    enum class Motion : unsigned char
+    {
+      /// with the FE field (the particle is slaved: u = P U)
+      follows_fe,
+      /// by its acceleration (a free particle)
+      moves,
+      /// by a displacement or velocity condition (a free particle)
+      prescribed
+    };
+
+    CoupledState(const MPI_Comm               comm,
+                 std::ostream                &log,
+                 const ProblemSettings<dim>  &settings,
+                 ParticleRegion<dim>         &pd,
+                 FESolid<dim>                &fe,
+                 const TransferOperator<dim> &transfer,
+                 CouplingMethod<dim>         &method);
+
+    /**
+     * @brief Once both regions, P and the method are set up: the layout, the motion of every
+     * owned particle component (refusing PD displacement or velocity conditions on slaved
+     * particles) and the factors of the work of the loads; every vector sized and zero.
+     */
+    void
+    setup();
+
+    /// Whether the problem has both regions (particles and an FE mesh).
+    bool
+    is_coupled() const;
+
+    /// Whether there are particles (on any rank).
+    bool
+    has_particles() const;
+
+    /// Unknowns per particle (the field's components).
+    unsigned int
+    n_components() const
+    {
+      return layout.n_components();
+    }
+
+    /**
+     * @brief The initial conditions (<Initial conditions>) on both regions: the same function
+     * of x for FE nodes and particles.
+     */
+    void
+    apply_initial_conditions();
+
+    /**
+     * @brief Start the work of the loads at 0 from the current state.
+     */
+    void
+    start_work();
+
+    /**
+     * @brief Add the work of the loads from the previous state to the current one (trapezoidal
+     * rule in the loads) and make the current state the previous one. The loads are fe_load on
+     * the FE dofs and, on the particles, internal_work_factor f_int + applied_work_factor
+     * external_force.
+     */
+    void
+    accumulate_work();
+
+    /// The work of the loads since start_work(), summed over the ranks [J].
+    double
+    external_work() const;
+
+    /// The largest particle displacement (norm of the translations) over the ranks [m].
+    double
+    max_particle_displacement() const;
+
+    /**
+     * @brief The internal-force scale of the FE rows, max_k sum_j |K_kj U_j| over the ranks
+     * (U's ghost values must be current); 0 without FE unknowns.
+     */
+    double
+    fe_force_scale() const;
+
+    /**
+     * @brief Print "@p what: R N ..., relative to the FE internal-force scale: R / S" with R, S
+     * the largest of @p local_largest and @p local_scale over the ranks (root only; R below
+     * 1e-12 S is round-off and printed as 0; without FE unknowns only R).
+     */
+    void
+    log_residual(const std::string &what,
+                 const double       local_largest,
+                 const double       local_scale) const;
+
+    // The problem.
+    const MPI_Comm               comm;
+    std::ostream                &log;
+    const bool                   is_root;
+    const ProblemSettings<dim>  &settings;
+    ParticleRegion<dim>         &pd;
+    FESolid<dim>                &fe;
+    const TransferOperator<dim> &transfer;
+    CouplingMethod<dim>         &method;
+    /// The unknowns of a particle (the material model's).
+    FieldLayout layout;
+
+    // What the set-up derives, per owned particle component.
+    std::vector<Motion> motion;
+    /// Factors from the internal and the applied force density to the load that does work:
+    /// -V_i and 0 on prescribed components (the support balances the internal force), 0 and
+    /// V_i on the others (slaved particles too: they move with u = P U).
+    std::vector<double> internal_work_factor, applied_work_factor;
+    /// The particles' masses of explicit runs (per owned particle; for free particles).
+    std::vector<double> particle_mass;
+    /// The lumped FE masses of explicit runs.
+    FEVector mass;
+    /// The stable explicit time step of the coupled system and the one taken [s] (explicit
+    /// runs).
+    double stable_dt = 0., time_step = 0.;
+
+    // FE region: displacement, velocity, acceleration; the external load; the residual
+    // f_ext - K U + P^T f (explicit) or K U - f - P^T f (quasi-static); the loads that do work
+    // (fe_load); the force of the supports on prescribed dofs (fe_support, for the reactions).
+    FEVector U, V, A, f_ext, residual, fe_load, fe_support;
+    // Particles: displacement, velocity, acceleration, internal and applied force density.
+    ParticleVector u, v, a, internal_force, external_force;
+    /// The particles' strain-energy density (per owned particle) [J/m^3].
+    std::vector<double> energy_density;
+
+  private:
+    // The state at the previous accumulate_work() and the work done so far on this rank.
+    FEVector       previous_fe_load, previous_U;
+    ParticleVector previous_u, previous_load;
+    double         local_work = 0.;
+  };
+} // namespace perideal
+
+#endif

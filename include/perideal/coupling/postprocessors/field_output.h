@@ -1,0 +1,36 @@
+// ---------------------------------------------------------------------
+// PeriDeal: the particle and FE fields of a run, for ParaView.
+// ---------------------------------------------------------------------
+#ifndef perideal_coupling_postprocessors_field_output_h
+#define perideal_coupling_postprocessors_field_output_h
+
+#include <perideal/base/particle_output.h>
+#include <perideal/coupling/postprocessors/postprocessor.h>
+
+#include <memory>
+
+namespace perideal
+{
+  /**
+   * @brief The fields of both regions at the output steps, in <Output/Directory>: the particles
+   * (<Output/Base name>.xdmf + .h5, and .pvd + .vtu with <Output/Write VTU>): displacement,
+   * velocity (slaved particles: that of the FE field), force density, damage and strain-energy
+   * density; the FE region (solution.xdmf + .h5: the FE region's fields, FESolid::write_output())
+   * with <Output/Write HDF5>.
+   */
+  template <int dim>
+  class FieldOutput : public Postprocessor<dim>
+  {
+  public:
+    void
+    execute(const CoupledState<dim> &state,
+            const StepData          &data,
+            StatisticsFile          &statistics) override;
+
+  private:
+    /// The particle writer, created at the first output.
+    std::unique_ptr<ParticleOutput<dim>> particle_output;
+  };
+} // namespace perideal
+
+#endif

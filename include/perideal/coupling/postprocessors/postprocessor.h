@@ -1,0 +1,99 @@
+// ---------------------------------------------------------------------
+// PeriDeal: what a postprocessor of a run provides, and the ordered set a run executes.
+// ---------------------------------------------------------------------
+#ifndef perideal_coupling_postprocessors_postprocessor_h
+#define perideal_coupling_postprocessors_postprocessor_h
+
+#include <perideal/base/statistics_file.h>
+#include <perideal/coupling/coupled_state.h>
+
+#include <memory>
+#include <vector>
+
+namespace perideal
+{
+  /**
+   * @brief What a solver tells the postprocessors about the step it has just finished.
+   */
+  struct StepData
+  {
+    /// Time step or load step (0: the initial state).
+    unsigned int step = 0;
+    /// Time [s] (explicit) or load factor (quasi-static).
+    double time = 0.;
+    /// Whether the run is quasi-static (load steps) rather than explicit dynamics.
+    bool quasi_static = false;
+    /// Whether to write a row of statistics.csv, and whether it is the last row.
+    bool write_statistics = false, final_row = false;
+    /// Whether to write the particle and FE fields, and the index of that output.
+    bool         write_fields = false;
+    unsigned int output_index = 0;
+    /// Quasi-static: iterations of the step's solves, and the particles' strain energy in the
+    /// coupling method's model of equilibrium (CouplingMethod::equilibrium_forces()) [J].
+    unsigned int iterations = 0;
+    double       pd_energy  = 0.;
+  };
+
+  /**
+   * @brief A postprocessor of a run (in the manner of ASPECT's Postprocess::Interface): it
+   * reads the state after a step and adds its columns to the one statistics table, its lines to
+   * the final summary, or its files to the output directory.
+   */
+  template <int dim>
+  class Postprocessor
+  {
+  public:
+    virtual ~Postprocessor() = default;
+
+    /**
+     * @brief Once at the end of the set-up, before anything is written: checks (stopping with
+     * a message that names the entry) and what does not change during the run; nothing on
+     * disk. Collective.
+     */
+    virtual void
+    initialize(const CoupledState<dim> &)
+    {}
+
+    /**
+     * @brief Act on the step @p data: add columns to the current row of @p statistics if
+     * data.write_statistics, print summary lines (rank 0) if data.final_row, write files if
+     * data.write_fields. Collective.
+     */
+    virtual void
+    execute(const CoupledState<dim> &state, const StepData &data, StatisticsFile &statistics) = 0;
+  };
+
+  /**
+   * @brief The postprocessors of a run, executed in order: energies, displacements, reactions,
+   * the error against an exact field, probes, field output. They share the statistics table
+   * <Output/Directory>/statistics.csv, whose rows start with the step and the time (or the load
+   * factor and the iterations), and the final summary, which starts with the time or the load
+   * factor.
+   */
+  template <int dim>
+  class Postprocessors
+  {
+  public:
+    /// The set of @p postprocessors (executed in this order).
+    explicit Postprocessors(std::vector<std::unique_ptr<Postprocessor<dim>>> postprocessors);
+
+    /**
+     * @brief Initialize every postprocessor (their checks, nothing on disk). Collective.
+     */
+    void
+    initialize(const CoupledState<dim> &state);
+
+    /**
+     * @brief Execute every postprocessor for the step @p data; the first call creates the
+     * output directory and the statistics table. Collective.
+     */
+    void
+    execute(const CoupledState<dim> &state, const StepData &data);
+
+  private:
+    std::vector<std::unique_ptr<Postprocessor<dim>>> postprocessors;
+    std::unique_ptr<StatisticsFile>                  statistics;
+  };
+} // namespace perideal
+
+#endif

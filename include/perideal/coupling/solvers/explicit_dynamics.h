@@ -1,0 +1,65 @@
+// ---------------------------------------------------------------------
+// PeriDeal: explicit dynamics (velocity Verlet) of the coupled system.
+// ---------------------------------------------------------------------
+#ifndef perideal_coupling_solvers_explicit_dynamics_h
+#define perideal_coupling_solvers_explicit_dynamics_h
+
+#include <perideal/coupling/solvers/solver.h>
+
+#include <vector>
+
+namespace perideal
+{
+  /**
+   * @brief <Solver/Type> = explicit: velocity Verlet on (FE dofs, free particle components) to
+   * <Time stepping/End time> in equal steps, with the lumped masses of the coupling method and
+   * the mass-proportional damping of <Time stepping/Damping>.
+   *
+   * The stable step is the smaller of the FE region's (Gershgorin bound of M^-1 K with the full
+   * coupled mass) and the particles'; a requested step above it is refused. Per step: half a
+   * step of the velocities, the positions (slaved particles u = P U), the forces of both regions
+   * (particles' forces to the FE dofs by P^T), the second half step, the work of the loads. The
+   * acceleration works on contiguous arrays: per particle component the factor from force
+   * density to acceleration is V_i / m_i where the component moves by its acceleration and 0
+   * where it follows the FE field or is prescribed, so the pass has no branches.
+   */
+  template <int dim>
+  class ExplicitDynamics : public Solver<dim>
+  {
+  public:
+    void
+    setup(CoupledState<dim> &state) override;
+
+    void
+    run(CoupledState<dim> &state, Postprocessors<dim> &postprocessors) override;
+
+  private:
+    /**
+     * @brief Forces and accelerations of both regions at @p time (P U into the slaved
+     * particles first); the particles' energy density only if @p with_energy.
+     */
+    void
+    compute_acceleration(CoupledState<dim> &state, const double time, const bool with_energy);
+
+    /**
+     * @brief The mass-proportional damping of <Time stepping/Damping>: A -= c V on the free FE
+     * dofs, a -= c v on the free components of free particles.
+     */
+    void
+    add_damping(CoupledState<dim> &state) const;
+
+    /**
+     * @brief Print the largest unbalanced force at t = 0 relative to the FE internal-force
+     * scale: the ghost force when the initial state is one the model reproduces exactly.
+     */
+    void
+    report_initial_residual(const CoupledState<dim> &state) const;
+
+    /// Per owned particle component: force density to acceleration.
+    std::vector<double> acceleration_factor;
+    /// The particles' nodal forces V_i f_i that P^T carries to the FE dofs.
+    ParticleVector nodal_force;
+  };
+} // namespace perideal
+
+#endif

@@ -1,0 +1,47 @@
+// ---------------------------------------------------------------------
+// PeriDeal: what a solver of a problem provides.
+// ---------------------------------------------------------------------
+#ifndef perideal_coupling_solvers_solver_h
+#define perideal_coupling_solvers_solver_h
+
+#include <perideal/base/problem_settings.h>
+#include <perideal/coupling/coupled_state.h>
+#include <perideal/coupling/postprocessors/postprocessor.h>
+
+#include <memory>
+
+namespace perideal
+{
+  /**
+   * @brief A solver advances the state of a problem (CoupledState) from its initial conditions
+   * to the end of the run, calling the postprocessors after the steps it chooses. Chosen by
+   * <Solver/Type> (create_solver()); the coupling method does what is specific to the coupling
+   * (masses, equilibrium solves), so a solver works for particles only, FE only and coupled
+   * problems alike.
+   */
+  template <int dim>
+  class Solver
+  {
+  public:
+    virtual ~Solver() = default;
+
+    /**
+     * @brief What the solver needs from the set-up (masses, time step, checks of the boundary
+     * conditions against what the solver can apply), after CoupledState::setup(); stops with a
+     * message naming the entry to fix before anything is written.
+     */
+    virtual void
+    setup(CoupledState<dim> &state) = 0;
+
+    /// Run from the initial conditions to the end; @p postprocessors are initialized.
+    virtual void
+    run(CoupledState<dim> &state, Postprocessors<dim> &postprocessors) = 0;
+  };
+
+  /// The solver of <Solver/Type> = @p type.
+  template <int dim>
+  std::unique_ptr<Solver<dim>>
+  create_solver(const SolverType type);
+} // namespace perideal
+
+#endif

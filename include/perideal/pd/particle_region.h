@@ -1,0 +1,146 @@
+// ---------------------------------------------------------------------
+// PeriDeal: the particle region of a problem.
+// ---------------------------------------------------------------------
+#ifndef perideal_pd_particle_region_h
+#define perideal_pd_particle_region_h
+
+#include <deal.II/base/parameter_handler.h>
+
+#include <perideal/base/field_layout.h>
+#include <perideal/base/region.h>
+#include <perideal/pd/boundary_conditions.h>
+#include <perideal/pd/damage_model.h>
+#include <perideal/pd/material_model.h>
+#include <perideal/pd/particle_system.h>
+
+#include <functional>
+#include <memory>
+#include <ostream>
+#include <string>
+#include <vector>
+
+namespace perideal
+{
+  /**
+   * @brief The particle region of a problem: its parameters (<Discretization>, <Regions>,
+   * <Pre-cracks>, <Material> with the material and damage model, <Boundary conditions>), the
+   * particles with their bonds, the model's constants and the critical stretch. The state (the
+   * particles' displacement, velocity and forces) is the driver's (CoupledState), which reads
+   * what it needs through the accessors here.
+   *
+   * An empty <Discretization/Body> gives no particles (an FE-only problem): only the entries the
+   * FE region shares are read then (<Material/Planar assumption>, <Discretization/Thickness>).
+   *
+   * Use: declare_parameters() with the region and boundary-condition names of a first pass,
+   * parse the file, parse_parameters() (checks every entry), setup() (particles, bonds, model
+   * constants, stable time step).
+   */
+  template <int dim>
+  class ParticleRegion
+  {
+  public:
+    /**
+     * @brief A particle region on @p comm that prints its log to @p log (rank 0 only).
+     */
+    ParticleRegion(const MPI_Comm comm, std::ostream &log);
+
+    /**
+     * @brief Declare the region's entries; the subsections of regions and boundary conditions
+     * are those named in @p region_names and @p condition_names.
+     */
+    static void
+    declare_parameters(dealii::ParameterHandler       &prm,
+                       const std::vector<std::string> &region_names,
+                       const std::vector<std::string> &condition_names);
+
+    /**
+     * @brief Read and check the region's parameters; creates nothing on disk.
+     */
+    void
+    parse_parameters(dealii::ParameterHandler &prm);
+
+    /**
+     * @brief Generate the particles and bonds, initialize the model, find the stable time step.
+     * Particles fill the lattice points of the body that also satisfy @p keep (if given; a
+     * coupled problem keeps only the PD region); @p energy_weight (if given) weights each
+     * particle's energy (ParticleSystem::set_energy_weights()).
+     */
+    void
+    setup(const std::function<bool(const dealii::Point<dim> &)>   &keep          = {},
+          const std::function<double(const dealii::Point<dim> &)> &energy_weight = {});
+
+    /// Whether <Discretization/Body> names regions (otherwise there are no particles).
+    bool
+    has_body() const;
+
+    /// The unknowns of a particle (the material model's FieldLayout).
+    FieldLayout
+    field_layout() const;
+
+    /// The particles and bonds (after setup()).
+    ParticleSystem<dim> &
+    particles();
+
+    /// The particles and bonds (after setup()).
+    const ParticleSystem<dim> &
+    particles() const;
+
+    /// The material model (after parse_parameters()).
+    MaterialModel<dim> &
+    material();
+
+    /// The boundary conditions of the particles.
+    BoundaryConditions<dim> &
+    boundary_conditions();
+
+    /// The boundary conditions of the particles.
+    const BoundaryConditions<dim> &
+    boundary_conditions() const;
+
+    /// The mass density rho [kg/m^3].
+    double
+    density() const;
+
+    /// The critical stretch of the damage model (after setup()).
+    double
+    critical_stretch() const;
+
+    /// The stable explicit time step of the particles alone (after setup()) [s].
+    double
+    stable_time_step() const;
+
+    /// The lattice spacing, horizon, thickness and partial-volume rule.
+    const typename ParticleSystem<dim>::Settings &
+    discretization() const;
+
+    /// The planar assumption (<Material/Planar assumption>; three_dimensional in 3D).
+    PlanarAssumption
+    planar_assumption() const;
+
+  private:
+    MPI_Comm      communicator;
+    std::ostream &log;
+    bool          is_root;
+
+    // Parameters.
+    typename ParticleSystem<dim>::Settings settings;
+    double                                 horizon_factor     = 0.;
+    bool                                   surface_correction = true;
+    PlanarAssumption                       planar             = PlanarAssumption::three_dimensional;
+    RegionCollection<dim>                  regions;
+    std::vector<std::string>               body_regions;
+    std::vector<std::string>               no_fail_regions;
+    std::vector<PreCrack<dim>>             pre_cracks;
+    std::unique_ptr<MaterialModel<dim>>    model;
+    std::unique_ptr<DamageModel<dim>>      damage;
+    double                                 rho = 0.;
+    BoundaryConditions<dim>                conditions;
+
+    // What setup() computes.
+    ParticleSystem<dim> particle_system;
+    double              s_critical = 0.;
+    double              stable_dt  = 0.;
+  };
+} // namespace perideal
+
+#endif

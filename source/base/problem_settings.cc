@@ -1,0 +1,186 @@
+// ---------------------------------------------------------------------
+// PeriDeal: the settings of a whole problem (solver, time stepping, initial conditions, output).
+// ---------------------------------------------------------------------
+#include <deal.II/base/utilities.h>
+
+#include <perideal/base/parameter_utilities.h>
+#include <perideal/base/problem_settings.h>
+
+#include <map>
+
+namespace perideal
+{
+  using namespace dealii;
+
+  SolverType
+  solver_type_from_name(const std::string &name)
+  {
+    static const std::map<std::string, SolverType> types = {
+      {"explicit", SolverType::explicit_dynamics},
+      {"adaptive dynamic relaxation", SolverType::adaptive_dynamic_relaxation},
+      {"static", SolverType::static_linear}};
+    const auto found = types.find(name);
+    AssertThrow(found != types.end(),
+                ExcMessage("The parameter <Solver/Type> is <" + name +
+                           ">; accepted: explicit, adaptive dynamic relaxation, static."));
+    return found->second;
+  }
+
+  template <int dim>
+  void
+  ProblemSettings<dim>::declare_parameters(ParameterHandler &prm)
+  {
+    prm.declare_entry("Dimension",
+                      std::to_string(dim),
+                      Patterns::Integer(2, 3),
+                      "2 (in-plane: plane stress or plane strain) or 3. Read first.");
+
+    prm.enter_subsection("Initial conditions");
+    prm.declare_entry("Displacement",
+                      "0",
+                      Patterns::Anything(),
+                      "Initial value of the field: one expression of x, y(, z) per component "
+                      "(the displacement u(x) [m] of a solid, rotations [rad] after it for "
+                      "micropolar models), separated by ';'; a single 0 is zero for all.");
+    prm.declare_entry("Velocity",
+                      "0",
+                      Patterns::Anything(),
+                      "Initial rate of the field (velocity v(x) [m/s]), one expression per "
+                      "component; a single 0 is zero for all.");
+    prm.leave_subsection();
+
+    prm.enter_subsection("Time stepping");
+    prm.declare_entry("End time", "0", Patterns::Double(0.), "Simulated time [s].");
+    prm.declare_entry("Time step",
+                      "0",
+                      Patterns::Double(0.),
+                      "Time step [s]; 0 chooses Safety factor times the stable limit. A value "
+                      "above the stable limit is refused.");
+    prm.declare_entry("Safety factor",
+                      "0.8",
+                      Patterns::Double(0.),
+                      "Fraction of the stable time step used when 'Time step' is 0, in (0, 1].");
+    prm.declare_entry("Damping",
+                      "0",
+                      Patterns::Double(0.),
+                      "Mass-proportional damping coefficient [1/s] to reach a steady state; 0 for "
+                      "dynamics.");
+    prm.leave_subsection();
+
+    prm.enter_subsection("Solver");
+    prm.declare_entry("Type",
+                      "explicit",
+                      Patterns::Selection("explicit|adaptive dynamic relaxation|static"),
+                      "'explicit': velocity-Verlet dynamics to <Time stepping/End time>; "
+                      "'adaptive dynamic relaxation': quasi-static equilibrium (Kilic & Madenci "
+                      "2010) in load steps with bond breaking; 'static': the model linearized "
+                      "about the reference configuration, a sparse linear solve per load step. "
+                      "Quasi-static runs evaluate the boundary-condition functions at t = End "
+                      "time and scale them by the load factor.");
+    prm.declare_entry("Load steps",
+                      "1",
+                      Patterns::Integer(1),
+                      "Quasi-static: number N of load steps; step k applies k/N of the prescribed "
+                      "displacements and loads.");
+    prm.declare_entry("Tolerance",
+                      "1e-8",
+                      Patterns::Double(0.),
+                      "Quasi-static: relative residual at which a solve stops. Adaptive dynamic "
+                      "relaxation: ||F|| / max(||F_ext||, ||F_0||) of the residual force density "
+                      "on free components; static: ||K u - F|| / ||F|| of CG.");
+    prm.declare_entry("Maximum iterations",
+                      "100000",
+                      Patterns::Integer(1),
+                      "Quasi-static: largest number of iterations of one solve (relaxation "
+                      "iterations or CG iterations).");
+    prm.declare_entry("Density safety factor",
+                      "1",
+                      Patterns::Double(0.),
+                      "Adaptive dynamic relaxation: the fictitious density is this factor times "
+                      "1/4 of the model's Gershgorin stiffness bound; accepted: >= 1.");
+    prm.declare_entry("Linear solver",
+                      "cg amg",
+                      Patterns::Selection("cg amg|direct"),
+                      "Static: conjugate gradients with algebraic multigrid (Trilinos ML), or a "
+                      "direct solver (Amesos KLU) for small problems.");
+    prm.leave_subsection();
+
+    prm.enter_subsection("Output");
+    prm.declare_entry("Directory", "output", Patterns::Anything(), "Where results are written.");
+    prm.declare_entry("Base name", "particles", Patterns::Anything(), "Prefix of particle files.");
+    prm.declare_entry("Output interval",
+                      "0",
+                      Patterns::Integer(0),
+                      "Explicit: write the particle and FE fields every this many steps (0: first "
+                      "and last step only); quasi-static runs write them after the last load "
+                      "step.");
+    prm.declare_entry("Statistics interval",
+                      "10",
+                      Patterns::Integer(1),
+                      "Write a row of statistics.csv every this many steps.");
+    prm.declare_entry("Write HDF5", "true", Patterns::Bool(), "Particle fields as HDF5 + XDMF.");
+    prm.declare_entry("Write VTU", "false", Patterns::Bool(), "Particle fields as VTU + PVD.");
+    prm.declare_entry("Progress", "true", Patterns::Bool(), "Print progress and timing lines.");
+    prm.declare_entry("Probe points",
+                      "",
+                      Patterns::Anything(),
+                      "Points (coordinates separated by ',', points by ';') whose nearest "
+                      "particle's displacement the final summary prints, in micrometres (um). "
+                      "Each point needs a particle within one lattice spacing (coupled runs: in "
+                      "the PD region or its overlap). Empty: none.");
+    prm.leave_subsection();
+  }
+
+  template <int dim>
+  void
+  ProblemSettings<dim>::parse_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Initial conditions");
+    initial_displacement = prm.get("Displacement");
+    initial_velocity     = prm.get("Velocity");
+    prm.leave_subsection();
+
+    prm.enter_subsection("Solver");
+    solver_type           = solver_type_from_name(prm.get("Type"));
+    load_steps            = prm.get_integer("Load steps");
+    tolerance             = prm.get_double("Tolerance");
+    max_iterations        = prm.get_integer("Maximum iterations");
+    density_safety_factor = prm.get_double("Density safety factor");
+    AssertThrow(density_safety_factor >= 1.,
+                ExcMessage("The parameter <Solver/Density safety factor> is " +
+                           ParameterUtilities::format_number(density_safety_factor) +
+                           "; accepted: >= 1 (below, the relaxation is not stable)."));
+    ParameterUtilities::require_positive(tolerance, "Solver/Tolerance");
+    linear_solver =
+      prm.get("Linear solver") == "direct" ? LinearSolverType::direct : LinearSolverType::cg_amg;
+    prm.leave_subsection();
+
+    prm.enter_subsection("Time stepping");
+    end_time      = prm.get_double("End time");
+    time_step     = prm.get_double("Time step");
+    safety_factor = prm.get_double("Safety factor");
+    AssertThrow(safety_factor > 0. && safety_factor <= 1.,
+                ExcMessage("The parameter <Time stepping/Safety factor> must lie in (0, 1]."));
+    if (solver_type == SolverType::explicit_dynamics)
+      ParameterUtilities::require_positive(end_time, "Time stepping/End time");
+    damping = prm.get_double("Damping");
+    prm.leave_subsection();
+
+    prm.enter_subsection("Output");
+    output_directory    = prm.get("Directory");
+    base_name           = prm.get("Base name");
+    output_interval     = prm.get_integer("Output interval");
+    statistics_interval = prm.get_integer("Statistics interval");
+    write_hdf5          = prm.get_bool("Write HDF5");
+    write_vtu           = prm.get_bool("Write VTU");
+    show_progress       = prm.get_bool("Progress");
+    probe_points.clear();
+    for (const auto &item : Utilities::split_string_list(prm.get("Probe points"), ';'))
+      if (!item.empty())
+        probe_points.push_back(ParameterUtilities::parse_point<dim>(item, "Output/Probe points"));
+    prm.leave_subsection();
+  }
+
+  template struct ProblemSettings<2>;
+  template struct ProblemSettings<3>;
+} // namespace perideal

@@ -1,0 +1,226 @@
+// ---------------------------------------------------------------------
+// PeriDeal: the state of a problem that the solvers advance and the postprocessors read.
+// ---------------------------------------------------------------------
+#include <perideal/base/parameter_utilities.h>
+#include <perideal/coupling/coupled_state.h>
+
+#include <algorithm>
+#include <cmath>
+
+namespace perideal
+{
+  using namespace dealii;
+
+  template <int dim>
+  CoupledState<dim>::CoupledState(const MPI_Comm               comm,
+                                  std::ostream                &log,
+                                  const ProblemSettings<dim>  &settings,
+                                  ParticleRegion<dim>         &pd,
+                                  FESolid<dim>                &fe,
+                                  const TransferOperator<dim> &transfer,
+                                  CouplingMethod<dim>         &method)
+    : comm(comm)
+    , log(log)
+    , is_root(Utilities::MPI::this_mpi_process(comm) == 0)
+    , settings(settings)
+    , pd(pd)
+    , fe(fe)
+    , transfer(transfer)
+    , method(method)
+  {}
+
+  template <int dim>
+  void
+  CoupledState<dim>::setup()
+  {
+    layout                        = pd.field_layout();
+    const unsigned int nc         = n_components();
+    const auto        &ps         = pd.particles();
+    const unsigned int n_owned    = ps.n_owned();
+    const auto        &conditions = pd.boundary_conditions();
+
+    // Free particles (in FE_Nothing cells) carry their own mass; PD boundary conditions may act
+    // only on them.
+    motion.assign(std::size_t(n_owned) * nc, Motion::follows_fe);
+    std::uint64_t n_constrained_slaved = 0;
+    for (unsigned int i = 0; i < n_owned; ++i)
+      for (unsigned int c = 0; c < nc; ++c)
+        {
+          const bool prescribed = conditions.is_prescribed(i, c);
+          if (transfer.is_slaved(i))
+            n_constrained_slaved += prescribed;
+          else
+            motion[i * nc + c] = prescribed ? Motion::prescribed : Motion::moves;
+        }
+    n_constrained_slaved = Utilities::MPI::sum(n_constrained_slaved, comm);
+    AssertThrow(n_constrained_slaved == 0,
+                ExcMessage(
+                  "A displacement or velocity condition of <Boundary conditions> acts on " +
+                  std::to_string(n_constrained_slaved) +
+                  " particle components that follow the FE field (they lie in cells "
+                  "with FE unknowns); prescribe it there with <Finite elements/Boundary "
+                  "conditions>, or move its region into the PD-only zone (beta = 1)."));
+
+    const auto &volume = ps.volumes();
+    internal_work_factor.assign(motion.size(), 0.);
+    applied_work_factor.assign(motion.size(), 0.);
+    for (std::size_t k = 0; k < motion.size(); ++k)
+      if (motion[k] == Motion::prescribed)
+        internal_work_factor[k] = -volume[k / nc];
+      else
+        applied_work_factor[k] = volume[k / nc];
+
+    for (ParticleVector *vec :
+         {&u, &v, &a, &internal_force, &external_force, &previous_u, &previous_load})
+      pd.particles().reinit_vector(*vec, nc);
+    for (FEVector *vec :
+         {&U, &V, &A, &f_ext, &residual, &fe_load, &fe_support, &previous_fe_load, &previous_U})
+      fe.initialize_vector(*vec);
+    energy_density.assign(n_owned, 0.);
+  }
+
+  template <int dim>
+  bool
+  CoupledState<dim>::is_coupled() const
+  {
+    return pd.has_body() && fe.has_mesh();
+  }
+
+  template <int dim>
+  bool
+  CoupledState<dim>::has_particles() const
+  {
+    return pd.particles().n_global() > 0;
+  }
+
+  template <int dim>
+  void
+  CoupledState<dim>::apply_initial_conditions()
+  {
+    const unsigned int nc = n_components();
+    const auto         displacement =
+      ParameterUtilities::make_function<dim>(settings.initial_displacement,
+                                             nc,
+                                             "Initial conditions/Displacement");
+    const auto  velocity = ParameterUtilities::make_function<dim>(settings.initial_velocity,
+                                                                 nc,
+                                                                 "Initial conditions/Velocity");
+    const auto &ps       = pd.particles();
+    const auto &x        = ps.positions();
+    for (unsigned int i = 0; i < ps.n_owned(); ++i)
+      for (unsigned int c = 0; c < nc; ++c)
+        {
+          u.local_element(i * nc + c) = displacement->value(x[i], c);
+          v.local_element(i * nc + c) = velocity->value(x[i], c);
+        }
+    fe.interpolate(*displacement, U);
+    fe.interpolate(*velocity, V);
+  }
+
+  template <int dim>
+  void
+  CoupledState<dim>::start_work()
+  {
+    local_work             = 0.;
+    previous_U             = U;
+    previous_fe_load       = fe_load;
+    previous_u             = u;
+    const double *internal = internal_force.begin(), *applied = external_force.begin();
+    double       *load = previous_load.begin();
+    for (std::size_t k = 0; k < motion.size(); ++k)
+      load[k] = internal_work_factor[k] * internal[k] + applied_work_factor[k] * applied[k];
+  }
+
+  template <int dim>
+  void
+  CoupledState<dim>::accumulate_work()
+  {
+    // Trapezoidal rule in the loads over the step; one pass per region that also makes the
+    // current state the previous one. (Local sums: one in the member could alias the arrays
+    // and stay out of a register.)
+    double work = local_work;
+    {
+      double       *load_before = previous_fe_load.begin(), *u_before = previous_U.begin();
+      const double *load = fe_load.begin(), *u_now = U.begin();
+      for (unsigned int k = 0; k < U.locally_owned_size(); ++k)
+        {
+          work += 0.5 * (load_before[k] + load[k]) * (u_now[k] - u_before[k]);
+          load_before[k] = load[k];
+          u_before[k]    = u_now[k];
+        }
+    }
+    {
+      double       *load_before = previous_load.begin(), *u_before = previous_u.begin();
+      const double *u_now = u.begin(), *internal = internal_force.begin();
+      const double *applied = external_force.begin(), *c_internal = internal_work_factor.data(),
+                   *c_applied = applied_work_factor.data();
+      for (std::size_t k = 0; k < motion.size(); ++k)
+        {
+          const double load = c_internal[k] * internal[k] + c_applied[k] * applied[k];
+          work += 0.5 * (load_before[k] + load) * (u_now[k] - u_before[k]);
+          load_before[k] = load;
+          u_before[k]    = u_now[k];
+        }
+    }
+    local_work = work;
+  }
+
+  template <int dim>
+  double
+  CoupledState<dim>::external_work() const
+  {
+    return Utilities::MPI::sum(local_work, comm);
+  }
+
+  template <int dim>
+  double
+  CoupledState<dim>::max_particle_displacement() const
+  {
+    const unsigned int nc      = n_components();
+    double             largest = 0.;
+    for (unsigned int i = 0; i < pd.particles().n_owned(); ++i)
+      {
+        double u2 = 0.;
+        for (unsigned int c = 0; c < nc; ++c)
+          if (layout.kind(c) != ComponentKind::rotation)
+            u2 += std::pow(u.local_element(i * nc + c), 2);
+        largest = std::max(largest, std::sqrt(u2));
+      }
+    return Utilities::MPI::max(largest, comm);
+  }
+
+  template <int dim>
+  double
+  CoupledState<dim>::fe_force_scale() const
+  {
+    double scale = 0.;
+    for (const double sum : fe.absolute_row_sums(&U))
+      scale = std::max(scale, sum);
+    return Utilities::MPI::max(scale, comm);
+  }
+
+  template <int dim>
+  void
+  CoupledState<dim>::log_residual(const std::string &what,
+                                  const double       local_largest,
+                                  const double       local_scale) const
+  {
+    const double largest  = Utilities::MPI::max(local_largest, comm);
+    const double scale    = Utilities::MPI::max(local_scale, comm);
+    const double relative = scale > 0. ? largest / scale : 0.;
+    // A residual below 1e-12 of the force scale is round-off: printed as 0 N (the ratio shows
+    // it), so that it reads the same on every rank count and build.
+    // Without FE unknowns (an empty FE region) there is no scale: the force itself.
+    if (is_root && fe.n_dofs() == 0)
+      log << what << ": " << largest
+          << " N (largest unbalanced nodal force at free particles; no FE region)" << std::endl;
+    else if (is_root)
+      log << what << ": " << (relative < 1e-12 ? 0. : largest)
+          << " N (largest unbalanced nodal force at free dofs and particles), relative to the FE "
+             "internal-force scale: "
+          << relative << std::endl;
+  }
+
+  template class CoupledState<2>;
+  template class CoupledState<3>;
+} // namespace perideal

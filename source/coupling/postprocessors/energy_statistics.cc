@@ -1,0 +1,105 @@
+// ---------------------------------------------------------------------
+// PeriDeal: energies, the work of the loads and the energy balance of a run.
+// ---------------------------------------------------------------------
+#include <perideal/coupling/postprocessors/energy_statistics.h>
+
+#include <algorithm>
+#include <cmath>
+#include <iomanip>
+
+namespace perideal
+{
+  using namespace dealii;
+
+  template <int dim>
+  void
+  EnergyStatistics<dim>::execute(const CoupledState<dim> &state,
+                                 const StepData          &data,
+                                 StatisticsFile          &statistics)
+  {
+    if (!data.write_statistics)
+      return;
+    using Motion             = typename CoupledState<dim>::Motion;
+    const auto        &ps    = state.pd.particles();
+    const unsigned int nc    = state.n_components();
+    const double       work  = state.external_work();
+    std::ostream      &log   = state.log;
+    const auto         flags = log.flags();
+    log << std::scientific << std::setprecision(6);
+
+    if (data.quasi_static)
+      {
+        const double fe_energy    = state.fe.strain_energy(state.U);
+        const double strain       = fe_energy + data.pd_energy;
+        const double energy_error = work - strain;
+        // Relative to the work, unless the energies are below 1e-10 of the force scale times the
+        // displacement (a rigid motion: round-off).
+        state.U.update_ghost_values();
+        const double scale = state.fe_force_scale();
+        const double max_u = state.max_particle_displacement();
+        const double relative_error =
+          std::max(std::abs(work), strain) > 1e-10 * scale * max_u ? energy_error / work : 0.;
+        statistics.add_value("strain_energy", strain);
+        statistics.add_value("fe_strain_energy", fe_energy);
+        statistics.add_value("pd_strain_energy", data.pd_energy);
+        statistics.add_value("external_work", work);
+        statistics.add_value("energy_error", energy_error);
+        if (state.is_root && data.final_row)
+          {
+            log << "Strain energy: " << strain << " J";
+            if (state.is_coupled())
+              log << " (FE " << fe_energy << " J, particles " << data.pd_energy << " J)";
+            log << "\n"
+                << "External work: " << work << " J\n"
+                << "Energy error: " << energy_error << " J (relative " << relative_error << ")\n";
+          }
+      }
+    else
+      {
+        // Kinetic energy of the FE dofs and the components that do not follow the FE field;
+        // that of prescribed dofs and components separately (EnergyBalance counts it as work).
+        const auto &mask    = state.fe.prescribed_mask();
+        double      kinetic = 0., prescribed_kinetic = 0., strain = 0.;
+        for (unsigned int k = 0; k < state.V.locally_owned_size(); ++k)
+          {
+            const double e =
+              0.5 * state.mass.local_element(k) * std::pow(state.V.local_element(k), 2);
+            kinetic += e;
+            if (mask[k])
+              prescribed_kinetic += e;
+          }
+        const auto &volume = ps.volumes();
+        for (unsigned int i = 0; i < ps.n_owned(); ++i)
+          {
+            for (unsigned int c = 0; c < nc; ++c)
+              {
+                const double e =
+                  0.5 * state.particle_mass[i] * std::pow(state.v.local_element(i * nc + c), 2);
+                if (state.motion[i * nc + c] != Motion::follows_fe)
+                  kinetic += e;
+                if (state.motion[i * nc + c] == Motion::prescribed)
+                  prescribed_kinetic += e;
+              }
+            strain += state.energy_density[i] * volume[i];
+          }
+        kinetic            = Utilities::MPI::sum(kinetic, state.comm);
+        prescribed_kinetic = Utilities::MPI::sum(prescribed_kinetic, state.comm);
+        strain = Utilities::MPI::sum(strain, state.comm) + state.fe.strain_energy(state.U);
+        balance.record(data.step, kinetic, strain, work, prescribed_kinetic);
+        balance.check_stable(data.time, state.stable_dt);
+        statistics.add_value("kinetic_energy", kinetic);
+        statistics.add_value("strain_energy", strain);
+        statistics.add_value("external_work", balance.work());
+        statistics.add_value("energy_error", balance.error());
+        if (state.is_root && data.final_row)
+          log << "Kinetic energy: " << kinetic << " J\n"
+              << "Strain energy: " << strain << " J\n"
+              << "External work: " << balance.work() << " J\n"
+              << "Energy error: " << balance.error() << " J\n";
+      }
+    log.flags(flags);
+  }
+
+  template class EnergyStatistics<2>;
+  template class EnergyStatistics<3>;
+} // namespace perideal

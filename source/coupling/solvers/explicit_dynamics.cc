@@ -1,0 +1,257 @@
+// ---------------------------------------------------------------------
+// PeriDeal: explicit dynamics (velocity Verlet) of the coupled system.
+// ---------------------------------------------------------------------
+#include <perideal/base/parameter_utilities.h>
+#include <perideal/base/progress_reporter.h>
+#include <perideal/coupling/solvers/explicit_dynamics.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+
+namespace perideal
+{
+  using namespace dealii;
+
+  template <int dim>
+  void
+  ExplicitDynamics<dim>::setup(CoupledState<dim> &state)
+  {
+    using Motion          = typename CoupledState<dim>::Motion;
+    const unsigned int nc = state.n_components();
+    auto              &ps = state.pd.particles();
+    state.fe.initialize_vector(state.mass);
+    ps.reinit_vector(nodal_force, nc);
+    state.method.lumped_masses(state.mass, state.particle_mass);
+    // The factor from force density to acceleration: V_i / m_i on the components that move by
+    // their acceleration, 0 on the others.
+    const auto &volume = ps.volumes();
+    acceleration_factor.assign(state.motion.size(), 0.);
+    for (std::size_t k = 0; k < state.motion.size(); ++k)
+      if (state.motion[k] == Motion::moves)
+        acceleration_factor[k] = volume[k / nc] / state.particle_mass[k / nc];
+
+    // The time step: the smaller of the two regions' stable steps.
+    const double fe_dt = state.fe.stable_time_step(&state.mass);
+    const double pd_dt = state.pd.stable_time_step();
+    state.stable_dt    = std::min(fe_dt, pd_dt);
+    state.time_step    = ParameterUtilities::choose_time_step(state.settings.time_step,
+                                                           state.settings.safety_factor,
+                                                           state.stable_dt);
+    if (state.is_root)
+      {
+        state.log << "Stable time step:";
+        if (state.fe.n_dofs() > 0)
+          state.log << " FE " << fe_dt << " s" << (ps.n_global() > 0 ? "," : "");
+        if (ps.n_global() > 0)
+          state.log << " PD " << pd_dt << " s";
+        state.log << std::endl;
+      }
+  }
+
+  template <int dim>
+  void
+  ExplicitDynamics<dim>::compute_acceleration(CoupledState<dim> &state,
+                                              const double       time,
+                                              const bool         with_energy)
+  {
+    auto &pd = state.pd;
+    state.transfer.interpolate(state.U, state.u);
+    state.u.update_ghost_values();
+    pd.material().compute_forces(pd.particles(),
+                                 state.u,
+                                 state.internal_force,
+                                 with_energy ? &state.energy_density : nullptr,
+                                 pd.critical_stretch());
+    // The applied forces (zero since the set-up if there are none).
+    const bool loads = pd.boundary_conditions().has_loads();
+    if (loads)
+      {
+        state.external_force = 0.;
+        pd.boundary_conditions().add_loads(time, state.external_force);
+      }
+    // Particles: a = f V / m on the components that move by it (one pass, no branches); the
+    // nodal forces f V only where P^T carries them to the FE dofs.
+    const std::size_t n        = state.motion.size();
+    const double     *internal = state.internal_force.begin();
+    const double     *applied  = state.external_force.begin();
+    const double     *factor   = acceleration_factor.data();
+    double           *a        = state.a.begin();
+    if (loads)
+      for (std::size_t k = 0; k < n; ++k)
+        a[k] = (internal[k] + applied[k]) * factor[k];
+    else
+      for (std::size_t k = 0; k < n; ++k)
+        a[k] = internal[k] * factor[k];
+    auto &fe = state.fe;
+    if (fe.n_dofs() == 0)
+      return;
+    if (state.transfer.n_global_slaved() > 0)
+      {
+        const unsigned int nc     = state.n_components();
+        const auto        &volume = pd.particles().volumes();
+        double            *nodal  = nodal_force.begin();
+        for (std::size_t k = 0; k < n; ++k)
+          nodal[k] = (internal[k] + applied[k]) * volume[k / nc];
+      }
+
+    // FE: R = f_ext - K U + P^T f; prescribed dofs do not move by it, and the work their
+    // supports do is that of K U - P^T f (the part of R they balance).
+    fe.assemble_load(time, state.f_ext);
+    fe.stiffness_matrix().vmult(state.residual, state.U);
+    state.residual.sadd(-1., 1., state.f_ext);
+    state.transfer.add_transpose(nodal_force, state.residual);
+    const auto &mask = fe.prescribed_mask();
+    for (unsigned int k = 0; k < state.U.locally_owned_size(); ++k)
+      if (mask[k])
+        {
+          state.fe_load.local_element(k) =
+            state.f_ext.local_element(k) - state.residual.local_element(k);
+          state.A.local_element(k) = 0.;
+        }
+      else
+        {
+          state.fe_load.local_element(k) = state.f_ext.local_element(k);
+          state.A.local_element(k) = state.residual.local_element(k) / state.mass.local_element(k);
+        }
+  }
+
+  template <int dim>
+  void
+  ExplicitDynamics<dim>::add_damping(CoupledState<dim> &state) const
+  {
+    // a -= c v with the half-step velocity on the dofs and particle components that move by
+    // their acceleration.
+    using Motion      = typename CoupledState<dim>::Motion;
+    const double c    = state.settings.damping;
+    const auto  &mask = state.fe.prescribed_mask();
+    for (unsigned int k = 0; k < state.U.locally_owned_size(); ++k)
+      if (!mask[k])
+        state.A.local_element(k) -= c * state.V.local_element(k);
+    for (std::size_t k = 0; k < state.motion.size(); ++k)
+      if (state.motion[k] == Motion::moves)
+        state.a.local_element(k) -= c * state.v.local_element(k);
+  }
+
+  template <int dim>
+  void
+  ExplicitDynamics<dim>::report_initial_residual(const CoupledState<dim> &state) const
+  {
+    // The largest force that is not balanced at t = 0, over the free FE dofs and the free
+    // particle components, against the internal-force scale max_i sum_j |K_ij U_j| of the FE
+    // rows (the nodal force without the cancellation between neighbours). For a deformation the
+    // coupled model reproduces exactly (rigid motion; uniform strain away from free surfaces)
+    // the residual is the ghost force of the coupling.
+    using Motion               = typename CoupledState<dim>::Motion;
+    const unsigned int nc      = state.n_components();
+    const auto        &mask    = state.fe.prescribed_mask();
+    double             largest = 0.;
+    state.U.update_ghost_values();
+    for (unsigned int k = 0; k < state.U.locally_owned_size(); ++k)
+      if (!mask[k])
+        largest = std::max(largest, std::abs(state.residual.local_element(k)));
+    const auto &volume = state.pd.particles().volumes();
+    for (std::size_t k = 0; k < state.motion.size(); ++k)
+      if (state.motion[k] == Motion::moves)
+        largest = std::max(largest,
+                           std::abs(state.internal_force.local_element(k) +
+                                    state.external_force.local_element(k)) *
+                             volume[k / nc]);
+    state.log_residual("Force residual at t = 0", largest, state.fe_force_scale());
+  }
+
+  template <int dim>
+  void
+  ExplicitDynamics<dim>::run(CoupledState<dim> &state, Postprocessors<dim> &postprocessors)
+  {
+    using Motion                = typename CoupledState<dim>::Motion;
+    const auto        &settings = state.settings;
+    const unsigned int n_steps =
+      ParameterUtilities::equal_time_steps(settings.end_time, state.time_step);
+    const double dt = state.time_step;
+    if (state.is_root)
+      state.log << "Time step: " << dt << " s, steps: " << n_steps << std::endl;
+
+    auto &fe         = state.fe;
+    auto &conditions = state.pd.boundary_conditions();
+    auto &U = state.U, &V = state.V, &A = state.A;
+    auto &u = state.u, &v = state.v, &a = state.a;
+    state.apply_initial_conditions();
+    fe.prescribe(0., U, V);
+    conditions.prescribe_displacement(0., u);
+    compute_acceleration(state, 0., true);
+    if (state.is_coupled())
+      report_initial_residual(state);
+    state.start_work();
+
+    StepData data;
+    data.write_statistics = true;
+    data.write_fields     = true;
+    state.fe_support.equ(-1., state.residual);
+    postprocessors.execute(state, data);
+
+    ProgressReporter progress(state.comm,
+                              state.log,
+                              n_steps,
+                              settings.end_time,
+                              settings.show_progress && state.is_root);
+    unsigned int     output_index = 1;
+    const bool       slaved       = state.transfer.n_global_slaved() > 0;
+    const auto       start        = std::chrono::steady_clock::now();
+    for (unsigned int step = 1; step <= n_steps; ++step)
+      {
+        const double time = (step - 1) * dt;
+
+        // Half step of the velocities, prescribed velocities over the step, positions.
+        V.add(0.5 * dt, A);
+        v.add(0.5 * dt, a);
+        fe.prescribe(time + 0.5 * dt, U, V);
+        conditions.prescribe_step_velocity(time, dt, v);
+        U.add(dt, V);
+        if (!slaved)
+          u.add(dt, v);
+        else
+          for (std::size_t k = 0; k < state.motion.size(); ++k)
+            if (state.motion[k] != Motion::follows_fe)
+              u.local_element(k) += dt * v.local_element(k);
+        fe.prescribe(time + dt, U, V);
+        conditions.prescribe_displacement(time + dt, u);
+        U.update_ghost_values();
+
+        data.step             = step;
+        data.time             = step * dt;
+        data.final_row        = (step == n_steps);
+        data.write_statistics = (step % settings.statistics_interval == 0 || data.final_row);
+        data.write_fields =
+          data.final_row || (settings.output_interval > 0 && step % settings.output_interval == 0);
+        compute_acceleration(state, time + dt, data.write_statistics || data.write_fields);
+        if (settings.damping > 0.)
+          add_damping(state);
+        V.add(0.5 * dt, A);
+        v.add(0.5 * dt, a);
+        fe.prescribe(time + dt, U, V);
+
+        state.accumulate_work();
+
+        if (data.write_fields)
+          data.output_index = output_index++;
+        if (data.write_statistics)
+          state.fe_support.equ(-1., state.residual);
+        postprocessors.execute(state, data);
+        progress.update(step, data.time);
+      }
+    const double seconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    const std::uint64_t n_bonds = state.pd.particles().n_global_bonds();
+    if (state.is_root && settings.show_progress)
+      {
+        state.log << "Wall time of the time loop: " << seconds << " s" << std::endl;
+        if (n_bonds > 0)
+          state.log << "bond updates per second: " << double(n_bonds) * n_steps / seconds
+                    << std::endl;
+      }
+  }
+
+  template class ExplicitDynamics<2>;
+  template class ExplicitDynamics<3>;
+} // namespace perideal

@@ -1,0 +1,218 @@
+// ---------------------------------------------------------------------
+// PeriDeal: quasi-static load stepping with bond breaking.
+// ---------------------------------------------------------------------
+#include <perideal/coupling/solvers/load_stepping.h>
+#include <perideal/pd/damage_model.h>
+
+#include <vector>
+
+namespace perideal
+{
+  using namespace dealii;
+
+  template <int dim>
+  LoadStepping<dim>::LoadStepping(const SolverType type)
+    : type(type)
+  {
+    Assert(type != SolverType::explicit_dynamics, ExcInternalError());
+  }
+
+  template <int dim>
+  void
+  LoadStepping<dim>::setup(CoupledState<dim> &state)
+  {
+    using Motion                  = typename CoupledState<dim>::Motion;
+    using FEType                  = typename FESolid<dim>::ConditionType;
+    const auto        &fe         = state.fe;
+    const auto        &conditions = state.pd.boundary_conditions();
+    const unsigned int nc         = state.n_components();
+
+    // Conditions a static solve cannot apply, and components no condition holds.
+    std::string condition_list;
+    for (const auto &c : fe.conditions())
+      condition_list += (condition_list.empty() ? "" : ", ") + c.name;
+    for (const auto &name : conditions.names())
+      condition_list += (condition_list.empty() ? "" : ", ") + name;
+    for (const auto &c : fe.conditions())
+      AssertThrow(c.type != FEType::velocity,
+                  ExcMessage("The FE boundary condition <" + c.name +
+                             "> is of type 'velocity', which a quasi-static solve (<Solver/Type> "
+                             "= static or adaptive dynamic relaxation) cannot apply; use "
+                             "'displacement' (scaled by the load factor) instead."));
+    const auto velocity_conditions =
+      conditions.names_of_type(BoundaryConditions<dim>::Type::velocity);
+    AssertThrow(velocity_conditions.empty(),
+                ExcMessage("The boundary condition <" + velocity_conditions.front() +
+                           "> is of type 'velocity', which a quasi-static solve (<Solver/Type> = "
+                           "static or adaptive dynamic relaxation) cannot apply; use "
+                           "'displacement' (scaled by the load factor) instead."));
+    const bool        relax       = (type == SolverType::adaptive_dynamic_relaxation);
+    const std::string solver_name = relax ? "adaptive dynamic relaxation" : "static";
+
+    state.pd.particles().reinit_vector(prescribed, nc);
+    std::vector<double> constrained(nc, 0.);
+    for (const auto &c : fe.conditions())
+      if (c.type == FEType::displacement)
+        for (const unsigned int comp : c.components)
+          constrained[comp] = 1.;
+    for (std::size_t k = 0; k < state.motion.size(); ++k)
+      if (state.motion[k] == Motion::prescribed)
+        {
+          prescribed.local_element(k) = 1.;
+          constrained[k % nc] += 1.;
+        }
+    // A component no displacement condition holds leaves a rigid mode free: the static system
+    // is singular; the relaxation leaves it at rest while it is not loaded, but needs at least
+    // one condition.
+    const std::string where = state.is_coupled() ? "in <Finite elements/Boundary conditions> (type "
+                                                   "'displacement') or on free particles in "
+                                                   "<Boundary conditions>" :
+                              fe.has_mesh()      ? "in <Finite elements/Boundary conditions> (type "
+                                                   "'displacement')" :
+                                                   "on a region in <Boundary conditions> (type "
+                                                   "'displacement')";
+    const std::string conditions_named =
+      " (boundary conditions: " + (condition_list.empty() ? std::string("none") : condition_list) +
+      ")";
+    double n_constrained = 0.;
+    for (unsigned int c = 0; c < nc; ++c)
+      {
+        constrained[c] = Utilities::MPI::sum(constrained[c], state.comm);
+        n_constrained += constrained[c];
+        const std::string &name = state.layout.name(c);
+        AssertThrow(constrained[c] > 0. || relax,
+                    ExcMessage("No displacement condition prescribes the " + name +
+                               " component anywhere" + conditions_named +
+                               ", so a rigid translation in " + name +
+                               " is free and the static system (<Solver/Type> = static) is "
+                               "singular. Prescribe it " +
+                               where +
+                               ", or use 'adaptive dynamic relaxation', which leaves unloaded "
+                               "rigid motions at rest."));
+      }
+    AssertThrow(n_constrained > 0.,
+                ExcMessage("A quasi-static solve (<Solver/Type> = " + solver_name +
+                           ") needs at least one displacement condition" + conditions_named +
+                           ": without one every rigid motion is free. Prescribe one " + where +
+                           "."));
+
+    const auto              &settings = state.settings;
+    EquilibriumSettings<dim> equilibrium;
+    equilibrium.type                      = type;
+    equilibrium.linear.linear_solver      = settings.linear_solver;
+    equilibrium.linear.tolerance          = settings.tolerance;
+    equilibrium.linear.max_iterations     = settings.max_iterations;
+    equilibrium.relaxation.tolerance      = settings.tolerance;
+    equilibrium.relaxation.max_iterations = settings.max_iterations;
+    equilibrium.relaxation.length_scale   = state.pd.discretization().horizon;
+    equilibrium.relaxation_safety         = settings.density_safety_factor;
+    state.method.initialize_equilibrium(prescribed, equilibrium, condition_list);
+    if (state.is_root)
+      state.log << (relax ? "Adaptive dynamic relaxation: " : "Static solve: ")
+                << state.method.n_unknowns() << " unknowns ("
+                << (state.is_coupled() ? "FE dofs and free particle components" :
+                    fe.has_mesh()      ? "FE dofs" :
+                                         "particle components")
+                << "), " << settings.load_steps << " load step(s)" << std::endl;
+  }
+
+  template <int dim>
+  void
+  LoadStepping<dim>::run(CoupledState<dim> &state, Postprocessors<dim> &postprocessors)
+  {
+    using FEVector                = typename CoupledState<dim>::FEVector;
+    const auto        &settings   = state.settings;
+    auto              &fe         = state.fe;
+    auto              &pd         = state.pd;
+    auto              &ps         = pd.particles();
+    const auto        &conditions = pd.boundary_conditions();
+    const bool         relax      = (type == SolverType::adaptive_dynamic_relaxation);
+    const unsigned int n_steps    = settings.load_steps;
+    auto              &U = state.U, &u = state.u;
+
+    // The conditions at t = End time, scaled by the load factor.
+    ParticleVector target, full_load;
+    ps.reinit_vector(target, state.n_components());
+    ps.reinit_vector(full_load, state.n_components());
+    FEVector fe_target, fe_full_load;
+    fe.initialize_vector(fe_target);
+    fe.initialize_vector(fe_full_load);
+    conditions.prescribe_displacement(settings.end_time, target);
+    conditions.add_loads(settings.end_time, full_load);
+    fe.prescribe(settings.end_time, fe_target, state.V);
+    fe.assemble_load(settings.end_time, fe_full_load);
+
+    state.start_work();
+    StepData data;
+    data.quasi_static     = true;
+    data.write_statistics = true;
+    postprocessors.execute(state, data);
+    const auto &mask = fe.prescribed_mask();
+    for (unsigned int step = 1; step <= n_steps; ++step)
+      {
+        const double factor = double(step) / n_steps;
+        state.f_ext.equ(factor, fe_full_load);
+        state.external_force.equ(factor, full_load);
+
+        unsigned int passes = 0, iterations = 0;
+        for (;; ++passes)
+          {
+            const auto broken_before = n_broken_bonds(ps);
+            for (unsigned int k = 0; k < U.locally_owned_size(); ++k)
+              if (mask[k])
+                U.local_element(k) = factor * fe_target.local_element(k);
+            for (unsigned int k = 0; k < u.locally_owned_size(); ++k)
+              if (prescribed.local_element(k) != 0.)
+                u.local_element(k) = factor * target.local_element(k);
+            iterations += state.method.solve_equilibrium(state.f_ext, state.external_force, U, u);
+            // The model's own forces and energy density at the solution (breaks bonds).
+            pd.material().compute_forces(ps,
+                                         u,
+                                         state.internal_force,
+                                         &state.energy_density,
+                                         pd.critical_stretch());
+            if (breaking_settled(ps, broken_before, step, passes))
+              break;
+          }
+        const double pd_energy = state.method.equilibrium_forces(U,
+                                                                 u,
+                                                                 state.f_ext,
+                                                                 state.external_force,
+                                                                 state.residual,
+                                                                 state.internal_force);
+
+        // The loads that do work: the applied ones, and on prescribed components the support
+        // forces (the FE residual K z - F there; minus the internal force on particles).
+        for (unsigned int k = 0; k < U.locally_owned_size(); ++k)
+          state.fe_load.local_element(k) =
+            state.f_ext.local_element(k) + (mask[k] ? state.residual.local_element(k) : 0.);
+        state.accumulate_work();
+
+        // Solves and broken bonds per step always (they are the same on every rank count);
+        // iteration counts only with progress output.
+        const auto broken = n_broken_bonds(ps);
+        if (state.is_root)
+          {
+            state.log << "Load step " << step << "/" << n_steps << ": " << passes + 1
+                      << " solve(s)";
+            if (pd.has_body())
+              state.log << ", " << broken << " broken bonds";
+            if (settings.show_progress)
+              state.log << ", " << iterations << (relax ? " relaxation" : " CG") << " iterations";
+            state.log << std::endl;
+          }
+        data.step         = step;
+        data.time         = factor;
+        data.final_row    = (step == n_steps);
+        data.write_fields = data.final_row;
+        data.output_index = step;
+        data.iterations   = iterations;
+        data.pd_energy    = pd_energy;
+        state.fe_support  = state.residual;
+        postprocessors.execute(state, data);
+      }
+  }
+
+  template class LoadStepping<2>;
+  template class LoadStepping<3>;
+} // namespace perideal

@@ -1,0 +1,23 @@
+// ---------------------------------------------------------------------
+// PeriDeal: the solver of <Solver/Type>.
+// ---------------------------------------------------------------------
+#include <perideal/coupling/solvers/explicit_dynamics.h>
+#include <perideal/coupling/solvers/load_stepping.h>
+#include <perideal/coupling/solvers/solver.h>
+
+namespace perideal
+{
+  template <int dim>
+  std::unique_ptr<Solver<dim>>
+  create_solver(const SolverType type)
+  {
+    if (type == SolverType::explicit_dynamics)
+      return std::make_unique<ExplicitDynamics<dim>>();
+    return std::make_unique<LoadStepping<dim>>(type);
+  }
+
+  template std::unique_ptr<Solver<2>>
+  create_solver<2>(const SolverType);
+  template std::unique_ptr<Solver<3>>
+  create_solver<3>(const SolverType);
+} // namespace perideal

@@ -1,0 +1,340 @@
+// ---------------------------------------------------------------------
+// PeriDeal: the particle region of a problem.
+// ---------------------------------------------------------------------
+#include <deal.II/base/utilities.h>
+
+#include <perideal/base/parameter_utilities.h>
+#include <perideal/pd/particle_region.h>
+
+#include <algorithm>
+
+namespace perideal
+{
+  using namespace dealii;
+
+  namespace
+  {
+    template <int dim>
+    std::vector<PreCrack<dim>>
+    parse_pre_cracks(const std::string &text)
+    {
+      std::vector<PreCrack<dim>> cracks;
+      for (const auto &item : Utilities::split_string_list(text, ';'))
+        {
+          if (item.empty())
+            continue;
+          const auto vertices = Utilities::split_string_list(item, ':');
+          AssertThrow(vertices.size() == dim,
+                      ExcMessage("Each crack in <Pre-cracks/Cracks> needs " + std::to_string(dim) +
+                                 " points separated by ':' (2D: the two ends of a segment; 3D: a "
+                                 "corner and its two neighbouring corners); found <" +
+                                 item + ">."));
+          PreCrack<dim> crack;
+          for (unsigned int v = 0; v < dim; ++v)
+            crack.vertices[v] =
+              ParameterUtilities::parse_point<dim>(vertices[v], "Pre-cracks/Cracks");
+          cracks.push_back(crack);
+        }
+      return cracks;
+    }
+  } // namespace
+
+  template <int dim>
+  ParticleRegion<dim>::ParticleRegion(const MPI_Comm comm, std::ostream &log)
+    : communicator(comm)
+    , log(log)
+    , is_root(Utilities::MPI::this_mpi_process(comm) == 0)
+    , particle_system(comm)
+  {}
+
+  template <int dim>
+  void
+  ParticleRegion<dim>::declare_parameters(ParameterHandler               &prm,
+                                          const std::vector<std::string> &region_names,
+                                          const std::vector<std::string> &condition_names)
+  {
+    prm.enter_subsection("Discretization");
+    {
+      prm.declare_entry("Lattice spacing",
+                        "0",
+                        Patterns::Double(0.),
+                        "Distance dx between neighbouring particles of the lattice [m].");
+      prm.declare_entry("Horizon factor",
+                        "3.015",
+                        Patterns::Double(0.),
+                        "Horizon delta as a multiple of the lattice spacing [-]; must exceed 1.");
+      prm.declare_entry("Thickness",
+                        "1",
+                        Patterns::Double(0.),
+                        "2D only: thickness h of the body [m]; particle volume dx^2 h.");
+      prm.declare_entry("Partial volume correction",
+                        "book",
+                        Patterns::Selection("none|book|geometric"),
+                        "How neighbours cut by the horizon count: 'none' (|xi| <= delta, full "
+                        "volume); 'book' (|xi| <= delta, volume scaled by (delta + dx/2 - "
+                        "|xi|)/dx beyond delta - dx/2, as in Madenci & Oterkus' codes and LAMMPS: "
+                        "the family lacks 12-14 % of the horizon volume, which the surface "
+                        "correction restores, so use it with 'Surface correction = true'); "
+                        "'geometric' (the same factor with the family extended to delta + dx/2, "
+                        "the cells the horizon cuts: right bulk stiffness without surface "
+                        "correction, but an effective Poisson ratio 5 % low at delta = 3.015 dx). "
+                        "See doc/architecture.md.");
+      prm.declare_entry("Surface correction",
+                        "true",
+                        Patterns::Bool(),
+                        "Correct the stiffness near free surfaces: energy method for 'bond "
+                        "based', discrete weighted volume for 'linear peridynamic solid'.");
+      prm.declare_entry("Body",
+                        "",
+                        Patterns::Anything(),
+                        "Comma-separated names of the regions whose union is filled with "
+                        "particles (fictitious boundary layers included).");
+    }
+    prm.leave_subsection();
+
+    RegionCollection<dim>::declare_parameters(prm, region_names);
+
+    prm.enter_subsection("Pre-cracks");
+    prm.declare_entry("Cracks",
+                      "",
+                      Patterns::Anything(),
+                      "Cracks separated by ';'. 2D: 'x0, y0 : x1, y1' (a segment); 3D: "
+                      "'a : b : c' (the parallelogram with corner a and edges b - a, c - a) [m]. "
+                      "Bonds that cross a crack start broken.");
+    prm.leave_subsection();
+
+    prm.enter_subsection("Material");
+    {
+      prm.declare_entry("Model",
+                        "bond based",
+                        Patterns::Selection(PluginRegistry<MaterialModel<dim>>::pattern_string()),
+                        "The peridynamic material model. " +
+                          PluginRegistry<MaterialModel<dim>>::documentation());
+      prm.declare_entry("Planar assumption",
+                        "plane stress",
+                        Patterns::Selection("plane stress|plane strain"),
+                        "2D only: the state of the third direction.");
+      prm.declare_entry("Density", "0", Patterns::Double(0.), "Mass density rho [kg/m^3].");
+      prm.declare_entry("No-fail regions",
+                        "",
+                        Patterns::Anything(),
+                        "Comma-separated regions in which bonds never break (a bond with an end "
+                        "there is kept), e.g. the layers that carry a traction.");
+      prm.declare_entry("Damage model",
+                        "none",
+                        Patterns::Selection(PluginRegistry<DamageModel<dim>>::pattern_string()),
+                        "When bonds break. " + PluginRegistry<DamageModel<dim>>::documentation());
+      PluginRegistry<MaterialModel<dim>>::declare_parameters(prm);
+      PluginRegistry<DamageModel<dim>>::declare_parameters(prm);
+    }
+    prm.leave_subsection();
+
+    BoundaryConditions<dim>::declare_parameters(prm, condition_names);
+  }
+
+  template <int dim>
+  void
+  ParticleRegion<dim>::parse_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Discretization");
+    // An empty <Body>: no particles (an FE-only problem); the PD entries are then not read,
+    // except those the FE region shares (planar assumption, thickness).
+    body_regions = ParameterUtilities::split_names(prm.get("Body"));
+    if (has_body())
+      {
+        settings.spacing = prm.get_double("Lattice spacing");
+        ParameterUtilities::require_positive(settings.spacing, "Discretization/Lattice spacing");
+      }
+    else
+      settings.spacing = 1.; // a lattice for no particles
+    horizon_factor = prm.get_double("Horizon factor");
+    AssertThrow(horizon_factor > 1.,
+                ExcMessage("The parameter <Discretization/Horizon factor> is " +
+                           ParameterUtilities::format_number(horizon_factor) +
+                           ": the horizon must be larger than the lattice spacing (accepted: > 1; "
+                           "3 to 4 is usual)."));
+    settings.horizon   = horizon_factor * settings.spacing;
+    settings.thickness = (dim == 2 ? prm.get_double("Thickness") : 1.);
+    ParameterUtilities::require_positive(settings.thickness, "Discretization/Thickness");
+    const std::string partial = prm.get("Partial volume correction");
+    settings.partial_volume   = (partial == "none" ? PartialVolume::none :
+                                 partial == "book" ? PartialVolume::book :
+                                                     PartialVolume::geometric);
+    surface_correction        = prm.get_bool("Surface correction");
+    prm.leave_subsection();
+
+    regions.parse_parameters(prm);
+    for (const auto &name : body_regions)
+      regions.get(name, "Discretization/Body");
+
+    prm.enter_subsection("Pre-cracks");
+    pre_cracks = parse_pre_cracks<dim>(prm.get("Cracks"));
+    prm.leave_subsection();
+
+    prm.enter_subsection("Material");
+    {
+      planar                       = planar_assumption_from_name(prm.get("Planar assumption"), dim);
+      rho                          = prm.get_double("Density");
+      const std::string model_name = prm.get("Model");
+      model = PluginRegistry<MaterialModel<dim>>::create(model_name, "Material/Model");
+      if (has_body())
+        {
+          ParameterUtilities::require_positive(rho, "Material/Density");
+          prm.enter_subsection(model_name);
+          model->parse_parameters(prm);
+          prm.leave_subsection();
+        }
+      no_fail_regions = ParameterUtilities::split_names(prm.get("No-fail regions"));
+      for (const auto &name : no_fail_regions)
+        regions.get(name, "Material/No-fail regions");
+      const std::string damage_name = prm.get("Damage model");
+      damage = PluginRegistry<DamageModel<dim>>::create(damage_name, "Material/Damage model");
+      if (has_body())
+        {
+          prm.enter_subsection(damage_name);
+          damage->parse_parameters(prm);
+          prm.leave_subsection();
+        }
+    }
+    prm.leave_subsection();
+
+    conditions.parse_parameters(prm, regions);
+  }
+
+  template <int dim>
+  void
+  ParticleRegion<dim>::setup(const std::function<bool(const Point<dim> &)>   &keep,
+                             const std::function<double(const Point<dim> &)> &energy_weight)
+  {
+    if (has_body())
+      {
+        const auto in_body = regions.union_of(body_regions, "Discretization/Body");
+        particle_system.generate(settings,
+                                 regions.bounding_box_of(body_regions, "Discretization/Body"),
+                                 keep ?
+                                   std::function<bool(const Point<dim> &)>(
+                                     [&](const Point<dim> &x) { return keep(x) && in_body(x); }) :
+                                   std::function<bool(const Point<dim> &)>(in_body),
+                                 pre_cracks,
+                                 regions.union_of(no_fail_regions, "Material/No-fail regions"));
+        // A coupled problem may leave the PD region empty (beta = 0 on the whole body).
+        AssertThrow(keep || particle_system.n_global() > 0,
+                    ExcMessage("The body (<Discretization/Body>) holds no particle: its regions "
+                               "are smaller than the lattice spacing or empty."));
+      }
+    else
+      particle_system.generate(settings,
+                               BoundingBox<dim>(),
+                               [](const Point<dim> &) { return false; },
+                               {});
+
+    if (energy_weight)
+      particle_system.set_energy_weights(energy_weight);
+
+    ModelContext context;
+    context.horizon            = settings.horizon;
+    context.thickness          = settings.thickness;
+    context.planar             = planar;
+    context.surface_correction = surface_correction;
+    model->initialize(particle_system, context);
+    s_critical = damage->critical_stretch(*model);
+
+    conditions.setup(particle_system);
+
+    stable_dt = model->stable_time_step(particle_system, rho);
+
+    const auto n_bonds = particle_system.n_global_bonds();
+    if (is_root && has_body())
+      log << "Particles: " << particle_system.n_global() << "\n"
+          << "Bonds: " << n_bonds << "\n"
+          << "Material: " << model->summary() << "\n"
+          << "Critical stretch: " << s_critical << std::endl;
+  }
+
+  template <int dim>
+  bool
+  ParticleRegion<dim>::has_body() const
+  {
+    return !body_regions.empty();
+  }
+
+  template <int dim>
+  FieldLayout
+  ParticleRegion<dim>::field_layout() const
+  {
+    return model->field_layout();
+  }
+
+  template <int dim>
+  ParticleSystem<dim> &
+  ParticleRegion<dim>::particles()
+  {
+    return particle_system;
+  }
+
+  template <int dim>
+  const ParticleSystem<dim> &
+  ParticleRegion<dim>::particles() const
+  {
+    return particle_system;
+  }
+
+  template <int dim>
+  MaterialModel<dim> &
+  ParticleRegion<dim>::material()
+  {
+    return *model;
+  }
+
+  template <int dim>
+  BoundaryConditions<dim> &
+  ParticleRegion<dim>::boundary_conditions()
+  {
+    return conditions;
+  }
+
+  template <int dim>
+  const BoundaryConditions<dim> &
+  ParticleRegion<dim>::boundary_conditions() const
+  {
+    return conditions;
+  }
+
+  template <int dim>
+  double
+  ParticleRegion<dim>::density() const
+  {
+    return rho;
+  }
+
+  template <int dim>
+  double
+  ParticleRegion<dim>::critical_stretch() const
+  {
+    return s_critical;
+  }
+
+  template <int dim>
+  double
+  ParticleRegion<dim>::stable_time_step() const
+  {
+    return stable_dt;
+  }
+
+  template <int dim>
+  const typename ParticleSystem<dim>::Settings &
+  ParticleRegion<dim>::discretization() const
+  {
+    return settings;
+  }
+
+  template <int dim>
+  PlanarAssumption
+  ParticleRegion<dim>::planar_assumption() const
+  {
+    return planar;
+  }
+
+  template class ParticleRegion<2>;
+  template class ParticleRegion<3>;
+} // namespace perideal
