@@ -12,6 +12,8 @@
 
 #include <iostream>
 #include <string>
+#include <utility>
+#include <vector>
 
 namespace
 {
@@ -26,10 +28,12 @@ namespace
          "                        an FE mesh (<Finite elements>), or both joined through an "
          "overlap\n"
          "  --validate FILE.prm   check every entry of FILE.prm and exit (0: valid)\n"
-         "  --print-parameters    print a complete annotated parameter file, with one example "
-         "region\n"
-         "                        'body', one particle boundary condition 'support' and one FE\n"
-         "                        boundary condition 'clamp'\n";
+         "  --print-parameters    print a complete annotated parameter file that runs as "
+         "printed:\n"
+         "                        a bar clamped in its FE part and pulled at its PD end (regions "
+         "'body'\n"
+         "                        and 'edge', particle condition 'support', FE condition "
+         "'clamp')\n";
   }
 
   template <int dim>
@@ -64,12 +68,66 @@ namespace
     problem.run();
   }
 
+  /**
+   * A small coupled problem that --print-parameters fills in, so that the template validates
+   * and runs as printed: a bar 40 mm long, clamped at x = 0 in the FE region, particles where
+   * x > 15 mm (beta ramps from 0 to 1 over 10 mm), pulled at its right end by a velocity of
+   * 1 m/s, 2 us of explicit dynamics.
+   */
+  template <int dim>
+  void
+  set_example(dealii::ParameterHandler &prm)
+  {
+    const std::string z0 = dim == 3 ? ", 0" : "", z1 = dim == 3 ? ", 0.01" : "";
+    const std::vector<std::pair<std::vector<std::string>, std::pair<std::string, std::string>>>
+      values = {{{"Discretization"}, {"Lattice spacing", "1e-3"}},
+                {{"Discretization"}, {"Thickness", "1e-3"}},
+                {{"Discretization"}, {"Body", "body"}},
+                {{"Regions"}, {"Names", "body, edge"}},
+                {{"Regions", "body"}, {"Lower corner", "0, 0" + z0}},
+                {{"Regions", "body"}, {"Upper corner", "0.04, 0.01" + z1}},
+                {{"Regions", "edge"}, {"Lower corner", "0.037, 0" + z0}},
+                {{"Regions", "edge"}, {"Upper corner", "0.04, 0.01" + z1}},
+                {{"Material"}, {"Density", "7800"}},
+                {{"Material", "bond based"}, {"Young's modulus", "200e9"}},
+                {{"Boundary conditions"}, {"Names", "support"}},
+                {{"Boundary conditions", "support"}, {"Region", "edge"}},
+                {{"Boundary conditions", "support"}, {"Type", "velocity"}},
+                {{"Boundary conditions", "support"}, {"Components", "x"}},
+                {{"Boundary conditions", "support"}, {"Function", "1"}},
+                {{"Finite elements"}, {"Generator", "subdivided_hyper_rectangle"}},
+                {{"Finite elements"},
+                 {"Generator arguments",
+                  dim == 2 ? "40, 10 : 0, 0 : 0.04, 0.01 : true" :
+                             "40, 10, 10 : 0, 0, 0 : 0.04, 0.01, 0.01 : true"}},
+                {{"Finite elements"}, {"Density", "7800"}},
+                {{"Finite elements", "Elasticity"}, {"Young's modulus", "200e9"}},
+                {{"Finite elements", "Elasticity"},
+                 {"Poisson's ratio", dim == 2 ? "0.3333333333" : "0.25"}},
+                {{"Finite elements", "Boundary conditions"}, {"Names", "clamp"}},
+                {{"Finite elements", "Boundary conditions", "clamp"}, {"Boundary ids", "0"}},
+                {{"Coupling"}, {"Blending function", "min(1, max(0, (x - 0.015) / 0.01))"}},
+                {{"Time stepping"}, {"End time", "2e-6"}}};
+    for (const auto &[path, entry] : values)
+      {
+        for (const auto &section : path)
+          prm.enter_subsection(section);
+        prm.set(entry.first, entry.second);
+        for (unsigned int k = 0; k < path.size(); ++k)
+          prm.leave_subsection();
+      }
+  }
+
   template <int dim>
   void
   print_parameters()
   {
     dealii::ParameterHandler prm;
-    perideal::CoupledProblem<dim>::declare_parameters(prm, {"body"}, {"support"}, {"clamp"});
+    perideal::CoupledProblem<dim>::declare_parameters(prm,
+                                                      {"body", "edge"},
+                                                      {"support"},
+                                                      {"clamp"});
+    set_example<dim>(prm);
     prm.print_parameters(std::cout, dealii::ParameterHandler::PRM);
   }
 } // namespace

@@ -11,6 +11,7 @@
 #include <filesystem>
 #include <fstream>
 #include <iomanip>
+#include <iostream>
 #include <sstream>
 
 namespace perideal
@@ -126,6 +127,22 @@ namespace perideal
                                text,
                                {{"pi", dealii::numbers::PI}},
                                /*time_dependent=*/true);
+          // muparser compiles an expression at its first evaluation: evaluate every component
+          // once, so that a malformed one is found here, when the file is read (deal.II prints
+          // muparser's diagnosis to std::cerr first; the message below replaces it).
+          std::ostringstream muparser_diagnosis;
+          std::streambuf    *cerr_buffer = std::cerr.rdbuf(muparser_diagnosis.rdbuf());
+          try
+            {
+              for (unsigned int c = 0; c < n; ++c)
+                function->value(dealii::Point<dim>(), c);
+            }
+          catch (...)
+            {
+              std::cerr.rdbuf(cerr_buffer);
+              throw;
+            }
+          std::cerr.rdbuf(cerr_buffer);
         }
       catch (...)
         {

@@ -49,6 +49,17 @@ namespace perideal
                       "component; a single 0 is zero for all.");
     prm.leave_subsection();
 
+    prm.enter_subsection("Body force");
+    prm.declare_entry("Function",
+                      "0",
+                      Patterns::Anything(),
+                      "Body force density b(x, t) [N/m^3] on the whole body (a body couple "
+                      "density [N m/m^3] for rotations, a source for a scalar field), one "
+                      "expression of x, y(, z) and t per component of the field, separated by "
+                      "';'; a single 0 is zero for all. Coupled problems weight it like the "
+                      "energies: 1 - beta on the FE region, beta on the particles.");
+    prm.leave_subsection();
+
     prm.enter_subsection("Time stepping");
     prm.declare_entry("End time", "0", Patterns::Double(0.), "Simulated time [s].");
     prm.declare_entry("Time step",
@@ -138,6 +149,10 @@ namespace perideal
     prm.enter_subsection("Initial conditions");
     initial_displacement = prm.get("Displacement");
     initial_velocity     = prm.get("Velocity");
+    prm.leave_subsection();
+
+    prm.enter_subsection("Body force");
+    body_force = prm.get("Function");
     prm.leave_subsection();
 
     prm.enter_subsection("Solver");

@@ -4,6 +4,7 @@
 #include <perideal/base/statistics_file.h>
 
 #include <algorithm>
+#include <cmath>
 #include <iomanip>
 #include <sstream>
 
@@ -88,5 +89,16 @@ namespace perideal
   StatisticsFile::get_filename() const
   {
     return filename;
+  }
+
+  void
+  print_without_round_off(std::ostream &out, const std::vector<double> &values)
+  {
+    double norm = 0.;
+    for (const double value : values)
+      norm += value * value;
+    norm = std::sqrt(norm);
+    for (unsigned int k = 0; k < values.size(); ++k)
+      out << (k > 0 ? " " : "") << (std::abs(values[k]) < 1e-10 * norm ? 0. : values[k]);
   }
 } // namespace perideal

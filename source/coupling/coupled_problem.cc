@@ -85,8 +85,17 @@ namespace perideal
                            ParameterUtilities::format_number(fe.get_density()) +
                            "; explicit dynamics (<Solver/Type> = explicit) needs the FE mass: "
                            "accepted values are > 0."));
+    // The unknowns: the particles' and the FE region's, the same in a coupled problem.
+    layout = pd.has_body() ? pd.field_layout() : fe.field_layout();
+    AssertThrow(!pd.has_body() || !fe.has_mesh() || pd.field_layout() == fe.field_layout(),
+                ExcMessage("The material model (<Material/Model>) has the unknowns " +
+                           pd.field_layout().description() +
+                           ", the FE region (<Finite elements>) has " +
+                           fe.field_layout().description() +
+                           ": a coupled problem needs the same on both sides. Choose a "
+                           "material model and an FE physics of the same field."));
     // Every expression is parsed here, so that --validate finds a malformed one.
-    const unsigned int n_components = pd.field_layout().n_components();
+    const unsigned int n_components = layout.n_components();
     ParameterUtilities::make_function<dim>(settings.initial_displacement,
                                            n_components,
                                            "Initial conditions/Displacement");
@@ -95,7 +104,17 @@ namespace perideal
                                            "Initial conditions/Velocity");
     // One body force for the whole body: the particles take it with their weights beta_i
     // (BoundaryConditions::add_loads), the FE region with 1 - beta (FESolid's load).
-    if (const auto body_force = pd.boundary_conditions().body_force_function())
+    std::shared_ptr<Function<dim>> body_force =
+      ParameterUtilities::make_function<dim>(settings.body_force,
+                                             n_components,
+                                             "Body force/Function");
+    const auto parts = Utilities::split_string_list(settings.body_force, ';');
+    if (std::all_of(parts.begin(), parts.end(), [](const std::string &part) {
+          return part == "0";
+        }))
+      body_force.reset();
+    pd.boundary_conditions().set_body_force(body_force);
+    if (body_force)
       fe.set_body_force(body_force);
     prm.enter_subsection("Coupling");
     method_name = prm.get("Method");
@@ -298,7 +317,8 @@ namespace perideal
     regions.density   = pd.density();
     method->initialize(regions);
 
-    state = std::make_unique<CoupledState<dim>>(comm, log, settings, pd, fe, transfer, *method);
+    state =
+      std::make_unique<CoupledState<dim>>(comm, log, settings, layout, pd, fe, transfer, *method);
     state->setup();
     const std::string fe_summary = fe.summary(), coupling_summary = method->summary();
     if (is_root && fe.has_mesh())

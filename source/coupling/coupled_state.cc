@@ -15,6 +15,7 @@ namespace perideal
   CoupledState<dim>::CoupledState(const MPI_Comm               comm,
                                   std::ostream                &log,
                                   const ProblemSettings<dim>  &settings,
+                                  const FieldLayout           &layout,
                                   ParticleRegion<dim>         &pd,
                                   FESolid<dim>                &fe,
                                   const TransferOperator<dim> &transfer,
@@ -27,13 +28,13 @@ namespace perideal
     , fe(fe)
     , transfer(transfer)
     , method(method)
+    , layout(layout)
   {}
 
   template <int dim>
   void
   CoupledState<dim>::setup()
   {
-    layout                        = pd.field_layout();
     const unsigned int nc         = n_components();
     const auto        &ps         = pd.particles();
     const unsigned int n_owned    = ps.n_owned();

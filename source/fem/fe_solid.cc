@@ -1085,6 +1085,13 @@ namespace perideal
     return condition_list;
   }
 
+  template <int dim>
+  FieldLayout
+  FESolid<dim>::field_layout() const
+  {
+    return FieldLayout::displacement(dim);
+  }
+
   template class FESolid<2>;
   template class FESolid<3>;
 } // namespace perideal

@@ -1,5 +1,5 @@
 // ---------------------------------------------------------------------
-// PeriDeal: prescribed displacement, velocity and traction on particle sets.
+// PeriDeal: prescribed values, rates and loads on particle sets.
 // ---------------------------------------------------------------------
 #include <deal.II/base/utilities.h>
 
@@ -11,6 +11,39 @@
 namespace perideal
 {
   using namespace dealii;
+
+  namespace
+  {
+    /// A value of <Type>: the quantity it prescribes of the components of one kind.
+    struct ConditionType
+    {
+      const char   *name;
+      ComponentKind kind;
+      Quantity      quantity;
+    };
+
+    const ConditionType condition_types[] = {
+      {"displacement", ComponentKind::translation, Quantity::value},
+      {"velocity", ComponentKind::translation, Quantity::rate},
+      {"traction", ComponentKind::translation, Quantity::load},
+      {"rotation", ComponentKind::rotation, Quantity::value},
+      {"angular velocity", ComponentKind::rotation, Quantity::rate},
+      {"moment", ComponentKind::rotation, Quantity::load},
+      {"value", ComponentKind::scalar, Quantity::value},
+      {"rate", ComponentKind::scalar, Quantity::rate},
+      {"flux", ComponentKind::scalar, Quantity::load}};
+
+    /// The types that act on the components of @p layout, separated by @p separator.
+    std::string
+    type_names(const FieldLayout *layout, const std::string &separator)
+    {
+      std::string result;
+      for (const auto &type : condition_types)
+        if (!layout || layout->n_components(type.kind) > 0)
+          result += (result.empty() ? "" : separator) + type.name;
+      return result;
+    }
+  } // namespace
 
   template <int dim>
   void
@@ -38,11 +71,28 @@ namespace perideal
                           "The region whose particles it acts on.");
         prm.declare_entry("Type",
                           "displacement",
-                          Patterns::Selection("displacement|velocity|traction"),
-                          "'displacement' [m] or 'velocity' [m/s] of the listed components, or "
-                          "'traction' [Pa] (all components) applied as a body force in the region, "
-                          "a surface layer of thickness 'Layer thickness'.");
-        ParameterUtilities::declare_prescribed_components<dim>(prm);
+                          Patterns::Selection(type_names(nullptr, "|")),
+                          "What it prescribes. Translations: 'displacement' [m] or 'velocity' "
+                          "[m/s] of the listed components, 'traction' [Pa] on all; rotations "
+                          "(micropolar models): 'rotation' [rad] or 'angular velocity' [rad/s] of "
+                          "the listed components, 'moment' [N m/m^2] on all; a scalar field: "
+                          "'value' or 'rate' of it, 'flux' (load per area). A load ('traction', "
+                          "'moment', 'flux') acts as a force density in the region, a surface "
+                          "layer of thickness 'Layer thickness'.");
+        prm.declare_entry("Components",
+                          "",
+                          Patterns::Anything(),
+                          "The prescribed components (values and rates), by the names of the "
+                          "field's components, separated by ',': x, y, z (translations); rx, ry, "
+                          "rz (rotations; rz only in 2D); w (the scalar field of antiplane "
+                          "models). Empty: all components of the kind the type acts on. Loads "
+                          "act on all of them.");
+        prm.declare_entry("Function",
+                          "0",
+                          Patterns::Anything(),
+                          "One expression of x, y, (z) and t [s] per prescribed component "
+                          "(for a load: per component of its kind), separated by ';'; a single "
+                          "0 is zero for all.");
         prm.declare_entry("Layer thickness",
                           "0",
                           Patterns::Double(0.),
@@ -50,13 +100,6 @@ namespace perideal
                           "normal to the surface).");
         prm.leave_subsection();
       }
-    prm.leave_subsection();
-    prm.enter_subsection("Body force");
-    prm.declare_entry("Function",
-                      dim == 2 ? "0; 0" : "0; 0; 0",
-                      Patterns::Anything(),
-                      "Body force density b(x, t) [N/m^3], one expression per component separated "
-                      "by ';'.");
     prm.leave_subsection();
   }
 
@@ -70,8 +113,10 @@ namespace perideal
   template <int dim>
   void
   BoundaryConditions<dim>::parse_parameters(ParameterHandler            &prm,
-                                            const RegionCollection<dim> &regions)
+                                            const RegionCollection<dim> &regions,
+                                            const FieldLayout           &field_layout)
   {
+    layout          = field_layout;
     condition_names = parse_names(prm);
     conditions.clear();
     prm.enter_subsection("Boundary conditions");
@@ -80,46 +125,68 @@ namespace perideal
         const std::string prefix = "Boundary conditions/" + name + "/";
         prm.enter_subsection(name);
         Condition c;
-        c.name              = name;
-        c.region            = &regions.get(prm.get("Region"), prefix + "Region");
-        const std::string t = prm.get("Type");
-        c.type              = (t == "displacement" ? Type::displacement :
-                               t == "velocity"     ? Type::velocity :
-                                                     Type::traction);
-        if (c.type == Type::traction)
+        c.name                  = name;
+        c.region                = &regions.get(prm.get("Region"), prefix + "Region");
+        const std::string t     = prm.get("Type");
+        const auto        found = std::find_if(std::begin(condition_types),
+                                        std::end(condition_types),
+                                        [&](const auto &type) { return t == type.name; });
+        Assert(found != std::end(condition_types), ExcInternalError());
+        AssertThrow(layout.n_components(found->kind) > 0,
+                    ExcMessage("The parameter <" + prefix + "Type> is '" + t +
+                               "', which acts on components the field of this problem (" +
+                               layout.description() + ") does not have; accepted types: " +
+                               type_names(&layout, ", ") + "."));
+        c.type_name = t;
+        c.quantity  = found->quantity;
+        for (unsigned int k = 0; k < layout.n_components(); ++k)
+          if (layout.kind(k) == found->kind)
+            c.kind_components.push_back(k);
+        std::string kind_names;
+        for (const unsigned int k : c.kind_components)
+          kind_names += (kind_names.empty() ? "" : ", ") + layout.name(k);
+        const auto listed = Utilities::split_string_list(prm.get("Components"), ',');
+        if (c.quantity == Quantity::load || listed.empty())
+          c.components = c.kind_components;
+        else
+          for (const auto &component : listed)
+            {
+              const unsigned int k = layout.index(component, prefix + "Components");
+              AssertThrow(layout.kind(k) == found->kind,
+                          ExcMessage("The parameter <" + prefix + "Components> names '" +
+                                     component + "', which <" + prefix + "Type> = '" + t +
+                                     "' does not act on; accepted: " + kind_names + "."));
+              c.components.push_back(k);
+            }
+        if (c.quantity == Quantity::load)
           {
-            for (unsigned int d = 0; d < dim; ++d)
-              c.components.push_back(d);
             c.layer_thickness = prm.get_double("Layer thickness");
             ParameterUtilities::require_positive(c.layer_thickness, prefix + "Layer thickness");
           }
-        else
-          c.components = ParameterUtilities::parse_components(prm);
-        c.expression = prm.get("Function");
-        c.function   = ParameterUtilities::make_function<dim>(c.expression,
+        c.function = ParameterUtilities::make_function<dim>(prm.get("Function"),
                                                             c.components.size(),
                                                             prefix + "Function");
         conditions.push_back(std::move(c));
         prm.leave_subsection();
       }
     prm.leave_subsection();
-    prm.enter_subsection("Body force");
-    const std::string expression = prm.get("Function");
-    body_force     = ParameterUtilities::make_function<dim>(expression, dim, "Body force/Function");
-    has_body_force = false;
-    for (const auto &part : Utilities::split_string_list(expression, ';'))
-      if (part != "0")
-        has_body_force = true;
-    prm.leave_subsection();
+  }
+
+  template <int dim>
+  void
+  BoundaryConditions<dim>::set_body_force(const std::shared_ptr<Function<dim>> &function)
+  {
+    body_force = function;
   }
 
   template <int dim>
   void
   BoundaryConditions<dim>::setup(const ParticleSystem<dim> &particles)
   {
-    particle_system = &particles;
-    prescribed.assign(std::size_t(particles.n_owned()) * dim, 0);
-    std::vector<int> owner(std::size_t(particles.n_owned()) * dim, -1);
+    particle_system       = &particles;
+    const unsigned int nc = layout.n_components();
+    prescribed.assign(std::size_t(particles.n_owned()) * nc, 0);
+    std::vector<int> owner(std::size_t(particles.n_owned()) * nc, -1);
     const auto      &x = particles.positions();
     for (unsigned int k = 0; k < conditions.size(); ++k)
       {
@@ -135,19 +202,19 @@ namespace perideal
                                c.name +
                                "/Region> holds no particle; enlarge it to cover at least one "
                                "lattice point of the body."));
-        if (c.type == Type::traction)
+        if (c.quantity == Quantity::load)
           continue;
         for (const unsigned int i : c.particles)
           for (const unsigned int comp : c.components)
             {
-              int &first = owner[i * dim + comp];
+              int &first = owner[i * nc + comp];
               AssertThrow(first < 0,
                           ExcMessage("The boundary conditions <" + conditions[first].name +
                                      "> and <" + c.name +
                                      "> both prescribe the same component of a particle; make "
                                      "their regions or <Components> disjoint."));
-              first                      = k;
-              prescribed[i * dim + comp] = 1;
+              first                     = k;
+              prescribed[i * nc + comp] = 1;
             }
       }
   }
@@ -158,18 +225,19 @@ namespace perideal
                                                    const double    dt,
                                                    ParticleVector &v) const
   {
-    const auto &x = particle_system->positions();
+    const auto        &x  = particle_system->positions();
+    const unsigned int nc = layout.n_components();
     for (const auto &c : conditions)
       for (const unsigned int i : c.particles)
         for (unsigned int k = 0; k < c.components.size(); ++k)
           {
             double value = 0.;
-            if (c.type == Type::velocity)
+            if (c.quantity == Quantity::rate)
               {
                 c.function->set_time(time + 0.5 * dt);
                 value = c.function->value(x[i], k);
               }
-            else if (c.type == Type::displacement)
+            else if (c.quantity == Quantity::value)
               {
                 c.function->set_time(time + dt);
                 value = c.function->value(x[i], k);
@@ -178,7 +246,7 @@ namespace perideal
               }
             else
               continue;
-            v.local_element(i * dim + c.components[k]) = value;
+            v.local_element(i * nc + c.components[k]) = value;
           }
   }
 
@@ -186,14 +254,15 @@ namespace perideal
   void
   BoundaryConditions<dim>::prescribe_displacement(const double time, ParticleVector &u) const
   {
-    const auto &x = particle_system->positions();
+    const auto        &x  = particle_system->positions();
+    const unsigned int nc = layout.n_components();
     for (const auto &c : conditions)
-      if (c.type == Type::displacement)
+      if (c.quantity == Quantity::value)
         {
           c.function->set_time(time);
           for (const unsigned int i : c.particles)
             for (unsigned int k = 0; k < c.components.size(); ++k)
-              u.local_element(i * dim + c.components[k]) = c.function->value(x[i], k);
+              u.local_element(i * nc + c.components[k]) = c.function->value(x[i], k);
         }
   }
 
@@ -201,8 +270,8 @@ namespace perideal
   bool
   BoundaryConditions<dim>::has_loads() const
   {
-    return has_body_force || std::any_of(conditions.begin(), conditions.end(), [](const auto &c) {
-             return c.type == Type::traction;
+    return body_force || std::any_of(conditions.begin(), conditions.end(), [](const auto &c) {
+             return c.quantity == Quantity::load;
            });
   }
 
@@ -210,39 +279,34 @@ namespace perideal
   void
   BoundaryConditions<dim>::add_loads(const double time, ParticleVector &force) const
   {
-    const auto &x = particle_system->positions();
+    const auto        &x  = particle_system->positions();
+    const unsigned int nc = layout.n_components();
     for (const auto &c : conditions)
-      if (c.type == Type::traction)
+      if (c.quantity == Quantity::load)
         {
           c.function->set_time(time);
           for (const unsigned int i : c.particles)
-            for (unsigned int d = 0; d < dim; ++d)
-              force.local_element(i * dim + d) += c.function->value(x[i], d) / c.layer_thickness;
+            for (unsigned int k = 0; k < c.components.size(); ++k)
+              force.local_element(i * nc + c.components[k]) +=
+                c.function->value(x[i], k) / c.layer_thickness;
         }
-    if (has_body_force)
+    if (body_force)
       {
         const auto &weight = particle_system->energy_weights();
         body_force->set_time(time);
         for (unsigned int i = 0; i < particle_system->n_owned(); ++i)
-          for (unsigned int d = 0; d < dim; ++d)
-            force.local_element(i * dim + d) += weight[i] * body_force->value(x[i], d);
+          for (unsigned int k = 0; k < nc; ++k)
+            force.local_element(i * nc + k) += weight[i] * body_force->value(x[i], k);
       }
   }
 
   template <int dim>
-  std::shared_ptr<Function<dim>>
-  BoundaryConditions<dim>::body_force_function() const
-  {
-    return has_body_force ? body_force : nullptr;
-  }
-
-  template <int dim>
   std::vector<std::string>
-  BoundaryConditions<dim>::names_of_type(const Type type) const
+  BoundaryConditions<dim>::names_of(const Quantity quantity) const
   {
     std::vector<std::string> result;
     for (const auto &c : conditions)
-      if (c.type == type)
+      if (c.quantity == quantity)
         result.push_back(c.name);
     return result;
   }
@@ -255,17 +319,34 @@ namespace perideal
   }
 
   template <int dim>
-  std::vector<Tensor<1, dim>>
+  const std::string &
+  BoundaryConditions<dim>::type_name(const unsigned int k) const
+  {
+    return conditions[k].type_name;
+  }
+
+  template <int dim>
+  const std::vector<unsigned int> &
+  BoundaryConditions<dim>::reaction_components(const unsigned int k) const
+  {
+    return conditions[k].kind_components;
+  }
+
+  template <int dim>
+  std::vector<std::vector<double>>
   BoundaryConditions<dim>::reactions(const ParticleVector &internal_force) const
   {
-    std::vector<Tensor<1, dim>> result(conditions.size());
-    const auto                 &volume = particle_system->volumes();
+    std::vector<std::vector<double>> result(conditions.size());
+    const auto                      &volume = particle_system->volumes();
+    const unsigned int               nc     = layout.n_components();
     for (unsigned int k = 0; k < conditions.size(); ++k)
       {
+        const auto &components = conditions[k].kind_components;
+        result[k].assign(components.size(), 0.);
         for (const unsigned int i : conditions[k].particles)
-          for (unsigned int d = 0; d < dim; ++d)
-            result[k][d] -= internal_force.local_element(i * dim + d) * volume[i];
-        result[k] = Utilities::MPI::sum(result[k], particle_system->get_communicator());
+          for (unsigned int j = 0; j < components.size(); ++j)
+            result[k][j] -= internal_force.local_element(i * nc + components[j]) * volume[i];
+        Utilities::MPI::sum(result[k], particle_system->get_communicator(), result[k]);
       }
     return result;
   }

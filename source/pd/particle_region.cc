@@ -198,7 +198,7 @@ namespace perideal
     }
     prm.leave_subsection();
 
-    conditions.parse_parameters(prm, regions);
+    conditions.parse_parameters(prm, regions, model->field_layout());
   }
 
   template <int dim>

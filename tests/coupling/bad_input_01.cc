@@ -4,7 +4,9 @@
 // narrower than the horizon, particles outside the mesh, a PD condition on particles that follow
 // the FE field, two FE conditions on the same component of a boundary, an FE condition on a
 // boundary id the mesh does not have or on a boundary without FE unknowns, a body force in <Finite
-// elements> (a coupled run takes the body force of <Body force> only). A state-based model is
+// elements> (a coupled run takes the body force of <Body force> only), a PD condition on a
+// component the field does not have, a moment condition on a model without rotations, a malformed
+// expression in a condition's function (found when the file is read). A state-based model is
 // accepted (its energy is blended through the particles' weights). Quasi-static solves (run as
 // well): a valid file is solved statically and by adaptive dynamic relaxation; an FE velocity
 // condition, a component that no condition holds, and an exact-displacement tolerance without the
@@ -167,6 +169,20 @@ main(int argc, char **argv)
             {"FE_BLOCK",
              "    subsection right\n      set Boundary ids = 1\n      set Components = y\n"
              "    end"}});
+  run_case("PD condition on a component the field does not have",
+           {{"PD_CONDITIONS", "hold"},
+            {"PD_BLOCK",
+             "  subsection hold\n    set Region = corner\n    set Components = x, z\n  end"}});
+  run_case("moment condition on a model without rotations",
+           {{"PD_CONDITIONS", "twist"},
+            {"PD_BLOCK",
+             "  subsection twist\n    set Region = corner\n    set Type = moment\n"
+             "    set Layer thickness = 1e-3\n  end"}});
+  run_case("malformed expression in a boundary-condition function",
+           {{"PD_CONDITIONS", "hold"},
+            {"PD_BLOCK",
+             "  subsection hold\n    set Region = corner\n    set Components = y\n"
+             "    set Function = 1e-3 * (t\n  end"}});
   run_case("valid input, state-based model", {{"MODEL", "linear peridynamic solid"}});
   run_case("relaxation solver", {{"SOLVER", "adaptive dynamic relaxation"}});
   run_case("static solver", {{"SOLVER", "static"}});

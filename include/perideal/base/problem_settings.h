@@ -46,21 +46,22 @@ namespace perideal
 
   /**
    * @brief The settings of a problem that belong to neither region: the solver (<Solver>),
-   * time stepping (<Time stepping>), initial conditions (<Initial conditions>) and output
-   * (<Output>), plus <Dimension>. Declared and read in one place; the regions, the solvers and
-   * the postprocessors read them from here.
+   * time stepping (<Time stepping>), initial conditions (<Initial conditions>), the body force
+   * (<Body force>) and output (<Output>), plus <Dimension>. Declared and read in one place; the
+   * regions, the solvers and the postprocessors read them from here.
    */
   template <int dim>
   struct ProblemSettings
   {
-    /// Declare <Dimension>, <Solver>, <Time stepping>, <Initial conditions> and <Output>.
+    /// Declare <Dimension>, <Solver>, <Time stepping>, <Initial conditions>, <Body force> and
+    /// <Output>.
     static void
     declare_parameters(dealii::ParameterHandler &prm);
 
     /**
-     * @brief Read and check the entries of declare_parameters(). The initial-condition
-     * expressions are kept as text: their number of components is the field's (FieldLayout),
-     * which the driver knows once the regions are read.
+     * @brief Read and check the entries of declare_parameters(). The expressions of the
+     * initial conditions and the body force are kept as text: their number of components is
+     * the field's (FieldLayout), which the driver knows once the regions are read.
      */
     void
     parse_parameters(dealii::ParameterHandler &prm);
@@ -78,6 +79,9 @@ namespace perideal
 
     // <Initial conditions>: one expression per component, or "0".
     std::string initial_displacement = "0", initial_velocity = "0";
+
+    // <Body force/Function>: one expression per component, or "0".
+    std::string body_force = "0";
 
     // <Output>
     std::string                     output_directory = "output", base_name = "particles";

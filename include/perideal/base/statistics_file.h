@@ -2,11 +2,10 @@
 #define perideal_base_statistics_file_h
 
 #include <deal.II/base/mpi.h>
-#include <deal.II/base/tensor.h>
 
-#include <cmath>
 #include <fstream>
 #include <map>
+#include <ostream>
 #include <string>
 #include <vector>
 
@@ -79,20 +78,13 @@ namespace perideal
     std::ofstream file;
   };
   /**
-   * @brief @p force with the components below 1e-10 of its norm set to zero, for printed
-   * summaries: a component that vanishes by symmetry is then 0 on every number of ranks and
-   * build, not a round-off value that changes with the summation order.
+   * @brief Print @p values separated by spaces (with the stream's format), the components
+   * below 1e-10 of their Euclidean norm as 0: in printed summaries, a component that vanishes
+   * by symmetry is then 0 on every number of ranks and build, not a round-off value that
+   * changes with the summation order.
    */
-  template <int dim>
-  dealii::Tensor<1, dim>
-  without_round_off(const dealii::Tensor<1, dim> &force)
-  {
-    dealii::Tensor<1, dim> cleaned = force;
-    for (unsigned int d = 0; d < dim; ++d)
-      if (std::abs(cleaned[d]) < 1e-10 * force.norm())
-        cleaned[d] = 0.;
-    return cleaned;
-  }
+  void
+  print_without_round_off(std::ostream &out, const std::vector<double> &values);
 } // namespace perideal
 
 #endif

@@ -108,7 +108,9 @@ namespace perideal
     std::ostream &log;
     bool          is_root;
 
-    ProblemSettings<dim>                         settings;
+    ProblemSettings<dim> settings;
+    /// The unknowns of a point (the particles' and the FE region's).
+    FieldLayout                                  layout;
     ParticleRegion<dim>                          pd;
     FESolid<dim>                                 fe;
     TransferOperator<dim>                        transfer;

@@ -46,16 +46,18 @@ namespace perideal
       prescribed
     };
 
+    /// The state of a problem whose points have the unknowns @p layout.
     CoupledState(const MPI_Comm               comm,
                  std::ostream                &log,
                  const ProblemSettings<dim>  &settings,
+                 const FieldLayout           &layout,
                  ParticleRegion<dim>         &pd,
                  FESolid<dim>                &fe,
                  const TransferOperator<dim> &transfer,
                  CouplingMethod<dim>         &method);
 
     /**
-     * @brief Once both regions, P and the method are set up: the layout, the motion of every
+     * @brief Once both regions, P and the method are set up: the motion of every
      * owned particle component (refusing PD displacement or velocity conditions on slaved
      * particles) and the factors of the work of the loads; every vector sized and zero.
      */
@@ -133,8 +135,8 @@ namespace perideal
     FESolid<dim>                &fe;
     const TransferOperator<dim> &transfer;
     CouplingMethod<dim>         &method;
-    /// The unknowns of a particle (the material model's).
-    FieldLayout layout;
+    /// The unknowns of a point (particle or FE node).
+    const FieldLayout layout;
 
     // What the set-up derives, per owned particle component.
     std::vector<Motion> motion;

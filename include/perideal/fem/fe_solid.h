@@ -18,6 +18,7 @@
 #include <deal.II/lac/vector.h>
 
 #include <perideal/base/elasticity.h>
+#include <perideal/base/field_layout.h>
 #include <perideal/base/linear_algebra.h>
 
 #include <functional>
@@ -215,6 +216,10 @@ namespace perideal
     /// AMG).
     std::vector<std::vector<bool>>
     component_masks() const;
+
+    /// The unknowns of an FE node: the displacement x, y(, z).
+    FieldLayout
+    field_layout() const;
 
     /// One line describing the region, for the log (collective).
     std::string

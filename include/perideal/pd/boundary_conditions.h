@@ -1,13 +1,13 @@
 // ---------------------------------------------------------------------
-// PeriDeal: prescribed displacement, velocity and traction on particle sets.
+// PeriDeal: prescribed values, rates and loads on particle sets.
 // ---------------------------------------------------------------------
 #ifndef perideal_pd_boundary_conditions_h
 #define perideal_pd_boundary_conditions_h
 
 #include <deal.II/base/function_parser.h>
 #include <deal.II/base/parameter_handler.h>
-#include <deal.II/base/tensor.h>
 
+#include <perideal/base/field_layout.h>
 #include <perideal/base/linear_algebra.h>
 #include <perideal/base/region.h>
 #include <perideal/pd/particle_system.h>
@@ -19,45 +19,52 @@
 namespace perideal
 {
   /**
-   * @brief Boundary conditions on the particles of named regions, and a body force.
+   * @brief Boundary conditions on the particles of named regions, and the body force.
    *
-   * - 'displacement': u_c(x, t) = g_c(x, t) for the listed components c;
-   * - 'velocity': v_c(x, t) = g_c(x, t) for the listed components;
-   * - 'traction': a traction vector T(x, t) [Pa] applied as the body force T / d on the
-   *   particles of the region, a layer of thickness d ('Layer thickness') at the loaded surface;
-   *   the resultant is T times the area of the layer's face, to within the lattice resolution.
-   * Functions are deal.II FunctionParser expressions of x, y, (z) and t. A component may be
-   * prescribed by one condition only.
+   * A condition prescribes one quantity (FieldLayout's Quantity) of the components of one kind:
+   * - translations: 'displacement' [m] or 'velocity' [m/s] of the listed components, or
+   *   'traction' [Pa] (all translations);
+   * - rotations (micropolar models): 'rotation' [rad] or 'angular velocity' [rad/s] of the
+   *   listed components, or 'moment' [N m/m^2] (all rotations);
+   * - a scalar field: 'value' or 'rate' of it, or 'flux' (its load per unit area).
+   * A load ('traction', 'moment', 'flux') T(x, t) acts as the force density T / d on the
+   * particles of the region, a layer of thickness d ('Layer thickness') at the loaded surface;
+   * the resultant is T times the area of the layer's face, to within the lattice resolution.
+   * Functions are deal.II FunctionParser expressions of x, y, (z) and t, one per listed
+   * component. A component may be prescribed by one condition only.
    *
-   * The body force b(x, t) [N/m^3] ('Body force/Function') acts on every particle with the
-   * particle's energy weight (ParticleSystem::energy_weights(): 1 in a PD problem, beta_i in a
-   * blended coupled problem, whose FE region carries the rest, 1 - beta), so that the load is
-   * weighted like the energy and a body force is not counted twice in the overlap. Tractions act
-   * in full on the particles of their region.
+   * The body force b(x, t) [N/m^3] (the problem's <Body force/Function>, set_body_force())
+   * acts on every particle with the particle's energy weight (ParticleSystem::energy_weights():
+   * 1 in a PD problem, beta_i in a blended coupled problem, whose FE region carries the rest,
+   * 1 - beta), so that the load is weighted like the energy and a body force is not counted
+   * twice in the overlap. Loads of conditions act in full on the particles of their region.
    */
   template <int dim>
   class BoundaryConditions
   {
   public:
-    enum class Type
-    {
-      displacement,
-      velocity,
-      traction
-    };
-
     /// Declare "Names" of subsection "Boundary conditions" (first pass).
     static void
     declare_names(dealii::ParameterHandler &prm);
-    /// Declare every condition's subsection and the body force.
+    /// Declare every condition's subsection.
     static void
     declare_parameters(dealii::ParameterHandler &prm, const std::vector<std::string> &names);
     /// The names read in the first pass.
     static std::vector<std::string>
     parse_names(dealii::ParameterHandler &prm);
-    /// Read every condition; region names are checked against @p regions.
+    /**
+     * @brief Read every condition for a field with the unknowns @p layout: region names are
+     * checked against @p regions, types and components against the layout (a message names
+     * the entry and the accepted values).
+     */
     void
-    parse_parameters(dealii::ParameterHandler &prm, const RegionCollection<dim> &regions);
+    parse_parameters(dealii::ParameterHandler    &prm,
+                     const RegionCollection<dim> &regions,
+                     const FieldLayout           &layout);
+
+    /// Set the body force (the problem's, one expression per component), or none (nullptr).
+    void
+    set_body_force(const std::shared_ptr<dealii::Function<dim>> &function);
 
     /**
      * @brief Find the particles of every condition; throws (naming the condition) if a region
@@ -66,56 +73,65 @@ namespace perideal
     void
     setup(const ParticleSystem<dim> &particles);
 
-    /// Set the velocity of prescribed components over the step from @p time to time + @p dt.
+    /// Set the rate of prescribed components over the step from @p time to time + @p dt.
     void
     prescribe_step_velocity(const double time, const double dt, ParticleVector &v) const;
-    /// Set the displacement of components with a prescribed displacement at @p time.
+    /// Set the components with a prescribed value (displacement, rotation, value) at @p time.
     void
     prescribe_displacement(const double time, ParticleVector &u) const;
-    /// Whether there is a body force or a traction condition.
+    /// Whether there is a body force or a load condition.
     bool
     has_loads() const;
-    /// Add the body force (times the energy weights) and traction loads [N/m^3] at @p time to
-    /// @p force.
+    /// Add the body force (times the energy weights) and the loads of the conditions at @p time
+    /// to the force density @p force.
     void
     add_loads(const double time, ParticleVector &force) const;
-    /// The body force b(x, t) of <Body force/Function>, or nullptr if it is zero.
-    std::shared_ptr<dealii::Function<dim>>
-    body_force_function() const;
     /// Whether component @p c of owned particle @p i is prescribed.
     bool
     is_prescribed(const unsigned int i, const unsigned int c) const
     {
-      return prescribed[i * dim + c] != 0;
+      return prescribed[i * layout.n_components() + c] != 0;
     }
-    /// Names of the conditions of type @p type.
+    /// Names of the conditions that prescribe the quantity @p quantity.
     std::vector<std::string>
-    names_of_type(const Type type) const;
+    names_of(const Quantity quantity) const;
     /// Names of the conditions.
     const std::vector<std::string> &
     names() const;
-    /// Reaction of every condition: minus the sum of the internal forces f V on its particles.
-    std::vector<dealii::Tensor<1, dim>>
+    /// The <Type> of condition @p k as the file names it ("displacement", "moment", ...).
+    const std::string &
+    type_name(const unsigned int k) const;
+    /// The components whose reaction condition @p k reports: all of its kind.
+    const std::vector<unsigned int> &
+    reaction_components(const unsigned int k) const;
+    /**
+     * @brief Reaction of every condition: minus the sum of the internal forces f V on its
+     * particles, per component of reaction_components() (forces [N], moments [N m]).
+     */
+    std::vector<std::vector<double>>
     reactions(const ParticleVector &internal_force) const;
 
   private:
     struct Condition
     {
-      std::string                                  name;
-      const Region<dim>                           *region = nullptr;
-      Type                                         type   = Type::displacement;
-      std::vector<unsigned int>                    components;
-      std::string                                  expression;
+      std::string        name;
+      const Region<dim> *region = nullptr;
+      std::string        type_name;
+      Quantity           quantity = Quantity::value;
+      /// The listed components (all of the kind for a load).
+      std::vector<unsigned int> components;
+      /// Every component of the condition's kind (its reactions).
+      std::vector<unsigned int>                    kind_components;
       double                                       layer_thickness = 0.;
       std::unique_ptr<dealii::FunctionParser<dim>> function;
       std::vector<unsigned int>                    particles;
     };
-    std::vector<Condition>                       conditions;
-    std::vector<std::string>                     condition_names;
-    std::shared_ptr<dealii::FunctionParser<dim>> body_force;
-    bool                                         has_body_force = false;
-    std::vector<std::uint8_t>                    prescribed;
-    const ParticleSystem<dim>                   *particle_system = nullptr;
+    FieldLayout                            layout;
+    std::vector<Condition>                 conditions;
+    std::vector<std::string>               condition_names;
+    std::shared_ptr<dealii::Function<dim>> body_force;
+    std::vector<std::uint8_t>              prescribed;
+    const ParticleSystem<dim>             *particle_system = nullptr;
   };
 } // namespace perideal
 

@@ -4,6 +4,10 @@
 #include <perideal/coupling/postprocessors/field_output.h>
 #include <perideal/pd/damage_model.h>
 
+#include <array>
+#include <string>
+#include <vector>
+
 namespace perideal
 {
   using namespace dealii;
@@ -25,18 +29,46 @@ namespace perideal
       {
         const auto        &ps      = state.pd.particles();
         const unsigned int n_owned = ps.n_owned(), nc = state.n_components();
-        const auto        &x            = ps.positions();
-        const auto         owned_values = [&](const ParticleVector &vector) {
-          return std::vector<double>(vector.begin(), vector.begin() + std::size_t(n_owned) * nc);
-        };
+        const auto        &x = ps.positions();
         // The slaved particles move with the FE field: show its velocity there.
         ParticleVector velocity(state.v);
         state.transfer.interpolate(state.V, velocity);
         particle_output->clear_fields();
         particle_output->set_points(std::vector<Point<dim>>(x.begin(), x.begin() + n_owned));
-        particle_output->add_vector_field("displacement", nc, owned_values(state.u));
-        particle_output->add_vector_field("velocity", nc, owned_values(velocity));
-        particle_output->add_vector_field("force_density", nc, owned_values(state.internal_force));
+        // The fields of each group of components: displacement, velocity and force_density of
+        // the translations; rotation, angular_velocity, moment_density of the rotations; w,
+        // w_rate, w_load of a scalar w.
+        struct Group
+        {
+          std::vector<unsigned int>  components;
+          std::array<std::string, 3> names;
+        };
+        const FieldLayout &layout = state.layout;
+        std::vector<Group> groups(2);
+        groups[0].names = {{"displacement", "velocity", "force_density"}};
+        groups[1].names = {{"rotation", "angular_velocity", "moment_density"}};
+        for (unsigned int c = 0; c < nc; ++c)
+          if (layout.kind(c) == ComponentKind::scalar)
+            groups.push_back(
+              Group{{c}, {{layout.name(c), layout.name(c) + "_rate", layout.name(c) + "_load"}}});
+          else
+            groups[layout.kind(c) == ComponentKind::translation ? 0 : 1].components.push_back(c);
+        for (const auto &group : groups)
+          if (!group.components.empty())
+            {
+              const auto values = [&](const ParticleVector &vector) {
+                std::vector<double> result;
+                result.reserve(std::size_t(n_owned) * group.components.size());
+                for (unsigned int i = 0; i < n_owned; ++i)
+                  for (const unsigned int c : group.components)
+                    result.push_back(vector.local_element(i * nc + c));
+                return result;
+              };
+              const unsigned int n = group.components.size();
+              particle_output->add_vector_field(group.names[0], n, values(state.u));
+              particle_output->add_vector_field(group.names[1], n, values(velocity));
+              particle_output->add_vector_field(group.names[2], n, values(state.internal_force));
+            }
         particle_output->add_scalar_field("damage", damage_index(ps));
         if (state.energy_density.size() == n_owned)
           particle_output->add_scalar_field("strain_energy_density", state.energy_density);

@@ -90,12 +90,17 @@ namespace perideal
     Utilities::MPI::sum(values, state.comm, values);
     if (!state.is_root)
       return;
-    std::ostream &log   = state.log;
-    const auto    flags = log.flags();
+    // Translations and scalars in micrometres, rotations in microradians.
+    const FieldLayout &layout = state.layout;
+    const std::string  label  = layout.n_components(ComponentKind::translation) == nc ?
+                                  "displacement [um]" :
+                                  "field (" + layout.names() + ") [um, urad]";
+    std::ostream      &log    = state.log;
+    const auto         flags  = log.flags();
     for (unsigned int p = 0; p < points.size(); ++p)
       {
         log << std::defaultfloat << "Probe " << p + 1 << " (" << points[p] << "): particle at ("
-            << probe_particles[p] << "), displacement [um]:" << std::scientific
+            << probe_particles[p] << "), " << label << ":" << std::scientific
             << std::setprecision(6);
         for (unsigned int c = 0; c < nc; ++c)
           log << ' ' << 1e6 * values[p * nc + c];

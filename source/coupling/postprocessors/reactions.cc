@@ -5,21 +5,12 @@
 #include <perideal/coupling/postprocessors/reactions.h>
 
 #include <algorithm>
+#include <cmath>
 #include <iomanip>
 
 namespace perideal
 {
   using namespace dealii;
-
-  namespace
-  {
-    /// "x", "y" or "z".
-    std::string
-    axis_name(const unsigned int d)
-    {
-      return std::string(1, "xyz"[d]);
-    }
-  } // namespace
 
   template <int dim>
   void
@@ -41,58 +32,78 @@ namespace perideal
   {
     if (!data.write_statistics)
       return;
-    using FEType              = typename FESolid<dim>::ConditionType;
-    const auto &fe_conditions = state.fe.conditions();
-    const auto &pd_conditions = state.pd.boundary_conditions();
-    const auto  fe_reactions  = state.fe.reactions(state.fe_support);
-    const auto  pd_reactions  = pd_conditions.reactions(state.internal_force);
-    const auto &pd_names      = pd_conditions.names();
+    using FEType                     = typename FESolid<dim>::ConditionType;
+    const FieldLayout &layout        = state.layout;
+    const unsigned int nc            = state.n_components();
+    const auto        &pd_conditions = state.pd.boundary_conditions();
+    const auto        &pd_names      = pd_conditions.names();
+    const auto         pd_reactions  = pd_conditions.reactions(state.internal_force);
+    const auto        &fe_conditions = state.fe.conditions();
+    // The FE region's reactions per component of the layout (its dofs' components).
+    std::vector<std::vector<double>> fe_reactions;
+    for (const auto &reaction : state.fe.reactions(state.fe_support))
+      fe_reactions.emplace_back(reaction.begin_raw(), reaction.end_raw());
     for (unsigned int k = 0; k < pd_reactions.size(); ++k)
-      for (unsigned int d = 0; d < dim; ++d)
-        statistics.add_value("reaction_" + pd_names[k] + "_" + axis_name(d), pd_reactions[k][d]);
+      for (unsigned int j = 0; j < pd_reactions[k].size(); ++j)
+        statistics.add_value("reaction_" + pd_names[k] + "_" +
+                               layout.name(pd_conditions.reaction_components(k)[j]),
+                             pd_reactions[k][j]);
     for (unsigned int k = 0; k < fe_reactions.size(); ++k)
       if (fe_conditions[k].type != FEType::traction)
-        for (unsigned int d = 0; d < dim; ++d)
-          statistics.add_value("reaction_" + fe_conditions[k].name + "_" + axis_name(d),
-                               fe_reactions[k][d]);
+        for (unsigned int c = 0; c < fe_reactions[k].size(); ++c)
+          statistics.add_value("reaction_" + fe_conditions[k].name + "_" + layout.name(c),
+                               fe_reactions[k][c]);
 
-    // Quasi-static: the applied loads against the reactions of the displacement conditions.
-    Tensor<1, dim> applied, reaction_sum;
-    double         imbalance = 0., balance = 0.;
+    // Quasi-static: per component (rotations aside: their balance involves the moments of the
+    // forces), the applied loads against the reactions of the value conditions.
+    std::vector<double> applied(nc, 0.), balanced(nc, 0.);
+    double              imbalance = 0., balance = 0.;
     if (data.quasi_static)
       {
-        const auto        &ps     = state.pd.particles();
-        const auto        &volume = ps.volumes();
-        const unsigned int nc     = state.n_components();
+        const auto &ps     = state.pd.particles();
+        const auto &volume = ps.volumes();
         for (unsigned int k = 0; k < state.f_ext.locally_owned_size(); ++k)
           applied[fe_dof_component[k]] += state.f_ext.local_element(k);
         for (unsigned int i = 0; i < ps.n_owned(); ++i)
-          for (unsigned int d = 0; d < dim; ++d)
-            applied[d] += state.external_force.local_element(i * nc + d) * volume[i];
-        applied = Utilities::MPI::sum(applied, state.comm);
-        const auto pd_types =
-          pd_conditions.names_of_type(BoundaryConditions<dim>::Type::displacement);
-        double largest = applied.norm();
+          for (unsigned int c = 0; c < nc; ++c)
+            applied[c] += state.external_force.local_element(i * nc + c) * volume[i];
+        Utilities::MPI::sum(applied, state.comm, applied);
+        const auto norm = [&](const std::vector<double>       &values,
+                              const std::vector<unsigned int> *components) {
+          double sum = 0.;
+          for (unsigned int j = 0; j < values.size(); ++j)
+            if (layout.kind(components ? (*components)[j] : j) != ComponentKind::rotation)
+              sum += values[j] * values[j];
+          return std::sqrt(sum);
+        };
+        double largest = norm(applied, nullptr);
         for (unsigned int k = 0; k < fe_reactions.size(); ++k)
           if (fe_conditions[k].type == FEType::displacement)
             {
-              reaction_sum += fe_reactions[k];
-              largest = std::max(largest, fe_reactions[k].norm());
+              for (unsigned int c = 0; c < fe_reactions[k].size(); ++c)
+                balanced[c] += fe_reactions[k][c];
+              largest = std::max(largest, norm(fe_reactions[k], nullptr));
             }
+        const auto held = pd_conditions.names_of(Quantity::value);
         for (unsigned int k = 0; k < pd_reactions.size(); ++k)
-          if (std::find(pd_types.begin(), pd_types.end(), pd_names[k]) != pd_types.end())
+          if (std::find(held.begin(), held.end(), pd_names[k]) != held.end())
             {
-              reaction_sum += pd_reactions[k];
-              largest = std::max(largest, pd_reactions[k].norm());
+              const auto &components = pd_conditions.reaction_components(k);
+              for (unsigned int j = 0; j < components.size(); ++j)
+                balanced[components[j]] += pd_reactions[k][j];
+              largest = std::max(largest, norm(pd_reactions[k], &components));
             }
+        for (unsigned int c = 0; c < nc; ++c)
+          balanced[c] += applied[c];
         // Relative to the largest force involved; loads below 1e-10 of the internal-force scale
         // (a rigid motion) are round-off and give no ratio.
         state.U.update_ghost_values();
         const double scale = state.fe_force_scale();
-        imbalance          = (applied + reaction_sum).norm();
+        imbalance          = norm(balanced, nullptr);
         balance            = largest > 1e-10 * scale ? imbalance / largest : 0.;
-        for (unsigned int d = 0; d < dim; ++d)
-          statistics.add_value("applied_load_" + axis_name(d), applied[d]);
+        for (unsigned int c = 0; c < nc; ++c)
+          if (layout.kind(c) != ComponentKind::rotation)
+            statistics.add_value("applied_load_" + layout.name(c), applied[c]);
         statistics.add_value("force_balance", balance);
       }
 
@@ -102,15 +113,32 @@ namespace perideal
     const auto    flags = log.flags();
     log << std::scientific << std::setprecision(6);
     for (unsigned int k = 0; k < pd_reactions.size(); ++k)
-      log << "Reaction " << pd_names[k] << ": " << without_round_off(pd_reactions[k]) << " N\n";
+      {
+        log << "Reaction " << pd_names[k] << ": ";
+        print_without_round_off(log, pd_reactions[k]);
+        log << (layout.kind(pd_conditions.reaction_components(k)[0]) == ComponentKind::rotation ?
+                  " N m\n" :
+                  " N\n");
+      }
     for (unsigned int k = 0; k < fe_reactions.size(); ++k)
       if (fe_conditions[k].type != FEType::traction)
-        log << "Reaction " << fe_conditions[k].name << ": " << without_round_off(fe_reactions[k])
-            << " N\n";
+        {
+          log << "Reaction " << fe_conditions[k].name << ": ";
+          print_without_round_off(log, fe_reactions[k]);
+          log << " N\n";
+        }
     if (data.quasi_static)
-      log << "Applied load: " << without_round_off(applied) << " N\n"
-          << "Force balance: |applied + reactions| = " << imbalance
-          << " N, relative to the largest force: " << balance << "\n";
+      {
+        std::vector<double> applied_forces;
+        for (unsigned int c = 0; c < nc; ++c)
+          if (layout.kind(c) != ComponentKind::rotation)
+            applied_forces.push_back(applied[c]);
+        log << "Applied load: ";
+        print_without_round_off(log, applied_forces);
+        log << " N\n"
+            << "Force balance: |applied + reactions| = " << imbalance
+            << " N, relative to the largest force: " << balance << "\n";
+      }
     log << std::flush;
     log.flags(flags);
   }

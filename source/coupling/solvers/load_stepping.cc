@@ -4,6 +4,7 @@
 #include <perideal/coupling/solvers/load_stepping.h>
 #include <perideal/pd/damage_model.h>
 
+#include <algorithm>
 #include <vector>
 
 namespace perideal
@@ -28,6 +29,7 @@ namespace perideal
     const unsigned int nc         = state.n_components();
 
     // Conditions a static solve cannot apply, and components no condition holds.
+    const auto  rates = conditions.names_of(Quantity::rate);
     std::string condition_list;
     for (const auto &c : fe.conditions())
       condition_list += (condition_list.empty() ? "" : ", ") + c.name;
@@ -39,13 +41,16 @@ namespace perideal
                              "> is of type 'velocity', which a quasi-static solve (<Solver/Type> "
                              "= static or adaptive dynamic relaxation) cannot apply; use "
                              "'displacement' (scaled by the load factor) instead."));
-    const auto velocity_conditions =
-      conditions.names_of_type(BoundaryConditions<dim>::Type::velocity);
-    AssertThrow(velocity_conditions.empty(),
-                ExcMessage("The boundary condition <" + velocity_conditions.front() +
-                           "> is of type 'velocity', which a quasi-static solve (<Solver/Type> = "
-                           "static or adaptive dynamic relaxation) cannot apply; use "
-                           "'displacement' (scaled by the load factor) instead."));
+    for (unsigned int k = 0; k < conditions.names().size(); ++k)
+      AssertThrow(std::find(rates.begin(), rates.end(), conditions.names()[k]) == rates.end(),
+                  ExcMessage("The boundary condition <" + conditions.names()[k] + "> is of type '" +
+                             conditions.type_name(k) +
+                             "', which a quasi-static solve (<Solver/Type> = static or adaptive "
+                             "dynamic relaxation) cannot apply; use '" +
+                             (conditions.type_name(k) == "velocity" ? "displacement" :
+                              conditions.type_name(k) == "rate"     ? "value" :
+                                                                      "rotation") +
+                             "' (scaled by the load factor) instead."));
     const bool        relax       = (type == SolverType::adaptive_dynamic_relaxation);
     const std::string solver_name = relax ? "adaptive dynamic relaxation" : "static";
 

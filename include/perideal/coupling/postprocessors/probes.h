@@ -14,8 +14,8 @@ namespace perideal
 {
   /**
    * @brief <Output/Probe points>: the final summary prints the field of the particle nearest to
-   * each point, the translations in micrometres (the values application tests compare must lie
-   * above numdiff's absolute tolerance).
+   * each point, translations and scalars in micrometres, rotations in microradians (the values
+   * application tests compare must lie above numdiff's absolute tolerance).
    *
    * The particle is chosen once (initialize()): the nearest, ties going to the
    * lexicographically smallest position, so the choice does not depend on the partition; a
