@@ -47,7 +47,7 @@ namespace perideal
                                           const std::vector<std::string> &fe_condition_names)
   {
     PDProblem<dim>::declare_parameters(prm, region_names, condition_names);
-    FESolid<dim>::declare_parameters(prm, fe_condition_names);
+    FERegion<dim>::declare_parameters(prm, fe_condition_names);
     prm.enter_subsection("Coupling");
     using Methods = PluginRegistry<CouplingMethod<dim>>;
     prm.declare_entry("Method",
@@ -95,9 +95,15 @@ namespace perideal
                            "; explicit dynamics (<Solver/Type> = explicit) needs the FE mass: "
                            "accepted values are > 0."));
     // One body force for the whole body: the particles take it with their weights beta_i
-    // (BoundaryConditions::add_loads), the FE region with 1 - beta (FESolid's load).
+    // (BoundaryConditions::add_loads), the FE region with 1 - beta (FERegion's load).
     if (const auto body_force = pd.boundary_conditions.body_force_function())
       fe.set_body_force(body_force);
+    AssertThrow(!pd.has_body() || !fe.has_mesh() ||
+                  fe.field_layout() == pd.material->field_layout(),
+                ExcMessage("<Finite elements/Physics> has the unknowns " +
+                           fe.field_layout().description() + ", the particles' <Material/Model> " +
+                           pd.material->field_layout().description() +
+                           ": a coupled problem joins fields with the same unknowns."));
     prm.enter_subsection("Coupling");
     method_name = prm.get("Method");
     method      = PluginRegistry<CouplingMethod<dim>>::create(method_name, "Coupling/Method");
@@ -140,6 +146,13 @@ namespace perideal
   CoupledProblem<dim>::particles() const
   {
     return pd.particle_system;
+  }
+
+  template <int dim>
+  const FERegion<dim> &
+  CoupledProblem<dim>::fe_region() const
+  {
+    return fe;
   }
 
   template <int dim>
@@ -614,7 +627,7 @@ namespace perideal
     for (const auto &name : pd.boundary_conditions.names())
       condition_list += (condition_list.empty() ? "" : ", ") + name;
     for (const auto &c : fe.conditions())
-      AssertThrow(c.type != FESolid<dim>::ConditionType::velocity,
+      AssertThrow(c.type != Quantity::rate,
                   ExcMessage("The FE boundary condition <" + c.name +
                              "> is of type 'velocity', which a quasi-static solve (<Solver/Type> "
                              "= static or adaptive dynamic relaxation) cannot apply; use "
@@ -642,9 +655,11 @@ namespace perideal
                                 &target,
                                 &full_load})
       ps.reinit_vector(*vec, dim);
+    // The components to hold: the FE field's, or the particles' displacement without a mesh.
+    const FieldLayout layout = fe.has_mesh() ? fe.field_layout() : FieldLayout::displacement(dim);
     std::array<double, dim> constrained{};
     for (const auto &c : fe.conditions())
-      if (c.type == FESolid<dim>::ConditionType::displacement)
+      if (c.type == Quantity::value)
         for (const unsigned int comp : c.components)
           constrained[comp] = 1.;
     for (unsigned int i = 0; i < n_owned; ++i)
@@ -668,14 +683,14 @@ namespace perideal
       " (boundary conditions: " + (condition_list.empty() ? std::string("none") : condition_list) +
       ")";
     double n_constrained = 0.;
-    for (unsigned int d = 0; d < dim; ++d)
+    for (unsigned int d = 0; d < layout.n_components(); ++d)
       {
         constrained[d] = Utilities::MPI::sum(constrained[d], comm);
         n_constrained += constrained[d];
         AssertThrow(constrained[d] > 0. || relax,
-                    ExcMessage("No displacement condition prescribes the " + axis_name(d) +
+                    ExcMessage("No displacement condition prescribes the " + layout.name(d) +
                                " component anywhere" + conditions_named +
-                               ", so a rigid translation in " + axis_name(d) +
+                               ", so a rigid translation in " + layout.name(d) +
                                " is free and the static system (<Solver/Type> = static) is "
                                "singular. Prescribe it " +
                                where +
@@ -703,7 +718,7 @@ namespace perideal
     {
       const auto modes = fe.component_masks();
       fe_dof_component.assign(U.locally_owned_size(), 0);
-      for (unsigned int d = 0; d < dim; ++d)
+      for (unsigned int d = 0; d < modes.size(); ++d)
         for (unsigned int k = 0; k < fe_dof_component.size(); ++k)
           if (modes[d][k])
             fe_dof_component[k] = d;
@@ -883,7 +898,7 @@ namespace perideal
       pd.boundary_conditions.names_of_type(BoundaryConditions<dim>::Type::displacement);
     double largest = applied.norm();
     for (unsigned int k = 0; k < fe_reactions.size(); ++k)
-      if (fe.conditions()[k].type == FESolid<dim>::ConditionType::displacement)
+      if (fe.conditions()[k].type == Quantity::value)
         {
           reaction_sum += fe_reactions[k];
           largest = std::max(largest, fe_reactions[k].norm());
@@ -929,7 +944,7 @@ namespace perideal
         file.add_value("reaction_" + pd.boundary_conditions.names()[k] + "_" + axis_name(d),
                        pd_reactions[k][d]);
     for (unsigned int k = 0; k < fe_reactions.size(); ++k)
-      if (fe.conditions()[k].type != FESolid<dim>::ConditionType::traction)
+      if (fe.conditions()[k].type != Quantity::load)
         for (unsigned int d = 0; d < dim; ++d)
           file.add_value("reaction_" + fe.conditions()[k].name + "_" + axis_name(d),
                          fe_reactions[k][d]);
@@ -1125,7 +1140,7 @@ namespace perideal
         file.add_value("reaction_" + pd.boundary_conditions.names()[k] + "_" + axis[d],
                        pd_reactions[k][d]);
     for (unsigned int k = 0; k < fe_reactions.size(); ++k)
-      if (fe.conditions()[k].type != FESolid<dim>::ConditionType::traction)
+      if (fe.conditions()[k].type != Quantity::load)
         for (unsigned int d = 0; d < dim; ++d)
           file.add_value("reaction_" + fe.conditions()[k].name + "_" + axis[d], fe_reactions[k][d]);
     file.end_row();
@@ -1169,7 +1184,7 @@ namespace perideal
       log << "Reaction " << pd.boundary_conditions.names()[k] << ": "
           << without_round_off(pd_reactions[k]) << " N\n";
     for (unsigned int k = 0; k < fe_reactions.size(); ++k)
-      if (fe.conditions()[k].type != FESolid<dim>::ConditionType::traction)
+      if (fe.conditions()[k].type != Quantity::load)
         log << "Reaction " << fe.conditions()[k].name << ": " << without_round_off(fe_reactions[k])
             << " N\n";
   }

@@ -66,7 +66,7 @@ namespace perideal
 
   template <int dim>
   void
-  CoupledStaticSolver<dim>::reinit(const FESolid<dim>          &fe_solid,
+  CoupledStaticSolver<dim>::reinit(const FERegion<dim>         &fe_solid,
                                    const ParticleSystem<dim>   &particle_system,
                                    const TransferOperator<dim> &transfer_operator,
                                    const ParticleVector        &particle_prescribed)
@@ -332,8 +332,8 @@ namespace perideal
         const auto                                        fe_modes = fe->component_masks();
         TrilinosWrappers::PreconditionAMG::AdditionalData data;
         data.elliptic = true;
-        data.constant_modes.assign(dim, std::vector<bool>(n_local, false));
-        for (unsigned int d = 0; d < dim; ++d)
+        data.constant_modes.assign(fe_modes.size(), std::vector<bool>(n_local, false));
+        for (unsigned int d = 0; d < fe_modes.size(); ++d)
           for (std::size_t k = 0; k < n_fe_owned; ++k)
             data.constant_modes[d][k] = fe_modes[d][k];
         for (std::size_t k = 0; k < particle_z.size(); ++k)

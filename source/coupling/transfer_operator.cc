@@ -69,7 +69,7 @@ namespace perideal
 
   template <int dim>
   void
-  TransferOperator<dim>::reinit(const FESolid<dim> &fe, const ParticleSystem<dim> &particles)
+  TransferOperator<dim>::reinit(const FERegion<dim> &fe, const ParticleSystem<dim> &particles)
   {
     const MPI_Comm comm        = particles.get_communicator();
     const auto    &tria        = fe.get_triangulation();

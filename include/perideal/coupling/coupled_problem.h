@@ -11,7 +11,7 @@
 #include <perideal/base/statistics_file.h>
 #include <perideal/coupling/coupling_method.h>
 #include <perideal/coupling/transfer_operator.h>
-#include <perideal/fem/fe_solid.h>
+#include <perideal/fem/fe_region.h>
 #include <perideal/pd/pd_problem.h>
 
 #include <memory>
@@ -82,6 +82,10 @@ namespace perideal
     /// The FE displacement after run() (owned entries).
     const dealii::LinearAlgebra::distributed::Vector<double> &
     fe_displacement() const;
+
+    /// The FE region (its mesh and dofs after setup()).
+    const FERegion<dim> &
+    fe_region() const;
 
     /// The explicit time step (after setup() of an explicit run) [s].
     double
@@ -177,7 +181,7 @@ namespace perideal
     bool          is_root;
 
     PDProblem<dim>                               pd;
-    FESolid<dim>                                 fe;
+    FERegion<dim>                                fe;
     TransferOperator<dim>                        transfer;
     std::string                                  method_name;
     std::unique_ptr<CouplingMethod<dim>>         method;
