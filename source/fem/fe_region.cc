@@ -26,6 +26,7 @@
 #include <filesystem>
 #include <fstream>
 #include <sstream>
+#include <utility>
 
 namespace perideal
 {
@@ -420,6 +421,8 @@ namespace perideal
     // The prescribed dofs: their condition, component and support point.
     prescribed.assign(owned_dofs.n_elements(), false);
     prescribed_dofs.clear();
+    interior_dofs.clear();
+    interior_values.clear();
     {
       std::vector<types::global_dof_index> face_dofs;
       const MappingQ1<dim>                 mapping;
@@ -734,6 +737,42 @@ namespace perideal
         else
           v.local_element(d.local_index) = value;
       }
+    for (const auto &[local_index, value] : interior_values)
+      u.local_element(local_index) = value;
+  }
+
+  template <int dim>
+  void
+  FERegion<dim>::set_interior_values(const std::vector<types::global_dof_index> &dofs,
+                                     const std::vector<double>                  &values)
+  {
+    AssertDimension(dofs.size(), values.size());
+    for (const auto &[local_index, value] : interior_values)
+      prescribed[local_index] = false;
+    interior_dofs = dofs;
+    interior_values.clear();
+    for (unsigned int k = 0; k < dofs.size(); ++k)
+      if (owned_dofs.is_element(dofs[k]))
+        {
+          const auto local = static_cast<unsigned int>(owned_dofs.index_within_set(dofs[k]));
+          Assert(!prescribed[local],
+                 ExcMessage("Dof " + std::to_string(dofs[k]) +
+                            " is prescribed by a boundary condition already."));
+          prescribed[local] = true;
+          interior_values.emplace_back(local, values[k]);
+        }
+  }
+
+  template <int dim>
+  std::vector<double>
+  FERegion<dim>::interior_reactions(const Vector &residual) const
+  {
+    std::vector<double> result(interior_dofs.size(), 0.);
+    for (unsigned int k = 0; k < interior_dofs.size(); ++k)
+      if (owned_dofs.is_element(interior_dofs[k]))
+        result[k] = residual(interior_dofs[k]);
+    Utilities::MPI::sum(make_array_view(std::as_const(result)), comm, make_array_view(result));
+    return result;
   }
 
   template <int dim>

@@ -46,7 +46,8 @@ namespace perideal
    * field's equation, e.g. k dw/dn). A load condition ('traction', 'flux') acts on every
    * component of the field, and with the body force b(x, t) (set_body_force()) it enters the
    * load as int g . v ds and int b . v dx. In 2D forces are per unit thickness times the
-   * 'Thickness' (so that they are in N, like the particles' forces).
+   * 'Thickness' (so that they are in N, like the particles' forces). Dofs inside the body can
+   * be prescribed too (set_interior_values()).
    *
    * The stiffness K = sum_cells int (1 - beta) a(v, u) dx (a from the physics) and the lumped
    * mass (Gauss-Lobatto nodal quadrature, so positive for every degree) are assembled
@@ -122,6 +123,25 @@ namespace perideal
     setup(const WeightFunction &weight = WeightFunction());
 
     /**
+     * @brief Prescribe the dofs @p dofs (global indices, the same list on every rank; each
+     * rank uses the ones it owns) to @p values, like the dofs of a 'displacement' ('value')
+     * condition: prescribe() sets them (at every time), prescribed_mask() holds them and
+     * interior_reactions() gives their reactions. For Dirichlet data inside the body
+     * (overlapping Schwarz). Call after setup(); a call replaces the previous one's dofs; a dof
+     * may not be a boundary condition's as well.
+     */
+    void
+    set_interior_values(const std::vector<dealii::types::global_dof_index> &dofs,
+                        const std::vector<double>                          &values);
+
+    /**
+     * @brief The reactions (the entries of @p residual = K u - f) at the dofs of the last
+     * set_interior_values(), in its order, summed over the ranks (collective).
+     */
+    std::vector<double>
+    interior_reactions(const dealii::LinearAlgebra::distributed::Vector<double> &residual) const;
+
+    /**
      * @brief The external load f(t): load conditions and body force.
      */
     void
@@ -129,7 +149,7 @@ namespace perideal
 
     /**
      * @brief Set the prescribed components at @p time: of @p u for displacement (value)
-     * conditions, of @p v for velocity (rate) conditions (owned entries;
+     * conditions and interior values, of @p v for velocity (rate) conditions (owned entries;
      * the caller integrates u from v).
      */
     void
@@ -139,7 +159,7 @@ namespace perideal
 
     /**
      * @brief Whether the dof is prescribed by a displacement or velocity (value or rate)
-     * condition (owned dofs, by local index in the owned range).
+     * condition or an interior value (owned dofs, by local index in the owned range).
      */
     const std::vector<bool> &
     prescribed_mask() const;
@@ -297,7 +317,10 @@ namespace perideal
     dealii::LinearAlgebra::distributed::Vector<double> mass;
     std::vector<bool>                                  prescribed;
     std::vector<PrescribedDof>                         prescribed_dofs;
-    std::vector<dealii::XDMFEntry>                     xdmf_entries;
+    /// The dofs of set_interior_values() (global) and, for those owned, local index and value.
+    std::vector<dealii::types::global_dof_index> interior_dofs;
+    std::vector<std::pair<unsigned int, double>> interior_values;
+    std::vector<dealii::XDMFEntry>               xdmf_entries;
   };
 } // namespace perideal
 
