@@ -38,6 +38,24 @@ namespace fem_tests
   }
 
   /**
+   * Run the problem in @p text on @p problem (declared by the caller, with a log stream that
+   * may be discarded) and return its FE solution with ghost values.
+   */
+  template <int dim>
+  dealii::LinearAlgebra::distributed::Vector<double>
+  solve(perideal::CoupledProblem<dim> &problem, const std::string &text)
+  {
+    parse_problem(problem, text);
+    problem.setup();
+    problem.run();
+    dealii::LinearAlgebra::distributed::Vector<double> solution;
+    problem.fe_region().initialize_vector(solution);
+    solution = problem.fe_displacement();
+    solution.update_ghost_values();
+    return solution;
+  }
+
+  /**
    * The lines of a static, FE-only problem besides <Finite elements>: dimension, planar
    * assumption, body force, solver tolerance; statistics in results/, no field output, no
    * progress lines.

@@ -109,14 +109,8 @@ main(int argc, char **argv)
                                "end\n";
       std::ostringstream          log;
       perideal::CoupledProblem<2> problem(comm, log);
-      fem_tests::parse_problem(problem, text);
-      problem.setup();
-      problem.run();
-      const auto                                &fe = problem.fe_region();
-      LinearAlgebra::distributed::Vector<double> solution;
-      fe.initialize_vector(solution);
-      solution = problem.fe_displacement();
-      solution.update_ghost_values();
+      const auto                  solution = fem_tests::solve(problem, text);
+      const auto                 &fe       = problem.fe_region();
 
       // Relative L2 error of the stress, and the stress at the vertex (0, a) from the cell
       // that owns it (averaged over the owning cells).

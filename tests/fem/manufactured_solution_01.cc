@@ -182,14 +182,8 @@ namespace
           "end\n";
         std::ostringstream            log;
         perideal::CoupledProblem<dim> problem(MPI_COMM_WORLD, log);
-        fem_tests::parse_problem(problem, text);
-        problem.setup();
-        problem.run();
-        const auto                                &fe = problem.fe_region();
-        LinearAlgebra::distributed::Vector<double> solution;
-        fe.initialize_vector(solution);
-        solution = problem.fe_displacement();
-        solution.update_ghost_values();
+        const auto                    solution = fem_tests::solve(problem, text);
+        const auto                   &fe       = problem.fe_region();
 
         const ExactSolution<dim>    exact;
         dealii::Vector<float>       cellwise(fe.get_triangulation().n_active_cells());

@@ -99,15 +99,9 @@ namespace
                              "end\n";
     std::ostringstream          log;
     perideal::CoupledProblem<2> problem(MPI_COMM_WORLD, log);
-    fem_tests::parse_problem(problem, text);
-    problem.setup();
-    problem.run();
-    const auto                                &fe = problem.fe_region();
-    LinearAlgebra::distributed::Vector<double> w;
-    fe.initialize_vector(w);
-    w = problem.fe_displacement();
-    w.update_ghost_values();
-    const auto &physics = dynamic_cast<const perideal::ScalarLaplace<2> &>(fe.physics());
+    const auto                  w  = fem_tests::solve(problem, text);
+    const auto                 &fe = problem.fe_region();
+    const auto &physics            = dynamic_cast<const perideal::ScalarLaplace<2> &>(fe.physics());
 
     // Nodal errors, and the flux k dw/dx at the cell centres.
     const auto exact = [&](const Point<2> &x) {

@@ -84,7 +84,6 @@ namespace perideal
     virtual std::string
     summary() const = 0;
   };
-
 } // namespace perideal
 
 /**
