@@ -46,14 +46,14 @@ namespace
     first_pass.declare_entry("Dimension", "2", dealii::Patterns::Integer(2, 3), "");
     RegionCollection<dim>::declare_names(first_pass);
     BoundaryConditions<dim>::declare_names(first_pass);
-    FESolid<dim>::declare_names(first_pass);
+    FERegion<dim>::declare_names(first_pass);
     ParameterUtilities::parse_partially(first_pass, file);
 
     dealii::ParameterHandler prm;
     CoupledProblem<dim>::declare_parameters(prm,
                                             RegionCollection<dim>::parse_names(first_pass),
                                             BoundaryConditions<dim>::parse_names(first_pass),
-                                            FESolid<dim>::parse_names(first_pass));
+                                            FERegion<dim>::parse_names(first_pass));
     ParameterUtilities::parse_file(prm, file);
 
     CoupledProblem<dim> problem(MPI_COMM_WORLD, std::cout);

@@ -37,7 +37,7 @@ namespace perideal
   {
     ProblemSettings<dim>::declare_parameters(prm);
     ParticleRegion<dim>::declare_parameters(prm, region_names, condition_names);
-    FESolid<dim>::declare_parameters(prm, fe_condition_names);
+    FERegion<dim>::declare_parameters(prm, fe_condition_names);
     prm.enter_subsection("Coupling");
     using Methods = PluginRegistry<CouplingMethod<dim>>;
     prm.declare_entry("Method",
@@ -103,7 +103,7 @@ namespace perideal
                                            n_components,
                                            "Initial conditions/Velocity");
     // One body force for the whole body: the particles take it with their weights beta_i
-    // (BoundaryConditions::add_loads), the FE region with 1 - beta (FESolid's load).
+    // (BoundaryConditions::add_loads), the FE region with 1 - beta (FERegion's load).
     std::shared_ptr<Function<dim>> body_force =
       ParameterUtilities::make_function<dim>(settings.body_force,
                                              n_components,
@@ -158,6 +158,13 @@ namespace perideal
   CoupledProblem<dim>::particles() const
   {
     return pd.particles();
+  }
+
+  template <int dim>
+  const FERegion<dim> &
+  CoupledProblem<dim>::fe_region() const
+  {
+    return fe;
   }
 
   template <int dim>

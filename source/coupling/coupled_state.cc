@@ -17,7 +17,7 @@ namespace perideal
                                   const ProblemSettings<dim>  &settings,
                                   const FieldLayout           &layout,
                                   ParticleRegion<dim>         &pd,
-                                  FESolid<dim>                &fe,
+                                  FERegion<dim>               &fe,
                                   const TransferOperator<dim> &transfer,
                                   CouplingMethod<dim>         &method)
     : comm(comm)

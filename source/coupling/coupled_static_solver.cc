@@ -66,22 +66,22 @@ namespace perideal
 
   template <int dim>
   void
-  CoupledStaticSolver<dim>::reinit(const FESolid<dim>          &fe_solid,
+  CoupledStaticSolver<dim>::reinit(const FERegion<dim>         &fe_region,
                                    const ParticleSystem<dim>   &particle_system,
                                    const TransferOperator<dim> &transfer_operator,
                                    const ParticleVector        &particle_prescribed)
   {
-    fe        = &fe_solid;
+    fe        = &fe_region;
     particles = &particle_system;
     transfer  = &transfer_operator;
     comm      = particle_system.get_communicator();
 
     // T = [P; I] acts on the raw FE dofs: hanging-node constraints would have to enter it.
-    AssertThrow(!fe_solid.has_hanging_nodes(),
+    AssertThrow(!fe_region.has_hanging_nodes(),
                 ExcMessage("The FE mesh of <Finite elements> has hanging nodes, which the "
                            "static coupled solve (<Solver/Type> = static) does not support; "
                            "use a conforming mesh (global refinement only)."));
-    fe_owned = fe_solid.get_dof_handler().locally_owned_dofs();
+    fe_owned = fe_region.get_dof_handler().locally_owned_dofs();
     AssertThrow(fe_owned.is_contiguous(),
                 ExcInternalError("The owned FE dofs are not contiguous."));
     particle_rows              = particle_system.partitioner(dim)->locally_owned_range();
@@ -109,7 +109,7 @@ namespace perideal
 
     particle_z.assign(std::size_t(n_owned) * dim, numbers::invalid_dof_index);
     prescribed.assign(n_local, false);
-    const auto &fe_mask = fe_solid.prescribed_mask();
+    const auto &fe_mask = fe_region.prescribed_mask();
     for (types::global_dof_index k = 0; k < n_fe_owned; ++k)
       prescribed[k] = fe_mask[k];
     types::global_dof_index next = n_fe_owned;
@@ -173,7 +173,7 @@ namespace perideal
           if (!prescribed[k])
             E_free.set(fe_owned.nth_index_in_set(k), z_first + k, 1.);
         E_free.compress(VectorOperation::insert);
-        fe_solid.stiffness_matrix().mmult(K_E, E_free);
+        fe_region.stiffness_matrix().mmult(K_E, E_free);
         E_free.Tmmult(fe_part, K_E);
       }
     else
@@ -332,8 +332,8 @@ namespace perideal
         const auto                                        fe_modes = fe->component_masks();
         TrilinosWrappers::PreconditionAMG::AdditionalData data;
         data.elliptic = true;
-        data.constant_modes.assign(dim, std::vector<bool>(n_local, false));
-        for (unsigned int d = 0; d < dim; ++d)
+        data.constant_modes.assign(fe_modes.size(), std::vector<bool>(n_local, false));
+        for (unsigned int d = 0; d < fe_modes.size(); ++d)
           for (std::size_t k = 0; k < n_fe_owned; ++k)
             data.constant_modes[d][k] = fe_modes[d][k];
         for (std::size_t k = 0; k < particle_z.size(); ++k)

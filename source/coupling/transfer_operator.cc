@@ -69,13 +69,15 @@ namespace perideal
 
   template <int dim>
   void
-  TransferOperator<dim>::reinit(const FESolid<dim> &fe, const ParticleSystem<dim> &particles)
+  TransferOperator<dim>::reinit(const FERegion<dim> &fe, const ParticleSystem<dim> &particles)
   {
     const MPI_Comm comm        = particles.get_communicator();
     const auto    &tria        = fe.get_triangulation();
     const auto    &dof_handler = fe.get_dof_handler();
     const auto     n_owned     = particles.n_owned();
     const auto    &x           = particles.positions();
+    // Component c of a particle follows component c of the FE field (the same layout).
+    n_components = fe.field_layout().n_components();
 
     // Each rank's first particle global index (owned particles are numbered contiguously).
     const types::global_dof_index first_global = n_owned > 0 ? particles.global_index(0) : 0;
@@ -164,15 +166,16 @@ namespace perideal
               {
                 const double value = fe_element.shape_value(a, reference);
                 if (value != 0.)
-                  entries.push_back({particle * dim + fe_element.system_to_component_index(a).first,
-                                     dofs[a],
-                                     value});
+                  entries.push_back(
+                    {particle * n_components + fe_element.system_to_component_index(a).first,
+                     dofs[a],
+                     value});
               }
           }
       }
 
     // Sparsity with the rows of other ranks, sent to their owners; then the matrix.
-    const auto  row_partitioner = particles.partitioner(dim);
+    const auto  row_partitioner = particles.partitioner(n_components);
     const auto &owned_rows      = row_partitioner->locally_owned_range();
     // The rows as one sorted list: IndexSet::add_index() of unsorted rows one by one inserts into
     // the middle of its ranges, quadratic in the particles (5 s of the set-up for 140 000).
@@ -200,13 +203,13 @@ namespace perideal
 
     // Slaved rows sum to one (partition of unity, one cell per particle); empty rows are free.
     fe.initialize_vector(fe_buffer);
-    particles.reinit_vector(particle_buffer, dim);
+    particles.reinit_vector(particle_buffer, n_components);
     fe_buffer = 1.;
     P.vmult(particle_buffer, fe_buffer);
     slaved.assign(n_owned, false);
     for (unsigned int i = 0; i < n_owned; ++i)
       {
-        const double sum = particle_buffer.local_element(i * dim);
+        const double sum = particle_buffer.local_element(std::size_t(i) * n_components);
         AssertThrow(sum == 0. || std::abs(sum - 1.) < 1e-10,
                     ExcInternalError("A row of the transfer operator sums to " +
                                      std::to_string(sum) + " instead of 0 or 1."));
@@ -227,8 +230,9 @@ namespace perideal
     P.vmult(particle_buffer, U);
     for (unsigned int i = 0; i < slaved.size(); ++i)
       if (slaved[i])
-        for (unsigned int d = 0; d < dim; ++d)
-          u_particles.local_element(i * dim + d) = particle_buffer.local_element(i * dim + d);
+        for (unsigned int c = 0; c < n_components; ++c)
+          u_particles.local_element(i * n_components + c) =
+            particle_buffer.local_element(i * n_components + c);
   }
 
   template <int dim>

@@ -51,14 +51,14 @@ namespace coupling_tests
     first.declare_entry("Dimension", "2", dealii::Patterns::Integer(2, 3), "");
     perideal::RegionCollection<2>::declare_names(first);
     perideal::BoundaryConditions<2>::declare_names(first);
-    perideal::FESolid<2>::declare_names(first);
+    perideal::FERegion<2>::declare_names(first);
     perideal::ParameterUtilities::parse_partially(first, file);
     dealii::ParameterHandler prm;
     perideal::CoupledProblem<2>::declare_parameters(
       prm,
       perideal::RegionCollection<2>::parse_names(first),
       perideal::BoundaryConditions<2>::parse_names(first),
-      perideal::FESolid<2>::parse_names(first));
+      perideal::FERegion<2>::parse_names(first));
     perideal::ParameterUtilities::parse_file(prm, file);
     problem.parse_parameters(prm);
   }

@@ -54,10 +54,10 @@ namespace
 
   template <int dim>
   void
-  make_fe(perideal::FESolid<dim> &fe, const unsigned int degree)
+  make_fe(perideal::FERegion<dim> &fe, const unsigned int degree)
   {
     ParameterHandler prm;
-    perideal::FESolid<dim>::declare_parameters(prm, {});
+    perideal::FERegion<dim>::declare_parameters(prm, {});
     prm.parse_input_from_string("subsection Finite elements\n"
                                 "  set Generator = subdivided_hyper_rectangle\n"
                                 "  set Generator arguments = " +
@@ -83,7 +83,7 @@ namespace
   {
     const MPI_Comm comm = MPI_COMM_WORLD;
     std::cout << dim << "D, FE_Q(" << degree << ")" << std::endl;
-    perideal::FESolid<dim> fe(comm);
+    perideal::FERegion<dim> fe(comm);
     make_fe(fe, degree);
 
     perideal::ParticleSystem<dim>                    particles(comm);
@@ -188,8 +188,8 @@ namespace
   void
   outside_mesh()
   {
-    const MPI_Comm       comm = MPI_COMM_WORLD;
-    perideal::FESolid<2> fe(comm);
+    const MPI_Comm        comm = MPI_COMM_WORLD;
+    perideal::FERegion<2> fe(comm);
     make_fe(fe, 1);
     perideal::ParticleSystem<2>                    particles(comm);
     typename perideal::ParticleSystem<2>::Settings settings;

@@ -2,7 +2,8 @@
 // Plate with a circular hole (Kirsch): the quarter plate of meshes/plate_with_hole_2d.msh
 // (hole radius a = 0.01 m, quarter 0.1 m x 0.1 m), symmetry conditions on x = 0 and y = 0, and
 // on the outer edges the tractions of the exact infinite-plate solution under a remote stress
-// S along x (2D plane strain, isotropic), so that the FE solution converges to the exact field.
+// S along x (2D plane strain, isotropic), so that the FE solution converges to the exact field;
+// solved through the problem's static path (CoupledProblem, FE only).
 // Printed under uniform refinement (the hole boundary follows the circle): the stress
 // concentration sigma_xx(0, a) / S (exact 3), the relative L2 error of the stress over the
 // plate, and its rate.
@@ -12,11 +13,14 @@
 #include <deal.II/fe/mapping_q1.h>
 #include <deal.II/grid/grid_tools.h>
 
-#include <perideal/fem/fe_solid.h>
+#include <perideal/fem/physics/linear_elasticity.h>
+
+#include "fem_tests.h"
 
 #include <cmath>
 #include <cstdio>
 #include <iostream>
+#include <sstream>
 
 using namespace dealii;
 
@@ -65,54 +69,53 @@ main(int argc, char **argv)
   double                           previous_error = 0.;
   for (unsigned int level = 0; level <= 3; ++level)
     {
-      ParameterHandler prm;
-      perideal::FESolid<2>::declare_parameters(prm, {"symmetry x", "symmetry y", "right", "top"});
-      prm.parse_input_from_string("subsection Finite elements\n"
-                                  "  set Mesh file = " SOURCE_DIR
-                                  "/../../meshes/plate_with_hole_2d.msh\n"
-                                  "  set Circular boundaries = 5: 0, 0\n"
-                                  "  set Global refinements = " +
-                                  std::to_string(level) +
-                                  "\n"
-
-                                  "  subsection Elasticity\n"
-                                  "    set Young's modulus = 200e9\n"
-                                  "    set Poisson's ratio = 0.3\n"
-                                  "  end\n"
-                                  "  subsection Boundary conditions\n"
-                                  "    set Names = symmetry x, symmetry y, right, top\n"
-                                  "    subsection symmetry x\n"
-                                  "      set Boundary ids = 1\n"
-                                  "      set Components = x\n"
-                                  "    end\n"
-                                  "    subsection symmetry y\n"
-                                  "      set Boundary ids = 2\n"
-                                  "      set Components = y\n"
-                                  "    end\n"
-                                  "    subsection right\n"
-                                  "      set Boundary ids = 3\n"
-                                  "      set Type = traction\n"
-                                  "      set Function = " +
-                                  kirsch_expressions(false) +
-                                  "\n"
-                                  "    end\n"
-                                  "    subsection top\n"
-                                  "      set Boundary ids = 4\n"
-                                  "      set Type = traction\n"
-                                  "      set Function = " +
-                                  kirsch_expressions(true) +
-                                  "\n"
-                                  "    end\n"
-                                  "  end\n"
-                                  "end\n");
-      perideal::FESolid<2> fe(comm);
-      fe.parse_parameters(prm, perideal::PlanarAssumption::plane_strain, 1.);
-      fe.setup();
-      fe.solve_static(0., 1e-12);
+      const std::string text = fem_tests::static_problem(2, "plane strain", "0; 0", "1e-12") +
+                               "subsection Finite elements\n"
+                               "  set Mesh file = " SOURCE_DIR
+                               "/../../meshes/plate_with_hole_2d.msh\n"
+                               "  set Circular boundaries = 5: 0, 0\n"
+                               "  set Global refinements = " +
+                               std::to_string(level) +
+                               "\n"
+                               "  subsection Elasticity\n"
+                               "    set Young's modulus = 200e9\n"
+                               "    set Poisson's ratio = 0.3\n"
+                               "  end\n"
+                               "  subsection Boundary conditions\n"
+                               "    set Names = symmetry x, symmetry y, right, top\n"
+                               "    subsection symmetry x\n"
+                               "      set Boundary ids = 1\n"
+                               "      set Components = x\n"
+                               "    end\n"
+                               "    subsection symmetry y\n"
+                               "      set Boundary ids = 2\n"
+                               "      set Components = y\n"
+                               "    end\n"
+                               "    subsection right\n"
+                               "      set Boundary ids = 3\n"
+                               "      set Type = traction\n"
+                               "      set Function = " +
+                               kirsch_expressions(false) +
+                               "\n"
+                               "    end\n"
+                               "    subsection top\n"
+                               "      set Boundary ids = 4\n"
+                               "      set Type = traction\n"
+                               "      set Function = " +
+                               kirsch_expressions(true) +
+                               "\n"
+                               "    end\n"
+                               "  end\n"
+                               "end\n";
+      std::ostringstream          log;
+      perideal::CoupledProblem<2> problem(comm, log);
+      const auto                  solution = fem_tests::solve(problem, text);
+      const auto                 &fe       = problem.fe_region();
 
       // Relative L2 error of the stress, and the stress at the vertex (0, a) from the cell
       // that owns it (averaged over the owning cells).
-      const auto                        &C = fe.elasticity_tensor();
+      const auto &C =
+        dynamic_cast<const perideal::LinearElasticity<2> &>(fe.physics()).elasticity_tensor();
       const QGauss<2>                    quadrature(3);
       FEValues<2>                        fe_values(fe.get_fe_collection()[0],
                             quadrature,
@@ -124,7 +127,7 @@ main(int argc, char **argv)
         if (cell->is_locally_owned())
           {
             fe_values.reinit(cell);
-            fe_values[displacement].get_function_symmetric_gradients(fe.solution(), strain);
+            fe_values[displacement].get_function_symmetric_gradients(solution, strain);
             for (const unsigned int q : fe_values.quadrature_point_indices())
               {
                 const auto exact = kirsch_stress(fe_values.quadrature_point(q));
@@ -139,7 +142,7 @@ main(int argc, char **argv)
                   FEValues<2> vertex_values(fe.get_fe_collection()[0], at_vertex, update_gradients);
                   vertex_values.reinit(cell);
                   std::vector<SymmetricTensor<2, 2>> eps(1);
-                  vertex_values[displacement].get_function_symmetric_gradients(fe.solution(), eps);
+                  vertex_values[displacement].get_function_symmetric_gradients(solution, eps);
                   peak += (C * eps[0])[0][0];
                   n_peak += 1.;
                 }

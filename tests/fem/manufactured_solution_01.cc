@@ -1,8 +1,10 @@
 // ---------------------------------------------------------------------
 // Manufactured solution on the unit square/cube for an anisotropic material (orthotropic,
 // rotated): u_k = a_k phi(x) + L_kj x_j with phi = prod_d sin(pi x_d), body force
-// b_i = -C_ijkl d_j d_l u_k, and the linear part L x prescribed on the whole boundary through
-// the parameter file. The errors must fall at the optimal rates under uniform refinement:
+// b_i = -C_ijkl d_j d_l u_k (an expression of <Body force/Function>), and the linear part L x
+// prescribed on the whole boundary, both through the parameter text; solved through the
+// problem's static path (CoupledProblem, FE only). The errors must fall at the optimal rates
+// under uniform refinement:
 // |u - u_h|_L2 ~ h^(p+1) and |u - u_h|_H1 ~ h^p, for p = 1, 2 in 2D (plane strain) and p = 1
 // in 3D. Printed: errors and observed rates.
 // ---------------------------------------------------------------------
@@ -11,11 +13,14 @@
 #include <deal.II/lac/vector.h>
 #include <deal.II/numerics/vector_tools.h>
 
-#include <perideal/fem/fe_solid.h>
+#include <perideal/fem/physics/linear_elasticity.h>
+
+#include "fem_tests.h"
 
 #include <cmath>
 #include <cstdio>
 #include <iostream>
+#include <sstream>
 
 using namespace dealii;
 using perideal::PlanarAssumption;
@@ -76,44 +81,50 @@ namespace
     }
   };
 
-  // b_i = -C_ijkl a_k d_j d_l phi.
+  // b_i = -C_ijkl a_k d_j d_l phi as one expression per component: d_j d_j phi = -pi^2 phi,
+  // d_j d_l phi = pi^2 cos(pi x_j) cos(pi x_l) prod_(d != j, l) sin(pi x_d) for j != l.
   template <int dim>
-  class BodyForce : public Function<dim>
+  std::string
+  body_force(const SymmetricTensor<4, dim> &C)
   {
-  public:
-    explicit BodyForce(const SymmetricTensor<4, dim> &C)
-      : Function<dim>(dim)
-      , C(C)
-    {}
-
-    double
-    value(const Point<dim> &x, const unsigned int i) const override
-    {
-      Tensor<2, dim> hessian;
-      for (unsigned int j = 0; j < dim; ++j)
-        for (unsigned int l = 0; l < dim; ++l)
-          {
-            double h = -numbers::PI * numbers::PI;
-            for (unsigned int d = 0; d < dim; ++d)
-              {
-                const bool differentiated = (d == j) != (d == l); // once: cos; twice or never: sin
-                h *= differentiated ? std::cos(numbers::PI * x[d]) : std::sin(numbers::PI * x[d]);
-              }
-            if (j != l)
-              h = -h; // d_j d_l of sin sin = +pi^2 cos cos (not -pi^2)
-            hessian[j][l] = h;
-          }
-      double b = 0.;
-      for (unsigned int j = 0; j < dim; ++j)
-        for (unsigned int k = 0; k < dim; ++k)
+    const char        *names[] = {"x", "y", "z"};
+    std::ostringstream text;
+    text.precision(17);
+    for (unsigned int i = 0; i < dim; ++i)
+      {
+        text << (i > 0 ? "; " : "") << "0";
+        for (unsigned int j = 0; j < dim; ++j)
           for (unsigned int l = 0; l < dim; ++l)
-            b -= C[i][j][k][l] * amplitude<dim>()[k] * hessian[j][l];
-      return b;
-    }
+            {
+              double coefficient = 0.;
+              for (unsigned int k = 0; k < dim; ++k)
+                coefficient -= C[i][j][k][l] * amplitude<dim>()[k];
+              text << " + " << (j == l ? -1. : 1.) * coefficient << "*pi^2";
+              for (unsigned int d = 0; d < dim; ++d)
+                text << "*" << ((d == j) != (d == l) ? "cos" : "sin") << "(pi*" << names[d] << ")";
+            }
+      }
+    return text.str();
+  }
 
-  private:
-    const SymmetricTensor<4, dim> C;
-  };
+  // The elasticity tensor of <Finite elements/Elasticity> = @p material (plane strain in 2D).
+  template <int dim>
+  SymmetricTensor<4, dim>
+  elasticity_tensor(const std::string &material)
+  {
+    perideal::LinearElasticity<dim> elasticity;
+    ParameterHandler                prm;
+    prm.enter_subsection("Finite elements");
+    elasticity.declare_parameters(prm);
+    prm.leave_subsection();
+    prm.parse_input_from_string("subsection Finite elements\n" + material + "end\n");
+    prm.enter_subsection("Finite elements");
+    elasticity.parse_parameters(prm,
+                                dim == 2 ? PlanarAssumption::plane_strain :
+                                           PlanarAssumption::three_dimensional);
+    prm.leave_subsection();
+    return elasticity.elasticity_tensor();
+  }
 
   template <int dim>
   std::string
@@ -139,40 +150,40 @@ namespace
     double previous_l2 = 0., previous_h1 = 0.;
     for (unsigned int level = min_level; level <= max_level; ++level)
       {
-        ParameterHandler prm;
-        perideal::FESolid<dim>::declare_parameters(prm, {"clamp"});
-        prm.parse_input_from_string("subsection Finite elements\n"
-                                    "  set Generator = hyper_cube\n"
-                                    "  set Generator arguments = 0 : 1 : false\n"
-                                    "  set Global refinements = " +
-                                    std::to_string(level) +
-                                    "\n"
-                                    "  set Polynomial degree = " +
-                                    std::to_string(degree) +
-                                    "\n"
-
-                                    "  subsection Elasticity\n"
-                                    "    set Symmetry = orthotropic\n"
-                                    "    set Young's moduli = 140e9, 10e9, 12e9\n"
-                                    "    set Poisson's ratios = 0.3, 0.28, 0.4\n"
-                                    "    set Shear moduli = 6e9, 5e9, 3.5e9\n"
-                                    "    set Orientation = 30, 20, 10\n"
-                                    "  end\n"
-                                    "  subsection Boundary conditions\n"
-                                    "    set Names = clamp\n"
-                                    "    subsection clamp\n"
-                                    "      set Boundary ids = 0\n"
-                                    "      set Function = " +
-                                    boundary_functions<dim>() +
-                                    "\n"
-                                    "    end\n"
-                                    "  end\n"
-                                    "end\n");
-        perideal::FESolid<dim> fe(MPI_COMM_WORLD);
-        fe.parse_parameters(prm, PlanarAssumption::plane_strain, 1.);
-        fe.set_body_force(std::make_shared<BodyForce<dim>>(fe.elasticity_tensor()));
-        fe.setup();
-        fe.solve_static(0., 1e-12);
+        const std::string material = "  subsection Elasticity\n"
+                                     "    set Symmetry = orthotropic\n"
+                                     "    set Young's moduli = 140e9, 10e9, 12e9\n"
+                                     "    set Poisson's ratios = 0.3, 0.28, 0.4\n"
+                                     "    set Shear moduli = 6e9, 5e9, 3.5e9\n"
+                                     "    set Orientation = 30, 20, 10\n"
+                                     "  end\n";
+        const std::string text =
+          fem_tests::static_problem(dim,
+                                    "plane strain",
+                                    body_force<dim>(elasticity_tensor<dim>(material)),
+                                    "1e-12") +
+          "subsection Finite elements\n"
+          "  set Generator = hyper_cube\n"
+          "  set Generator arguments = 0 : 1 : false\n"
+          "  set Global refinements = " +
+          std::to_string(level) +
+          "\n"
+          "  set Polynomial degree = " +
+          std::to_string(degree) + "\n" + material +
+          "  subsection Boundary conditions\n"
+          "    set Names = clamp\n"
+          "    subsection clamp\n"
+          "      set Boundary ids = 0\n"
+          "      set Function = " +
+          boundary_functions<dim>() +
+          "\n"
+          "    end\n"
+          "  end\n"
+          "end\n";
+        std::ostringstream            log;
+        perideal::CoupledProblem<dim> problem(MPI_COMM_WORLD, log);
+        const auto                    solution = fem_tests::solve(problem, text);
+        const auto                   &fe       = problem.fe_region();
 
         const ExactSolution<dim>    exact;
         dealii::Vector<float>       cellwise(fe.get_triangulation().n_active_cells());
@@ -182,7 +193,7 @@ namespace
         for (unsigned int k = 0; k < 2; ++k)
           {
             VectorTools::integrate_difference(fe.get_dof_handler(),
-                                              fe.solution(),
+                                              solution,
                                               exact,
                                               cellwise,
                                               quadrature,

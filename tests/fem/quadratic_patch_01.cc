@@ -4,7 +4,8 @@
 // constant body forces, FE only (no particles, weight 1). 2D plane stress, 100 mm square,
 // 25 x 25 cells, nu = 1/3 and 0.3, u = a (x^2 + x y, (2 x^2 + y^2) / 2), a = 1e-3; 3D 24 mm cube,
 // 6^3 cells, nu = 1/4, u = a (x^2 + x y, (2 x^2 + y^2) / 2, z^2 / 2 + y z), a = 1e-2; every
-// boundary held to u, b = -div sigma. FE_Q(2) holds u, so its error is round-off. FE_Q(1) does
+// boundary held to u, b = -div sigma; solved through the problem's static path (CoupledProblem,
+// FE only). FE_Q(2) holds u, so its error is round-off. FE_Q(1) does
 // not hold u, but on a uniform mesh of squares (cubes) its stencil is symmetric, hence exact for
 // quadratic fields with the consistent load of a constant b: its nodal error is round-off too,
 // and its error lies between the nodes (the L2 error). Printed: whether the largest nodal error
@@ -15,15 +16,16 @@
 #include <deal.II/lac/vector.h>
 #include <deal.II/numerics/vector_tools.h>
 
-#include <perideal/base/parameter_utilities.h>
-#include <perideal/fem/fe_solid.h>
+#include <perideal/fem/fe_region.h>
+
+#include "fem_tests.h"
 
 #include <cstdio>
 #include <iostream>
+#include <sstream>
 #include <string>
 
 using namespace dealii;
-using perideal::PlanarAssumption;
 
 namespace
 {
@@ -35,9 +37,11 @@ namespace
       const std::string &field,
       const std::string &body_force)
   {
-    ParameterHandler prm;
-    perideal::FESolid<dim>::declare_parameters(prm, {"boundary"});
-    prm.parse_input_from_string(
+    const std::string text =
+      fem_tests::static_problem(dim, "plane stress", body_force, "1e-13") +
+      "subsection Discretization\n"
+      "  set Thickness = 1e-3\n"
+      "end\n"
       "subsection Finite elements\n"
       "  set Generator = subdivided_hyper_rectangle\n"
       "  set Generator arguments = " +
@@ -64,27 +68,25 @@ namespace
       "\n"
       "    end\n"
       "  end\n"
-      "end\n");
-    perideal::FESolid<dim> fe(MPI_COMM_WORLD);
-    fe.parse_parameters(prm, PlanarAssumption::plane_stress, 1e-3);
-    fe.set_body_force(
-      perideal::ParameterUtilities::make_function<dim>(body_force, dim, "body force"));
-    fe.setup();
-    fe.solve_static(0., 1e-13);
+      "end\n";
+    std::ostringstream            log;
+    perideal::CoupledProblem<dim> problem(MPI_COMM_WORLD, log);
+    const auto                    solution = fem_tests::solve(problem, text);
+    const auto                   &fe       = problem.fe_region();
 
     FunctionParser<dim> exact(dim);
     exact.initialize(dim == 2 ? "x,y" : "x,y,z", field, {});
-    LinearAlgebra::distributed::Vector<double> interpolant(fe.solution());
+    LinearAlgebra::distributed::Vector<double> interpolant(solution);
     VectorTools::interpolate(fe.get_dof_handler(), exact, interpolant);
     const double largest = interpolant.linfty_norm();
-    interpolant -= fe.solution();
+    interpolant -= solution;
     const double nodal_error = interpolant.linfty_norm();
 
     // The L2 error over the domain against the L2 norm of the exact field.
     Vector<float>     cellwise(fe.get_triangulation().n_active_cells());
     const QGauss<dim> quadrature(degree + 3);
     VectorTools::integrate_difference(fe.get_dof_handler(),
-                                      fe.solution(),
+                                      solution,
                                       exact,
                                       cellwise,
                                       quadrature,
@@ -93,7 +95,7 @@ namespace
       VectorTools::compute_global_error(fe.get_triangulation(), cellwise, VectorTools::L2_norm);
     Functions::ZeroFunction<dim> zero(dim);
     VectorTools::integrate_difference(fe.get_dof_handler(),
-                                      fe.solution(),
+                                      solution,
                                       zero,
                                       cellwise,
                                       quadrature,

@@ -13,7 +13,7 @@
 #include <perideal/coupling/postprocessors/postprocessor.h>
 #include <perideal/coupling/solvers/solver.h>
 #include <perideal/coupling/transfer_operator.h>
-#include <perideal/fem/fe_solid.h>
+#include <perideal/fem/fe_region.h>
 #include <perideal/pd/particle_region.h>
 
 #include <memory>
@@ -28,7 +28,7 @@ namespace perideal
    * joined in an overlap zone by a coupling method; either region may be empty.
    *
    * It only wires the parts together: the problem's settings (ProblemSettings), the particle
-   * region (ParticleRegion), the FE region (FESolid), the transfer operator P and the coupling
+   * region (ParticleRegion), the FE region (FERegion), the transfer operator P and the coupling
    * method (<Coupling/Method>), the state both regions share (CoupledState), the solver of
    * <Solver/Type> (create_solver(): ExplicitDynamics or LoadStepping) and the postprocessors
    * (energies, displacements, reactions, the error against <Coupling/Exact displacement>,
@@ -84,6 +84,10 @@ namespace perideal
     const dealii::LinearAlgebra::distributed::Vector<double> &
     fe_displacement() const;
 
+    /// The FE region (its mesh and dofs after setup()).
+    const FERegion<dim> &
+    fe_region() const;
+
     /// The explicit time step (after setup() of an explicit run) [s].
     double
     time_step() const;
@@ -112,7 +116,7 @@ namespace perideal
     /// The unknowns of a point (the particles' and the FE region's).
     FieldLayout                                  layout;
     ParticleRegion<dim>                          pd;
-    FESolid<dim>                                 fe;
+    FERegion<dim>                                fe;
     TransferOperator<dim>                        transfer;
     std::string                                  method_name;
     std::unique_ptr<CouplingMethod<dim>>         method;

@@ -10,7 +10,7 @@
 #include <perideal/base/problem_settings.h>
 #include <perideal/coupling/coupling_method.h>
 #include <perideal/coupling/transfer_operator.h>
-#include <perideal/fem/fe_solid.h>
+#include <perideal/fem/fe_region.h>
 #include <perideal/pd/particle_region.h>
 
 #include <ostream>
@@ -52,7 +52,7 @@ namespace perideal
                  const ProblemSettings<dim>  &settings,
                  const FieldLayout           &layout,
                  ParticleRegion<dim>         &pd,
-                 FESolid<dim>                &fe,
+                 FERegion<dim>               &fe,
                  const TransferOperator<dim> &transfer,
                  CouplingMethod<dim>         &method);
 
@@ -132,7 +132,7 @@ namespace perideal
     const bool                   is_root;
     const ProblemSettings<dim>  &settings;
     ParticleRegion<dim>         &pd;
-    FESolid<dim>                &fe;
+    FERegion<dim>               &fe;
     const TransferOperator<dim> &transfer;
     CouplingMethod<dim>         &method;
     /// The unknowns of a point (particle or FE node).

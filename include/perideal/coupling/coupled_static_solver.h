@@ -6,7 +6,7 @@
 
 #include <perideal/base/linear_algebra.h>
 #include <perideal/coupling/transfer_operator.h>
-#include <perideal/fem/fe_solid.h>
+#include <perideal/fem/fe_region.h>
 #include <perideal/pd/material_model.h>
 #include <perideal/pd/particle_system.h>
 #include <perideal/pd/static_solver.h>
@@ -28,7 +28,7 @@ namespace perideal
    *
    *   E(z) = 1/2 U^T K_FE U + 1/2 (G T z)^T diag(w) (G T z) - F^T z,
    *
-   * with K_FE the FE stiffness weighted by 1 - beta (FESolid) and G, w the extension matrix and
+   * with K_FE the FE stiffness weighted by 1 - beta (FERegion) and G, w the extension matrix and
    * row weights of the PD model's linearization (StaticSolver::extension_matrix(); the bond
    * energies are already weighted by beta_b), has the stationarity condition K z = F with
    *
@@ -59,12 +59,12 @@ namespace perideal
 
     /**
      * @brief Number the unknowns, build T and the FE part of K for the FE region @p fe and the
-     * @p particles joined by @p transfer. The prescribed FE dofs are FESolid::prescribed_mask();
+     * @p particles joined by @p transfer. The prescribed FE dofs are FERegion::prescribed_mask();
      * @p particle_prescribed holds 1 on the prescribed components of owned free particles
      * (owned entries; slaved particles cannot be prescribed).
      */
     void
-    reinit(const FESolid<dim>          &fe,
+    reinit(const FERegion<dim>         &fe,
            const ParticleSystem<dim>   &particles,
            const TransferOperator<dim> &transfer,
            const ParticleVector        &particle_prescribed);
@@ -80,7 +80,7 @@ namespace perideal
     /**
      * @brief assemble(), then solve K z = F. On entry @p U and @p u hold the prescribed values
      * (owned entries; others are ignored); on exit the solution with ghost values, the slaved
-     * particles' u = P U included. @p f_fe is the FE load (FESolid::assemble_load()), @p f_pd
+     * particles' u = P U included. @p f_fe is the FE load (FERegion::assemble_load()), @p f_pd
      * the particle force density [N/m^3] (owned entries). Returns the number of CG iterations
      * (0 for the direct solver).
      */
@@ -95,7 +95,7 @@ namespace perideal
     /**
      * @brief The forces of the state (@p U, @p u) with the linearization of the last solve:
      * @p fe_residual = (K z - F) restricted to the FE dofs (on prescribed dofs the force the
-     * supports exert, as FESolid::reactions() expects), @p pd_force the particles' internal force
+     * supports exert, as FERegion::reactions() expects), @p pd_force the particles' internal force
      * density -(G^T diag(w) G u)_i / V_i (owned entries). Returns the particles' strain energy
      * 1/2 (G u)^T diag(w) (G u) [J].
      */
@@ -162,7 +162,7 @@ namespace perideal
 
     Settings                        settings;
     MPI_Comm                        comm      = MPI_COMM_SELF;
-    const FESolid<dim>             *fe        = nullptr;
+    const FERegion<dim>            *fe        = nullptr;
     const ParticleSystem<dim>      *particles = nullptr;
     const TransferOperator<dim>    *transfer  = nullptr;
     dealii::IndexSet                z_owned, fe_owned, particle_rows;

@@ -10,7 +10,7 @@
 #include <perideal/base/plugin_registry.h>
 #include <perideal/base/problem_settings.h>
 #include <perideal/coupling/transfer_operator.h>
-#include <perideal/fem/fe_solid.h>
+#include <perideal/fem/fe_region.h>
 #include <perideal/pd/adaptive_dynamic_relaxation.h>
 #include <perideal/pd/material_model.h>
 #include <perideal/pd/particle_system.h>
@@ -29,7 +29,7 @@ namespace perideal
   template <int dim>
   struct CoupledRegions
   {
-    const FESolid<dim>          *fe        = nullptr;
+    const FERegion<dim>         *fe        = nullptr;
     ParticleSystem<dim>         *particles = nullptr;
     MaterialModel<dim>          *material  = nullptr;
     const TransferOperator<dim> *transfer  = nullptr;
@@ -117,7 +117,7 @@ namespace perideal
     /**
      * @brief Quasi-static runs: prepare the equilibrium solves. @p particle_prescribed holds
      * 1 on the prescribed components of owned free particles; the prescribed FE dofs are
-     * FESolid::prescribed_mask().
+     * FERegion::prescribed_mask().
      */
     virtual void
     initialize_equilibrium(const ParticleVector           &particle_prescribed,
@@ -129,7 +129,7 @@ namespace perideal
     n_unknowns() const = 0;
 
     /**
-     * @brief The equilibrium of the FE load @p f_fe (FESolid::assemble_load()) and the particle
+     * @brief The equilibrium of the FE load @p f_fe (FERegion::assemble_load()) and the particle
      * force density @p f_pd [N/m^3]. On entry @p U and @p u hold the prescribed values and the
      * initial guess (owned entries); on exit the solution with ghost values, slaved particles
      * included. Bonds may break on the way. Returns the number of iterations.
@@ -143,7 +143,7 @@ namespace perideal
     /**
      * @brief The forces of the state (@p U, @p u) under the loads @p f_fe, @p f_pd, in the
      * method's model of equilibrium: @p fe_residual = K_FE U - f_FE - P^T (particle forces) on
-     * the FE dofs (on prescribed dofs the force the supports exert, as FESolid::reactions()
+     * the FE dofs (on prescribed dofs the force the supports exert, as FERegion::reactions()
      * expects), @p pd_force the particles' internal force density (owned entries). Returns the
      * particles' strain energy [J].
      */

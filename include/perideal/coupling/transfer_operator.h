@@ -5,7 +5,7 @@
 #define perideal_coupling_transfer_operator_h
 
 #include <perideal/base/linear_algebra.h>
-#include <perideal/fem/fe_solid.h>
+#include <perideal/fem/fe_region.h>
 #include <perideal/pd/particle_system.h>
 
 #include <vector>
@@ -36,7 +36,7 @@ namespace perideal
      * @brief Build P for the current particle positions (reference configuration).
      */
     void
-    reinit(const FESolid<dim> &fe, const ParticleSystem<dim> &particles);
+    reinit(const FERegion<dim> &fe, const ParticleSystem<dim> &particles);
 
     /**
      * @brief Overwrite the slaved particles' entries of @p u_particles (owned; call
@@ -70,8 +70,10 @@ namespace perideal
     SparseMatrix                    P;
     std::vector<bool>               slaved;
     dealii::types::global_dof_index n_slaved = 0;
-    mutable ParticleVector          particle_buffer;
-    mutable FEVector                fe_buffer;
+    /// Components per point (the FE region's layout, the particles' too).
+    unsigned int           n_components = dim;
+    mutable ParticleVector particle_buffer;
+    mutable FEVector       fe_buffer;
   };
 } // namespace perideal
 

@@ -32,7 +32,6 @@ namespace perideal
   {
     if (!data.write_statistics)
       return;
-    using FEType                     = typename FESolid<dim>::ConditionType;
     const FieldLayout &layout        = state.layout;
     const unsigned int nc            = state.n_components();
     const auto        &pd_conditions = state.pd.boundary_conditions();
@@ -40,16 +39,14 @@ namespace perideal
     const auto         pd_reactions  = pd_conditions.reactions(state.internal_force);
     const auto        &fe_conditions = state.fe.conditions();
     // The FE region's reactions per component of the layout (its dofs' components).
-    std::vector<std::vector<double>> fe_reactions;
-    for (const auto &reaction : state.fe.reactions(state.fe_support))
-      fe_reactions.emplace_back(reaction.begin_raw(), reaction.end_raw());
+    const auto fe_reactions = state.fe.reactions(state.fe_support);
     for (unsigned int k = 0; k < pd_reactions.size(); ++k)
       for (unsigned int j = 0; j < pd_reactions[k].size(); ++j)
         statistics.add_value("reaction_" + pd_names[k] + "_" +
                                layout.name(pd_conditions.reaction_components(k)[j]),
                              pd_reactions[k][j]);
     for (unsigned int k = 0; k < fe_reactions.size(); ++k)
-      if (fe_conditions[k].type != FEType::traction)
+      if (fe_conditions[k].type != Quantity::load)
         for (unsigned int c = 0; c < fe_reactions[k].size(); ++c)
           statistics.add_value("reaction_" + fe_conditions[k].name + "_" + layout.name(c),
                                fe_reactions[k][c]);
@@ -78,7 +75,7 @@ namespace perideal
         };
         double largest = norm(applied, nullptr);
         for (unsigned int k = 0; k < fe_reactions.size(); ++k)
-          if (fe_conditions[k].type == FEType::displacement)
+          if (fe_conditions[k].type == Quantity::value)
             {
               for (unsigned int c = 0; c < fe_reactions[k].size(); ++c)
                 balanced[c] += fe_reactions[k][c];
@@ -121,7 +118,7 @@ namespace perideal
                   " N\n");
       }
     for (unsigned int k = 0; k < fe_reactions.size(); ++k)
-      if (fe_conditions[k].type != FEType::traction)
+      if (fe_conditions[k].type != Quantity::load)
         {
           log << "Reaction " << fe_conditions[k].name << ": ";
           print_without_round_off(log, fe_reactions[k]);

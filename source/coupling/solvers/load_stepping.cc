@@ -23,7 +23,6 @@ namespace perideal
   LoadStepping<dim>::setup(CoupledState<dim> &state)
   {
     using Motion                  = typename CoupledState<dim>::Motion;
-    using FEType                  = typename FESolid<dim>::ConditionType;
     const auto        &fe         = state.fe;
     const auto        &conditions = state.pd.boundary_conditions();
     const unsigned int nc         = state.n_components();
@@ -36,11 +35,13 @@ namespace perideal
     for (const auto &name : conditions.names())
       condition_list += (condition_list.empty() ? "" : ", ") + name;
     for (const auto &c : fe.conditions())
-      AssertThrow(c.type != FEType::velocity,
-                  ExcMessage("The FE boundary condition <" + c.name +
-                             "> is of type 'velocity', which a quasi-static solve (<Solver/Type> "
-                             "= static or adaptive dynamic relaxation) cannot apply; use "
-                             "'displacement' (scaled by the load factor) instead."));
+      AssertThrow(c.type != Quantity::rate,
+                  ExcMessage("The FE boundary condition <" + c.name + "> is of type '" +
+                             quantity_name(state.layout.kind(c.components[0]), Quantity::rate) +
+                             "', which a quasi-static solve (<Solver/Type> = static or adaptive "
+                             "dynamic relaxation) cannot apply; use '" +
+                             quantity_name(state.layout.kind(c.components[0]), Quantity::value) +
+                             "' (scaled by the load factor) instead."));
     for (unsigned int k = 0; k < conditions.names().size(); ++k)
       AssertThrow(std::find(rates.begin(), rates.end(), conditions.names()[k]) == rates.end(),
                   ExcMessage("The boundary condition <" + conditions.names()[k] + "> is of type '" +
@@ -57,7 +58,7 @@ namespace perideal
     state.pd.particles().reinit_vector(prescribed, nc);
     std::vector<double> constrained(nc, 0.);
     for (const auto &c : fe.conditions())
-      if (c.type == FEType::displacement)
+      if (c.type == Quantity::value)
         for (const unsigned int comp : c.components)
           constrained[comp] = 1.;
     for (std::size_t k = 0; k < state.motion.size(); ++k)

@@ -1,5 +1,6 @@
 // ---------------------------------------------------------------------
-// PeriDeal: the finite-element region, linear elasticity on a distributed mesh.
+// PeriDeal: the finite-element region: mesh, FE space, assembly, conditions, output; the
+// physics is a plugin (FEPhysics).
 // ---------------------------------------------------------------------
 #include <deal.II/base/quadrature_lib.h>
 #include <deal.II/base/utilities.h>
@@ -12,20 +13,20 @@
 #include <deal.II/grid/grid_in.h>
 #include <deal.II/grid/manifold_lib.h>
 #include <deal.II/lac/dynamic_sparsity_pattern.h>
-#include <deal.II/lac/solver_cg.h>
 #include <deal.II/lac/sparsity_tools.h>
-#include <deal.II/lac/trilinos_precondition.h>
 #include <deal.II/numerics/data_out.h>
 #include <deal.II/numerics/data_postprocessor.h>
 #include <deal.II/numerics/vector_tools.h>
 
 #include <perideal/base/hdf5_xdmf_writer.h>
 #include <perideal/base/parameter_utilities.h>
-#include <perideal/fem/fe_solid.h>
+#include <perideal/fem/fe_region.h>
 
+#include <array>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
+#include <utility>
 
 namespace perideal
 {
@@ -36,116 +37,54 @@ namespace perideal
   {
     const std::string section = "Finite elements";
 
-    // A dim-component function that is g_k on component components[k] and 0 elsewhere.
+    // The first n components of a function with at least n (the problem's functions have dim
+    // components; a field with fewer reads the first ones).
     template <int dim>
-    class ComponentFunction : public Function<dim>
+    class FirstComponents : public Function<dim>
     {
     public:
-      ComponentFunction(const Function<dim> &g, const std::vector<unsigned int> &components)
-        : Function<dim>(dim)
-        , g(g)
-        , components(components)
+      FirstComponents(const Function<dim> &f, const unsigned int n)
+        : Function<dim>(n)
+        , f(f)
       {}
 
       double
       value(const Point<dim> &p, const unsigned int c) const override
       {
-        for (unsigned int k = 0; k < components.size(); ++k)
-          if (components[k] == c)
-            return g.value(p, k);
-        return 0.;
+        return f.value(p, c);
       }
 
     private:
-      const Function<dim>             &g;
-      const std::vector<unsigned int> &components;
+      const Function<dim> &f;
     };
 
-    // Strain, stress and von Mises stress from the displacement gradient.
+    // The names of the registered physics.
     template <int dim>
-    class StressPostprocessor : public DataPostprocessor<dim>
+    std::vector<std::string>
+    physics_names()
     {
-    public:
-      StressPostprocessor(const SymmetricTensor<4, dim> &C,
-                          const FullMatrix<double>      &voigt,
-                          const PlanarAssumption         planar)
-        : C(C)
-        , voigt(voigt)
-        , planar(planar)
-      {}
+      return Utilities::split_string_list(PluginRegistry<FEPhysics<dim>>::pattern_string(), '|');
+    }
 
-      std::vector<std::string>
-      get_names() const override
-      {
-        std::vector<std::string> names;
-        const char               axes[] = {'x', 'y', 'z'};
-        for (const std::string quantity : {"strain", "stress"})
-          for (unsigned int i = 0; i < dim; ++i)
-            for (unsigned int j = i; j < dim; ++j)
-              names.push_back(quantity + "_" + axes[i] + axes[j]);
-        if (dim == 2)
-          names.push_back("stress_zz");
-        names.push_back("von_mises_stress");
-        return names;
-      }
-
-      std::vector<DataComponentInterpretation::DataComponentInterpretation>
-      get_data_component_interpretation() const override
-      {
-        return std::vector<DataComponentInterpretation::DataComponentInterpretation>(
-          get_names().size(),
-          DataComponentInterpretation::component_is_scalar);
-      }
-
-      UpdateFlags
-      get_needed_update_flags() const override
-      {
-        return update_gradients;
-      }
-
-      void
-      evaluate_vector_field(const DataPostprocessorInputs::Vector<dim> &inputs,
-                            std::vector<dealii::Vector<double>>        &computed) const override
-      {
-        for (unsigned int q = 0; q < inputs.solution_gradients.size(); ++q)
-          {
-            Tensor<2, dim> grad;
-            for (unsigned int c = 0; c < dim; ++c)
-              grad[c] = inputs.solution_gradients[q][c];
-            const SymmetricTensor<2, dim> eps   = symmetrize(grad);
-            const SymmetricTensor<2, dim> sigma = C * eps;
-            unsigned int                  k     = 0;
-            for (const auto *t : {&eps, &sigma})
-              for (unsigned int i = 0; i < dim; ++i)
-                for (unsigned int j = i; j < dim; ++j)
-                  computed[q][k++] = (*t)[i][j];
-            // The out-of-plane stress: 0 in plane stress, C_33kl eps_kl in plane strain.
-            double s33 = 0.;
-            if (dim == 2 && planar == PlanarAssumption::plane_strain)
-              s33 = voigt(2, 0) * eps[0][0] + voigt(2, 1) * eps[1][1] +
-                    voigt(2, 5) * 2. * eps[0][dim - 1];
-            if (dim == 2)
-              computed[q][k++] = s33;
-            SymmetricTensor<2, 3> s3;
-            for (unsigned int i = 0; i < dim; ++i)
-              for (unsigned int j = i; j < dim; ++j)
-                s3[i][j] = sigma[i][j];
-            if (dim == 2)
-              s3[2][2] = s33;
-            const SymmetricTensor<2, 3> dev = deviator(s3);
-            computed[q][k++]                = std::sqrt(1.5 * (dev * dev));
-          }
-      }
-
-    private:
-      const SymmetricTensor<4, dim> C;
-      const FullMatrix<double>      voigt;
-      const PlanarAssumption        planar;
-    };
+    // The condition types of a component kind, by quantity: value, rate, load.
+    std::array<std::string, 3>
+    type_names(const ComponentKind kind)
+    {
+      switch (kind)
+        {
+          case ComponentKind::translation:
+            return {{"displacement", "velocity", "traction"}};
+          case ComponentKind::rotation:
+            return {{"rotation", "angular velocity", "moment"}};
+          case ComponentKind::scalar:
+            return {{"value", "rate", "flux"}};
+        }
+      return {};
+    }
   } // namespace
 
   template <int dim>
-  FESolid<dim>::FESolid(const MPI_Comm comm)
+  FERegion<dim>::FERegion(const MPI_Comm comm)
     : comm(comm)
     , triangulation(comm)
     , dof_handler(triangulation)
@@ -153,7 +92,7 @@ namespace perideal
 
   template <int dim>
   void
-  FESolid<dim>::declare_names(ParameterHandler &prm)
+  FERegion<dim>::declare_names(ParameterHandler &prm)
   {
     prm.enter_subsection(section);
     prm.declare_entry(
@@ -178,7 +117,7 @@ namespace perideal
 
   template <int dim>
   std::vector<std::string>
-  FESolid<dim>::parse_names(ParameterHandler &prm)
+  FERegion<dim>::parse_names(ParameterHandler &prm)
   {
     prm.enter_subsection(section);
     const auto names = ParameterUtilities::parse_name_list(prm, "Boundary conditions");
@@ -188,8 +127,8 @@ namespace perideal
 
   template <int dim>
   void
-  FESolid<dim>::declare_parameters(ParameterHandler               &prm,
-                                   const std::vector<std::string> &condition_names)
+  FERegion<dim>::declare_parameters(ParameterHandler               &prm,
+                                    const std::vector<std::string> &condition_names)
   {
     declare_names(prm);
     prm.enter_subsection(section);
@@ -212,11 +151,19 @@ namespace perideal
     prm.declare_entry("Polynomial degree",
                       "1",
                       Patterns::Integer(1, 4),
-                      "Degree p of the FE_Q(p) displacement elements.");
-    prm.declare_entry("Density", "0", Patterns::Double(0.), "Mass density rho [kg/m^3].");
-    prm.enter_subsection("Elasticity");
-    ElasticMaterial::declare_parameters(prm);
-    prm.leave_subsection();
+                      "Degree p of the FE_Q(p) elements of every component.");
+    prm.declare_entry("Density",
+                      "0",
+                      Patterns::Double(0.),
+                      "Mass density rho [kg/m^3] (the inertia of every component).");
+    using Registry = PluginRegistry<FEPhysics<dim>>;
+    prm.declare_entry("Physics",
+                      "linear elasticity",
+                      Patterns::Selection(Registry::pattern_string()),
+                      "The equation of the FE region and its unknowns: " +
+                        Registry::documentation() + "Each physics reads its own subsection.");
+    for (const auto &name : physics_names<dim>())
+      Registry::create(name, section + "/Physics")->declare_parameters(prm);
     prm.enter_subsection("Boundary conditions");
     for (const auto &name : condition_names)
       {
@@ -225,12 +172,26 @@ namespace perideal
                           "",
                           Patterns::List(Patterns::Integer(0, 254)),
                           "The boundary ids (gmsh physical groups or generator ids) it acts on.");
-        prm.declare_entry("Type",
-                          "displacement",
-                          Patterns::Selection("displacement|velocity|traction"),
-                          "'displacement' [m] or 'velocity' [m/s, explicit dynamics only] of the "
-                          "listed components, or 'traction' [Pa] (all components).");
-        ParameterUtilities::declare_prescribed_components<dim>(prm);
+        prm.declare_entry(
+          "Type",
+          "displacement",
+          Patterns::Selection("displacement|velocity|traction|value|rate|flux"),
+          "On translations (linear elasticity): 'displacement' [m] or 'velocity' [m/s, explicit "
+          "dynamics only] of the listed components, or 'traction' [Pa] (all components). On a "
+          "scalar field w (scalar laplace): 'value' [w] or 'rate' [w/s, explicit dynamics only], "
+          "or 'flux' (the normal flux k dw/dn [k w/m] into the body).");
+        prm.declare_entry("Components",
+                          "",
+                          Patterns::Anything(),
+                          "The prescribed components, by the names of the physics' field (x, "
+                          "y, z for linear elasticity; w for scalar laplace), separated by ','; "
+                          "empty: all. Ignored for traction and flux (all components).");
+        prm.declare_entry("Function",
+                          "0",
+                          Patterns::Anything(),
+                          "One expression of x, y, (z) and t [s] per listed component (all "
+                          "components for traction and flux), separated by ';'; a single 0 is "
+                          "zero for all.");
         prm.leave_subsection();
       }
     prm.leave_subsection();
@@ -239,11 +200,10 @@ namespace perideal
 
   template <int dim>
   void
-  FESolid<dim>::parse_parameters(ParameterHandler      &prm,
-                                 const PlanarAssumption planar_assumption,
-                                 const double           thickness_2d)
+  FERegion<dim>::parse_parameters(ParameterHandler      &prm,
+                                  const PlanarAssumption planar_assumption,
+                                  const double           thickness_2d)
   {
-    planar           = planar_assumption;
     thickness        = (dim == 2 ? thickness_2d : 1.);
     const auto names = parse_names(prm);
     prm.enter_subsection(section);
@@ -251,6 +211,10 @@ namespace perideal
     generator           = prm.get("Generator");
     generator_arguments = prm.get("Generator arguments");
     condition_list.clear();
+    // The physics exists without a mesh too (its layout sizes the empty region's vectors).
+    const std::string physics_name = prm.get("Physics");
+    physics_model = PluginRegistry<FEPhysics<dim>>::create(physics_name, section + "/Physics");
+    layout        = physics_model->field_layout();
     // No mesh: no FE region, and nothing else of this section is read.
     if (!has_mesh())
       {
@@ -269,10 +233,7 @@ namespace perideal
     global_refinements = prm.get_integer("Global refinements");
     degree             = prm.get_integer("Polynomial degree");
     density            = prm.get_double("Density");
-    prm.enter_subsection("Elasticity");
-    material.parse_parameters(prm, section + "/Elasticity");
-    prm.leave_subsection();
-    C = material.tensor<dim>(planar);
+    physics_model->parse_parameters(prm, planar_assumption);
     // The body force is the problem's (<Body force/Function>), set by set_body_force().
     body_force.reset();
 
@@ -289,15 +250,24 @@ namespace perideal
                     ExcMessage("The parameter <" + prefix +
                                "Boundary ids> is empty; list the "
                                "boundary ids the condition acts on."));
-        const std::string type = prm.get("Type");
-        c.type                 = (type == "displacement" ? ConditionType::displacement :
-                                  type == "velocity"     ? ConditionType::velocity :
-                                                           ConditionType::traction);
-        if (c.type == ConditionType::traction)
-          for (unsigned int d = 0; d < dim; ++d)
-            c.components.push_back(d);
-        else
-          c.components = ParameterUtilities::parse_components(prm);
+        // The types of the field's kind (a field of one kind: all of its components).
+        const auto        names_of_kind = type_names(layout.kind(0));
+        const std::string type          = prm.get("Type");
+        const auto        found = std::find(names_of_kind.begin(), names_of_kind.end(), type);
+        AssertThrow(found != names_of_kind.end(),
+                    ExcMessage("The parameter <" + prefix + "Type> = <" + type +
+                               "> is not a condition on the field of <" + section +
+                               "/Physics> = <" + physics_name + "> (" + layout.description() +
+                               "): accepted values are " + names_of_kind[0] + ", " +
+                               names_of_kind[1] + ", " + names_of_kind[2] + "."));
+        c.type            = static_cast<Quantity>(found - names_of_kind.begin());
+        const auto listed = Utilities::split_string_list(prm.get("Components"), ',');
+        for (unsigned int k = 0; k < layout.n_components(); ++k)
+          if (c.type == Quantity::load || listed.empty())
+            c.components.push_back(k);
+        if (c.type != Quantity::load)
+          for (const auto &name : listed)
+            c.components.push_back(layout.index(name, prefix + "Components"));
         c.function = ParameterUtilities::make_function<dim>(prm.get("Function"),
                                                             c.components.size(),
                                                             prefix + "Function");
@@ -311,7 +281,7 @@ namespace perideal
       for (unsigned int b = a + 1; b < condition_list.size(); ++b)
         {
           const auto &ca = condition_list[a], &cb = condition_list[b];
-          if (ca.type == ConditionType::traction || cb.type == ConditionType::traction)
+          if (ca.type == Quantity::load || cb.type == Quantity::load)
             continue;
           for (const auto id : ca.boundary_ids)
             for (const unsigned int comp : ca.components)
@@ -342,15 +312,16 @@ namespace perideal
 
   template <int dim>
   void
-  FESolid<dim>::set_body_force(const std::shared_ptr<Function<dim>> &function)
+  FERegion<dim>::set_body_force(const std::shared_ptr<Function<dim>> &function)
   {
-    AssertDimension(function->n_components, dim);
+    Assert(function->n_components >= layout.n_components(),
+           ExcMessage("The body force has fewer components than the field."));
     body_force = function;
   }
 
   template <int dim>
   void
-  FESolid<dim>::make_mesh()
+  FERegion<dim>::make_mesh()
   {
     // No FE region: one cell without FE unknowns (its position does not matter: no particle
     // is looked up in a mesh without unknowns).
@@ -398,13 +369,14 @@ namespace perideal
 
   template <int dim>
   void
-  FESolid<dim>::setup(const WeightFunction &weight)
+  FERegion<dim>::setup(const WeightFunction &weight)
   {
     fe_weight = has_mesh() ? weight : [](const Point<dim> &) { return 0.; };
     make_mesh();
 
-    fe_collection.push_back(FESystem<dim>(FE_Q<dim>(degree), dim));
-    fe_collection.push_back(FESystem<dim>(FE_Nothing<dim>(), dim));
+    const unsigned int n_components = layout.n_components();
+    fe_collection.push_back(FESystem<dim>(FE_Q<dim>(degree), n_components));
+    fe_collection.push_back(FESystem<dim>(FE_Nothing<dim>(), n_components));
     if (fe_weight)
       {
         // A cell carries no FE unknowns if the weight vanishes at its vertices and at its
@@ -444,13 +416,13 @@ namespace perideal
         SparsityTools::distribute_sparsity_pattern(dsp, owned_dofs, comm, relevant_dofs);
       }
     stiffness.reinit(owned_dofs, owned_dofs, dsp, comm);
-    system_matrix.reinit(owned_dofs, owned_dofs, dsp, comm);
     initialize_vector(mass);
-    initialize_vector(displacement);
 
     // The prescribed dofs: their condition, component and support point.
     prescribed.assign(owned_dofs.n_elements(), false);
     prescribed_dofs.clear();
+    interior_dofs.clear();
+    interior_values.clear();
     {
       std::vector<types::global_dof_index> face_dofs;
       const MappingQ1<dim>                 mapping;
@@ -461,7 +433,7 @@ namespace perideal
               for (unsigned int k = 0; k < condition_list.size(); ++k)
                 {
                   const Condition &c = condition_list[k];
-                  if (c.type == ConditionType::traction ||
+                  if (c.type == Quantity::load ||
                       c.boundary_ids.count(cell->face(f)->boundary_id()) == 0)
                     continue;
                   const auto &fe = cell->get_fe();
@@ -499,7 +471,7 @@ namespace perideal
 
   template <int dim>
   void
-  FESolid<dim>::check_conditions_act() const
+  FERegion<dim>::check_conditions_act() const
   {
     // Per condition, the boundary faces with its ids: on cells with FE unknowns, and on any.
     std::vector<std::uint64_t>   on_fe(condition_list.size(), 0), on_mesh(condition_list.size(), 0);
@@ -547,53 +519,59 @@ namespace perideal
 
   template <int dim>
   double
-  FESolid<dim>::weight(const Point<dim> &p) const
+  FERegion<dim>::weight(const Point<dim> &p) const
   {
     return fe_weight ? fe_weight(p) : 1.;
   }
 
   template <int dim>
   bool
-  FESolid<dim>::has_mesh() const
+  FERegion<dim>::has_mesh() const
   {
     return !mesh_file.empty() || !generator.empty();
   }
 
   template <int dim>
   types::global_dof_index
-  FESolid<dim>::n_dofs() const
+  FERegion<dim>::n_dofs() const
   {
     return dof_handler.n_dofs();
   }
 
   template <int dim>
   bool
-  FESolid<dim>::has_hanging_nodes() const
+  FERegion<dim>::has_hanging_nodes() const
   {
     return Utilities::MPI::sum(hanging_constraints.n_constraints(), comm) > 0;
   }
 
   template <int dim>
   void
-  FESolid<dim>::interpolate(const Function<dim> &function, Vector &vector) const
+  FERegion<dim>::interpolate(const Function<dim> &function, Vector &vector) const
   {
+    Assert(function.n_components >= layout.n_components(),
+           ExcMessage("The function has fewer components than the field."));
     if (n_dofs() > 0)
-      VectorTools::interpolate(dof_handler, function, vector);
+      VectorTools::interpolate(dof_handler,
+                               FirstComponents<dim>(function, layout.n_components()),
+                               vector);
   }
 
   template <int dim>
   std::vector<std::vector<bool>>
-  FESolid<dim>::component_masks() const
+  FERegion<dim>::component_masks() const
   {
-    std::vector<std::vector<bool>> masks(dim);
+    std::vector<std::vector<bool>> masks(layout.n_components());
     if (n_dofs() > 0)
-      DoFTools::extract_constant_modes(dof_handler, ComponentMask(dim, true), masks);
+      DoFTools::extract_constant_modes(dof_handler,
+                                       ComponentMask(layout.n_components(), true),
+                                       masks);
     return masks;
   }
 
   template <int dim>
   void
-  FESolid<dim>::initialize_vector(Vector &vector) const
+  FERegion<dim>::initialize_vector(Vector &vector) const
   {
     // Without FE unknowns there are no ghosts (deal.II's owner lookup divides by the size).
     if (n_dofs() == 0)
@@ -604,55 +582,41 @@ namespace perideal
 
   template <int dim>
   void
-  FESolid<dim>::assemble_cell_matrix(FEValues<dim>      &fe_values,
-                                     FullMatrix<double> &cell_matrix) const
+  FERegion<dim>::quadrature_weights(const FEValuesBase<dim> &fe_values,
+                                    std::vector<double>     &weights) const
   {
-    const unsigned int                   n = fe_values.dofs_per_cell;
-    const FEValuesExtractors::Vector     displacements(0);
-    std::vector<SymmetricTensor<2, dim>> eps(n);
-    cell_matrix = 0.;
+    weights.resize(fe_values.n_quadrature_points);
     for (const unsigned int q : fe_values.quadrature_point_indices())
-      {
-        const double w = weight(fe_values.quadrature_point(q)) * thickness * fe_values.JxW(q);
-        if (w == 0.)
-          continue;
-        for (unsigned int i = 0; i < n; ++i)
-          eps[i] = fe_values[displacements].symmetric_gradient(i, q);
-        for (unsigned int i = 0; i < n; ++i)
-          {
-            const SymmetricTensor<2, dim> C_eps = C * eps[i];
-            for (unsigned int j = i; j < n; ++j)
-              cell_matrix(i, j) += (C_eps * eps[j]) * w;
-          }
-      }
-    for (unsigned int i = 0; i < n; ++i)
-      for (unsigned int j = 0; j < i; ++j)
-        cell_matrix(i, j) = cell_matrix(j, i);
+      weights[q] = weight(fe_values.quadrature_point(q)) * thickness * fe_values.JxW(q);
   }
 
   template <int dim>
   void
-  FESolid<dim>::assemble_cell_load(const typename DoFHandler<dim>::active_cell_iterator &cell,
-                                   const double                                          time,
-                                   FEValues<dim>                                        &fe_values,
-                                   FEFaceValues<dim>      &fe_face_values,
-                                   dealii::Vector<double> &cell_rhs) const
+  FERegion<dim>::assemble_cell_load(const typename DoFHandler<dim>::active_cell_iterator &cell,
+                                    const double                                          time,
+                                    FEValues<dim>                                        &fe_values,
+                                    FEFaceValues<dim>      &fe_face_values,
+                                    dealii::Vector<double> &cell_rhs) const
   {
     const unsigned int n  = fe_values.dofs_per_cell;
     const auto        &fe = fe_values.get_fe();
     cell_rhs              = 0.;
-    dealii::Vector<double> value(dim);
+    std::vector<double>    weights;
+    dealii::Vector<double> value(layout.n_components());
     if (body_force)
-      body_force->set_time(time);
+      {
+        body_force->set_time(time);
+        quadrature_weights(fe_values, weights);
+        value.reinit(body_force->n_components);
+      }
     for (const unsigned int q : fe_values.quadrature_point_indices())
       {
         if (!body_force)
           break;
-        const Point<dim> &x = fe_values.quadrature_point(q);
-        const double      w = weight(x) * thickness * fe_values.JxW(q);
+        const double w = weights[q];
         if (w == 0.)
           continue;
-        body_force->vector_value(x, value);
+        body_force->vector_value(fe_values.quadrature_point(q), value);
         for (unsigned int i = 0; i < n; ++i)
           {
             const unsigned int c = fe.system_to_component_index(i).first;
@@ -662,16 +626,16 @@ namespace perideal
     for (const unsigned int f : cell->face_indices())
       if (cell->face(f)->at_boundary())
         for (const auto &c : condition_list)
-          if (c.type == ConditionType::traction &&
-              c.boundary_ids.count(cell->face(f)->boundary_id()) > 0)
+          if (c.type == Quantity::load && c.boundary_ids.count(cell->face(f)->boundary_id()) > 0)
             {
               fe_face_values.reinit(cell, f);
               c.function->set_time(time);
+              quadrature_weights(fe_face_values, weights);
+              value.reinit(c.function->n_components);
               for (const unsigned int q : fe_face_values.quadrature_point_indices())
                 {
-                  const Point<dim> &x = fe_face_values.quadrature_point(q);
-                  const double      w = weight(x) * thickness * fe_face_values.JxW(q);
-                  c.function->vector_value(x, value);
+                  const double w = weights[q];
+                  c.function->vector_value(fe_face_values.quadrature_point(q), value);
                   for (unsigned int i = 0; i < n; ++i)
                     {
                       const unsigned int comp = fe.system_to_component_index(i).first;
@@ -683,7 +647,7 @@ namespace perideal
 
   template <int dim>
   void
-  FESolid<dim>::assemble_matrices()
+  FERegion<dim>::assemble_matrices()
   {
     const auto   &fe = fe_collection[0];
     FEValues<dim> fe_values(fe,
@@ -697,13 +661,16 @@ namespace perideal
     FullMatrix<double>                   cell_matrix(n, n);
     dealii::Vector<double>               cell_mass(n);
     std::vector<types::global_dof_index> dofs(n);
+    std::vector<double>                  weights;
     stiffness = 0.;
     mass      = 0.;
     for (const auto &cell : dof_handler.active_cell_iterators())
       if (cell->is_locally_owned() && cell->active_fe_index() == 0)
         {
           fe_values.reinit(cell);
-          assemble_cell_matrix(fe_values, cell_matrix);
+          quadrature_weights(fe_values, weights);
+          cell_matrix = 0.;
+          physics_model->add_cell_stiffness(fe_values, cell->material_id(), weights, cell_matrix);
           nodal_values.reinit(cell);
           cell_mass = 0.;
           for (const unsigned int q : nodal_values.quadrature_point_indices())
@@ -723,13 +690,12 @@ namespace perideal
 
   template <int dim>
   void
-  FESolid<dim>::assemble_load(const double time, Vector &f) const
+  FERegion<dim>::assemble_load(const double time, Vector &f) const
   {
-    const bool has_traction =
-      std::any_of(condition_list.begin(), condition_list.end(), [](const Condition &c) {
-        return c.type == ConditionType::traction;
-      });
-    if (!body_force && !has_traction)
+    const bool has_load = std::any_of(condition_list.begin(),
+                                      condition_list.end(),
+                                      [](const Condition &c) { return c.type == Quantity::load; });
+    if (!body_force && !has_load)
       {
         f = 0.;
         return;
@@ -758,109 +724,7 @@ namespace perideal
 
   template <int dim>
   void
-  FESolid<dim>::make_constraints(const double time, AffineConstraints<double> &constraints) const
-  {
-    constraints.clear();
-    constraints.reinit(relevant_dofs);
-    DoFTools::make_hanging_node_constraints(dof_handler, constraints);
-    for (const auto &c : condition_list)
-      if (c.type == ConditionType::displacement)
-        {
-          c.function->set_time(time);
-          const ComponentFunction<dim> g(*c.function, c.components);
-          std::vector<bool>            mask(dim, false);
-          for (const unsigned int comp : c.components)
-            mask[comp] = true;
-          for (const auto id : c.boundary_ids)
-            VectorTools::interpolate_boundary_values(dof_handler,
-                                                     id,
-                                                     g,
-                                                     constraints,
-                                                     ComponentMask(mask));
-        }
-    constraints.close();
-  }
-
-  template <int dim>
-  unsigned int
-  FESolid<dim>::solve_static(const double time, const double tolerance)
-  {
-    for (const auto &c : condition_list)
-      AssertThrow(c.type != ConditionType::velocity,
-                  ExcMessage("The FE boundary condition <" + c.name +
-                             "> is of type 'velocity', which only explicit dynamics accepts; use "
-                             "'displacement' for a static solve."));
-    AffineConstraints<double> constraints;
-    make_constraints(time, constraints);
-
-    const auto                          &fe = fe_collection[0];
-    FEValues<dim>                        fe_values(fe,
-                            QGauss<dim>(degree + 1),
-                            update_values | update_gradients | update_quadrature_points |
-                              update_JxW_values);
-    FEFaceValues<dim>                    fe_face_values(fe,
-                                     QGauss<dim - 1>(degree + 1),
-                                     update_values | update_quadrature_points | update_JxW_values);
-    const unsigned int                   n = fe.n_dofs_per_cell();
-    FullMatrix<double>                   cell_matrix(n, n);
-    dealii::Vector<double>               cell_rhs(n);
-    std::vector<types::global_dof_index> dofs(n);
-    Vector                               rhs, u;
-    initialize_vector(rhs);
-    initialize_vector(u);
-    system_matrix = 0.;
-    for (const auto &cell : dof_handler.active_cell_iterators())
-      if (cell->is_locally_owned() && cell->active_fe_index() == 0)
-        {
-          fe_values.reinit(cell);
-          assemble_cell_matrix(fe_values, cell_matrix);
-          assemble_cell_load(cell, time, fe_values, fe_face_values, cell_rhs);
-          cell->get_dof_indices(dofs);
-          constraints.distribute_local_to_global(cell_matrix, cell_rhs, dofs, system_matrix, rhs);
-        }
-    system_matrix.compress(VectorOperation::add);
-    rhs.compress(VectorOperation::add);
-
-    TrilinosWrappers::PreconditionAMG                 amg;
-    TrilinosWrappers::PreconditionAMG::AdditionalData amg_data;
-    amg_data.constant_modes        = component_masks();
-    amg_data.elliptic              = true;
-    amg_data.higher_order_elements = degree > 1;
-    amg_data.smoother_sweeps       = 2;
-    amg_data.aggregation_threshold = 0.02;
-    amg.initialize(system_matrix, amg_data);
-
-    const double     rhs_norm = rhs.l2_norm();
-    SolverControl    control(10000, tolerance * std::max(rhs_norm, 1e-300));
-    SolverCG<Vector> cg(control);
-    if (rhs_norm > 0.)
-      {
-        try
-          {
-            cg.solve(system_matrix, u, rhs, amg);
-          }
-        catch (const SolverControl::NoConvergence &exc)
-          {
-            AssertThrow(false,
-                        ExcMessage("The FE static solve did not converge: residual " +
-                                   ParameterUtilities::format_number(exc.last_residual) +
-                                   " after " + std::to_string(exc.last_step) +
-                                   " CG iterations (target " +
-                                   ParameterUtilities::format_number(control.tolerance()) +
-                                   "). Is every rigid motion constrained by the displacement "
-                                   "conditions in <" +
-                                   section + "/Boundary conditions>?"));
-          }
-      }
-    constraints.distribute(u);
-    displacement = u;
-    displacement.update_ghost_values();
-    return control.last_step();
-  }
-
-  template <int dim>
-  void
-  FESolid<dim>::prescribe(const double time, Vector &u, Vector &v) const
+  FERegion<dim>::prescribe(const double time, Vector &u, Vector &v) const
   {
     for (const auto &c : condition_list)
       c.function->set_time(time);
@@ -868,23 +732,59 @@ namespace perideal
       {
         const Condition &c     = condition_list[d.condition];
         const double     value = c.function->value(d.support_point, d.function_component);
-        if (c.type == ConditionType::displacement)
+        if (c.type == Quantity::value)
           u.local_element(d.local_index) = value;
         else
           v.local_element(d.local_index) = value;
       }
+    for (const auto &[local_index, value] : interior_values)
+      u.local_element(local_index) = value;
+  }
+
+  template <int dim>
+  void
+  FERegion<dim>::set_interior_values(const std::vector<types::global_dof_index> &dofs,
+                                     const std::vector<double>                  &values)
+  {
+    AssertDimension(dofs.size(), values.size());
+    for (const auto &[local_index, value] : interior_values)
+      prescribed[local_index] = false;
+    interior_dofs = dofs;
+    interior_values.clear();
+    for (unsigned int k = 0; k < dofs.size(); ++k)
+      if (owned_dofs.is_element(dofs[k]))
+        {
+          const auto local = static_cast<unsigned int>(owned_dofs.index_within_set(dofs[k]));
+          Assert(!prescribed[local],
+                 ExcMessage("Dof " + std::to_string(dofs[k]) +
+                            " is prescribed by a boundary condition already."));
+          prescribed[local] = true;
+          interior_values.emplace_back(local, values[k]);
+        }
+  }
+
+  template <int dim>
+  std::vector<double>
+  FERegion<dim>::interior_reactions(const Vector &residual) const
+  {
+    std::vector<double> result(interior_dofs.size(), 0.);
+    for (unsigned int k = 0; k < interior_dofs.size(); ++k)
+      if (owned_dofs.is_element(interior_dofs[k]))
+        result[k] = residual(interior_dofs[k]);
+    Utilities::MPI::sum(make_array_view(std::as_const(result)), comm, make_array_view(result));
+    return result;
   }
 
   template <int dim>
   const std::vector<bool> &
-  FESolid<dim>::prescribed_mask() const
+  FERegion<dim>::prescribed_mask() const
   {
     return prescribed;
   }
 
   template <int dim>
   double
-  FESolid<dim>::stable_time_step(const Vector *mass_in) const
+  FERegion<dim>::stable_time_step(const Vector *mass_in) const
   {
     const Vector &m = mass_in ? *mass_in : mass;
     // Gershgorin: lambda_max(M^-1 K) <= max_i sum_j |K_ij| / m_i.
@@ -899,7 +799,7 @@ namespace perideal
 
   template <int dim>
   std::vector<double>
-  FESolid<dim>::absolute_row_sums(const Vector *x) const
+  FERegion<dim>::absolute_row_sums(const Vector *x) const
   {
     // Rows read through Epetra views: deal.II's row iterator copies every row.
     const auto         &matrix = stiffness.trilinos_matrix();
@@ -920,7 +820,7 @@ namespace perideal
 
   template <int dim>
   double
-  FESolid<dim>::strain_energy(const Vector &u) const
+  FERegion<dim>::strain_energy(const Vector &u) const
   {
     Vector Ku;
     initialize_vector(Ku);
@@ -929,32 +829,33 @@ namespace perideal
   }
 
   template <int dim>
-  std::vector<Tensor<1, dim>>
-  FESolid<dim>::reactions(const Vector &residual) const
+  std::vector<std::vector<double>>
+  FERegion<dim>::reactions(const Vector &residual) const
   {
-    std::vector<Tensor<1, dim>> result(condition_list.size());
+    std::vector<std::vector<double>> result(condition_list.size(),
+                                            std::vector<double>(layout.n_components(), 0.));
     for (const auto &d : prescribed_dofs)
       {
         const unsigned int comp = condition_list[d.condition].components[d.function_component];
         result[d.condition][comp] += residual.local_element(d.local_index);
       }
     for (auto &r : result)
-      r = Utilities::MPI::sum(r, comm);
+      Utilities::MPI::sum(r, comm, r);
     return result;
   }
 
   template <int dim>
   void
-  FESolid<dim>::write_output(const std::string &directory,
-                             const std::string &base_name,
-                             const unsigned int step,
-                             const double       time,
-                             const Vector      &u)
+  FERegion<dim>::write_output(const std::string &directory,
+                              const std::string &base_name,
+                              const unsigned int step,
+                              const double       time,
+                              const Vector      &u)
   {
     if (n_dofs() == 0)
       return;
-    const StressPostprocessor<dim> stress(C, material.voigt_stiffness(), planar);
-    DataOut<dim>                   data_out;
+    const auto   derived = physics_model->postprocessor();
+    DataOut<dim> data_out;
     data_out.attach_dof_handler(dof_handler);
     // Only the locally owned cells that carry FE unknowns (not the FE_Nothing ones).
     using CellIterator       = typename Triangulation<dim>::cell_iterator;
@@ -980,14 +881,19 @@ namespace perideal
         ActiveCellIterator next(cell);
         return next_selected(tria, ++next);
       });
-    const std::vector<DataComponentInterpretation::DataComponentInterpretation> vector(
-      dim,
-      DataComponentInterpretation::component_is_part_of_vector);
-    data_out.add_data_vector(u,
-                             std::vector<std::string>(dim, "displacement"),
-                             DataOut<dim>::type_dof_data,
-                             vector);
-    data_out.add_data_vector(u, stress);
+    // The translations as the vector 'displacement', every other component by its name.
+    std::vector<std::string>                                              names;
+    std::vector<DataComponentInterpretation::DataComponentInterpretation> interpretation;
+    for (unsigned int c = 0; c < layout.n_components(); ++c)
+      {
+        const bool translation = layout.kind(c) == ComponentKind::translation;
+        names.push_back(translation ? "displacement" : layout.name(c));
+        interpretation.push_back(translation ?
+                                   DataComponentInterpretation::component_is_part_of_vector :
+                                   DataComponentInterpretation::component_is_scalar);
+      }
+    data_out.add_data_vector(u, names, DataOut<dim>::type_dof_data, interpretation);
+    data_out.add_data_vector(u, *derived);
     data_out.build_patches();
     write_hdf5_xdmf_step(data_out,
                          !data_out.get_patches().empty(),
@@ -1002,7 +908,7 @@ namespace perideal
 
   template <int dim>
   std::string
-  FESolid<dim>::summary() const
+  FERegion<dim>::summary() const
   {
     if (!has_mesh())
       return "FE region: none";
@@ -1017,81 +923,77 @@ namespace perideal
       }(),
       comm);
     out << "FE region: " << triangulation.n_global_active_cells() << " cells (" << n_active
-        << " with FE_Q(" << degree << ")^" << dim << "), " << dof_handler.n_dofs()
-        << " dofs; material " << material.summary() << ", rho = " << density << " kg/m^3";
+        << " with FE_Q(" << degree << ")";
+    if (layout.n_components() > 1)
+      out << "^" << layout.n_components();
+    out << "), " << dof_handler.n_dofs() << " dofs; " << physics_model->summary()
+        << ", rho = " << density << " kg/m^3";
     return out.str();
   }
 
   template <int dim>
   const parallel::distributed::Triangulation<dim> &
-  FESolid<dim>::get_triangulation() const
+  FERegion<dim>::get_triangulation() const
   {
     return triangulation;
   }
 
   template <int dim>
   const DoFHandler<dim> &
-  FESolid<dim>::get_dof_handler() const
+  FERegion<dim>::get_dof_handler() const
   {
     return dof_handler;
   }
 
   template <int dim>
   const hp::FECollection<dim> &
-  FESolid<dim>::get_fe_collection() const
+  FERegion<dim>::get_fe_collection() const
   {
     return fe_collection;
   }
 
   template <int dim>
   const SparseMatrix &
-  FESolid<dim>::stiffness_matrix() const
+  FERegion<dim>::stiffness_matrix() const
   {
     return stiffness;
   }
 
   template <int dim>
   const Vector &
-  FESolid<dim>::lumped_mass() const
+  FERegion<dim>::lumped_mass() const
   {
     return mass;
   }
 
   template <int dim>
-  const Vector &
-  FESolid<dim>::solution() const
+  const FEPhysics<dim> &
+  FERegion<dim>::physics() const
   {
-    return displacement;
+    return *physics_model;
   }
 
   template <int dim>
-  const SymmetricTensor<4, dim> &
-  FESolid<dim>::elasticity_tensor() const
+  const FieldLayout &
+  FERegion<dim>::field_layout() const
   {
-    return C;
+    return layout;
   }
 
   template <int dim>
   double
-  FESolid<dim>::get_density() const
+  FERegion<dim>::get_density() const
   {
     return density;
   }
 
   template <int dim>
-  const std::vector<typename FESolid<dim>::Condition> &
-  FESolid<dim>::conditions() const
+  const std::vector<typename FERegion<dim>::Condition> &
+  FERegion<dim>::conditions() const
   {
     return condition_list;
   }
 
-  template <int dim>
-  FieldLayout
-  FESolid<dim>::field_layout() const
-  {
-    return FieldLayout::displacement(dim);
-  }
-
-  template class FESolid<2>;
-  template class FESolid<3>;
+  template class FERegion<2>;
+  template class FERegion<3>;
 } // namespace perideal

@@ -1,13 +1,13 @@
 // ---------------------------------------------------------------------
-// PeriDeal: the finite-element region, linear elasticity on a distributed mesh.
+// PeriDeal: the finite-element region: mesh, FE space, assembly, conditions, output; the
+// physics is a plugin (FEPhysics).
 // ---------------------------------------------------------------------
-#ifndef perideal_fem_fe_solid_h
-#define perideal_fem_fe_solid_h
+#ifndef perideal_fem_fe_region_h
+#define perideal_fem_fe_region_h
 
 #include <deal.II/base/data_out_base.h>
 #include <deal.II/base/function.h>
 #include <deal.II/base/parameter_handler.h>
-#include <deal.II/base/symmetric_tensor.h>
 #include <deal.II/distributed/tria.h>
 #include <deal.II/dofs/dof_handler.h>
 #include <deal.II/fe/fe_system.h>
@@ -20,6 +20,7 @@
 #include <perideal/base/elasticity.h>
 #include <perideal/base/field_layout.h>
 #include <perideal/base/linear_algebra.h>
+#include <perideal/fem/fe_physics.h>
 
 #include <functional>
 #include <memory>
@@ -30,42 +31,41 @@
 namespace perideal
 {
   /**
-   * @brief Linear elasticity with finite elements on a distributed mesh: the FE region of a
-   * problem (alone, or coupled to particles).
+   * @brief The FE region of a problem (alone, or coupled to particles) on a distributed mesh;
+   * what the field means is its physics (FEPhysics, <Finite elements/Physics>).
    *
    * The mesh comes from a deal.II generator or a gmsh file (boundary ids from the physical
-   * curves/surfaces). Displacements are FE_Q(p)^dim; cells where the FE weight 1 - beta(x)
-   * vanishes (the PD-only zone of a coupled problem) carry FE_Nothing and no unknowns.
+   * curves/surfaces). Each component of the physics' FieldLayout is FE_Q(p); cells where the
+   * FE weight 1 - beta(x) vanishes (the PD-only zone of a coupled problem) carry FE_Nothing
+   * and no unknowns.
    *
-   * Boundary conditions act on sets of boundary ids:
-   * - 'displacement': u_c(x, t) = g_c(x, t) for the listed components c;
-   * - 'velocity' (explicit dynamics only): v_c(x, t) = g_c(x, t);
-   * - 'traction': the traction vector T(x, t) [Pa] on the boundary faces.
-   * and a body force b(x, t) [N/m^3] (set_body_force()) acts everywhere. In 2D forces are per unit
-   * thickness times the 'Thickness' (so that they are in N, like the particles' forces).
+   * Boundary conditions act on sets of boundary ids, on the listed <Components> (names of the
+   * layout). Their <Type> depends on the kind of the components: on translations
+   * 'displacement' [m], 'velocity' [m/s, explicit dynamics only] or 'traction' [Pa]; on a
+   * scalar field 'value', 'rate' (explicit dynamics only) or 'flux' (the boundary flux of the
+   * field's equation, e.g. k dw/dn). A load condition ('traction', 'flux') acts on every
+   * component of the field, and with the body force b(x, t) (set_body_force()) it enters the
+   * load as int g . v ds and int b . v dx. In 2D forces are per unit thickness times the
+   * 'Thickness' (so that they are in N, like the particles' forces). Dofs inside the body can
+   * be prescribed too (set_interior_values()).
    *
-   * The stiffness K = sum_cells int (1 - beta) B^T C B dx and the lumped mass (Gauss-Lobatto
-   * nodal quadrature, so positive for every degree) are assembled unconstrained; the static
-   * solve condenses the displacement conditions (AffineConstraints) and solves with CG + AMG
-   * (Trilinos ML), with the rigid-body modes as near-null space.
+   * The stiffness K = sum_cells int (1 - beta) a(v, u) dx (a from the physics) and the lumped
+   * mass (Gauss-Lobatto nodal quadrature, so positive for every degree) are assembled
+   * unconstrained; problems solve through CoupledStaticSolver, which holds the prescribed dofs
+   * (prescribed_mask()) with the near-null space component_masks() (one constant mode per
+   * component).
    */
   template <int dim>
-  class FESolid
+  class FERegion
   {
   public:
-    enum class ConditionType
-    {
-      displacement,
-      velocity,
-      traction
-    };
-
     /// A boundary condition on a set of boundary ids.
     struct Condition
     {
-      std::string                            name;
-      std::set<dealii::types::boundary_id>   boundary_ids;
-      ConditionType                          type = ConditionType::displacement;
+      std::string                          name;
+      std::set<dealii::types::boundary_id> boundary_ids;
+      /// value (displacement, value), rate (velocity, rate) or load (traction, flux).
+      Quantity                               type = Quantity::value;
       std::vector<unsigned int>              components;
       std::shared_ptr<dealii::Function<dim>> function;
     };
@@ -73,7 +73,7 @@ namespace perideal
     /// The weight 1 - beta(x) of the FE energy; cells where it is 0 everywhere are FE_Nothing.
     using WeightFunction = std::function<double(const dealii::Point<dim> &)>;
 
-    explicit FESolid(const MPI_Comm comm);
+    explicit FERegion(const MPI_Comm comm);
 
     /**
      * @brief Declare the entries of the subsection "Finite elements" (including its boundary
@@ -107,7 +107,9 @@ namespace perideal
 
     /**
      * @brief Set the body force (the problem's <Body force/Function>, weighted by 1 - beta
-     * here; or a manufactured one in a test). Without it there is none.
+     * here; or a manufactured one in a test). Without it there is none. Its first
+     * field_layout().n_components() components act on the field's components (a scalar
+     * physics reads the source from the first expression).
      */
     void
     set_body_force(const std::shared_ptr<dealii::Function<dim>> &function);
@@ -121,23 +123,34 @@ namespace perideal
     setup(const WeightFunction &weight = WeightFunction());
 
     /**
-     * @brief Solve K u = f(t) with the displacement conditions at @p time, CG + AMG to the
-     * relative residual @p tolerance (the FE region alone, e.g. in its validation tests;
-     * problems solve through CoupledStaticSolver).
-     * @return The number of CG iterations.
+     * @brief Prescribe the dofs @p dofs (global indices, the same list on every rank; each
+     * rank uses the ones it owns) to @p values, like the dofs of a 'displacement' ('value')
+     * condition: prescribe() sets them (at every time), prescribed_mask() holds them and
+     * interior_reactions() gives their reactions. For Dirichlet data inside the body
+     * (overlapping Schwarz). Call after setup(); a call replaces the previous one's dofs; a dof
+     * may not be a boundary condition's as well.
      */
-    unsigned int
-    solve_static(const double time, const double tolerance = 1e-10);
+    void
+    set_interior_values(const std::vector<dealii::types::global_dof_index> &dofs,
+                        const std::vector<double>                          &values);
 
     /**
-     * @brief The external load f(t): tractions and body force.
+     * @brief The reactions (the entries of @p residual = K u - f) at the dofs of the last
+     * set_interior_values(), in its order, summed over the ranks (collective).
+     */
+    std::vector<double>
+    interior_reactions(const dealii::LinearAlgebra::distributed::Vector<double> &residual) const;
+
+    /**
+     * @brief The external load f(t): load conditions and body force.
      */
     void
     assemble_load(const double time, dealii::LinearAlgebra::distributed::Vector<double> &f) const;
 
     /**
-     * @brief Set the prescribed components at @p time: of @p u for displacement conditions, of
-     * @p v for velocity conditions (owned entries; the caller integrates u from v).
+     * @brief Set the prescribed components at @p time: of @p u for displacement (value)
+     * conditions and interior values, of @p v for velocity (rate) conditions (owned entries;
+     * the caller integrates u from v).
      */
     void
     prescribe(const double                                        time,
@@ -145,8 +158,8 @@ namespace perideal
               dealii::LinearAlgebra::distributed::Vector<double> &v) const;
 
     /**
-     * @brief Whether the dof is prescribed by a displacement or velocity condition (owned
-     * dofs, by local index in the owned range).
+     * @brief Whether the dof is prescribed by a displacement or velocity (value or rate)
+     * condition or an interior value (owned dofs, by local index in the owned range).
      */
     const std::vector<bool> &
     prescribed_mask() const;
@@ -170,17 +183,18 @@ namespace perideal
 
     /**
      * @brief Strain energy 1/2 u^T K u and reactions sum over the dofs of every displacement
-     * or velocity condition of (K u - f) (the force the support exerts, per component).
+     * or velocity (value or rate) condition of (K u - f) (the force the support exerts, per
+     * component c of the layout in entry c).
      */
     double
     strain_energy(const dealii::LinearAlgebra::distributed::Vector<double> &u) const;
-    std::vector<dealii::Tensor<1, dim>>
+    std::vector<std::vector<double>>
     reactions(const dealii::LinearAlgebra::distributed::Vector<double> &residual) const;
 
     /**
-     * @brief Write displacement, (velocity), strain, stress and von Mises stress of the
-     * FE-carrying cells as `<directory>/<base_name>_<step>.h5` plus `<base_name>.xdmf`
-     * (nothing without FE unknowns).
+     * @brief Write the field (translations as the vector 'displacement', other components
+     * by their names) and the physics' derived quantities of the FE-carrying cells as
+     * `<directory>/<base_name>_<step>.h5` plus `<base_name>.xdmf` (nothing without FE unknowns).
      */
     void
     write_output(const std::string                                        &directory,
@@ -207,19 +221,16 @@ namespace perideal
     bool
     has_hanging_nodes() const;
 
-    /// The nodal interpolation of @p function (dim components) into @p vector (owned entries).
+    /// The nodal interpolation of @p function (one component per component of the layout) into
+    /// @p vector (owned entries).
     void
     interpolate(const dealii::Function<dim>                        &function,
                 dealii::LinearAlgebra::distributed::Vector<double> &vector) const;
 
-    /// Per component, which owned dofs belong to it (the translations, the near-null space of
-    /// AMG).
+    /// Per component of the layout, which owned dofs belong to it (the constant modes: the
+    /// translations of elasticity, the constant of a scalar field; the near-null space of AMG).
     std::vector<std::vector<bool>>
     component_masks() const;
-
-    /// The unknowns of an FE node: the displacement x, y(, z).
-    FieldLayout
-    field_layout() const;
 
     /// One line describing the region, for the log (collective).
     std::string
@@ -236,10 +247,12 @@ namespace perideal
     stiffness_matrix() const;
     const dealii::LinearAlgebra::distributed::Vector<double> &
     lumped_mass() const;
-    const dealii::LinearAlgebra::distributed::Vector<double> &
-    solution() const;
-    const dealii::SymmetricTensor<4, dim> &
-    elasticity_tensor() const;
+    /// The physics (after parse_parameters()).
+    const FEPhysics<dim> &
+    physics() const;
+    /// The unknowns of a node: the physics' layout.
+    const FieldLayout &
+    field_layout() const;
     double
     get_density() const;
     const std::vector<Condition> &
@@ -249,7 +262,7 @@ namespace perideal
     weight(const dealii::Point<dim> &p) const;
 
   private:
-    /// A dof of a displacement or velocity condition.
+    /// A dof of a value or rate condition.
     struct PrescribedDof
     {
       unsigned int       local_index;
@@ -266,17 +279,16 @@ namespace perideal
      */
     void
     check_conditions_act() const;
+    /// The weights 1 - beta, the thickness and JxW at the quadrature points of @p fe_values.
     void
-    assemble_cell_matrix(dealii::FEValues<dim>      &fe_values,
-                         dealii::FullMatrix<double> &cell_matrix) const;
+    quadrature_weights(const dealii::FEValuesBase<dim> &fe_values,
+                       std::vector<double>             &weights) const;
     void
     assemble_cell_load(const typename dealii::DoFHandler<dim>::active_cell_iterator &cell,
                        const double                                                  time,
                        dealii::FEValues<dim>                                        &fe_values,
                        dealii::FEFaceValues<dim>                                    &fe_face_values,
                        dealii::Vector<double> &cell_rhs) const;
-    void
-    make_constraints(const double time, dealii::AffineConstraints<double> &constraints) const;
     void
     assemble_matrices();
 
@@ -286,11 +298,10 @@ namespace perideal
     std::string                            mesh_file, generator, generator_arguments;
     unsigned int                           global_refinements = 0;
     unsigned int                           degree             = 1;
-    PlanarAssumption                       planar             = PlanarAssumption::three_dimensional;
     double                                 thickness          = 1.;
     double                                 density            = 0.;
-    ElasticMaterial                        material;
-    dealii::SymmetricTensor<4, dim>        C;
+    std::unique_ptr<FEPhysics<dim>>        physics_model;
+    FieldLayout                            layout;
     std::vector<Condition>                 condition_list;
     std::shared_ptr<dealii::Function<dim>> body_force; // null: none
     std::vector<std::pair<dealii::types::boundary_id, dealii::Point<2>>> circular_boundaries;
@@ -302,11 +313,14 @@ namespace perideal
     dealii::DoFHandler<dim>                            dof_handler;
     dealii::IndexSet                                   owned_dofs, relevant_dofs;
     dealii::AffineConstraints<double>                  hanging_constraints;
-    SparseMatrix                                       stiffness, system_matrix;
-    dealii::LinearAlgebra::distributed::Vector<double> mass, displacement;
+    SparseMatrix                                       stiffness;
+    dealii::LinearAlgebra::distributed::Vector<double> mass;
     std::vector<bool>                                  prescribed;
     std::vector<PrescribedDof>                         prescribed_dofs;
-    std::vector<dealii::XDMFEntry>                     xdmf_entries;
+    /// The dofs of set_interior_values() (global) and, for those owned, local index and value.
+    std::vector<dealii::types::global_dof_index> interior_dofs;
+    std::vector<std::pair<unsigned int, double>> interior_values;
+    std::vector<dealii::XDMFEntry>               xdmf_entries;
   };
 } // namespace perideal
 

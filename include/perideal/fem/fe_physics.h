@@ -1,0 +1,111 @@
+// ---------------------------------------------------------------------
+// PeriDeal: interface of the physics of the FE region (plugins).
+// ---------------------------------------------------------------------
+#ifndef perideal_fem_fe_physics_h
+#define perideal_fem_fe_physics_h
+
+#include <deal.II/base/parameter_handler.h>
+#include <deal.II/base/types.h>
+#include <deal.II/fe/fe_values.h>
+#include <deal.II/lac/full_matrix.h>
+#include <deal.II/numerics/data_postprocessor.h>
+
+#include <perideal/base/elasticity.h>
+#include <perideal/base/field_layout.h>
+#include <perideal/base/plugin_registry.h>
+
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace perideal
+{
+  /**
+   * @brief What a physics of the FE region (FERegion) supplies: only what differs between
+   * physics. The region owns the mesh, the FE space (one FE_Q(p) per component of
+   * field_layout(), FE_Nothing where the FE weight vanishes), the assembly (it multiplies by
+   * the FE weight 1 - beta, the thickness of a 2D problem and JxW), the lumped mass (density of
+   * <Finite elements/Density>), the loads (body source and the load conditions, integrated
+   * against the shape functions of their components), the constraints, the reactions and the
+   * output. The near-null space of AMG is one constant mode per component of the layout (the
+   * translations of elasticity, the constant of a scalar field).
+   *
+   * A physics is chosen by <Finite elements/Physics> (registered with
+   * PERIDEAL_REGISTER_FE_PHYSICS) and declares its own subsection inside <Finite elements>.
+   */
+  template <int dim>
+  class FEPhysics
+  {
+  public:
+    virtual ~FEPhysics() = default;
+
+    /**
+     * @brief Declare the physics' own subsection; @p prm is in <Finite elements>.
+     */
+    virtual void
+    declare_parameters(dealii::ParameterHandler &prm) const = 0;
+
+    /**
+     * @brief Read and check the physics' own subsection (@p prm is in <Finite elements>);
+     * @p planar is the problem's planar assumption (three_dimensional in 3D).
+     */
+    virtual void
+    parse_parameters(dealii::ParameterHandler &prm, const PlanarAssumption planar) = 0;
+
+    /**
+     * @brief The unknowns of an FE node: their number, kinds (which condition types they
+     * take) and the names <Components> entries and the output use.
+     */
+    virtual FieldLayout
+    field_layout() const = 0;
+
+    /**
+     * @brief Add sum_q @p weights[q] a(phi_i, phi_j)(x_q) to @p cell_matrix (zeroed by the
+     * caller): the bilinear form of the physics at the quadrature points of @p fe_values (which
+     * has update_gradients) on a cell of material id @p material_id. The weights already hold
+     * the FE weight, the thickness and JxW.
+     */
+    virtual void
+    add_cell_stiffness(const dealii::FEValues<dim>     &fe_values,
+                       const dealii::types::material_id material_id,
+                       const std::vector<double>       &weights,
+                       dealii::FullMatrix<double>      &cell_matrix) const = 0;
+
+    /**
+     * @brief The derived quantities written with the solution (strains and stresses, fluxes),
+     * from the solution's gradients.
+     */
+    virtual std::unique_ptr<dealii::DataPostprocessor<dim>>
+    postprocessor() const = 0;
+
+    /**
+     * @brief The material for the region's summary line ("material ...").
+     */
+    virtual std::string
+    summary() const = 0;
+  };
+} // namespace perideal
+
+/**
+ * Register FE physics @p classname (a class template in dim) under @p name for dim = 2 and 3.
+ * The registry's own per-plugin subsection is not used: a physics declares its subsection in
+ * FEPhysics::declare_parameters() (linear elasticity keeps <Finite elements/Elasticity>).
+ */
+#define PERIDEAL_REGISTER_FE_PHYSICS_FOR(dim, classname, name, description)    \
+  namespace                                                                    \
+  {                                                                            \
+    const bool PERIDEAL_REGISTRY_CONCAT(perideal_fe_physics_, __COUNTER__) =   \
+      ::perideal::PluginRegistry<::perideal::FEPhysics<dim>>::register_plugin( \
+        name,                                                                  \
+        description,                                                           \
+        {},                                                                    \
+        []() -> std::unique_ptr<::perideal::FEPhysics<dim>> {                  \
+          return std::make_unique<classname<dim>>();                           \
+        });                                                                    \
+  }
+
+#define PERIDEAL_REGISTER_FE_PHYSICS(classname, name, description)  \
+  PERIDEAL_REGISTER_FE_PHYSICS_FOR(2, classname, name, description) \
+  PERIDEAL_REGISTER_FE_PHYSICS_FOR(3, classname, name, description)
+
+#endif

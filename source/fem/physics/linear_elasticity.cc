@@ -1,0 +1,181 @@
+// ---------------------------------------------------------------------
+// PeriDeal: FE physics 'linear elasticity'.
+// ---------------------------------------------------------------------
+#include <perideal/fem/physics/linear_elasticity.h>
+
+#include <cmath>
+
+namespace perideal
+{
+  using namespace dealii;
+
+  namespace
+  {
+    // Strain, stress and von Mises stress from the displacement gradient.
+    template <int dim>
+    class StressPostprocessor : public DataPostprocessor<dim>
+    {
+    public:
+      StressPostprocessor(const SymmetricTensor<4, dim> &C,
+                          const FullMatrix<double>      &voigt,
+                          const PlanarAssumption         planar)
+        : C(C)
+        , voigt(voigt)
+        , planar(planar)
+      {}
+
+      std::vector<std::string>
+      get_names() const override
+      {
+        std::vector<std::string> names;
+        const char               axes[] = {'x', 'y', 'z'};
+        for (const std::string quantity : {"strain", "stress"})
+          for (unsigned int i = 0; i < dim; ++i)
+            for (unsigned int j = i; j < dim; ++j)
+              names.push_back(quantity + "_" + axes[i] + axes[j]);
+        if (dim == 2)
+          names.push_back("stress_zz");
+        names.push_back("von_mises_stress");
+        return names;
+      }
+
+      std::vector<DataComponentInterpretation::DataComponentInterpretation>
+      get_data_component_interpretation() const override
+      {
+        return std::vector<DataComponentInterpretation::DataComponentInterpretation>(
+          get_names().size(),
+          DataComponentInterpretation::component_is_scalar);
+      }
+
+      UpdateFlags
+      get_needed_update_flags() const override
+      {
+        return update_gradients;
+      }
+
+      void
+      evaluate_vector_field(const DataPostprocessorInputs::Vector<dim> &inputs,
+                            std::vector<dealii::Vector<double>>        &computed) const override
+      {
+        for (unsigned int q = 0; q < inputs.solution_gradients.size(); ++q)
+          {
+            Tensor<2, dim> grad;
+            for (unsigned int c = 0; c < dim; ++c)
+              grad[c] = inputs.solution_gradients[q][c];
+            const SymmetricTensor<2, dim> eps   = symmetrize(grad);
+            const SymmetricTensor<2, dim> sigma = C * eps;
+            unsigned int                  k     = 0;
+            for (const auto *t : {&eps, &sigma})
+              for (unsigned int i = 0; i < dim; ++i)
+                for (unsigned int j = i; j < dim; ++j)
+                  computed[q][k++] = (*t)[i][j];
+            // The out-of-plane stress: 0 in plane stress, C_33kl eps_kl in plane strain.
+            double s33 = 0.;
+            if (dim == 2 && planar == PlanarAssumption::plane_strain)
+              s33 = voigt(2, 0) * eps[0][0] + voigt(2, 1) * eps[1][1] +
+                    voigt(2, 5) * 2. * eps[0][dim - 1];
+            if (dim == 2)
+              computed[q][k++] = s33;
+            SymmetricTensor<2, 3> s3;
+            for (unsigned int i = 0; i < dim; ++i)
+              for (unsigned int j = i; j < dim; ++j)
+                s3[i][j] = sigma[i][j];
+            if (dim == 2)
+              s3[2][2] = s33;
+            const SymmetricTensor<2, 3> dev = deviator(s3);
+            computed[q][k++]                = std::sqrt(1.5 * (dev * dev));
+          }
+      }
+
+    private:
+      const SymmetricTensor<4, dim> C;
+      const FullMatrix<double>      voigt;
+      const PlanarAssumption        planar;
+    };
+  } // namespace
+
+  template <int dim>
+  void
+  LinearElasticity<dim>::declare_parameters(ParameterHandler &prm) const
+  {
+    prm.enter_subsection("Elasticity");
+    ElasticMaterial::declare_parameters(prm);
+    prm.leave_subsection();
+  }
+
+  template <int dim>
+  void
+  LinearElasticity<dim>::parse_parameters(ParameterHandler &prm, const PlanarAssumption planar_)
+  {
+    planar = planar_;
+    prm.enter_subsection("Elasticity");
+    material.parse_parameters(prm, "Finite elements/Elasticity");
+    prm.leave_subsection();
+    C = material.tensor<dim>(planar);
+  }
+
+  template <int dim>
+  FieldLayout
+  LinearElasticity<dim>::field_layout() const
+  {
+    return FieldLayout::displacement(dim);
+  }
+
+  template <int dim>
+  void
+  LinearElasticity<dim>::add_cell_stiffness(const FEValues<dim> &fe_values,
+                                            const types::material_id,
+                                            const std::vector<double> &weights,
+                                            FullMatrix<double>        &cell_matrix) const
+  {
+    const unsigned int                   n = fe_values.dofs_per_cell;
+    const FEValuesExtractors::Vector     displacements(0);
+    std::vector<SymmetricTensor<2, dim>> eps(n);
+    for (const unsigned int q : fe_values.quadrature_point_indices())
+      {
+        const double w = weights[q];
+        if (w == 0.)
+          continue;
+        for (unsigned int i = 0; i < n; ++i)
+          eps[i] = fe_values[displacements].symmetric_gradient(i, q);
+        for (unsigned int i = 0; i < n; ++i)
+          {
+            const SymmetricTensor<2, dim> C_eps = C * eps[i];
+            for (unsigned int j = i; j < n; ++j)
+              cell_matrix(i, j) += (C_eps * eps[j]) * w;
+          }
+      }
+    for (unsigned int i = 0; i < n; ++i)
+      for (unsigned int j = 0; j < i; ++j)
+        cell_matrix(i, j) = cell_matrix(j, i);
+  }
+
+  template <int dim>
+  std::unique_ptr<DataPostprocessor<dim>>
+  LinearElasticity<dim>::postprocessor() const
+  {
+    return std::make_unique<StressPostprocessor<dim>>(C, material.voigt_stiffness(), planar);
+  }
+
+  template <int dim>
+  std::string
+  LinearElasticity<dim>::summary() const
+  {
+    return "material " + material.summary();
+  }
+
+  template <int dim>
+  const SymmetricTensor<4, dim> &
+  LinearElasticity<dim>::elasticity_tensor() const
+  {
+    return C;
+  }
+
+  template class LinearElasticity<2>;
+  template class LinearElasticity<3>;
+} // namespace perideal
+
+PERIDEAL_REGISTER_FE_PHYSICS(perideal::LinearElasticity,
+                             "linear elasticity",
+                             "small-strain linear elasticity, -div(C : eps(u)) = b, unknowns the "
+                             "displacement x, y(, z); material in <Finite elements/Elasticity>.")
