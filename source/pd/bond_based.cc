@@ -5,6 +5,7 @@
 
 #include <perideal/base/parameter_utilities.h>
 #include <perideal/pd/bond_based.h>
+#include <perideal/pd/bond_loop.h>
 #include <perideal/pd/surface_correction.h>
 
 #include <cmath>
@@ -14,6 +15,109 @@
 namespace perideal
 {
   using namespace dealii;
+
+  namespace
+  {
+    /**
+     * @brief The PMB pair law of for_each_bond_block(): pair force F = k s (xi + eta)/|xi + eta|
+     * on the particle side (-F on the neighbour) and, if @p with_energy, the pair energy
+     * k s^2 |xi| / 4 at both ends, with k = c G beta V_i V_j per lane; breaks bonds by stretch.
+     */
+    template <int dim, bool with_energy>
+    struct PMBPairLaw
+    {
+      static constexpr unsigned int n_outputs    = dim + (with_energy ? 1 : 0);
+      static constexpr bool         breaks_bonds = true;
+      /// k per lane.
+      const double *coefficient;
+
+      struct Side
+      {};
+
+      Side
+      side(const unsigned int) const
+      {
+        return {};
+      }
+
+      DeformedBond<dim>
+      strain(const typename BondBlocks<dim>::BondClass &bond,
+             const bond_simd::Vector                   *u_a,
+             const bond_simd::Vector                   *u_b) const
+      {
+        return deformed_bond<dim>(bond, u_a, u_b);
+      }
+
+      void
+      pair(const typename BondBlocks<dim>::BondClass &bond,
+           const DeformedBond<dim>                   &y,
+           const Side &,
+           const BondLanes   &lanes,
+           bond_simd::Vector *to_a,
+           bond_simd::Vector *to_b) const
+      {
+        using namespace bond_simd;
+        const Vector k(coefficient + lanes.first_lane, stdx::element_aligned);
+        Vector       t               = 0.;
+        stdx::where(lanes.active, t) = k * y.stretch * (y.rho * bond.inverse_length);
+        for (unsigned int d = 0; d < dim; ++d)
+          {
+            to_a[d] = y.r[d] * t;
+            to_b[d] = -to_a[d];
+          }
+        if constexpr (with_energy)
+          {
+            Vector e                     = 0.;
+            stdx::where(lanes.active, e) = (0.25 * bond.length) * k * y.stretch * y.stretch;
+            to_a[dim]                    = e;
+            to_b[dim]                    = e;
+          }
+      }
+    };
+  } // namespace
+
+  template <int dim>
+  struct BondBased<dim>::Kernel
+  {
+    /// The bonds in SIMD blocks, and bond_coefficient per lane.
+    BondBlocks<dim>                 blocks;
+    typename BondBlocks<dim>::Array lane_coefficient;
+    /// Kernel-order work fields: displacement, force, energy density.
+    typename BondBlocks<dim>::Array u_field, f_field, w_field;
+
+    /**
+     * @brief The force loop of PMBPairLaw; the energy density is accumulated only if
+     * @p with_energy.
+     */
+    template <bool with_energy>
+    void
+    force_loop(BondList &bonds, const double critical_stretch)
+    {
+      std::array<const double *, dim>                               u;
+      std::array<double *, PMBPairLaw<dim, with_energy>::n_outputs> out;
+      for (unsigned int d = 0; d < dim; ++d)
+        {
+          u[d]   = blocks.component(u_field, d);
+          out[d] = blocks.component(f_field, d);
+        }
+      if constexpr (with_energy)
+        out[dim] = blocks.component(w_field, 0);
+      for_each_bond_block<dim>(blocks,
+                               u,
+                               out,
+                               PMBPairLaw<dim, with_energy>{lane_coefficient.data()},
+                               bonds,
+                               critical_stretch);
+    }
+  };
+
+  template <int dim>
+  BondBased<dim>::BondBased()
+    : kernel(std::make_unique<Kernel>())
+  {}
+
+  template <int dim>
+  BondBased<dim>::~BondBased() = default;
 
   template <int dim>
   void
@@ -66,11 +170,12 @@ namespace perideal
           c = 48. * E / (5. * pi * context.thickness * std::pow(delta, 3));
           break;
       }
-    BondList &bonds = particles.bonds();
+    BondList        &bonds  = particles.bonds();
+    BondBlocks<dim> &blocks = kernel->blocks;
     blocks.reinit(particles);
-    blocks.reinit_field(u_field, dim);
-    blocks.reinit_field(f_field, dim);
-    blocks.reinit_field(w_field, 1);
+    blocks.reinit_field(kernel->u_field, dim);
+    blocks.reinit_field(kernel->f_field, dim);
+    blocks.reinit_field(kernel->w_field, 1);
     if (context.surface_correction)
       {
         const auto energy = [&](const ParticleVector &u, std::vector<double> &w) {
@@ -103,7 +208,7 @@ namespace perideal
         bond_coefficient[b] =
           c * (with_surface_factor ? bonds.surface_factor[b] * bonds.energy_weight[b] : 1.) *
           bonds.volume_factor[b] * volume[i] * volume[bonds.neighbor[b]];
-    blocks.to_lanes(bond_coefficient, lane_coefficient);
+    kernel->blocks.to_lanes(bond_coefficient, kernel->lane_coefficient);
   }
 
   template <int dim>
@@ -114,111 +219,21 @@ namespace perideal
                                  std::vector<double>  *energy_density,
                                  const double          critical_stretch)
   {
-    blocks.sync_state(particles.bonds());
-    blocks.gather(u.begin(), dim, u_field);
-    std::fill(f_field.begin(), f_field.end(), 0.);
+    Kernel &k = *kernel;
+    k.blocks.sync_state(particles.bonds());
+    k.blocks.gather(u.begin(), dim, k.u_field);
+    std::fill(k.f_field.begin(), k.f_field.end(), 0.);
     const double *volume = particles.volumes().data();
     if (energy_density != nullptr)
       {
-        std::fill(w_field.begin(), w_field.end(), 0.);
-        force_loop<true>(particles.bonds(), critical_stretch);
+        std::fill(k.w_field.begin(), k.w_field.end(), 0.);
+        k.template force_loop<true>(particles.bonds(), critical_stretch);
         energy_density->resize(particles.n_owned());
-        blocks.scatter_owned(w_field, 1, volume, energy_density->data());
+        k.blocks.scatter_owned(k.w_field, 1, volume, energy_density->data());
       }
     else
-      force_loop<false>(particles.bonds(), critical_stretch);
-    blocks.scatter_owned(f_field, dim, volume, force.begin());
-  }
-
-  template <int dim>
-  template <bool with_energy>
-  void
-  BondBased<dim>::force_loop(BondList &bonds, const double critical_stretch)
-  {
-    using namespace bond_simd;
-    const auto         &groups      = blocks.groups();
-    const auto         &block_list  = blocks.blocks();
-    const auto         &classes     = blocks.classes();
-    const double       *coefficient = lane_coefficient.data();
-    const std::uint8_t *state       = blocks.state();
-    const double       *u[dim];
-    double             *f[dim];
-    for (unsigned int d = 0; d < dim; ++d)
-      {
-        u[d] = blocks.component(u_field, d);
-        f[d] = blocks.component(f_field, d);
-      }
-    double *w = blocks.component(w_field, 0);
-
-    // Pair forces F = k s (xi + eta)/|xi + eta| and pair energies k s^2 |xi| / 4 with
-    // k = c G beta V_i V_j, summed per particle (divided by V_i by the caller). Lane l of a
-    // block: particle a + l, neighbour a + offset + l, lattice vector xi of the block's class.
-    for (std::size_t g = 0; g + 1 < groups.size(); ++g)
-      {
-        const unsigned int a = groups[g].first_particle;
-        Vector             u_a[dim], f_a[dim];
-        for (unsigned int d = 0; d < dim; ++d)
-          {
-            u_a[d].copy_from(u[d] + a, stdx::element_aligned);
-            f_a[d] = 0.;
-          }
-        Vector w_a = 0.;
-        for (unsigned int q = groups[g].first_block; q < groups[g + 1].first_block; ++q)
-          {
-            const auto       &block = block_list[q];
-            const auto       &bond  = classes[block.bond_class];
-            const std::size_t b = std::size_t(std::ptrdiff_t(a) + block.offset), lane = q * width;
-            Vector            r[dim], length2                                         = 0.;
-            for (unsigned int d = 0; d < dim; ++d)
-              {
-                const Vector u_b(u[d] + b, stdx::element_aligned);
-                r[d] = bond.xi[d] + (u_b - u_a[d]);
-                length2 += r[d] * r[d];
-              }
-            // rho = |xi| / |xi + eta|, stretch s = |xi + eta| / |xi| - 1.
-            const Vector ratio2 = length2 * (bond.inverse_length * bond.inverse_length);
-            const Vector rho    = inverse_sqrt(ratio2);
-            const Vector s      = ratio2 * rho - 1.;
-            Mask         active = intact_lanes(state + lane);
-            if (stdx::any_of(active && (s > critical_stretch)))
-              {
-                blocks.break_lanes(s, critical_stretch, q, bonds);
-                active = intact_lanes(state + lane);
-              }
-            const Vector k(coefficient + lane, stdx::element_aligned);
-            Vector       t         = 0.;
-            stdx::where(active, t) = k * s * (rho * bond.inverse_length);
-            for (unsigned int d = 0; d < dim; ++d)
-              {
-                const Vector force = r[d] * t;
-                f_a[d] += force;
-                Vector f_b(f[d] + b, stdx::element_aligned);
-                f_b -= force;
-                f_b.copy_to(f[d] + b, stdx::element_aligned);
-              }
-            if constexpr (with_energy)
-              {
-                Vector e               = 0.;
-                stdx::where(active, e) = (0.25 * bond.length) * k * s * s;
-                w_a += e;
-                Vector w_b(w + b, stdx::element_aligned);
-                w_b += e;
-                w_b.copy_to(w + b, stdx::element_aligned);
-              }
-          }
-        for (unsigned int d = 0; d < dim; ++d)
-          {
-            Vector sum(f[d] + a, stdx::element_aligned);
-            sum += f_a[d];
-            sum.copy_to(f[d] + a, stdx::element_aligned);
-          }
-        if constexpr (with_energy)
-          {
-            Vector sum(w + a, stdx::element_aligned);
-            sum += w_a;
-            sum.copy_to(w + a, stdx::element_aligned);
-          }
-      }
+      k.template force_loop<false>(particles.bonds(), critical_stretch);
+    k.blocks.scatter_owned(k.f_field, dim, volume, force.begin());
   }
 
   template <int dim>

@@ -4,6 +4,7 @@
 #include <deal.II/base/numbers.h>
 
 #include <perideal/base/parameter_utilities.h>
+#include <perideal/pd/bond_loop.h>
 #include <perideal/pd/linear_peridynamic_solid.h>
 
 #include <cmath>
@@ -13,6 +14,180 @@
 namespace perideal
 {
   using namespace dealii;
+
+  namespace
+  {
+    /**
+     * @brief Pass 1 of the LPS kernel as a pair law of for_each_bond_block(): breaks bonds by
+     * stretch, then adds the pair sum p omega beta V_i V_j |xi| e (e = |xi| s) at both ends
+     * (the dilatation before the factor n / (m_i V_i)).
+     */
+    template <int dim>
+    struct LPSDilatationLaw
+    {
+      static constexpr unsigned int n_outputs    = 1;
+      static constexpr bool         breaks_bonds = true;
+      /// omega beta V_i V_j per lane.
+      const double *weight;
+
+      struct Side
+      {};
+
+      Side
+      side(const unsigned int) const
+      {
+        return {};
+      }
+
+      DeformedBond<dim>
+      strain(const typename BondBlocks<dim>::BondClass &bond,
+             const bond_simd::Vector                   *u_a,
+             const bond_simd::Vector                   *u_b) const
+      {
+        return deformed_bond<dim>(bond, u_a, u_b);
+      }
+
+      void
+      pair(const typename BondBlocks<dim>::BondClass &bond,
+           const DeformedBond<dim>                   &y,
+           const Side &,
+           const BondLanes   &lanes,
+           bond_simd::Vector *to_a,
+           bond_simd::Vector *to_b) const
+      {
+        using namespace bond_simd;
+        Vector p                     = 0.;
+        stdx::where(lanes.active, p) = Vector(weight + lanes.first_lane, stdx::element_aligned) *
+                                       y.stretch * (bond.length * bond.length);
+        to_a[0] = p;
+        to_b[0] = p;
+      }
+    };
+
+    /**
+     * @brief Pass 2 of the LPS kernel as a pair law of for_each_bond_block(): the pair force
+     * [(n k - (n + 2) mu) |xi| (theta_i / m_i + theta_j / m_j) + (alpha_i + alpha_j) e]
+     * omega beta V_i V_j (xi + eta)/|xi + eta| on the particle side (its negative on the
+     * neighbour) and, if @p with_energy, the deviatoric pair energies
+     * alpha_i omega beta V_i V_j (e - theta_i |xi| / n)^2 / 2 at i and the same with j at j
+     * (theta / m and alpha carry the particles' energy weights).
+     */
+    template <int dim, bool with_energy>
+    struct LPSForceLaw
+    {
+      static constexpr unsigned int n_outputs    = dim + (with_energy ? 1 : 0);
+      static constexpr bool         breaks_bonds = false;
+      /// omega beta V_i V_j per lane.
+      const double *weight;
+      /// Kernel order: beta theta / m, beta alpha, theta.
+      const double *theta_over_m, *alpha, *theta;
+      /// n k - (n + 2) mu.
+      double dilatation_coefficient;
+
+      struct Side
+      {
+        bond_simd::Vector theta_over_m, alpha, theta;
+      };
+
+      Side
+      side(const unsigned int a) const
+      {
+        using namespace bond_simd;
+        return {Vector(theta_over_m + a, stdx::element_aligned),
+                Vector(alpha + a, stdx::element_aligned),
+                Vector(theta + a, stdx::element_aligned)};
+      }
+
+      DeformedBond<dim>
+      strain(const typename BondBlocks<dim>::BondClass &bond,
+             const bond_simd::Vector                   *u_a,
+             const bond_simd::Vector                   *u_b) const
+      {
+        return deformed_bond<dim>(bond, u_a, u_b);
+      }
+
+      void
+      pair(const typename BondBlocks<dim>::BondClass &bond,
+           const DeformedBond<dim>                   &y,
+           const Side                                &i,
+           const BondLanes                           &lanes,
+           bond_simd::Vector                         *to_a,
+           bond_simd::Vector                         *to_b) const
+      {
+        using namespace bond_simd;
+        const double      n = dim;
+        const std::size_t b = lanes.neighbour;
+        const Vector      e = bond.length * y.stretch;
+        const Vector      p(weight + lanes.first_lane, stdx::element_aligned);
+        const Vector      alpha_b(alpha + b, stdx::element_aligned);
+        const Vector      t = (dilatation_coefficient * bond.length) *
+                           (i.theta_over_m + Vector(theta_over_m + b, stdx::element_aligned)) +
+                         (i.alpha + alpha_b) * e;
+        Vector scale                     = 0.;
+        stdx::where(lanes.active, scale) = t * p * (y.rho * bond.inverse_length);
+        for (unsigned int d = 0; d < dim; ++d)
+          {
+            to_a[d] = y.r[d] * scale;
+            to_b[d] = -to_a[d];
+          }
+        if constexpr (with_energy)
+          {
+            const Vector ei = e - i.theta * (bond.length / n);
+            const Vector ej = e - Vector(theta + b, stdx::element_aligned) * (bond.length / n);
+            Vector       wi = 0., wj = 0.;
+            stdx::where(lanes.active, wi) = 0.5 * i.alpha * p * ei * ei;
+            stdx::where(lanes.active, wj) = 0.5 * alpha_b * p * ej * ej;
+            to_a[dim]                     = wi;
+            to_b[dim]                     = wj;
+          }
+      }
+    };
+  } // namespace
+
+  template <int dim>
+  struct LinearPeridynamicSolid<dim>::Kernel
+  {
+    /// The bonds in SIMD blocks, and pair_weight per lane.
+    BondBlocks<dim>                 blocks;
+    typename BondBlocks<dim>::Array lane_weight;
+    /// Kernel-order work fields of compute_forces(): displacement, force, energy density,
+    /// dilatation, beta theta / m, beta alpha and beta / m (beta: the particles' energy weights).
+    typename BondBlocks<dim>::Array u_field, f_field, w_field, theta_field, theta_over_m_field,
+      alpha_field, beta_over_m_field;
+
+    /**
+     * @brief Pass 2 (LPSForceLaw) with dilatation coefficient @p dilatation_coefficient; the
+     * energy density is accumulated only if @p with_energy.
+     */
+    template <bool with_energy>
+    void
+    force_loop(BondList &bonds, const double dilatation_coefficient)
+    {
+      std::array<const double *, dim>                                u;
+      std::array<double *, LPSForceLaw<dim, with_energy>::n_outputs> out;
+      for (unsigned int d = 0; d < dim; ++d)
+        {
+          u[d]   = blocks.component(u_field, d);
+          out[d] = blocks.component(f_field, d);
+        }
+      if constexpr (with_energy)
+        out[dim] = blocks.component(w_field, 0);
+      const LPSForceLaw<dim, with_energy> law{lane_weight.data(),
+                                              blocks.component(theta_over_m_field, 0),
+                                              blocks.component(alpha_field, 0),
+                                              blocks.component(theta_field, 0),
+                                              dilatation_coefficient};
+      for_each_bond_block<dim>(blocks, u, out, law, bonds, 0.);
+    }
+  };
+
+  template <int dim>
+  LinearPeridynamicSolid<dim>::LinearPeridynamicSolid()
+    : kernel(std::make_unique<Kernel>())
+  {}
+
+  template <int dim>
+  LinearPeridynamicSolid<dim>::~LinearPeridynamicSolid() = default;
 
   template <int dim>
   void
@@ -76,13 +251,14 @@ namespace perideal
       for (unsigned int b = bonds.row_start[i]; b < bonds.row_start[i + 1]; ++b)
         pair_weight[b] = influence->value(bonds.length[b], context.horizon) *
                          bonds.volume_factor[b] * volume[i] * volume[bonds.neighbor[b]];
-    blocks.reinit(particles);
-    blocks.to_lanes(pair_weight, lane_weight);
-    for (auto *field : {&u_field, &f_field})
-      blocks.reinit_field(*field, dim);
+    Kernel &k = *kernel;
+    k.blocks.reinit(particles);
+    k.blocks.to_lanes(pair_weight, k.lane_weight);
+    for (auto *field : {&k.u_field, &k.f_field})
+      k.blocks.reinit_field(*field, dim);
     for (auto *field :
-         {&w_field, &theta_field, &theta_over_m_field, &alpha_field, &beta_over_m_field})
-      blocks.reinit_field(*field, 1);
+         {&k.w_field, &k.theta_field, &k.theta_over_m_field, &k.alpha_field, &k.beta_over_m_field})
+      k.blocks.reinit_field(*field, 1);
 
     particles.reinit_vector(weighted_volume, 1);
     particles.reinit_vector(theta, 1);
@@ -118,10 +294,10 @@ namespace perideal
     std::vector<double> weighted(particles.n_local());
     for (unsigned int i = 0; i < particles.n_local(); ++i)
       weighted[i] = beta[i] * alpha[i];
-    blocks.gather(weighted.data(), 1, alpha_field);
+    k.blocks.gather(weighted.data(), 1, k.alpha_field);
     for (unsigned int i = 0; i < particles.n_local(); ++i)
       weighted[i] = beta[i] / weighted_volume.local_element(i);
-    blocks.gather(weighted.data(), 1, beta_over_m_field);
+    k.blocks.gather(weighted.data(), 1, k.beta_over_m_field);
   }
 
   template <int dim>
@@ -132,161 +308,51 @@ namespace perideal
                                               std::vector<double>  *energy_density,
                                               const double          critical_stretch)
   {
-    using namespace bond_simd;
-    BondList           &bonds      = particles.bonds();
-    const double       *volume     = particles.volumes().data();
-    const unsigned int  n_owned    = particles.n_owned();
-    const double       *m          = weighted_volume.begin();
-    const auto         &groups     = blocks.groups();
-    const auto         &block_list = blocks.blocks();
-    const auto         &classes    = blocks.classes();
-    const double       *weight     = lane_weight.data();
-    const std::uint8_t *state      = blocks.state();
-    const double        n          = dim;
-    blocks.sync_state(bonds);
-    blocks.gather(u.begin(), dim, u_field);
-    const double *uu[dim];
-    double       *f[dim];
+    Kernel            &k       = *kernel;
+    BondList          &bonds   = particles.bonds();
+    const double      *volume  = particles.volumes().data();
+    const unsigned int n_owned = particles.n_owned();
+    const double      *m       = weighted_volume.begin();
+    const double       n       = dim;
+    k.blocks.sync_state(bonds);
+    k.blocks.gather(u.begin(), dim, k.u_field);
+    std::array<const double *, dim> u_k;
     for (unsigned int d = 0; d < dim; ++d)
-      {
-        uu[d] = blocks.component(u_field, d);
-        f[d]  = blocks.component(f_field, d);
-      }
-    // Lane l of a block: particle a + l, neighbour a + offset + l, lattice vector xi of the
-    // block's class. Returns the bond vectors r = xi + eta and |r| / |xi| - 1.
-    const auto bond_vectors = [&](const unsigned int                     a,
-                                  const Vector                          *u_a,
-                                  const typename BondBlocks<dim>::Block &block,
-                                  Vector                                *r,
-                                  Vector                                &rho) {
-      const auto       &bond    = classes[block.bond_class];
-      const std::size_t b       = std::size_t(std::ptrdiff_t(a) + block.offset);
-      Vector            length2 = 0.;
-      for (unsigned int d = 0; d < dim; ++d)
-        {
-          const Vector u_b(uu[d] + b, stdx::element_aligned);
-          r[d] = bond.xi[d] + (u_b - u_a[d]);
-          length2 += r[d] * r[d];
-        }
-      const Vector ratio2 = length2 * (bond.inverse_length * bond.inverse_length);
-      rho                 = inverse_sqrt(ratio2);
-      return Vector(ratio2 * rho - 1.);
-    };
-    const auto add_to = [](double *target, const Vector &value) {
-      Vector sum(target, stdx::element_aligned);
-      sum += value;
-      sum.copy_to(target, stdx::element_aligned);
-    };
+      u_k[d] = k.blocks.component(k.u_field, d);
 
     // Pass 1: break overstretched bonds (stretch above the critical stretch), then the
-    // dilatation from the pair sums omega beta V_i V_j |xi| e (e = |xi| s), divided by V_i.
-    std::fill(theta_field.begin(), theta_field.end(), 0.);
-    double *th = blocks.component(theta_field, 0);
-    for (std::size_t g = 0; g + 1 < groups.size(); ++g)
-      {
-        const unsigned int a = groups[g].first_particle;
-        Vector             u_a[dim], r[dim], rho;
-        for (unsigned int d = 0; d < dim; ++d)
-          u_a[d].copy_from(uu[d] + a, stdx::element_aligned);
-        Vector theta_a = 0.;
-        for (unsigned int q = groups[g].first_block; q < groups[g + 1].first_block; ++q)
-          {
-            const auto  &block  = block_list[q];
-            const double xi     = classes[block.bond_class].length;
-            const Vector s      = bond_vectors(a, u_a, block, r, rho);
-            Mask         active = intact_lanes(state + std::size_t(q) * width);
-            if (stdx::any_of(active && (s > critical_stretch)))
-              {
-                blocks.break_lanes(s, critical_stretch, q, bonds);
-                active = intact_lanes(state + std::size_t(q) * width);
-              }
-            Vector pair = 0.;
-            stdx::where(active, pair) =
-              Vector(weight + std::size_t(q) * width, stdx::element_aligned) * s * (xi * xi);
-            theta_a += pair;
-            add_to(th + std::ptrdiff_t(a) + block.offset, pair);
-          }
-        add_to(th + a, theta_a);
-      }
+    // dilatation from the pair sums, divided by V_i.
+    std::fill(k.theta_field.begin(), k.theta_field.end(), 0.);
+    for_each_bond_block<dim>(k.blocks,
+                             u_k,
+                             {{k.blocks.component(k.theta_field, 0)}},
+                             LPSDilatationLaw<dim>{k.lane_weight.data()},
+                             bonds,
+                             critical_stretch);
     double *theta_owned = theta.begin();
-    blocks.scatter_owned(theta_field, 1, nullptr, theta_owned);
+    k.blocks.scatter_owned(k.theta_field, 1, nullptr, theta_owned);
     for (unsigned int i = 0; i < n_owned; ++i)
       theta_owned[i] *= n / (m[i] * volume[i]);
     theta.update_ghost_values();
-    blocks.gather(theta.begin(), 1, theta_field);
-    const double *theta_k      = blocks.component(theta_field, 0);
-    double       *theta_over_m = blocks.component(theta_over_m_field, 0);
-    for (std::size_t k = 0; k < theta_field.size(); ++k)
-      theta_over_m_field[k] = theta_field[k] * beta_over_m_field[k];
+    k.blocks.gather(theta.begin(), 1, k.theta_field);
+    for (std::size_t q = 0; q < k.theta_field.size(); ++q)
+      k.theta_over_m_field[q] = k.theta_field[q] * k.beta_over_m_field[q];
 
-    // Pass 2: forces (and energy). Pair force
-    // [(n k - (n + 2) mu) |xi| (theta_i / m_i + theta_j / m_j) + (alpha_i + alpha_j) e]
-    //   omega beta V_i V_j (xi + eta)/|xi + eta|, summed per particle and divided by V_i.
+    // Pass 2: forces (and energy), summed per particle and divided by V_i.
     const double dilatation_coefficient = n * bulk_modulus - (n + 2.) * shear_modulus;
-    std::fill(f_field.begin(), f_field.end(), 0.);
-    const bool energy = (energy_density != nullptr);
-    double    *w      = blocks.component(w_field, 0);
-    if (energy)
-      std::fill(w_field.begin(), w_field.end(), 0.);
-    const double *alpha_k = blocks.component(alpha_field, 0);
-    for (std::size_t g = 0; g + 1 < groups.size(); ++g)
+    std::fill(k.f_field.begin(), k.f_field.end(), 0.);
+    if (energy_density != nullptr)
       {
-        const unsigned int a = groups[g].first_particle;
-        Vector             u_a[dim], r[dim], rho, f_a[dim];
-        for (unsigned int d = 0; d < dim; ++d)
-          {
-            u_a[d].copy_from(uu[d] + a, stdx::element_aligned);
-            f_a[d] = 0.;
-          }
-        const Vector theta_over_m_a(theta_over_m + a, stdx::element_aligned);
-        const Vector alpha_a(alpha_k + a, stdx::element_aligned);
-        const Vector theta_a(theta_k + a, stdx::element_aligned);
-        Vector       w_a = 0.;
-        for (unsigned int q = groups[g].first_block; q < groups[g + 1].first_block; ++q)
-          {
-            const auto       &block = block_list[q];
-            const auto       &bond  = classes[block.bond_class];
-            const std::size_t b     = std::size_t(std::ptrdiff_t(a) + block.offset);
-            const Vector      s     = bond_vectors(a, u_a, block, r, rho);
-            const Vector      e     = bond.length * s;
-            const Vector      p(weight + std::size_t(q) * width, stdx::element_aligned);
-            const Vector      alpha_b(alpha_k + b, stdx::element_aligned);
-            const Vector      t = (dilatation_coefficient * bond.length) *
-                               (theta_over_m_a + Vector(theta_over_m + b, stdx::element_aligned)) +
-                             (alpha_a + alpha_b) * e;
-            const Mask active          = intact_lanes(state + std::size_t(q) * width);
-            Vector     scale           = 0.;
-            stdx::where(active, scale) = t * p * (rho * bond.inverse_length);
-            for (unsigned int d = 0; d < dim; ++d)
-              {
-                const Vector pair_force = r[d] * scale;
-                f_a[d] += pair_force;
-                Vector f_b(f[d] + b, stdx::element_aligned);
-                f_b -= pair_force;
-                f_b.copy_to(f[d] + b, stdx::element_aligned);
-              }
-            if (energy)
-              {
-                const Vector ei = e - theta_a * (bond.length / n);
-                const Vector ej =
-                  e - Vector(theta_k + b, stdx::element_aligned) * (bond.length / n);
-                Vector wi_pair = 0., wj_pair = 0.;
-                stdx::where(active, wi_pair) = 0.5 * alpha_a * p * ei * ei;
-                stdx::where(active, wj_pair) = 0.5 * alpha_b * p * ej * ej;
-                w_a += wi_pair;
-                add_to(w + b, wj_pair);
-              }
-          }
-        for (unsigned int d = 0; d < dim; ++d)
-          add_to(f[d] + a, f_a[d]);
-        if (energy)
-          add_to(w + a, w_a);
+        std::fill(k.w_field.begin(), k.w_field.end(), 0.);
+        k.template force_loop<true>(bonds, dilatation_coefficient);
       }
-    blocks.scatter_owned(f_field, dim, volume, force.begin());
-    if (energy)
+    else
+      k.template force_loop<false>(bonds, dilatation_coefficient);
+    k.blocks.scatter_owned(k.f_field, dim, volume, force.begin());
+    if (energy_density != nullptr)
       {
         energy_density->resize(n_owned);
-        blocks.scatter_owned(w_field, 1, volume, energy_density->data());
+        k.blocks.scatter_owned(k.w_field, 1, volume, energy_density->data());
         const auto &beta = particles.energy_weights();
         for (unsigned int i = 0; i < n_owned; ++i)
           (*energy_density)[i] += beta[i] * 0.5 * bulk_modulus * theta_owned[i] * theta_owned[i];

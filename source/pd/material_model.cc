@@ -8,6 +8,66 @@
 
 namespace perideal
 {
+  void
+  LinearizedModel::reinit(const unsigned int n_components, const unsigned int n_owned)
+  {
+    components = n_components;
+    row_start.assign(1, 0);
+    entries.clear();
+    weights.clear();
+    scale.assign(n_owned, 0.);
+  }
+
+  void
+  LinearizedModel::add_row(const double weight, const std::vector<Entry> &row)
+  {
+    entries.insert(entries.end(), row.begin(), row.end());
+    row_start.push_back(entries.size());
+    weights.push_back(weight);
+  }
+
+  unsigned int
+  LinearizedModel::n_components() const
+  {
+    return components;
+  }
+
+  std::size_t
+  LinearizedModel::n_rows() const
+  {
+    return weights.size();
+  }
+
+  double
+  LinearizedModel::weight(const std::size_t r) const
+  {
+    return weights[r];
+  }
+
+  const LinearizedModel::Entry *
+  LinearizedModel::row_begin(const std::size_t r) const
+  {
+    return entries.data() + row_start[r];
+  }
+
+  const LinearizedModel::Entry *
+  LinearizedModel::row_end(const std::size_t r) const
+  {
+    return entries.data() + row_start[r + 1];
+  }
+
+  std::vector<double> &
+  LinearizedModel::stiffness_scale()
+  {
+    return scale;
+  }
+
+  const std::vector<double> &
+  LinearizedModel::stiffness_scale() const
+  {
+    return scale;
+  }
+
   template <int dim>
   double
   MaterialModel<dim>::stable_time_step(const ParticleSystem<dim> &particles,

@@ -11,6 +11,65 @@ namespace perideal
 {
   using namespace dealii;
 
+  namespace
+  {
+    /**
+     * @brief Append to @p row the entries of @p factor n_b . (u_j - u_i), the linearized
+     * extension of bond @p b stored in the row of particle @p i (n_b = (x_j - x_i)/|xi|, the
+     * same for both ends).
+     */
+    template <int dim>
+    void
+    add_extension(const ParticleSystem<dim>           &particles,
+                  const unsigned int                   i,
+                  const std::size_t                    b,
+                  const double                         factor,
+                  std::vector<LinearizedModel::Entry> &row)
+    {
+      const BondList    &bonds = particles.bonds();
+      const auto        &x     = particles.positions();
+      const unsigned int j     = bonds.neighbor[b];
+      for (unsigned int d = 0; d < dim; ++d)
+        {
+          const double n_d = (x[j][d] - x[i][d]) / bonds.length[b];
+          row.push_back({i, d, -(factor * n_d)});
+          row.push_back({j, d, factor * n_d});
+        }
+    }
+
+    /**
+     * @brief The bond rows of a displacement model: for every bond b with stiffness
+     * @p k[b] != 0 (N/m, per BondList entry), the row n_b . (u_j - u_i) of weight k_b times
+     * the bond's share; the stiffness scale of an owned particle is the sum of k_b over its
+     * bonds.
+     */
+    template <int dim>
+    void
+    add_bond_rows(const ParticleSystem<dim> &particles,
+                  const std::vector<double> &k,
+                  LinearizedModel           &linearized)
+    {
+      const BondList                     &bonds   = particles.bonds();
+      const unsigned int                  n_owned = particles.n_owned();
+      std::vector<double>                &scale   = linearized.stiffness_scale();
+      std::vector<LinearizedModel::Entry> row;
+      for (unsigned int i = 0; i < n_owned; ++i)
+        for (unsigned int b = bonds.row_start[i]; b < bonds.row_start[i + 1]; ++b)
+          {
+            const unsigned int j = bonds.neighbor[b];
+            scale[i] += k[b];
+            if (j < n_owned)
+              scale[j] += k[b];
+            if (k[b] != 0.)
+              {
+                row.clear();
+                add_extension(particles, i, b, 1., row);
+                linearized.add_row(k[b] * particles.bond_share(b), row);
+              }
+          }
+    }
+  } // namespace
+
   // PMB: the bond b couples i and j through the block k_b n n^T (force density per unit
   // displacement k_b = c G beta V_j / |xi|, i.e. bond_coefficient / (|xi| V_i)); block
   // Gershgorin with spectral norms gives |K_ii| + sum_j |K_ij| <= 2 sum_j k_b.
@@ -36,19 +95,19 @@ namespace perideal
         }
   }
 
-  // PMB linearized: f_i V_i = sum_j (c G beta / |xi|) V_i V_j n n^T (u_j - u_i).
+  // PMB linearized: f_i V_i = sum_j (c G beta / |xi|) V_i V_j n n^T (u_j - u_i), i.e. one row
+  // e_b = n_b . (u_j - u_i) per intact bond with weight k_b = c G beta V_i V_j / |xi|.
   template <int dim>
   void
   BondBased<dim>::linearize(const ParticleSystem<dim> &particles, LinearizedModel &linearized) const
   {
-    const BondList &bonds = particles.bonds();
-    linearized.bond_stiffness.assign(bonds.size(), 0.);
-    linearized.dilatation_weight.clear();
-    linearized.dilatation_row.clear();
-    linearized.dilatation_column.clear();
+    const BondList     &bonds = particles.bonds();
+    std::vector<double> k(bonds.size(), 0.);
     for (std::size_t b = 0; b < bonds.size(); ++b)
       if (bonds.intact[b])
-        linearized.bond_stiffness[b] = bond_coefficient[b] / bonds.length[b];
+        k[b] = bond_coefficient[b] / bonds.length[b];
+    linearized.reinit(this->field_layout().n_components(), particles.n_owned());
+    add_bond_rows(particles, k, linearized);
   }
 
   // LPS: the Gershgorin estimate behind stable_time_step() (direct deviatoric stiffness plus the
@@ -96,28 +155,26 @@ namespace perideal
   // LPS linearized (doc/theory/models.md): W_i = (n k - (n+2) mu)/(2 n) theta_i^2
   // + (alpha_i / 2) sum_j omega e^2 V_j beta, because the deviatoric sum expands to
   // sum omega e^2 V - theta_i^2 m_i / n^2 and alpha_i m_i = mu n (n + 2). Hence, with the
-  // energy weights b_i of a blended coupling (E = sum_i b_i W_i V_i),
-  // k_b = (b_i alpha_i + b_j alpha_j) omega beta V_i V_j, w_i = b_i V_i (n k - (n+2) mu) / n,
-  // g_b^(i) = (n / m_i) omega beta |xi| V_j.
+  // energy weights b_i of a blended coupling (E = sum_i b_i W_i V_i) and e_b = n_b . (u_j - u_i):
+  // one row e_b per intact bond with weight k_b = (b_i alpha_i + b_j alpha_j) omega beta V_i V_j,
+  // and one row theta_i = sum_{b at i} g_b^(i) e_b per owned particle with weight
+  // w_i = b_i V_i (n k - (n+2) mu) / n, g_b^(i) = (n / m_i) omega beta |xi| V_j. theta_i collects
+  // the bonds stored in row i and those stored in the row of an owned neighbour.
   template <int dim>
   void
   LinearPeridynamicSolid<dim>::linearize(const ParticleSystem<dim> &particles,
                                          LinearizedModel           &linearized) const
   {
-    const BondList    &bonds   = particles.bonds();
-    const auto        &volume  = particles.volumes();
-    const unsigned int n_owned = particles.n_owned();
-    const double       n       = dim;
-    const double       alpha_m = shear_modulus * n * (n + 2.);
-    const auto        &beta    = particles.energy_weights();
-    linearized.bond_stiffness.assign(bonds.size(), 0.);
-    linearized.dilatation_row.assign(bonds.size(), 0.);
-    linearized.dilatation_column.assign(bonds.size(), 0.);
-    linearized.dilatation_weight.assign(n_owned, 0.);
+    const BondList                                  &bonds   = particles.bonds();
+    const auto                                      &volume  = particles.volumes();
+    const unsigned int                               n_owned = particles.n_owned();
+    const double                                     n       = dim;
+    const double                                     alpha_m = shear_modulus * n * (n + 2.);
+    const auto                                      &beta    = particles.energy_weights();
+    std::vector<double>                              k(bonds.size(), 0.);
+    std::vector<std::vector<LinearizedModel::Entry>> theta(n_owned);
     for (unsigned int i = 0; i < n_owned; ++i)
       {
-        linearized.dilatation_weight[i] =
-          beta[i] * volume[i] * (n * bulk_modulus - (n + 2.) * shear_modulus) / n;
         const double m_i = weighted_volume.local_element(i);
         for (unsigned int b = bonds.row_start[i]; b < bonds.row_start[i + 1]; ++b)
           {
@@ -125,13 +182,20 @@ namespace perideal
               continue;
             const unsigned int j   = bonds.neighbor[b];
             const double       m_j = weighted_volume.local_element(j);
-            linearized.bond_stiffness[b] =
-              (beta[i] * alpha_m / m_i + beta[j] * alpha_m / m_j) * pair_weight[b];
-            const double r                  = n * pair_weight[b] * bonds.length[b];
-            linearized.dilatation_row[b]    = r / m_i / volume[i];
-            linearized.dilatation_column[b] = r / m_j / volume[j];
+            k[b]             = (beta[i] * alpha_m / m_i + beta[j] * alpha_m / m_j) * pair_weight[b];
+            const double r   = n * pair_weight[b] * bonds.length[b];
+            const double g_i = r / m_i / volume[i], g_j = r / m_j / volume[j];
+            if (g_i != 0.)
+              add_extension(particles, i, b, g_i, theta[i]);
+            if (j < n_owned && g_j != 0.)
+              add_extension(particles, i, b, g_j, theta[j]);
           }
       }
+    linearized.reinit(this->field_layout().n_components(), n_owned);
+    add_bond_rows(particles, k, linearized);
+    for (unsigned int i = 0; i < n_owned; ++i)
+      linearized.add_row(beta[i] * volume[i] * (n * bulk_modulus - (n + 2.) * shear_modulus) / n,
+                         theta[i]);
   }
 
   template void

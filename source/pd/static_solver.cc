@@ -21,8 +21,8 @@ namespace perideal
 
   namespace
   {
-    /// The rectangular matrix G (rows: bond extensions, dilatations, constraint rows) and its
-    /// row weights.
+    /// The rectangular matrix G (rows: the model's strain rows, then the constraint rows) and
+    /// its row weights; the columns of a prescribed component are left out if @p eliminate.
     template <int dim>
     void
     build_extension_matrix(const ParticleSystem<dim> &particles,
@@ -33,72 +33,34 @@ namespace perideal
                            SparseMatrix              &G,
                            SolverVector              &weights)
     {
-      const MPI_Comm     comm       = particles.get_communicator();
-      const BondList    &bonds      = particles.bonds();
-      const auto        &x          = particles.positions();
-      const unsigned int n_owned    = particles.n_owned();
-      const IndexSet    &dofs       = particles.partitioner(dim)->locally_owned_range();
-      const bool         dilatation = !linearized.dilatation_weight.empty();
+      const MPI_Comm     comm    = particles.get_communicator();
+      const unsigned int n_owned = particles.n_owned();
+      const unsigned int nc      = linearized.n_components();
+      const IndexSet    &dofs    = particles.partitioner(nc)->locally_owned_range();
 
       struct Row
       {
         std::map<types::global_dof_index, double> entries;
         double                                    weight = 0.;
       };
-      std::vector<Row> rows;
-      const auto       add_extension =
-        [&](Row &row, const std::size_t b, const unsigned int i, const double factor) {
-          const unsigned int j = bonds.neighbor[b];
-          for (unsigned int d = 0; d < dim; ++d)
-            {
-              const double n_d = (x[j][d] - x[i][d]) / bonds.length[b];
-              const auto   gi  = particles.global_index(i) * dim + d;
-              const auto   gj  = particles.global_index(j) * dim + d;
-              if (!eliminate || prescribed.local_element(i * dim + d) == 0.)
-                row.entries[gi] -= factor * n_d;
-              if (!eliminate || prescribed.local_element(j * dim + d) == 0.)
-                row.entries[gj] += factor * n_d;
-            }
-        };
-
-      // Bond rows.
-      for (unsigned int i = 0; i < n_owned; ++i)
-        for (unsigned int b = bonds.row_start[i]; b < bonds.row_start[i + 1]; ++b)
-          if (linearized.bond_stiffness[b] != 0.)
-            {
-              Row row;
-              row.weight = linearized.bond_stiffness[b] * particles.bond_share(b);
-              add_extension(row, b, i, 1.);
-              rows.push_back(std::move(row));
-            }
-      // Dilatation rows.
-      if (dilatation)
+      std::vector<Row> rows(linearized.n_rows());
+      for (std::size_t r = 0; r < rows.size(); ++r)
         {
-          std::vector<Row> theta(n_owned);
-          for (unsigned int i = 0; i < n_owned; ++i)
-            {
-              theta[i].weight = linearized.dilatation_weight[i];
-              for (unsigned int b = bonds.row_start[i]; b < bonds.row_start[i + 1]; ++b)
-                {
-                  if (linearized.dilatation_row[b] != 0.)
-                    add_extension(theta[i], b, i, linearized.dilatation_row[b]);
-                  const unsigned int j = bonds.neighbor[b];
-                  if (j < n_owned && linearized.dilatation_column[b] != 0.)
-                    add_extension(theta[j], b, i, linearized.dilatation_column[b]);
-                }
-            }
-          for (auto &row : theta)
-            rows.push_back(std::move(row));
+          rows[r].weight = linearized.weight(r);
+          for (const auto *e = linearized.row_begin(r); e != linearized.row_end(r); ++e)
+            if (!eliminate || prescribed.local_element(e->particle * nc + e->component) == 0.)
+              rows[r].entries[particles.global_index(e->particle) * nc + e->component] +=
+                e->coefficient;
         }
       // Constraint rows: s_c u_c.
       if (eliminate)
         for (unsigned int i = 0; i < n_owned; ++i)
-          for (unsigned int d = 0; d < dim; ++d)
-            if (prescribed.local_element(i * dim + d) != 0.)
+          for (unsigned int c = 0; c < nc; ++c)
+            if (prescribed.local_element(i * nc + c) != 0.)
               {
                 Row row;
-                row.weight                                       = constraint_scale[i];
-                row.entries[particles.global_index(i) * dim + d] = 1.;
+                row.weight                                      = constraint_scale[i];
+                row.entries[particles.global_index(i) * nc + c] = 1.;
                 rows.push_back(std::move(row));
               }
 
@@ -171,13 +133,14 @@ namespace perideal
   {
     const MPI_Comm     comm    = particles.get_communicator();
     const unsigned int n_owned = particles.n_owned();
-    const IndexSet    &dofs    = particles.partitioner(dim)->locally_owned_range();
+    const unsigned int nc      = material.field_layout().n_components();
+    const IndexSet    &dofs    = particles.partitioner(nc)->locally_owned_range();
     const auto        &volume  = particles.volumes();
 
     ParticleVector prescribed;
-    particles.reinit_vector(prescribed, dim);
+    particles.reinit_vector(prescribed, nc);
     double n_prescribed = 0.;
-    for (std::size_t k = 0; k < std::size_t(n_owned) * dim; ++k)
+    for (std::size_t k = 0; k < std::size_t(n_owned) * nc; ++k)
       {
         prescribed.local_element(k) = prescribed_owned.local_element(k) != 0. ? 1. : 0.;
         n_prescribed += prescribed.local_element(k);
@@ -193,23 +156,16 @@ namespace perideal
 
     LinearizedModel linearized;
     material.linearize(particles, linearized);
+    AssertDimension(linearized.n_components(), nc);
     // Stiffness scale of each owned particle for its constraint rows.
-    std::vector<double> scale(n_owned, 0.);
-    const BondList     &bonds = particles.bonds();
-    for (unsigned int i = 0; i < n_owned; ++i)
-      for (unsigned int b = bonds.row_start[i]; b < bonds.row_start[i + 1]; ++b)
-        {
-          scale[i] += linearized.bond_stiffness[b];
-          if (bonds.neighbor[b] < n_owned)
-            scale[bonds.neighbor[b]] += linearized.bond_stiffness[b];
-        }
+    std::vector<double> scale = linearized.stiffness_scale();
     for (double &s : scale)
       if (s <= 0.)
         s = 1.;
 
     // Right-hand side F_f - K_fc g with K g = G^T diag(w) G g of the unconstrained G.
     SolverVector g(dofs, comm), rhs(dofs, comm), solution(dofs, comm);
-    for (std::size_t k = 0; k < std::size_t(n_owned) * dim; ++k)
+    for (std::size_t k = 0; k < std::size_t(n_owned) * nc; ++k)
       if (prescribed.local_element(k) != 0.)
         g[dofs.nth_index_in_set(k)] = u.local_element(k);
     g.compress(VectorOperation::insert);
@@ -224,9 +180,9 @@ namespace perideal
       rhs *= -1.;
     }
     for (unsigned int i = 0; i < n_owned; ++i)
-      for (unsigned int d = 0; d < dim; ++d)
+      for (unsigned int c = 0; c < nc; ++c)
         {
-          const std::size_t k     = std::size_t(i) * dim + d;
+          const std::size_t k     = std::size_t(i) * nc + c;
           const auto        index = dofs.nth_index_in_set(k);
           if (prescribed.local_element(k) != 0.)
             {
@@ -257,9 +213,9 @@ namespace perideal
       [&]() {
         TrilinosWrappers::PreconditionAMG::AdditionalData data;
         data.elliptic = true;
-        data.constant_modes.assign(dim, std::vector<bool>(dofs.n_elements(), false));
+        data.constant_modes.assign(nc, std::vector<bool>(dofs.n_elements(), false));
         for (std::size_t k = 0; k < dofs.n_elements(); ++k)
-          data.constant_modes[k % dim][k] = true;
+          data.constant_modes[k % nc][k] = true;
         return data;
       },
       "static solve",
@@ -267,7 +223,7 @@ namespace perideal
         ") may leave rigid-body modes free (2D: 3, 3D: 6 must be held by 'displacement' "
         "conditions), or broken bonds may have split the body into free pieces.");
 
-    for (std::size_t k = 0; k < std::size_t(n_owned) * dim; ++k)
+    for (std::size_t k = 0; k < std::size_t(n_owned) * nc; ++k)
       u.local_element(k) = solution[dofs.nth_index_in_set(k)];
     u.update_ghost_values();
     return iterations;
@@ -348,7 +304,7 @@ namespace perideal
   {
     // Nothing is eliminated: the prescribed flags and constraint scales are not read.
     ParticleVector none;
-    particles.reinit_vector(none, dim);
+    particles.reinit_vector(none, linearized.n_components());
     build_extension_matrix<dim>(particles, linearized, none, {}, false, G, weights);
   }
 

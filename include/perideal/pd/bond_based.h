@@ -4,8 +4,9 @@
 #ifndef perideal_pd_bond_based_h
 #define perideal_pd_bond_based_h
 
-#include <perideal/pd/bond_blocks.h>
 #include <perideal/pd/material_model.h>
+
+#include <memory>
 
 namespace perideal
 {
@@ -28,6 +29,16 @@ namespace perideal
   class BondBased : public MaterialModel<dim>
   {
   public:
+    /**
+     * @brief A model without parameters; parse_parameters() and initialize() set it up.
+     */
+    BondBased();
+
+    /**
+     * @brief Destructor (the kernel's data are defined in bond_based.cc).
+     */
+    ~BondBased() override;
+
     /**
      * @brief Declare "Young's modulus".
      */
@@ -90,11 +101,11 @@ namespace perideal
     double       c = 0.;
     /// c G beta V_i V_j per bond (the pair force per unit stretch).
     std::vector<double> bond_coefficient;
-    /// The bonds in SIMD blocks, and bond_coefficient per lane.
-    BondBlocks<dim>                 blocks;
-    typename BondBlocks<dim>::Array lane_coefficient;
-    /// Kernel-order work fields: displacement, force, energy density.
-    typename BondBlocks<dim>::Array u_field, f_field, w_field;
+    /// The force kernel's data (bonds in SIMD blocks, kernel-order fields): defined in
+    /// bond_based.cc only, the one translation unit of the model compiled with the kernel
+    /// options (source/pd/CMakeLists.txt).
+    struct Kernel;
+    std::unique_ptr<Kernel> kernel;
 
     /**
      * @brief Set bond_coefficient from the micromodulus, the partial-volume factors, the
@@ -103,13 +114,6 @@ namespace perideal
      */
     void
     set_bond_coefficients(const ParticleSystem<dim> &particles, const bool with_surface_factor);
-
-    /**
-     * @brief The force loop; the energy density is accumulated only if @p with_energy.
-     */
-    template <bool with_energy>
-    void
-    force_loop(BondList &bonds, const double critical_stretch);
   };
 } // namespace perideal
 

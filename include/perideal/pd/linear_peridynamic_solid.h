@@ -4,7 +4,6 @@
 #ifndef perideal_pd_linear_peridynamic_solid_h
 #define perideal_pd_linear_peridynamic_solid_h
 
-#include <perideal/pd/bond_blocks.h>
 #include <perideal/pd/influence_function.h>
 #include <perideal/pd/material_model.h>
 
@@ -39,6 +38,16 @@ namespace perideal
   class LinearPeridynamicSolid : public MaterialModel<dim>
   {
   public:
+    /**
+     * @brief A model without parameters; parse_parameters() and initialize() set it up.
+     */
+    LinearPeridynamicSolid();
+
+    /**
+     * @brief Destructor (the kernel's data are defined in linear_peridynamic_solid.cc).
+     */
+    ~LinearPeridynamicSolid() override;
+
     /**
      * @brief Declare "Young's modulus", "Poisson's ratio" and "Influence function".
      */
@@ -104,13 +113,11 @@ namespace perideal
     ParticleVector theta;
     /// alpha = mu n (n + 2) / m per local particle.
     std::vector<double> alpha;
-    /// The bonds in SIMD blocks, and pair_weight per lane.
-    BondBlocks<dim>                 blocks;
-    typename BondBlocks<dim>::Array lane_weight;
-    /// Kernel-order work fields of compute_forces(): displacement, force, energy density,
-    /// dilatation, beta theta / m, beta alpha and beta / m (beta: the particles' energy weights).
-    typename BondBlocks<dim>::Array u_field, f_field, w_field, theta_field, theta_over_m_field,
-      alpha_field, beta_over_m_field;
+    /// The force kernel's data (bonds in SIMD blocks, kernel-order fields): defined in
+    /// linear_peridynamic_solid.cc only, the one translation unit of the model compiled with
+    /// the kernel options (source/pd/CMakeLists.txt).
+    struct Kernel;
+    std::unique_ptr<Kernel> kernel;
   };
 } // namespace perideal
 

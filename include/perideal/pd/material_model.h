@@ -35,27 +35,96 @@ namespace perideal
 
   /**
    * @brief The small-displacement linearization of a model about the reference configuration,
-   * written as a sum of squares (what a model gives to assemble its stiffness matrix).
-   *
-   * With the linearized bond extension e_b = n_b . (u_j - u_i), n_b = xi/|xi| for the bond b
-   * from i to j (the same for both ends), the linearized strain energy is
-   *   E = 1/2 sum_b k_b e_b^2 + 1/2 sum_i w_i theta_i^2,
-   *   theta_i = sum_{b at i} g_b^(i) e_b,
-   * so that the nodal force (force density times V_i) is -dE/du. The per-bond arrays follow the
-   * BondList; a bond to a ghost particle is stored on both ranks and counts with
-   * ParticleSystem::bond_share(). theta_i of an owned particle i collects the coefficient of row
-   * i (bonds stored in row i) and that of column i (bonds stored in the row of an owned j < i).
+   * as the rows of its strain operator G with their weights w (what a model gives to assemble
+   * its stiffness matrix K = G^T diag(w) G):
+   *   E = 1/2 sum_r w_r (G_r u)^2,   G_r u = sum_{(p, c, g) in row r} g u_{p,c},
+   * so that the nodal force (force density times V_p) is -dE/du. A row is a list of entries
+   * (local particle p, owned or ghost; component c of the model's field_layout(); coefficient
+   * g); entries of one row that name the same unknown add up, in their order. The model
+   * decides what a row is: a bond's linearized extension n . (u_j - u_i) (PMB, LPS), a
+   * particle's dilatation (LPS), (w_j - w_i)/|xi| of a scalar field, the strains of a
+   * micropolar bond. Each rank emits the rows of its owned particles; a row shared with
+   * another rank (a bond to a ghost) is emitted by both, with its weight times
+   * ParticleSystem::bond_share().
    */
-  struct LinearizedModel
+  class LinearizedModel
   {
-    /// k_b [N/m] per bond (0 for a broken bond).
-    std::vector<double> bond_stiffness;
-    /// w_i [N m] per owned particle; empty for a model without a dilatation term.
-    std::vector<double> dilatation_weight;
-    /// g_b^(i) [1/m] per bond for the end i that stores the bond (row end).
-    std::vector<double> dilatation_row;
-    /// g_b^(j) [1/m] per bond for the other end j (used when j is owned).
-    std::vector<double> dilatation_column;
+  public:
+    /// One entry of a row of G.
+    struct Entry
+    {
+      /// Local particle index (owned or ghost).
+      unsigned int particle;
+      /// Component of the model's field_layout().
+      unsigned int component;
+      /// The coefficient [1/m for a bond strain, 1 for an extension].
+      double coefficient;
+    };
+
+    /**
+     * @brief No rows, @p n_components unknowns per particle, and stiffness_scale() of
+     * @p n_owned zeros.
+     */
+    void
+    reinit(const unsigned int n_components, const unsigned int n_owned);
+
+    /**
+     * @brief Append a row of weight @p weight with the entries @p entries.
+     */
+    void
+    add_row(const double weight, const std::vector<Entry> &entries);
+
+    /**
+     * @brief The number of unknowns per particle (the columns of a particle).
+     */
+    unsigned int
+    n_components() const;
+
+    /**
+     * @brief The number of rows.
+     */
+    std::size_t
+    n_rows() const;
+
+    /**
+     * @brief The weight w_r of row @p r.
+     */
+    double
+    weight(const std::size_t r) const;
+
+    /**
+     * @brief The first entry of row @p r; row_end(r) is one past its last.
+     */
+    const Entry *
+    row_begin(const std::size_t r) const;
+
+    /**
+     * @brief One past the last entry of row @p r.
+     */
+    const Entry *
+    row_end(const std::size_t r) const;
+
+    /**
+     * @brief A stiffness per owned particle [N/m] that scales the rows of its prescribed
+     * components in a static solve (any positive value yields the same solution; a value of
+     * the size of the particle's stiffness keeps the condition number). Zero where the model
+     * has none; the solver then uses 1.
+     */
+    std::vector<double> &
+    stiffness_scale();
+
+    /**
+     * @brief The stiffness scales (read).
+     */
+    const std::vector<double> &
+    stiffness_scale() const;
+
+  private:
+    unsigned int        components = 0;
+    std::vector<size_t> row_start{0};
+    std::vector<Entry>  entries;
+    std::vector<double> weights;
+    std::vector<double> scale;
   };
 
   /**
@@ -129,7 +198,8 @@ namespace perideal
 
     /**
      * @brief The linearization of the model about the reference configuration (intact bonds
-     * only), see LinearizedModel.
+     * only): the rows of its strain operator and their weights, with
+     * field_layout().n_components() columns per particle, see LinearizedModel.
      */
     virtual void
     linearize(const ParticleSystem<dim> &particles, LinearizedModel &linearized) const;

@@ -21,18 +21,21 @@ namespace perideal
    * K u = F_ext, assembled into a distributed Trilinos matrix and solved by CG + AMG or a direct
    * solver (Amesos KLU).
    *
-   * Linearization (MaterialModel::linearize()): E = 1/2 sum_b k_b e_b^2 + 1/2 sum_i w_i theta_i^2
-   * with e_b = n_b . (u_j - u_i). Writing e and theta as the rows of a rectangular matrix G
-   * (one row per bond, one per particle with a dilatation, built from the owned rows only), the
-   * stiffness is K = G^T diag(k, w) G (Trilinos' A^T diag(V) B product). The dilatation term
-   * couples the neighbours of neighbours; the product builds that sparsity without a search.
-   * Rows are the particle dofs (global index = particle index * dim + component, the
-   * partitioner of ParticleSystem::partitioner(dim)).
+   * Linearization (MaterialModel::linearize()): E = 1/2 sum_r w_r (G_r u)^2 with the rows G_r
+   * of the model's strain operator (LinearizedModel: bond extensions and dilatations for PMB
+   * and LPS, whatever strains another model emits). Collected into a rectangular matrix G
+   * (the owned rows of every rank), the stiffness is K = G^T diag(w) G (Trilinos' A^T diag(V) B
+   * product); rows that couple the neighbours of neighbours (the LPS dilatation) get that
+   * sparsity from the product without a search. The unknowns are the particles' components
+   * of the model's field_layout() (global index = particle index * n_components + component,
+   * the partitioner of ParticleSystem::partitioner(n_components)); the solver knows nothing of
+   * what a row means.
    *
    * Prescribed components are eliminated symmetrically: their columns are left out of G (so
    * K_ff only), the known values move to the right-hand side (F_f - K_fc g), and the row gets
-   * s u_c = s g_c with s the particle's stiffness scale sum_b k_b, which keeps the condition
-   * number of the free block.
+   * s u_c = s g_c with s the particle's stiffness scale (LinearizedModel::stiffness_scale(),
+   * for PMB and LPS the sum of the particle's bond weights), which keeps the condition number
+   * of the free block.
    */
   template <int dim>
   class StaticSolver
@@ -71,11 +74,11 @@ namespace perideal
           const std::string         &conditions);
 
     /**
-     * @brief The unconstrained extension matrix G of @p linearized (rows: the bonds with a
-     * stiffness and, for state-based models, the dilatations; columns: the particle dofs) and
-     * its row weights, so that G^T diag(@p weights) G is the stiffness without boundary
-     * conditions. For solves that map the particle dofs to other unknowns (the coupled static
-     * solve: G T).
+     * @brief The unconstrained strain matrix G of @p linearized (rows: the model's rows, e.g.
+     * the bonds with a stiffness and, for state-based models, the dilatations; columns: the
+     * particle dofs, linearized.n_components() per particle) and its row weights, so that G^T
+     * diag(@p weights) G is the stiffness without boundary conditions. For solves that map the
+     * particle dofs to other unknowns (the coupled static solve: G T).
      */
     static void
     extension_matrix(const ParticleSystem<dim> &particles,

@@ -1,0 +1,154 @@
+// ---------------------------------------------------------------------
+// PeriDeal: the one loop of the force kernels over the lattice bond blocks.
+// ---------------------------------------------------------------------
+#ifndef perideal_pd_bond_loop_h
+#define perideal_pd_bond_loop_h
+
+#include <perideal/pd/bond_blocks.h>
+
+#include <array>
+#include <cstddef>
+
+namespace perideal
+{
+  /**
+   * @brief Where a block's lanes are: what the loop hands a pair law besides the bond class and
+   * the relative values.
+   */
+  struct BondLanes
+  {
+    /// Index of lane 0 in the per-lane arrays (block index times the SIMD width).
+    std::size_t first_lane;
+    /// Kernel index of lane 0's neighbour (the other ends are neighbour + l).
+    std::size_t neighbour;
+    /// The lanes whose bond carries force (intact, after this block's breaking).
+    bond_simd::Mask active;
+  };
+
+  /**
+   * @brief The loop over the lattice bond blocks of @p blocks that every force kernel runs;
+   * the model supplies only its pair law @p law, inlined (no call per bond through a pointer).
+   *
+   * For every group (lanes: kernel indices a ... a + width - 1) and every block of the group
+   * (neighbours b ... b + width - 1, b = a + offset), the loop loads the @p n_components
+   * kernel-order arrays @p u (the components of the unknowns: dim translations, one scalar,
+   * translations and rotations) on both sides, u_a[c] once per group and u_b[c] per block, and
+   * hands both to the law (a displacement model uses u_b - u_a, a micropolar one also the mean
+   * rotation). The law is a type with
+   *  - `static constexpr unsigned int n_outputs`: the number of kernel-order arrays
+   *    @p outputs it accumulates into (force components, energy, dilatation, ...);
+   *  - `static constexpr bool breaks_bonds`;
+   *  - `side(a)`: what it reads once per group on the particle side (any type);
+   *  - `strain(bond_class, u_a, u_b)`: its per-lane measures of the deformed bond (any type; with a
+   *    bond_simd::Vector member `stretch` if it breaks bonds: intact breakable lanes whose
+   *    stretch exceeds @p critical_stretch are broken in the lanes and in @p bonds,
+   *    BondBlocks::break_lanes(), before the pair is evaluated);
+   *  - `pair(bond_class, strain, side, lanes, to_a, to_b)`: the contributions to_a[k] and
+   *    to_b[k] of the block's bonds to output k at the particle side and at the neighbour side
+   *    (zero in lanes that are not lanes.active); per-lane arrays are read at lanes.first_lane,
+   *    per-particle arrays at a and lanes.neighbour.
+   *
+   * The loop adds to_b to the neighbours' entries at once and keeps the sums of to_a in
+   * registers until the group ends. @p bonds and @p critical_stretch are read only if the law
+   * breaks bonds. The kernel-order arrays come from BondBlocks::component().
+   */
+  template <unsigned int n_components, int dim, typename PairLaw>
+  inline void
+  for_each_bond_block(BondBlocks<dim>                                &blocks,
+                      const std::array<const double *, n_components> &u,
+                      const std::array<double *, PairLaw::n_outputs> &outputs,
+                      const PairLaw                                  &law,
+                      BondList                                       &bonds,
+                      const double                                    critical_stretch)
+  {
+    using namespace bond_simd;
+    constexpr unsigned int n_outputs  = PairLaw::n_outputs;
+    const auto            &groups     = blocks.groups();
+    const auto            &block_list = blocks.blocks();
+    const auto            &classes    = blocks.classes();
+    const std::uint8_t    *state      = blocks.state();
+    const auto             add_to     = [](double *target, const Vector &value) {
+      Vector sum(target, stdx::element_aligned);
+      sum += value;
+      sum.copy_to(target, stdx::element_aligned);
+    };
+
+    for (std::size_t g = 0; g + 1 < groups.size(); ++g)
+      {
+        const unsigned int a = groups[g].first_particle;
+        Vector             u_a[n_components], sum_a[n_outputs];
+        for (unsigned int c = 0; c < n_components; ++c)
+          u_a[c].copy_from(u[c] + a, stdx::element_aligned);
+        for (unsigned int k = 0; k < n_outputs; ++k)
+          sum_a[k] = 0.;
+        const auto side = law.side(a);
+        for (unsigned int q = groups[g].first_block; q < groups[g + 1].first_block; ++q)
+          {
+            const auto &block      = block_list[q];
+            const auto &bond_class = classes[block.bond_class];
+            BondLanes   lanes;
+            lanes.first_lane = std::size_t(q) * width;
+            lanes.neighbour  = std::size_t(std::ptrdiff_t(a) + block.offset);
+            Vector u_b[n_components];
+            for (unsigned int c = 0; c < n_components; ++c)
+              u_b[c].copy_from(u[c] + lanes.neighbour, stdx::element_aligned);
+            const auto strain = law.strain(bond_class, u_a, u_b);
+            lanes.active      = intact_lanes(state + lanes.first_lane);
+            if constexpr (PairLaw::breaks_bonds)
+              if (stdx::any_of(lanes.active && (strain.stretch > critical_stretch)))
+                {
+                  blocks.break_lanes(strain.stretch, critical_stretch, q, bonds);
+                  lanes.active = intact_lanes(state + lanes.first_lane);
+                }
+            Vector to_a[n_outputs], to_b[n_outputs];
+            law.pair(bond_class, strain, side, lanes, to_a, to_b);
+            for (unsigned int k = 0; k < n_outputs; ++k)
+              {
+                sum_a[k] += to_a[k];
+                add_to(outputs[k] + lanes.neighbour, to_b[k]);
+              }
+          }
+        for (unsigned int k = 0; k < n_outputs; ++k)
+          add_to(outputs[k] + a, sum_a[k]);
+      }
+  }
+
+  /**
+   * @brief The deformed bond of a displacement model, per lane: r = xi + eta (eta = u_b - u_a
+   * the relative displacement), rho = |xi| / |r| and the stretch s = |r| / |xi| - 1.
+   */
+  template <int dim>
+  struct DeformedBond
+  {
+    bond_simd::Vector r[dim];
+    bond_simd::Vector rho;
+    bond_simd::Vector stretch;
+  };
+
+  /**
+   * @brief The DeformedBond of the lanes of a block of class @p bond_class with displacements
+   * @p u_a at the particle side and @p u_b at the neighbours (dim components each);
+   * multiplications only (bond_simd::inverse_sqrt()).
+   */
+  template <int dim>
+  inline DeformedBond<dim>
+  deformed_bond(const typename BondBlocks<dim>::BondClass &bond_class,
+                const bond_simd::Vector                   *u_a,
+                const bond_simd::Vector                   *u_b)
+  {
+    using bond_simd::Vector;
+    DeformedBond<dim> y;
+    Vector            length2 = 0.;
+    for (unsigned int d = 0; d < dim; ++d)
+      {
+        y.r[d] = bond_class.xi[d] + (u_b[d] - u_a[d]);
+        length2 += y.r[d] * y.r[d];
+      }
+    const Vector ratio2 = length2 * (bond_class.inverse_length * bond_class.inverse_length);
+    y.rho               = bond_simd::inverse_sqrt(ratio2);
+    y.stretch           = ratio2 * y.rho - 1.;
+    return y;
+  }
+} // namespace perideal
+
+#endif
