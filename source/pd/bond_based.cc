@@ -24,34 +24,17 @@ namespace perideal
      * k s^2 |xi| / 4 at both ends, with k = c G beta V_i V_j per lane; breaks bonds by stretch.
      */
     template <int dim, bool with_energy>
-    struct PMBPairLaw
+    struct PMBPairLaw : StretchPairLaw<dim>
     {
       static constexpr unsigned int n_outputs    = dim + (with_energy ? 1 : 0);
       static constexpr bool         breaks_bonds = true;
       /// k per lane.
       const double *coefficient;
 
-      struct Side
-      {};
-
-      Side
-      side(const unsigned int) const
-      {
-        return {};
-      }
-
-      DeformedBond<dim>
-      strain(const typename BondBlocks<dim>::BondClass &bond,
-             const bond_simd::Vector                   *u_a,
-             const bond_simd::Vector                   *u_b) const
-      {
-        return deformed_bond<dim>(bond, u_a, u_b);
-      }
-
       void
       pair(const typename BondBlocks<dim>::BondClass &bond,
            const DeformedBond<dim>                   &y,
-           const Side &,
+           const typename StretchPairLaw<dim>::Side &,
            const BondLanes   &lanes,
            bond_simd::Vector *to_a,
            bond_simd::Vector *to_b) const
@@ -105,7 +88,7 @@ namespace perideal
       for_each_bond_block<dim>(blocks,
                                u,
                                out,
-                               PMBPairLaw<dim, with_energy>{lane_coefficient.data()},
+                               PMBPairLaw<dim, with_energy>{{}, lane_coefficient.data()},
                                bonds,
                                critical_stretch);
     }

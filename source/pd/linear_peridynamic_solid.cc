@@ -23,34 +23,17 @@ namespace perideal
      * (the dilatation before the factor n / (m_i V_i)).
      */
     template <int dim>
-    struct LPSDilatationLaw
+    struct LPSDilatationLaw : StretchPairLaw<dim>
     {
       static constexpr unsigned int n_outputs    = 1;
       static constexpr bool         breaks_bonds = true;
       /// omega beta V_i V_j per lane.
       const double *weight;
 
-      struct Side
-      {};
-
-      Side
-      side(const unsigned int) const
-      {
-        return {};
-      }
-
-      DeformedBond<dim>
-      strain(const typename BondBlocks<dim>::BondClass &bond,
-             const bond_simd::Vector                   *u_a,
-             const bond_simd::Vector                   *u_b) const
-      {
-        return deformed_bond<dim>(bond, u_a, u_b);
-      }
-
       void
       pair(const typename BondBlocks<dim>::BondClass &bond,
            const DeformedBond<dim>                   &y,
-           const Side &,
+           const typename StretchPairLaw<dim>::Side &,
            const BondLanes   &lanes,
            bond_simd::Vector *to_a,
            bond_simd::Vector *to_b) const
@@ -73,7 +56,7 @@ namespace perideal
      * (theta / m and alpha carry the particles' energy weights).
      */
     template <int dim, bool with_energy>
-    struct LPSForceLaw
+    struct LPSForceLaw : StretchPairLaw<dim>
     {
       static constexpr unsigned int n_outputs    = dim + (with_energy ? 1 : 0);
       static constexpr bool         breaks_bonds = false;
@@ -96,14 +79,6 @@ namespace perideal
         return {Vector(theta_over_m + a, stdx::element_aligned),
                 Vector(alpha + a, stdx::element_aligned),
                 Vector(theta + a, stdx::element_aligned)};
-      }
-
-      DeformedBond<dim>
-      strain(const typename BondBlocks<dim>::BondClass &bond,
-             const bond_simd::Vector                   *u_a,
-             const bond_simd::Vector                   *u_b) const
-      {
-        return deformed_bond<dim>(bond, u_a, u_b);
       }
 
       void
@@ -172,7 +147,8 @@ namespace perideal
         }
       if constexpr (with_energy)
         out[dim] = blocks.component(w_field, 0);
-      const LPSForceLaw<dim, with_energy> law{lane_weight.data(),
+      const LPSForceLaw<dim, with_energy> law{{},
+                                              lane_weight.data(),
                                               blocks.component(theta_over_m_field, 0),
                                               blocks.component(alpha_field, 0),
                                               blocks.component(theta_field, 0),
@@ -326,7 +302,7 @@ namespace perideal
     for_each_bond_block<dim>(k.blocks,
                              u_k,
                              {{k.blocks.component(k.theta_field, 0)}},
-                             LPSDilatationLaw<dim>{k.lane_weight.data()},
+                             LPSDilatationLaw<dim>{{}, k.lane_weight.data()},
                              bonds,
                              critical_stretch);
     double *theta_owned = theta.begin();

@@ -149,6 +149,36 @@ namespace perideal
     y.stretch           = ratio2 * y.rho - 1.;
     return y;
   }
+
+  /**
+   * @brief What the pair laws of the displacement field's bond stretch share: the deformed bond
+   * (deformed_bond()) as their strain, and by default nothing read per group on the particle
+   * side. A law derives from it and adds its outputs and pair(); one that reads per-particle
+   * data declares its own Side and side().
+   */
+  template <int dim>
+  struct StretchPairLaw
+  {
+    /// Nothing read per group on the particle side.
+    struct Side
+    {};
+
+    /// Nothing to read for the group of particle @p a.
+    Side
+    side(const unsigned int) const
+    {
+      return {};
+    }
+
+    /// The deformed bond of the lanes (relative position, rho, stretch).
+    DeformedBond<dim>
+    strain(const typename BondBlocks<dim>::BondClass &bond,
+           const bond_simd::Vector                   *u_a,
+           const bond_simd::Vector                   *u_b) const
+    {
+      return deformed_bond<dim>(bond, u_a, u_b);
+    }
+  };
 } // namespace perideal
 
 #endif
