@@ -75,7 +75,7 @@ namespace
                                                     "      set Function = 1e7\n" :
                                                     "      set Type = value\n"
                                                     "      set Function = 1e-3\n";
-    const std::string text = fem_tests::static_problem(2, "plane stress", "0", "1e-12") +
+    const std::string text          = fem_tests::static_problem(2, "plane stress", "0", "1e-12") +
                              "subsection Discretization\n"
                              "  set Thickness = 0.01\n"
                              "end\n"
