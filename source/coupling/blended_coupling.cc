@@ -55,15 +55,16 @@ namespace perideal
     const auto        &volume    = particles.volumes();
     const auto        &weights   = particles.energy_weights();
     const unsigned int n_owned   = particles.n_owned();
+    const unsigned int nc        = regions.fe->field_layout().n_components();
     particle_mass.assign(n_owned, 0.);
     ParticleVector slaved_mass;
-    particles.reinit_vector(slaved_mass, dim);
+    particles.reinit_vector(slaved_mass, nc);
     for (unsigned int i = 0; i < n_owned; ++i)
       {
         particle_mass[i] = weights[i] * regions.density * volume[i];
         if (regions.transfer->is_slaved(i))
-          for (unsigned int d = 0; d < dim; ++d)
-            slaved_mass.local_element(i * dim + d) = particle_mass[i];
+          for (unsigned int c = 0; c < nc; ++c)
+            slaved_mass.local_element(i * nc + c) = particle_mass[i];
       }
     fe_mass = regions.fe->lumped_mass();
     regions.transfer->add_transpose(slaved_mass, fe_mass);
@@ -95,9 +96,10 @@ namespace perideal
     // forces; its fictitious density is the Gershgorin bound of the linearized K.
     for (ParticleVector *vec : {&z, &z_prescribed, &z_force})
       static_solver->reinit_unknowns(*vec);
-    regions.particles->reinit_vector(nodal_force, dim);
-    regions.particles->reinit_vector(pd_work, dim);
-    regions.particles->reinit_vector(particle_state, dim);
+    const unsigned int nc = regions.fe->field_layout().n_components();
+    regions.particles->reinit_vector(nodal_force, nc);
+    regions.particles->reinit_vector(pd_work, nc);
+    regions.particles->reinit_vector(particle_state, nc);
     regions.fe->initialize_vector(fe_work);
     regions.fe->initialize_vector(fe_state);
     const auto clear_prescribed = [this](ParticleVector &v) {
@@ -155,10 +157,10 @@ namespace perideal
       return static_solver->solve(*regions.material, f_fe, f_pd, U, u, conditions);
 
     // ||F_ext|| over the free unknowns: the FE loads and the particle loads [N].
-    const auto &volume = regions.particles->volumes();
-    for (unsigned int i = 0; i < regions.particles->n_owned(); ++i)
-      for (unsigned int d = 0; d < dim; ++d)
-        nodal_force.local_element(i * dim + d) = f_pd.local_element(i * dim + d) * volume[i];
+    const auto        &volume = regions.particles->volumes();
+    const unsigned int nc     = regions.fe->field_layout().n_components();
+    for (std::size_t k = 0; k < nodal_force.locally_owned_size(); ++k)
+      nodal_force.local_element(k) = f_pd.local_element(k) * volume[k / nc];
     static_solver->to_unknowns(f_fe, nodal_force, z_force);
     relaxation_operations.clear_prescribed(z_force);
     static_solver->to_unknowns(U, u, z);
@@ -204,15 +206,13 @@ namespace perideal
                                      std::numeric_limits<double>::infinity());
     const auto        &volume  = particles.volumes();
     const unsigned int n_owned = particles.n_owned();
+    const unsigned int nc      = regions.fe->field_layout().n_components();
     double             energy  = 0.;
     for (unsigned int i = 0; i < n_owned; ++i)
       {
-        for (unsigned int d = 0; d < dim; ++d)
-          {
-            const unsigned int k = i * dim + d;
-            nodal_force.local_element(k) =
-              (pd_force.local_element(k) + f_pd.local_element(k)) * volume[i];
-          }
+        for (unsigned int k = i * nc; k < (i + 1) * nc; ++k)
+          nodal_force.local_element(k) =
+            (pd_force.local_element(k) + f_pd.local_element(k)) * volume[i];
         if (with_energy)
           energy += energy_density[i] * volume[i];
       }

@@ -84,14 +84,17 @@ namespace perideal
     fe_owned = fe_region.get_dof_handler().locally_owned_dofs();
     AssertThrow(fe_owned.is_contiguous(),
                 ExcInternalError("The owned FE dofs are not contiguous."));
-    particle_rows              = particle_system.partitioner(dim)->locally_owned_range();
+    // The FE region and the particles share one field layout (CoupledProblem checks it).
+    n_components               = fe_region.field_layout().n_components();
+    const unsigned int nc      = n_components;
+    particle_rows              = particle_system.partitioner(nc)->locally_owned_range();
     const unsigned int n_owned = particle_system.n_owned();
 
     // z: the owned FE dofs, then the owned free particles' components.
     const types::global_dof_index n_fe_owned = fe_owned.n_elements();
     types::global_dof_index       n_free     = 0;
     for (unsigned int i = 0; i < n_owned; ++i)
-      n_free += transfer_operator.is_slaved(i) ? 0 : dim;
+      n_free += transfer_operator.is_slaved(i) ? 0 : nc;
     const types::global_dof_index n_local = n_fe_owned + n_free;
     unsigned long long            local = n_local, first = 0;
     MPI_Exscan(&local, &first, 1, MPI_UNSIGNED_LONG_LONG, MPI_SUM, comm);
@@ -107,7 +110,7 @@ namespace perideal
     rank_fe_count = Utilities::MPI::all_gather(comm, n_fe_owned);
     rank_z_first  = Utilities::MPI::all_gather(comm, z_first);
 
-    particle_z.assign(std::size_t(n_owned) * dim, numbers::invalid_dof_index);
+    particle_z.assign(std::size_t(n_owned) * nc, numbers::invalid_dof_index);
     prescribed.assign(n_local, false);
     const auto &fe_mask = fe_region.prescribed_mask();
     for (types::global_dof_index k = 0; k < n_fe_owned; ++k)
@@ -115,10 +118,10 @@ namespace perideal
     types::global_dof_index next = n_fe_owned;
     for (unsigned int i = 0; i < n_owned; ++i)
       if (!transfer_operator.is_slaved(i))
-        for (unsigned int d = 0; d < dim; ++d, ++next)
+        for (unsigned int c = 0; c < nc; ++c, ++next)
           {
-            particle_z[i * dim + d] = z_first + next;
-            prescribed[next]        = particle_prescribed.local_element(i * dim + d) != 0.;
+            particle_z[i * nc + c] = z_first + next;
+            prescribed[next]       = particle_prescribed.local_element(i * nc + c) != 0.;
           }
 
     // T: rows of P for slaved particles, the identity for free ones.
@@ -298,7 +301,7 @@ namespace perideal
       SolverVector load;
       gather_particles(f_pd, load);
       for (std::size_t k = 0; k < load.locally_owned_size(); ++k)
-        load.begin()[k] *= volume[k / dim];
+        load.begin()[k] *= volume[k / n_components];
       T.Tvmult(F, load);
       for (std::size_t k = 0; k < n_fe_owned; ++k)
         F.begin()[k] += f_fe.local_element(k);
@@ -328,7 +331,8 @@ namespace perideal
       z,
       settings,
       [&]() {
-        // Near-null space: the translations (component of each FE dof and particle unknown).
+        // Near-null space: the constant field of each component (of each FE dof and particle
+        // unknown; the FE region's component masks follow the same layout).
         const auto                                        fe_modes = fe->component_masks();
         TrilinosWrappers::PreconditionAMG::AdditionalData data;
         data.elliptic = true;
@@ -338,7 +342,7 @@ namespace perideal
             data.constant_modes[d][k] = fe_modes[d][k];
         for (std::size_t k = 0; k < particle_z.size(); ++k)
           if (particle_z[k] != numbers::invalid_dof_index)
-            data.constant_modes[k % dim][particle_z[k] - z_first] = true;
+            data.constant_modes[k % n_components][particle_z[k] - z_first] = true;
         data.higher_order_elements = fe->get_fe_collection()[0].degree > 1;
         data.smoother_sweeps       = 2;
         data.aggregation_threshold = 0.02;
@@ -378,10 +382,10 @@ namespace perideal
     stress.scale(weights);
     G.Tvmult(force, stress);
     ParticleVector nodal_force;
-    particles->reinit_vector(nodal_force, dim);
+    particles->reinit_vector(nodal_force, n_components);
     for (std::size_t k = 0; k < particle_rows.n_elements(); ++k)
       {
-        const double V            = volume[k / dim];
+        const double V            = volume[k / n_components];
         pd_force.local_element(k) = -force.begin()[k] / V;
         // The particles' unbalanced force, internal plus applied, for P^T.
         nodal_force.local_element(k) = -force.begin()[k] + f_pd.local_element(k) * V;

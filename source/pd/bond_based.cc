@@ -173,7 +173,11 @@ namespace perideal
           bonds.intact = intact;
           ++bonds.revision;
         };
-        apply_energy_surface_correction<dim>(particles, elasticity_tensor(), energy);
+        const auto              C = elasticity_tensor();
+        std::array<double, dim> modulus;
+        for (unsigned int a = 0; a < dim; ++a)
+          modulus[a] = C[a][a][a][a];
+        apply_energy_surface_correction<dim>(particles, this->field_layout(), modulus, energy);
       }
     set_bond_coefficients(particles, true);
   }
@@ -183,14 +187,7 @@ namespace perideal
   BondBased<dim>::set_bond_coefficients(const ParticleSystem<dim> &particles,
                                         const bool                 with_surface_factor)
   {
-    const BondList &bonds  = particles.bonds();
-    const auto     &volume = particles.volumes();
-    bond_coefficient.resize(bonds.size());
-    for (unsigned int i = 0; i < particles.n_owned(); ++i)
-      for (unsigned int b = bonds.row_start[i]; b < bonds.row_start[i + 1]; ++b)
-        bond_coefficient[b] =
-          c * (with_surface_factor ? bonds.surface_factor[b] * bonds.energy_weight[b] : 1.) *
-          bonds.volume_factor[b] * volume[i] * volume[bonds.neighbor[b]];
+    bond_pair_coefficients(particles, c, with_surface_factor, bond_coefficient);
     kernel->blocks.to_lanes(bond_coefficient, kernel->lane_coefficient);
   }
 

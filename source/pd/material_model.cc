@@ -83,6 +83,17 @@ namespace perideal
   }
 
   template <int dim>
+  dealii::SymmetricTensor<4, dim>
+  MaterialModel<dim>::elasticity_tensor() const
+  {
+    AssertThrow(false,
+                dealii::ExcMessage("This material model has no elasticity tensor: its unknowns "
+                                   "are " +
+                                   field_layout().description() + ", not a displacement."));
+    return {};
+  }
+
+  template <int dim>
   void
   MaterialModel<dim>::linearize(const ParticleSystem<dim> &, LinearizedModel &) const
   {
@@ -91,6 +102,60 @@ namespace perideal
                                    "solver (<Solver/Type> = static) cannot use it. Choose "
                                    "<Solver/Type> = adaptive dynamic relaxation or explicit."));
   }
+
+  template <int dim>
+  void
+  bond_pair_coefficients(const ParticleSystem<dim> &particles,
+                         const double               micromodulus,
+                         const bool                 with_surface_factor,
+                         std::vector<double>       &coefficient)
+  {
+    const BondList &bonds  = particles.bonds();
+    const auto     &volume = particles.volumes();
+    coefficient.resize(bonds.size());
+    for (unsigned int i = 0; i < particles.n_owned(); ++i)
+      for (unsigned int b = bonds.row_start[i]; b < bonds.row_start[i + 1]; ++b)
+        coefficient[b] =
+          micromodulus *
+          (with_surface_factor ? bonds.surface_factor[b] * bonds.energy_weight[b] : 1.) *
+          bonds.volume_factor[b] * volume[i] * volume[bonds.neighbor[b]];
+  }
+
+  template <int dim>
+  void
+  bond_pair_stiffness_bound(const ParticleSystem<dim> &particles,
+                            const std::vector<double> &coefficient,
+                            std::vector<double>       &per_particle)
+  {
+    const BondList    &bonds   = particles.bonds();
+    const auto        &volume  = particles.volumes();
+    const unsigned int n_owned = particles.n_owned();
+    per_particle.assign(n_owned, 0.);
+    for (unsigned int i = 0; i < n_owned; ++i)
+      for (unsigned int b = bonds.row_start[i]; b < bonds.row_start[i + 1]; ++b)
+        {
+          if (!bonds.intact[b])
+            continue;
+          const unsigned int j = bonds.neighbor[b];
+          const double       k = 2. * coefficient[b] / bonds.length[b];
+          per_particle[i] += k / volume[i];
+          if (j < n_owned)
+            per_particle[j] += k / volume[j];
+        }
+  }
+
+  template void
+  bond_pair_coefficients<2>(const ParticleSystem<2> &, double, bool, std::vector<double> &);
+  template void
+  bond_pair_coefficients<3>(const ParticleSystem<3> &, double, bool, std::vector<double> &);
+  template void
+  bond_pair_stiffness_bound<2>(const ParticleSystem<2> &,
+                               const std::vector<double> &,
+                               std::vector<double> &);
+  template void
+  bond_pair_stiffness_bound<3>(const ParticleSystem<3> &,
+                               const std::vector<double> &,
+                               std::vector<double> &);
 
   template class MaterialModel<2>;
   template class MaterialModel<3>;

@@ -2,6 +2,7 @@
 // PeriDeal: stiffness bounds and linearizations of the material models (for the quasi-static
 // solvers). Kept apart from the force kernels in bond_based.cc and linear_peridynamic_solid.cc.
 // ---------------------------------------------------------------------
+#include <perideal/pd/antiplane_bond_based.h>
 #include <perideal/pd/bond_based.h>
 #include <perideal/pd/linear_peridynamic_solid.h>
 
@@ -38,15 +39,16 @@ namespace perideal
     }
 
     /**
-     * @brief The bond rows of a displacement model: for every bond b with stiffness
-     * @p k[b] != 0 (N/m, per BondList entry), the row n_b . (u_j - u_i) of weight k_b times
-     * the bond's share; the stiffness scale of an owned particle is the sum of k_b over its
-     * bonds.
+     * @brief The bond rows of a bond-based model: for every bond b with stiffness
+     * @p k[b] != 0 (N/m, per BondList entry), the row that @p add_row(i, b, row) appends (the
+     * bond's linearized extension) with weight k_b times the bond's share; the stiffness scale
+     * of an owned particle is the sum of k_b over its bonds.
      */
-    template <int dim>
+    template <int dim, typename RowFunction>
     void
     add_bond_rows(const ParticleSystem<dim> &particles,
                   const std::vector<double> &k,
+                  const RowFunction         &add_row,
                   LinearizedModel           &linearized)
     {
       const BondList                     &bonds   = particles.bonds();
@@ -63,10 +65,25 @@ namespace perideal
             if (k[b] != 0.)
               {
                 row.clear();
-                add_extension(particles, i, b, 1., row);
+                add_row(i, b, row);
                 linearized.add_row(k[b] * particles.bond_share(b), row);
               }
           }
+    }
+
+    /**
+     * @brief The row n_b . (u_j - u_i) of bond b stored in the row of particle i: the
+     * linearized extension of a displacement model.
+     */
+    template <int dim>
+    auto
+    extension_row(const ParticleSystem<dim> &particles)
+    {
+      return [&particles](const unsigned int                   i,
+                          const std::size_t                    b,
+                          std::vector<LinearizedModel::Entry> &row) {
+        add_extension(particles, i, b, 1., row);
+      };
     }
   } // namespace
 
@@ -78,21 +95,7 @@ namespace perideal
   BondBased<dim>::stiffness_bound(const ParticleSystem<dim> &particles,
                                   std::vector<double>       &per_particle) const
   {
-    const BondList    &bonds   = particles.bonds();
-    const auto        &volume  = particles.volumes();
-    const unsigned int n_owned = particles.n_owned();
-    per_particle.assign(n_owned, 0.);
-    for (unsigned int i = 0; i < n_owned; ++i)
-      for (unsigned int b = bonds.row_start[i]; b < bonds.row_start[i + 1]; ++b)
-        {
-          if (!bonds.intact[b])
-            continue;
-          const unsigned int j = bonds.neighbor[b];
-          const double       k = 2. * bond_coefficient[b] / bonds.length[b];
-          per_particle[i] += k / volume[i];
-          if (j < n_owned)
-            per_particle[j] += k / volume[j];
-        }
+    bond_pair_stiffness_bound(particles, bond_coefficient, per_particle);
   }
 
   // PMB linearized: f_i V_i = sum_j (c G beta / |xi|) V_i V_j n n^T (u_j - u_i), i.e. one row
@@ -107,7 +110,42 @@ namespace perideal
       if (bonds.intact[b])
         k[b] = bond_coefficient[b] / bonds.length[b];
     linearized.reinit(this->field_layout().n_components(), particles.n_owned());
-    add_bond_rows(particles, k, linearized);
+    add_bond_rows(particles, k, extension_row<dim>(particles), linearized);
+  }
+
+  // Antiplane: the bond b couples w_i and w_j through k_b = c G beta V_j / |xi| as PMB's
+  // n n^T block does the displacements, hence the same bound.
+  template <int dim>
+  void
+  AntiplaneBondBased<dim>::stiffness_bound(const ParticleSystem<dim> &particles,
+                                           std::vector<double>       &per_particle) const
+  {
+    bond_pair_stiffness_bound(particles, bond_coefficient, per_particle);
+  }
+
+  // Antiplane linearized (the model is linear): f_i V_i = sum_j (c G beta / |xi|) V_i V_j
+  // (w_j - w_i), i.e. one row w_j - w_i per intact bond with weight c G beta V_i V_j / |xi|.
+  template <int dim>
+  void
+  AntiplaneBondBased<dim>::linearize(const ParticleSystem<dim> &particles,
+                                     LinearizedModel           &linearized) const
+  {
+    const BondList     &bonds = particles.bonds();
+    std::vector<double> k(bonds.size(), 0.);
+    for (std::size_t b = 0; b < bonds.size(); ++b)
+      if (bonds.intact[b])
+        k[b] = bond_coefficient[b] / bonds.length[b];
+    linearized.reinit(this->field_layout().n_components(), particles.n_owned());
+    add_bond_rows(
+      particles,
+      k,
+      [&bonds](const unsigned int                   i,
+               const std::size_t                    b,
+               std::vector<LinearizedModel::Entry> &row) {
+        row.push_back({i, 0, -1.});
+        row.push_back({bonds.neighbor[b], 0, 1.});
+      },
+      linearized);
   }
 
   // LPS: the Gershgorin estimate behind stable_time_step() (direct deviatoric stiffness plus the
@@ -192,7 +230,7 @@ namespace perideal
           }
       }
     linearized.reinit(this->field_layout().n_components(), n_owned);
-    add_bond_rows(particles, k, linearized);
+    add_bond_rows(particles, k, extension_row<dim>(particles), linearized);
     for (unsigned int i = 0; i < n_owned; ++i)
       linearized.add_row(beta[i] * volume[i] * (n * bulk_modulus - (n + 2.) * shear_modulus) / n,
                          theta[i]);
@@ -206,6 +244,14 @@ namespace perideal
   BondBased<2>::linearize(const ParticleSystem<2> &, LinearizedModel &) const;
   template void
   BondBased<3>::linearize(const ParticleSystem<3> &, LinearizedModel &) const;
+  template void
+  AntiplaneBondBased<2>::stiffness_bound(const ParticleSystem<2> &, std::vector<double> &) const;
+  template void
+  AntiplaneBondBased<3>::stiffness_bound(const ParticleSystem<3> &, std::vector<double> &) const;
+  template void
+  AntiplaneBondBased<2>::linearize(const ParticleSystem<2> &, LinearizedModel &) const;
+  template void
+  AntiplaneBondBased<3>::linearize(const ParticleSystem<3> &, LinearizedModel &) const;
   template void
   LinearPeridynamicSolid<2>::stiffness_bound(const ParticleSystem<2> &,
                                              std::vector<double> &) const;

@@ -1,6 +1,8 @@
 // ---------------------------------------------------------------------
 // PeriDeal: the energy method of surface correction for bond-based models.
 // ---------------------------------------------------------------------
+#include <deal.II/base/exceptions.h>
+
 #include <perideal/pd/surface_correction.h>
 
 #include <cmath>
@@ -11,26 +13,43 @@ namespace perideal
   void
   apply_energy_surface_correction(
     ParticleSystem<dim>                                                      &particles,
-    const dealii::SymmetricTensor<4, dim>                                    &elasticity,
+    const FieldLayout                                                        &layout,
+    const std::array<double, dim>                                            &modulus,
     const std::function<void(const ParticleVector &, std::vector<double> &)> &energy_density)
   {
+    // The component that carries the test field of direction a.
+    const unsigned int nc     = layout.n_components();
+    const bool         scalar = layout.n_components(ComponentKind::scalar) == 1;
+    AssertThrow(scalar || layout.n_components(ComponentKind::translation) == dim,
+                dealii::ExcMessage("The energy method of surface correction takes a scalar "
+                                   "field or dim translations, not " +
+                                   layout.description() + "."));
+    const auto component = [&](const unsigned int a) {
+      for (unsigned int c = 0; c < nc; ++c)
+        if (scalar ? layout.kind(c) == ComponentKind::scalar :
+                     (layout.kind(c) == ComponentKind::translation && layout[c].axis == a))
+          return c;
+      return nc;
+    };
+
     // Small enough that the geometric nonlinearity of the stretch is below 1e-6 relative.
     const double test_strain = 1e-6;
     BondList    &bonds       = particles.bonds();
     std::fill(bonds.surface_factor.begin(), bonds.surface_factor.end(), 1.);
 
     ParticleVector u, factors;
-    particles.reinit_vector(u, dim);
+    particles.reinit_vector(u, nc);
     particles.reinit_vector(factors, dim);
     std::vector<double> energy(particles.n_owned());
     const auto         &x = particles.positions();
     for (unsigned int a = 0; a < dim; ++a)
       {
-        u = 0.;
+        u                    = 0.;
+        const unsigned int c = component(a);
         for (unsigned int i = 0; i < particles.n_local(); ++i)
-          u.local_element(i * dim + a) = test_strain * x[i][a];
+          u.local_element(i * nc + c) = test_strain * x[i][a];
         energy_density(u, energy);
-        const double classical = 0.5 * elasticity[a][a][a][a] * test_strain * test_strain;
+        const double classical = 0.5 * modulus[a] * test_strain * test_strain;
         for (unsigned int i = 0; i < particles.n_owned(); ++i)
           factors.local_element(i * dim + a) = classical / energy[i];
       }
@@ -56,11 +75,13 @@ namespace perideal
   template void
   apply_energy_surface_correction<2>(
     ParticleSystem<2> &,
-    const dealii::SymmetricTensor<4, 2> &,
+    const FieldLayout &,
+    const std::array<double, 2> &,
     const std::function<void(const ParticleVector &, std::vector<double> &)> &);
   template void
   apply_energy_surface_correction<3>(
     ParticleSystem<3> &,
-    const dealii::SymmetricTensor<4, 3> &,
+    const FieldLayout &,
+    const std::array<double, 3> &,
     const std::function<void(const ParticleVector &, std::vector<double> &)> &);
 } // namespace perideal

@@ -165,6 +165,8 @@ namespace perideal
     const FERegion<dim>            *fe        = nullptr;
     const ParticleSystem<dim>      *particles = nullptr;
     const TransferOperator<dim>    *transfer  = nullptr;
+    /// Unknowns per point (the field layout of both regions).
+    unsigned int                    n_components = 0;
     dealii::IndexSet                z_owned, fe_owned, particle_rows;
     dealii::types::global_dof_index z_first = 0;
     /// First FE dof, number of FE dofs and first z index of every rank (FE dofs are contiguous).

@@ -206,9 +206,11 @@ namespace perideal
 
     /**
      * @brief The classical elasticity tensor the model reproduces for homogeneous deformation.
+     * Models of the displacement field override it; the default throws (a scalar or micropolar
+     * model states its classical constants by its own accessors).
      */
     virtual dealii::SymmetricTensor<4, dim>
-    elasticity_tensor() const = 0;
+    elasticity_tensor() const;
 
     /**
      * @brief The critical stretch that dissipates @p fracture_energy [J/m^2] per unit crack area.
@@ -222,6 +224,31 @@ namespace perideal
     virtual std::string
     summary() const = 0;
   };
+
+  /**
+   * @brief The pair coefficients k_b = c G beta V_i V_j of the bonds of a bond-based model with
+   * micromodulus @p micromodulus (PMB, antiplane): with the surface-correction factors G and
+   * the coupling's energy weights (BondList::surface_factor, BondList::energy_weight) if
+   * @p with_surface_factor, without them (G = 1) otherwise; beta the partial-volume factor.
+   * @p coefficient is sized like the bond list (the entries of owned rows are set).
+   */
+  template <int dim>
+  void
+  bond_pair_coefficients(const ParticleSystem<dim> &particles,
+                         const double               micromodulus,
+                         const bool                 with_surface_factor,
+                         std::vector<double>       &coefficient);
+
+  /**
+   * @brief The Gershgorin bound (MaterialModel::stiffness_bound()) of a bond-based model whose
+   * bond b adds k_b / |xi| to the stiffness of both ends, k_b = @p coefficient[b] the pair
+   * coefficient of bond_pair_coefficients(): 2 sum_b k_b / (|xi| V_i) over intact bonds.
+   */
+  template <int dim>
+  void
+  bond_pair_stiffness_bound(const ParticleSystem<dim> &particles,
+                            const std::vector<double> &coefficient,
+                            std::vector<double>       &per_particle);
 
   /**
    * @brief Register a material model for dim = 2 and 3.

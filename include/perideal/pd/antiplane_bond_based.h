@@ -1,0 +1,125 @@
+// ---------------------------------------------------------------------
+// PeriDeal: the bond-based peridynamic model of antiplane shear (one scalar per particle).
+// ---------------------------------------------------------------------
+#ifndef perideal_pd_antiplane_bond_based_h
+#define perideal_pd_antiplane_bond_based_h
+
+#include <perideal/pd/material_model.h>
+
+#include <memory>
+
+namespace perideal
+{
+  /**
+   * @brief Bond-based peridynamics of antiplane shear (Oterkus & Madenci 2015, seed 000,
+   * sec. 4; seed note 000, sec. 1.3): one unknown per particle, the out-of-plane displacement
+   * w (field layout: the scalar "w").
+   *
+   * Bond slope r = (w_j - w_i)/|xi|; pair force c G r on i (its negative on j), with G the
+   * surface-correction factor; the force density on i is sum_j c G r beta V_j (beta the
+   * partial-volume factor), W_i = 1/4 sum_j c G r^2 |xi| beta V_j. The micromodulus follows
+   * from the shear modulus mu by energy matching with W = mu |grad w|^2 / 2 (seed eq. 40):
+   *  - 2D (the cross-section of a prismatic body of thickness h): c = 6 mu / (pi h delta^3);
+   *  - 3D (the same Laplace-type energy of a scalar field in a volume, doc/theory/models.md):
+   *    c = 6 mu / (pi delta^4).
+   * The planar assumption does not enter (antiplane shear has the one constant mu). A bond
+   * breaks, irreversibly, when |r| exceeds the critical slope of the fracture energy G_IIIc,
+   * r_c = sqrt(2 pi G / (3 mu delta)) in 2D and sqrt(5 G / (3 mu delta)) in 3D
+   * (doc/theory/models.md). Surface correction by the energy method with the test fields
+   * w = s x and w = s y (and z); see apply_energy_surface_correction().
+   */
+  template <int dim>
+  class AntiplaneBondBased : public MaterialModel<dim>
+  {
+  public:
+    /**
+     * @brief A model without parameters; parse_parameters() and initialize() set it up.
+     */
+    AntiplaneBondBased();
+
+    /**
+     * @brief Destructor (the kernel's data are defined in antiplane_bond_based.cc).
+     */
+    ~AntiplaneBondBased() override;
+
+    /**
+     * @brief Declare "Shear modulus".
+     */
+    static void
+    declare_parameters(dealii::ParameterHandler &prm);
+
+    void
+    parse_parameters(dealii::ParameterHandler &prm) override;
+
+    /**
+     * @brief The scalar "w".
+     */
+    FieldLayout
+    field_layout() const override;
+
+    void
+    initialize(ParticleSystem<dim> &particles, const ModelContext &context) override;
+
+    void
+    compute_forces(ParticleSystem<dim>  &particles,
+                   const ParticleVector &w,
+                   ParticleVector       &force,
+                   std::vector<double>  *energy_density,
+                   const double          critical_slope) override;
+
+    /**
+     * @brief Gershgorin bound (bond_pair_stiffness_bound()); defined in
+     * source/pd/model_linearization.cc.
+     */
+    void
+    stiffness_bound(const ParticleSystem<dim> &particles,
+                    std::vector<double>       &per_particle) const override;
+
+    /**
+     * @brief One row (w_j - w_i) per intact bond with weight c G beta V_i V_j / |xi|; defined
+     * in source/pd/model_linearization.cc.
+     */
+    void
+    linearize(const ParticleSystem<dim> &particles, LinearizedModel &linearized) const override;
+
+    /**
+     * @brief The critical slope r_c of the fracture energy @p fracture_energy (G_IIIc).
+     */
+    double
+    critical_stretch(const double fracture_energy) const override;
+
+    std::string
+    summary() const override;
+
+    /**
+     * @brief The shear modulus mu [Pa].
+     */
+    double
+    shear_modulus() const;
+
+    /**
+     * @brief The micromodulus c [N/m^6].
+     */
+    double
+    micromodulus() const;
+
+  private:
+    double       mu = 0.;
+    ModelContext context;
+    double       c = 0.;
+    /// c G beta V_i V_j per bond (the pair force per unit slope).
+    std::vector<double> bond_coefficient;
+    /// The force kernel's data (bonds in SIMD blocks, kernel-order fields): defined in
+    /// antiplane_bond_based.cc, compiled with the kernel options (source/pd/CMakeLists.txt).
+    struct Kernel;
+    std::unique_ptr<Kernel> kernel;
+
+    /**
+     * @brief Set bond_coefficient (bond_pair_coefficients()) and the kernel's lanes.
+     */
+    void
+    set_bond_coefficients(const ParticleSystem<dim> &particles, const bool with_surface_factor);
+  };
+} // namespace perideal
+
+#endif
