@@ -132,7 +132,7 @@ namespace perideal
     static_solver->row_bounds(bound);
     ParticleVector density;
     static_solver->reinit_unknowns(density);
-    AdaptiveDynamicRelaxation::fictitious_density(bound, 1, settings.relaxation_safety, density);
+    AdaptiveDynamicRelaxation::fictitious_density(bound, settings.relaxation_safety, density);
     relaxation = std::make_unique<AdaptiveDynamicRelaxation>(relaxation_operations,
                                                              density,
                                                              settings.relaxation,

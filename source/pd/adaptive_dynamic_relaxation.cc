@@ -27,14 +27,12 @@ namespace perideal
 
   void
   AdaptiveDynamicRelaxation::fictitious_density(const std::vector<double> &bound,
-                                                const unsigned int         n_components,
                                                 const double               safety,
                                                 ParticleVector            &density)
   {
-    for (std::size_t i = 0; i < bound.size(); ++i)
-      for (unsigned int c = 0; c < n_components; ++c)
-        // An isolated particle (no bond) still gets a positive density.
-        density.local_element(i * n_components + c) = bound[i] > 0. ? 0.25 * safety * bound[i] : 1.;
+    for (std::size_t k = 0; k < bound.size(); ++k)
+      // An isolated particle (no bond) still gets a positive density.
+      density.local_element(k) = bound[k] > 0. ? 0.25 * safety * bound[k] : 1.;
   }
 
   AdaptiveDynamicRelaxation::Result

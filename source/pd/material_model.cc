@@ -75,11 +75,25 @@ namespace perideal
   {
     std::vector<double> bound;
     stiffness_bound(particles, bound);
-    double dt = std::numeric_limits<double>::max();
-    for (const double k : bound)
-      if (k > 0.)
-        dt = std::min(dt, std::sqrt(4. * density / k));
+    const std::vector<double> inertia = inertia_densities(density);
+    const std::size_t         nc      = inertia.size();
+    double                    dt      = std::numeric_limits<double>::max();
+    for (std::size_t k = 0; k < bound.size(); ++k)
+      if (bound[k] > 0.)
+        dt = std::min(dt, std::sqrt(4. * inertia[k % nc] / bound[k]));
     return dealii::Utilities::MPI::min(dt, particles.get_communicator());
+  }
+
+  template <int dim>
+  std::vector<double>
+  MaterialModel<dim>::inertia_densities(const double density) const
+  {
+    const FieldLayout layout = field_layout();
+    AssertThrow(layout.n_components(ComponentKind::rotation) == 0,
+                dealii::ExcMessage("The material model has rotations (" + layout.description() +
+                                   ") but states no rotational inertia: it must override "
+                                   "MaterialModel::inertia_densities()."));
+    return std::vector<double>(layout.n_components(), density);
   }
 
   template <int dim>
@@ -125,12 +139,13 @@ namespace perideal
   void
   bond_pair_stiffness_bound(const ParticleSystem<dim> &particles,
                             const std::vector<double> &coefficient,
+                            const unsigned int         n_components,
                             std::vector<double>       &per_particle)
   {
-    const BondList    &bonds   = particles.bonds();
-    const auto        &volume  = particles.volumes();
-    const unsigned int n_owned = particles.n_owned();
-    per_particle.assign(n_owned, 0.);
+    const BondList     &bonds   = particles.bonds();
+    const auto         &volume  = particles.volumes();
+    const unsigned int  n_owned = particles.n_owned();
+    std::vector<double> bound(n_owned, 0.);
     for (unsigned int i = 0; i < n_owned; ++i)
       for (unsigned int b = bonds.row_start[i]; b < bonds.row_start[i + 1]; ++b)
         {
@@ -138,10 +153,13 @@ namespace perideal
             continue;
           const unsigned int j = bonds.neighbor[b];
           const double       k = 2. * coefficient[b] / bonds.length[b];
-          per_particle[i] += k / volume[i];
+          bound[i] += k / volume[i];
           if (j < n_owned)
-            per_particle[j] += k / volume[j];
+            bound[j] += k / volume[j];
         }
+    per_particle.resize(std::size_t(n_owned) * n_components);
+    for (std::size_t k = 0; k < per_particle.size(); ++k)
+      per_particle[k] = bound[k / n_components];
   }
 
   template void
@@ -151,10 +169,12 @@ namespace perideal
   template void
   bond_pair_stiffness_bound<2>(const ParticleSystem<2> &,
                                const std::vector<double> &,
+                               unsigned int,
                                std::vector<double> &);
   template void
   bond_pair_stiffness_bound<3>(const ParticleSystem<3> &,
                                const std::vector<double> &,
+                               unsigned int,
                                std::vector<double> &);
 
   template class MaterialModel<2>;

@@ -95,7 +95,7 @@ namespace perideal
   BondBased<dim>::stiffness_bound(const ParticleSystem<dim> &particles,
                                   std::vector<double>       &per_particle) const
   {
-    bond_pair_stiffness_bound(particles, bond_coefficient, per_particle);
+    bond_pair_stiffness_bound(particles, bond_coefficient, dim, per_particle);
   }
 
   // PMB linearized: f_i V_i = sum_j (c G beta / |xi|) V_i V_j n n^T (u_j - u_i), i.e. one row
@@ -120,7 +120,7 @@ namespace perideal
   AntiplaneBondBased<dim>::stiffness_bound(const ParticleSystem<dim> &particles,
                                            std::vector<double>       &per_particle) const
   {
-    bond_pair_stiffness_bound(particles, bond_coefficient, per_particle);
+    bond_pair_stiffness_bound(particles, bond_coefficient, 1, per_particle);
   }
 
   // Antiplane linearized (the model is linear): f_i V_i = sum_j (c G beta / |xi|) V_i V_j
@@ -181,12 +181,13 @@ namespace perideal
               moment[j] += r / volume[j];
             }
         }
-    per_particle.assign(n_owned, 0.);
+    per_particle.assign(std::size_t(n_owned) * dim, 0.);
     for (unsigned int i = 0; i < n_owned; ++i)
       {
         const double m_i = weighted_volume.local_element(i);
-        per_particle[i] =
-          2. * (direct[i] + 2. * n * kappa * beta[i] * moment[i] * moment[i] / (m_i * m_i));
+        for (unsigned int d = 0; d < dim; ++d)
+          per_particle[i * dim + d] =
+            2. * (direct[i] + 2. * n * kappa * beta[i] * moment[i] * moment[i] / (m_i * m_i));
       }
   }
 

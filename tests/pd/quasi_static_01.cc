@@ -91,7 +91,7 @@ check(perideal::MaterialModel<dim> &model, const unsigned int n, const std::stri
   model.stiffness_bound(ps, bound);
   perideal::ParticleVector density;
   ps.reinit_vector(density, dim);
-  perideal::AdaptiveDynamicRelaxation::fictitious_density(bound, dim, 1., density);
+  perideal::AdaptiveDynamicRelaxation::fictitious_density(bound, 1., density);
   perideal::AdaptiveDynamicRelaxation::Settings adr_settings;
   adr_settings.tolerance      = 1e-10;
   adr_settings.max_iterations = 100000;

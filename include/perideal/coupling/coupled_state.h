@@ -146,6 +146,11 @@ namespace perideal
     std::vector<double> internal_work_factor, applied_work_factor;
     /// The particles' masses of explicit runs (per owned particle; for free particles).
     std::vector<double> particle_mass;
+    /// Per component of the layout: its inertia over the mass (1 for translations and scalars;
+    /// for a rotation the model's rotational inertia density over the mass density [m^2],
+    /// MaterialModel::inertia_densities()); the inertia of component c of particle i is
+    /// particle_mass[i] * inertia_ratio[c].
+    std::vector<double> inertia_ratio;
     /// The lumped FE masses of explicit runs.
     FEVector mass;
     /// The stable explicit time step of the coupled system and the one taken [s] (explicit

@@ -19,8 +19,9 @@ namespace perideal
    * the damped fictitious dynamics Lambda u'' + c Lambda u' = F(u) with time step 1.
    *
    * - Fictitious diagonal density lambda_ii = 1/4 dt^2 sum_j |K_ij| (dt = 1), from the model's
-   *   Gershgorin bound (MaterialModel::stiffness_bound(), block rows: per particle, the same for
-   *   all its components), times a safety factor (1 by default; the bound is already rigorous).
+   *   Gershgorin bound (MaterialModel::stiffness_bound(), per particle component, or the row
+   *   sums of an assembled matrix), times a safety factor (1 by default; the bound is already
+   * rigorous).
    * - Damping from the local Rayleigh quotient c^n = 2 sqrt(u^T K^n u / u^T u), with the
    *   diagonal estimate K_ii^n = -(F_i^n - F_i^{n-1}) / (lambda_ii v_i^{n-1/2}) (entries with
    *   v = 0 skipped, in both sums: prescribed components do not move); c = 0 if the quotient is not
@@ -89,13 +90,12 @@ namespace perideal
     solve(ParticleVector &u, const double external_norm);
 
     /**
-     * @brief The fictitious density lambda_ii = safety / 4 * bound_i per component of each
-     * owned particle (@p bound from MaterialModel::stiffness_bound()), @p n_components values per
-     * particle, into @p density (already sized).
+     * @brief The fictitious density lambda_ii = safety / 4 * bound_i of each owned unknown i
+     * (@p bound from MaterialModel::stiffness_bound(), one value per particle component, or the
+     * absolute row sums of a matrix), into @p density (already sized).
      */
     static void
     fictitious_density(const std::vector<double> &bound,
-                       const unsigned int         n_components,
                        const double               safety,
                        ParticleVector            &density);
 

@@ -177,20 +177,33 @@ namespace perideal
                    const double          critical_stretch) = 0;
 
     /**
+     * @brief The inertia per unit volume of each component of field_layout() for the mass
+     * density @p density [kg/m^3]: @p density for translations and scalars; for a rotation the
+     * model's rotational inertia per unit volume [kg/m] (what multiplies the angular
+     * acceleration in the balance of moment densities). The default throws for a layout with
+     * rotations: a micropolar model must state its rotational inertia.
+     */
+    virtual std::vector<double>
+    inertia_densities(const double density) const;
+
+    /**
      * @brief The largest stable explicit time step for density @p density [kg/m^3]: the
      * Silling–Askari bound dt = min_i sqrt(2 rho / sum_j V_j C_ij) (Silling & Askari 2005,
      * Comput. Struct. 83, eq. 31) with the model's bond stiffness C_ij, i.e.
-     * sqrt(4 rho / max_i stiffness_bound_i). Same on every rank.
+     * min_(i,c) sqrt(4 rho_c / stiffness_bound_(i,c)) with rho_c the inertia density of
+     * component c (inertia_densities(): a rotational inertia enters here). Same on every rank.
      */
     double
     stable_time_step(const ParticleSystem<dim> &particles, const double density) const;
 
     /**
-     * @brief Gershgorin bound of the linearized operator per particle: @p per_particle[i] is
-     * an upper bound of sum_j |K_ij| over the rows of owned particle i, K the derivative of the
-     * force density [N/m^3] by the displacement [m] (block rows, spectral norms of the dim x dim
-     * blocks). It is twice the stiffness sum of stable_time_step(), so that
-     * dt_stable = sqrt(4 rho / max_i bound_i). Broken bonds do not count.
+     * @brief Gershgorin bound of the linearized operator per particle component:
+     * @p per_particle[i * n + c] (n = field_layout().n_components()) is an upper bound of
+     * sum_j |K_ij| over the row of component c of owned particle i, K the derivative of the
+     * force (moment) density by the unknowns (displacement models: block rows, the spectral
+     * norms of the dim x dim blocks, the same bound for each component). It is twice the
+     * stiffness sum of stable_time_step(), so that dt_stable = sqrt(4 rho_c / bound_(i,c)).
+     * Broken bonds do not count.
      */
     virtual void
     stiffness_bound(const ParticleSystem<dim> &particles,
@@ -242,12 +255,14 @@ namespace perideal
   /**
    * @brief The Gershgorin bound (MaterialModel::stiffness_bound()) of a bond-based model whose
    * bond b adds k_b / |xi| to the stiffness of both ends, k_b = @p coefficient[b] the pair
-   * coefficient of bond_pair_coefficients(): 2 sum_b k_b / (|xi| V_i) over intact bonds.
+   * coefficient of bond_pair_coefficients(): 2 sum_b k_b / (|xi| V_i) over intact bonds, the
+   * same for each of the @p n_components components of a particle.
    */
   template <int dim>
   void
   bond_pair_stiffness_bound(const ParticleSystem<dim> &particles,
                             const std::vector<double> &coefficient,
+                            const unsigned int         n_components,
                             std::vector<double>       &per_particle);
 
   /**

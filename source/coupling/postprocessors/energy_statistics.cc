@@ -73,8 +73,8 @@ namespace perideal
           {
             for (unsigned int c = 0; c < nc; ++c)
               {
-                const double e =
-                  0.5 * state.particle_mass[i] * std::pow(state.v.local_element(i * nc + c), 2);
+                const double e = 0.5 * state.particle_mass[i] * state.inertia_ratio[c] *
+                                 std::pow(state.v.local_element(i * nc + c), 2);
                 if (state.motion[i * nc + c] != Motion::follows_fe)
                   kinetic += e;
                 if (state.motion[i * nc + c] == Motion::prescribed)

@@ -23,13 +23,15 @@ namespace perideal
     state.fe.initialize_vector(state.mass);
     ps.reinit_vector(nodal_force, nc);
     state.method.lumped_masses(state.mass, state.particle_mass);
-    // The factor from force density to acceleration: V_i / m_i on the components that move by
-    // their acceleration, 0 on the others.
+    // The factor from force (moment) density to acceleration: V_i over the inertia of the
+    // component (m_i, or m_i times the ratio of a rotational inertia) on the components that
+    // move by their acceleration, 0 on the others.
     const auto &volume = ps.volumes();
     acceleration_factor.assign(state.motion.size(), 0.);
     for (std::size_t k = 0; k < state.motion.size(); ++k)
       if (state.motion[k] == Motion::moves)
-        acceleration_factor[k] = volume[k / nc] / state.particle_mass[k / nc];
+        acceleration_factor[k] =
+          volume[k / nc] / (state.particle_mass[k / nc] * state.inertia_ratio[k % nc]);
 
     // The time step: the smaller of the two regions' stable steps.
     const double fe_dt = state.fe.stable_time_step(&state.mass);

@@ -1,0 +1,468 @@
+// A micropolar field layout (x, y, rz: translations and a rotation per particle) end to end,
+// with a material model registered from this file, outside the library: a linear 2D bond model
+// of rotational springs. Per bond (n = xi/|xi|, t = e_z x n, L = |xi|) the strains
+//   e_n = n . (u_j - u_i),   e_t = t . (u_j - u_i) - L (theta_i + theta_j) / 2,
+//   e_r = theta_j - theta_i
+// (all zero for a rigid motion) store E_b = 1/2 (k_n e_n^2 + k_t e_t^2 + k_r e_r^2) with
+// k_n = c_n V_i V_j / L, k_t = c_t V_i V_j / L, k_r = c_r V_i V_j L.
+// Checks: a rigid rotation stores no energy and gives no force or moment; the linearization
+// (three rows per bond) gives the model's forces; rotational inertia enters the stable time
+// step; through the driver (perideal's CoupledProblem with particles only), a static run with
+// a moment condition reports the moment reaction and closes the energy balance, and an
+// explicit run with an initial rotation field conserves energy, with rotations clamped by a
+// 'rotation' condition. 1 and 2 ranks.
+
+#include <deal.II/base/mpi.h>
+#include <deal.II/base/parameter_handler.h>
+#include <deal.II/base/utilities.h>
+
+#include <perideal/coupling/coupled_problem.h>
+#include <perideal/pd/material_model.h>
+#include <perideal/pd/particle_system.h>
+
+#include "../tests.h"
+#include "pd_tests.h"
+
+#include <cmath>
+#include <iomanip>
+#include <limits>
+#include <sstream>
+#include <string>
+#include <vector>
+
+namespace
+{
+  using dealii::deallog;
+  const MPI_Comm comm = MPI_COMM_WORLD;
+
+  const char *
+  ok(const bool condition)
+  {
+    return condition ? "ok" : "FAILED";
+  }
+
+  // The test model (2D only).
+  template <int dim>
+  class RotationalSprings : public perideal::MaterialModel<dim>
+  {
+  public:
+    static void
+    declare_parameters(dealii::ParameterHandler &prm)
+    {
+      prm.declare_entry("Axial stiffness", "1e20", dealii::Patterns::Double(0.), "c_n [N/m^6]");
+      prm.declare_entry("Shear stiffness", "5e19", dealii::Patterns::Double(0.), "c_t [N/m^6]");
+      prm.declare_entry("Rotational stiffness",
+                        "1e13",
+                        dealii::Patterns::Double(0.),
+                        "c_r [N/m^4]");
+      prm.declare_entry("Radius of gyration",
+                        "5e-4",
+                        dealii::Patterns::Double(0.),
+                        "r [m]: rotational inertia density rho r^2");
+    }
+
+    void
+    parse_parameters(dealii::ParameterHandler &prm) override
+    {
+      c_n    = prm.get_double("Axial stiffness");
+      c_t    = prm.get_double("Shear stiffness");
+      c_r    = prm.get_double("Rotational stiffness");
+      radius = prm.get_double("Radius of gyration");
+    }
+
+    perideal::FieldLayout
+    field_layout() const override
+    {
+      return perideal::FieldLayout::displacement_and_rotation(dim);
+    }
+
+    std::vector<double>
+    inertia_densities(const double density) const override
+    {
+      return {density, density, density * radius * radius};
+    }
+
+    void
+    initialize(perideal::ParticleSystem<dim> &particles, const perideal::ModelContext &) override
+    {
+      const auto &bonds  = particles.bonds();
+      const auto &volume = particles.volumes();
+      const auto &x      = particles.positions();
+      normal.resize(bonds.size());
+      weight.resize(bonds.size());
+      for (unsigned int i = 0; i < particles.n_owned(); ++i)
+        for (unsigned int b = bonds.row_start[i]; b < bonds.row_start[i + 1]; ++b)
+          {
+            const unsigned int j  = bonds.neighbor[b];
+            const double       L  = bonds.length[b];
+            const double       VV = volume[i] * volume[j] * bonds.volume_factor[b];
+            normal[b]             = (x[j] - x[i]) / L;
+            weight[b]             = {c_n * VV / L, c_t * VV / L, c_r * VV * L};
+          }
+    }
+
+    // The three rows of bond b of row i: entries (particle, component, coefficient).
+    void
+    rows(const perideal::ParticleSystem<dim>                          &particles,
+         const unsigned int                                            i,
+         const std::size_t                                             b,
+         std::array<std::vector<perideal::LinearizedModel::Entry>, 3> &row) const
+    {
+      const unsigned int j = particles.bonds().neighbor[b];
+      const double       L = particles.bonds().length[b];
+      const auto        &n = normal[b];
+      for (auto &r : row)
+        r.clear();
+      row[0] = {{i, 0, -n[0]}, {i, 1, -n[1]}, {j, 0, n[0]}, {j, 1, n[1]}};
+      row[1] = {{i, 0, n[1]},
+                {i, 1, -n[0]},
+                {j, 0, -n[1]},
+                {j, 1, n[0]},
+                {i, 2, -0.5 * L},
+                {j, 2, -0.5 * L}};
+      row[2] = {{i, 2, -1.}, {j, 2, 1.}};
+    }
+
+    void
+    compute_forces(perideal::ParticleSystem<dim>  &particles,
+                   const perideal::ParticleVector &u,
+                   perideal::ParticleVector       &force,
+                   std::vector<double>            *energy_density,
+                   const double) override
+    {
+      const auto        &bonds   = particles.bonds();
+      const auto        &volume  = particles.volumes();
+      const unsigned int n_owned = particles.n_owned();
+      force                      = 0.;
+      if (energy_density != nullptr)
+        energy_density->assign(n_owned, 0.);
+      std::array<std::vector<perideal::LinearizedModel::Entry>, 3> row;
+      for (unsigned int i = 0; i < n_owned; ++i)
+        for (unsigned int b = bonds.row_start[i]; b < bonds.row_start[i + 1]; ++b)
+          {
+            rows(particles, i, b, row);
+            const unsigned int j = bonds.neighbor[b];
+            for (unsigned int r = 0; r < 3; ++r)
+              {
+                double e = 0.;
+                for (const auto &entry : row[r])
+                  e += entry.coefficient * u.local_element(entry.particle * 3 + entry.component);
+                for (const auto &entry : row[r])
+                  if (entry.particle < n_owned)
+                    force.local_element(entry.particle * 3 + entry.component) -=
+                      weight[b][r] * e * entry.coefficient / volume[entry.particle];
+                if (energy_density != nullptr)
+                  {
+                    const double half = 0.25 * weight[b][r] * e * e;
+                    (*energy_density)[i] += half / volume[i];
+                    if (j < n_owned)
+                      (*energy_density)[j] += half / volume[j];
+                  }
+              }
+          }
+    }
+
+    void
+    stiffness_bound(const perideal::ParticleSystem<dim> &particles,
+                    std::vector<double>                 &per_particle) const override
+    {
+      // Gershgorin from the rows: row r adds w |g_(p,c)| sum_q |g_q| / V_p to unknown (p, c).
+      perideal::ParticleVector bound;
+      particles.reinit_vector(bound, 3);
+      std::array<std::vector<perideal::LinearizedModel::Entry>, 3> row;
+      const auto                                                  &bonds = particles.bonds();
+      for (unsigned int i = 0; i < particles.n_owned(); ++i)
+        for (unsigned int b = bonds.row_start[i]; b < bonds.row_start[i + 1]; ++b)
+          {
+            rows(particles, i, b, row);
+            for (unsigned int r = 0; r < 3; ++r)
+              {
+                double sum = 0.;
+                for (const auto &entry : row[r])
+                  sum += std::abs(entry.coefficient);
+                for (const auto &entry : row[r])
+                  bound.local_element(entry.particle * 3 + entry.component) +=
+                    particles.bond_share(b) * weight[b][r] * std::abs(entry.coefficient) * sum /
+                    particles.volumes()[entry.particle];
+              }
+          }
+      bound.compress(dealii::VectorOperation::add);
+      per_particle.resize(std::size_t(particles.n_owned()) * 3);
+      for (std::size_t k = 0; k < per_particle.size(); ++k)
+        per_particle[k] = bound.local_element(k);
+    }
+
+    void
+    linearize(const perideal::ParticleSystem<dim> &particles,
+              perideal::LinearizedModel           &linearized) const override
+    {
+      linearized.reinit(3, particles.n_owned());
+      std::array<std::vector<perideal::LinearizedModel::Entry>, 3> row;
+      const auto                                                  &bonds = particles.bonds();
+      for (unsigned int i = 0; i < particles.n_owned(); ++i)
+        for (unsigned int b = bonds.row_start[i]; b < bonds.row_start[i + 1]; ++b)
+          {
+            rows(particles, i, b, row);
+            for (unsigned int r = 0; r < 3; ++r)
+              linearized.add_row(weight[b][r] * particles.bond_share(b), row[r]);
+          }
+    }
+
+    double
+    critical_stretch(const double) const override
+    {
+      return std::numeric_limits<double>::infinity();
+    }
+
+    std::string
+    summary() const override
+    {
+      return "rotational springs (test model)";
+    }
+
+  private:
+    double                              c_n = 0., c_t = 0., c_r = 0., radius = 0.;
+    std::vector<dealii::Tensor<1, dim>> normal;
+    std::vector<std::array<double, 3>>  weight;
+  };
+} // namespace
+
+PERIDEAL_REGISTER_PLUGIN(::perideal::MaterialModel<2>,
+                         RotationalSprings<2>,
+                         "rotational springs",
+                         "(test) linear micropolar bonds: axial, shear and rotational springs.")
+
+namespace
+{
+  using pd_tests::Body;
+
+  // 1. and 2. on a 12 x 12 lattice: rigid rotation, linearization.
+  void
+  check_model()
+  {
+    Body<2>              body(12, 1e-3, 3.015, perideal::PartialVolume::book, 1e-3);
+    RotationalSprings<2> model;
+    pd_tests::parse_model(model, {});
+    model.initialize(body.ps, {});
+    const auto              &ps = body.ps;
+    perideal::ParticleVector u, f;
+    ps.reinit_vector(u, 3);
+    ps.reinit_vector(f, 3);
+    std::vector<double> energy;
+    const auto          total = [&]() {
+      double sum = 0.;
+      for (unsigned int i = 0; i < ps.n_owned(); ++i)
+        sum += energy[i] * ps.volumes()[i];
+      return dealii::Utilities::MPI::sum(sum, comm);
+    };
+    const auto largest = [&](const perideal::ParticleVector &v) {
+      return dealii::Utilities::MPI::max(v.linfty_norm(), comm);
+    };
+
+    // Rigid rotation phi: u = phi (-y, x), theta = phi; against the same displacement with
+    // theta = 0 (a rotation of the lattice that the particles do not follow).
+    const double phi              = 1e-3;
+    double       reference_energy = 0., reference_force = 0.;
+    for (const bool follow : {false, true})
+      {
+        for (unsigned int i = 0; i < ps.n_local(); ++i)
+          {
+            u.local_element(3 * i)     = -phi * ps.positions()[i][1];
+            u.local_element(3 * i + 1) = phi * ps.positions()[i][0];
+            u.local_element(3 * i + 2) = follow ? phi : 0.;
+          }
+        model.compute_forces(body.ps, u, f, &energy, 0.);
+        if (!follow)
+          {
+            reference_energy = total();
+            reference_force  = largest(f);
+          }
+      }
+    deallog << "rigid rotation: energy / energy without the particle rotations < 1e-24 "
+            << ok(std::abs(total()) < 1e-24 * reference_energy)
+            << ", largest force or moment density / that without < 1e-12 "
+            << ok(largest(f) < 1e-12 * reference_force) << std::endl;
+
+    // Linearization: f = -(1/V) G^T diag(w) G u for a random u.
+    for (unsigned int i = 0; i < ps.n_local(); ++i)
+      for (unsigned int c = 0; c < 3; ++c)
+        u.local_element(3 * i + c) =
+          (c == 2 ? 1e-3 : 1e-6) * pd_tests::random_number(3 * body.lattice_index(i) + c);
+    model.compute_forces(body.ps, u, f, &energy, 0.);
+    perideal::LinearizedModel linearized;
+    model.linearize(ps, linearized);
+    perideal::ParticleVector f_linear;
+    ps.reinit_vector(f_linear, 3);
+    double energy_linear = 0.;
+    for (std::size_t r = 0; r < linearized.n_rows(); ++r)
+      {
+        double e = 0.;
+        for (auto entry = linearized.row_begin(r); entry != linearized.row_end(r); ++entry)
+          e += entry->coefficient * u.local_element(3 * entry->particle + entry->component);
+        energy_linear += 0.5 * linearized.weight(r) * e * e;
+        for (auto entry = linearized.row_begin(r); entry != linearized.row_end(r); ++entry)
+          f_linear.local_element(3 * entry->particle + entry->component) -=
+            linearized.weight(r) * e * entry->coefficient / ps.volumes()[entry->particle];
+      }
+    f_linear.compress(dealii::VectorOperation::add);
+    energy_linear = dealii::Utilities::MPI::sum(energy_linear, comm);
+    f_linear -= f;
+    deallog << "linearization: 3 components " << ok(linearized.n_components() == 3)
+            << ", max |f_G - f| / max |f| < 1e-12 " << ok(largest(f_linear) < 1e-12 * largest(f))
+            << ", |E_G / E - 1| < 1e-12 " << ok(std::abs(energy_linear / total() - 1.) < 1e-12)
+            << std::endl;
+  }
+
+  const std::string input = R"(
+set Dimension = 2
+subsection Discretization
+  set Lattice spacing = 5e-4
+  set Horizon factor  = 3.015
+  set Thickness       = 1e-3
+  set Body            = body
+end
+subsection Regions
+  set Names = body, left, right
+  subsection body
+    set Shape        = box
+    set Lower corner = 0, 0
+    set Upper corner = 0.02, 0.004
+  end
+  subsection left
+    set Shape        = box
+    set Lower corner = 0, 0
+    set Upper corner = 0.0015, 0.004
+  end
+  subsection right
+    set Shape        = box
+    set Lower corner = 0.0185, 0
+    set Upper corner = 0.02, 0.004
+  end
+end
+subsection Material
+  set Model   = rotational springs
+  set Density = 7800
+  subsection rotational springs
+    set Radius of gyration = RADIUS
+  end
+end
+subsection Boundary conditions
+  set Names = clamp, clamp_rotation, twist
+  subsection clamp
+    set Region = left
+    set Type   = displacement
+  end
+  subsection clamp_rotation
+    set Region     = left
+    set Type       = rotation
+    set Components = rz
+  end
+  subsection twist
+    set Region          = right
+    set Type            = moment
+    set Function        = MOMENT
+    set Layer thickness = 0.0015
+  end
+end
+subsection Initial conditions
+  set Displacement = 0; 0; ROTATION
+end
+subsection Solver
+  set Type          = SOLVER
+  set Linear solver = direct
+end
+subsection Time stepping
+  set End time = END_TIME
+end
+subsection Output
+  set Directory  = results
+  set Write HDF5 = false
+  set Progress   = false
+end
+)";
+
+  // The log of the driver on @p input with the placeholders replaced.
+  std::string
+  run(const std::vector<std::pair<std::string, std::string>> &values)
+  {
+    std::string text = input;
+    for (const auto &[key, value] : values)
+      text.replace(text.find(key), key.size(), value);
+    std::ostringstream          log;
+    perideal::CoupledProblem<2> problem(comm, log);
+    pd_tests::parse_problem(problem,
+                            text,
+                            {"body", "left", "right"},
+                            {"clamp", "clamp_rotation", "twist"});
+    problem.setup();
+    problem.run();
+    return log.str();
+  }
+
+  // The lines of @p log that start with one of @p keys, indented.
+  void
+  print_lines(const std::string &log, const std::vector<std::string> &keys)
+  {
+    std::istringstream lines(log);
+    for (std::string line; std::getline(lines, line);)
+      for (const auto &key : keys)
+        if (line.rfind(key, 0) == 0)
+          deallog << "  " << line << std::endl;
+  }
+
+  // The first number after @p key in @p log.
+  double
+  number_after(const std::string &log, const std::string &key)
+  {
+    const auto at = log.find(key);
+    return at == std::string::npos ? std::nan("") : std::stod(log.substr(at + key.size()));
+  }
+
+  // 3. and 4. through the driver.
+  void
+  check_driver()
+  {
+    // Static: a moment of 1 N m/m^2 on the right end; the clamp takes it.
+    const std::string statics = run({{"RADIUS", "5e-4"},
+                                     {"MOMENT", "1"},
+                                     {"ROTATION", "0"},
+                                     {"SOLVER", "static"},
+                                     {"END_TIME", "0"}});
+    deallog << "static, moment 1 N m/m^2 on the right end:" << std::endl;
+    print_lines(statics,
+                {"Reaction clamp_rotation", "Strain energy", "External work", "Energy error"});
+    deallog << "  applied moment 4e-6 N m: |reaction moment| > 0 "
+            << ok(std::abs(number_after(statics, "Reaction clamp_rotation: ")) > 0.) << std::endl;
+
+    // Explicit: an initial rotation field, no load; rotational inertia rho r^2 in the stable
+    // step (r and r / 10).
+    std::vector<double> steps;
+    for (const std::string radius : {"5e-4", "5e-5"})
+      {
+        const std::string dynamics = run({{"RADIUS", radius},
+                                          {"MOMENT", "0"},
+                                          {"ROTATION", "1e-4 * sin(3.14159265 * x / 0.02)"},
+                                          {"SOLVER", "explicit"},
+                                          {"END_TIME", "2e-5"}});
+        deallog << "explicit, radius of gyration " << radius << " m:" << std::endl;
+        print_lines(dynamics,
+                    {"Stable time step", "Kinetic energy", "Strain energy", "Energy error"});
+        steps.push_back(number_after(dynamics, "Stable time step: PD "));
+        const double energy =
+          number_after(dynamics, "Kinetic energy: ") + number_after(dynamics, "Strain energy: ");
+        deallog << "  |energy error| / energy < 1e-3 "
+                << ok(std::abs(number_after(dynamics, "Energy error: ")) < 1e-3 * energy)
+                << std::endl;
+      }
+    deallog << "stable step with r / 10 over that with r = " << steps[1] / steps[0] << std::endl;
+  }
+} // namespace
+
+int
+main(int argc, char *argv[])
+{
+  dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
+  mpi_initlog();
+  check_model();
+  check_driver();
+}
