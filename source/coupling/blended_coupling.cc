@@ -34,15 +34,44 @@ namespace perideal
   BlendedCoupling<dim>::initialize(const CoupledRegions<dim> &coupled_regions)
   {
     regions = coupled_regions;
+    transfer.reinit(*regions.fe, *regions.particles);
   }
 
   template <int dim>
   std::string
   BlendedCoupling<dim>::summary() const
   {
-    const auto n_slaved = regions.transfer->n_global_slaved();
+    const auto n_slaved = transfer.n_global_slaved();
     return std::to_string(n_slaved) + " particles slaved to the FE field, " +
            std::to_string(regions.particles->n_global() - n_slaved) + " free";
+  }
+
+  template <int dim>
+  const std::vector<bool> &
+  BlendedCoupling<dim>::particles_following_fe() const
+  {
+    return transfer.slaved_particles();
+  }
+
+  template <int dim>
+  void
+  BlendedCoupling<dim>::interpolate_to_particles(const FEVector &U, ParticleVector &u) const
+  {
+    transfer.interpolate(U, u);
+  }
+
+  template <int dim>
+  void
+  BlendedCoupling<dim>::add_particle_forces(const ParticleVector &f, FEVector &F) const
+  {
+    transfer.add_transpose(f, F);
+  }
+
+  template <int dim>
+  CoupledEnergy
+  BlendedCoupling<dim>::strain_energy(const FEVector &U, const double particle_energy) const
+  {
+    return {regions.fe->strain_energy(U), particle_energy};
   }
 
   template <int dim>
@@ -61,12 +90,12 @@ namespace perideal
     for (unsigned int i = 0; i < n_owned; ++i)
       {
         particle_mass[i] = weights[i] * regions.density * volume[i];
-        if (regions.transfer->is_slaved(i))
+        if (transfer.is_slaved(i))
           for (unsigned int d = 0; d < dim; ++d)
             slaved_mass.local_element(i * dim + d) = particle_mass[i];
       }
     fe_mass = regions.fe->lumped_mass();
-    regions.transfer->add_transpose(slaved_mass, fe_mass);
+    transfer.add_transpose(slaved_mass, fe_mass);
     std::uint64_t n_massless = 0;
     for (unsigned int k = 0; k < fe_mass.locally_owned_size(); ++k)
       n_massless += (fe_mass.local_element(k) <= 0.);
@@ -86,7 +115,7 @@ namespace perideal
   {
     conditions    = condition_list;
     static_solver = std::make_unique<CoupledStaticSolver<dim>>(settings.linear);
-    static_solver->reinit(*regions.fe, *regions.particles, *regions.transfer, particle_prescribed);
+    static_solver->reinit(*regions.fe, *regions.particles, transfer, particle_prescribed);
     relaxation.reset();
     if (settings.type != SolverType::adaptive_dynamic_relaxation)
       return;

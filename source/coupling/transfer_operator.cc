@@ -254,6 +254,13 @@ namespace perideal
   }
 
   template <int dim>
+  const std::vector<bool> &
+  TransferOperator<dim>::slaved_particles() const
+  {
+    return slaved;
+  }
+
+  template <int dim>
   types::global_dof_index
   TransferOperator<dim>::n_global_slaved() const
   {

@@ -14,12 +14,13 @@ namespace perideal
 {
   /**
    * @brief P, the FE shape functions evaluated at the particle positions, as a distributed
-   * sparse matrix: u_particles = P U, forces back with P^T. One object serves every coupling
-   * method and every solver.
+   * sparse matrix: u_particles = P U, forces back with P^T. A coupling method that slaves
+   * particles to the FE field builds one (BlendedCoupling does).
    *
-   * Rows are particle components (global index * dim + component, partitioned like the
+   * Rows are particle components (global index * n_components + component, with the
+   * components of the FE region's FieldLayout, scalar or vector; partitioned like the
    * particles), columns FE dofs (partitioned like the dofs). A particle inside a cell with FE
-   * unknowns is *slaved*: its row holds the dim-component shape functions of that cell (each
+   * unknowns is *slaved*: its rows hold the shape functions of that cell (each
    * particle is given to exactly one cell, so every slaved row sums to 1 per component). A
    * particle inside an FE_Nothing cell is *free*: its row is empty. A particle outside the mesh
    * is an error. The cells are located with deal.II's distributed point search, so a particle's
@@ -57,6 +58,10 @@ namespace perideal
      */
     bool
     is_slaved(const unsigned int i) const;
+
+    /// Per owned particle, whether it is slaved to the FE field.
+    const std::vector<bool> &
+    slaved_particles() const;
 
     /// Number of slaved particles (all ranks).
     dealii::types::global_dof_index
