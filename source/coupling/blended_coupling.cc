@@ -34,15 +34,44 @@ namespace perideal
   BlendedCoupling<dim>::initialize(const CoupledRegions<dim> &coupled_regions)
   {
     regions = coupled_regions;
+    transfer.reinit(*regions.fe, *regions.particles, regions.layout);
   }
 
   template <int dim>
   std::string
   BlendedCoupling<dim>::summary() const
   {
-    const auto n_slaved = regions.transfer->n_global_slaved();
+    const auto n_slaved = transfer.n_global_slaved();
     return std::to_string(n_slaved) + " particles slaved to the FE field, " +
            std::to_string(regions.particles->n_global() - n_slaved) + " free";
+  }
+
+  template <int dim>
+  const std::vector<bool> &
+  BlendedCoupling<dim>::particles_following_fe() const
+  {
+    return transfer.slaved_particles();
+  }
+
+  template <int dim>
+  void
+  BlendedCoupling<dim>::interpolate_to_particles(const FEVector &U, ParticleVector &u) const
+  {
+    transfer.interpolate(U, u);
+  }
+
+  template <int dim>
+  void
+  BlendedCoupling<dim>::add_particle_forces(const ParticleVector &f, FEVector &F) const
+  {
+    transfer.add_transpose(f, F);
+  }
+
+  template <int dim>
+  CoupledEnergy
+  BlendedCoupling<dim>::strain_energy(const FEVector &U, const double particle_energy) const
+  {
+    return {regions.fe->strain_energy(U), particle_energy};
   }
 
   template <int dim>
@@ -55,19 +84,19 @@ namespace perideal
     const auto        &volume    = particles.volumes();
     const auto        &weights   = particles.energy_weights();
     const unsigned int n_owned   = particles.n_owned();
-    const unsigned int nc        = regions.fe->field_layout().n_components();
+    const unsigned int nc        = regions.layout.n_components();
     particle_mass.assign(n_owned, 0.);
     ParticleVector slaved_mass;
     particles.reinit_vector(slaved_mass, nc);
     for (unsigned int i = 0; i < n_owned; ++i)
       {
         particle_mass[i] = weights[i] * regions.density * volume[i];
-        if (regions.transfer->is_slaved(i))
+        if (transfer.is_slaved(i))
           for (unsigned int c = 0; c < nc; ++c)
             slaved_mass.local_element(i * nc + c) = particle_mass[i];
       }
     fe_mass = regions.fe->lumped_mass();
-    regions.transfer->add_transpose(slaved_mass, fe_mass);
+    transfer.add_transpose(slaved_mass, fe_mass);
     std::uint64_t n_massless = 0;
     for (unsigned int k = 0; k < fe_mass.locally_owned_size(); ++k)
       n_massless += (fe_mass.local_element(k) <= 0.);
@@ -87,7 +116,7 @@ namespace perideal
   {
     conditions    = condition_list;
     static_solver = std::make_unique<CoupledStaticSolver<dim>>(settings.linear);
-    static_solver->reinit(*regions.fe, *regions.particles, *regions.transfer, particle_prescribed);
+    static_solver->reinit(*regions.fe, *regions.particles, transfer, particle_prescribed);
     relaxation.reset();
     if (settings.type != SolverType::adaptive_dynamic_relaxation)
       return;
@@ -96,7 +125,7 @@ namespace perideal
     // forces; its fictitious density is the Gershgorin bound of the linearized K.
     for (ParticleVector *vec : {&z, &z_prescribed, &z_force})
       static_solver->reinit_unknowns(*vec);
-    const unsigned int nc = regions.fe->field_layout().n_components();
+    const unsigned int nc = regions.layout.n_components();
     regions.particles->reinit_vector(nodal_force, nc);
     regions.particles->reinit_vector(pd_work, nc);
     regions.particles->reinit_vector(particle_state, nc);
@@ -158,7 +187,7 @@ namespace perideal
 
     // ||F_ext|| over the free unknowns: the FE loads and the particle loads [N].
     const auto        &volume = regions.particles->volumes();
-    const unsigned int nc     = regions.fe->field_layout().n_components();
+    const unsigned int nc     = regions.layout.n_components();
     for (std::size_t k = 0; k < nodal_force.locally_owned_size(); ++k)
       nodal_force.local_element(k) = f_pd.local_element(k) * volume[k / nc];
     static_solver->to_unknowns(f_fe, nodal_force, z_force);
@@ -206,7 +235,7 @@ namespace perideal
                                      std::numeric_limits<double>::infinity());
     const auto        &volume  = particles.volumes();
     const unsigned int n_owned = particles.n_owned();
-    const unsigned int nc      = regions.fe->field_layout().n_components();
+    const unsigned int nc      = regions.layout.n_components();
     double             energy  = 0.;
     for (unsigned int i = 0; i < n_owned; ++i)
       {

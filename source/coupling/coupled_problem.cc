@@ -314,18 +314,16 @@ namespace perideal
   {
     fe.setup([this](const Point<dim> &x) { return method->fe_weight(blending(x)); });
     setup_particles();
-    transfer.reinit(fe, pd.particles());
     check_blending();
     CoupledRegions<dim> regions;
     regions.fe        = &fe;
     regions.particles = &pd.particles();
     regions.material  = &pd.material();
-    regions.transfer  = &transfer;
     regions.density   = pd.density();
+    regions.layout    = layout;
     method->initialize(regions);
 
-    state =
-      std::make_unique<CoupledState<dim>>(comm, log, settings, layout, pd, fe, transfer, *method);
+    state = std::make_unique<CoupledState<dim>>(comm, log, settings, layout, pd, fe, *method);
     state->setup();
     const std::string fe_summary = fe.summary(), coupling_summary = method->summary();
     if (is_root && fe.has_mesh())

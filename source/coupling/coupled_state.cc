@@ -12,21 +12,19 @@ namespace perideal
   using namespace dealii;
 
   template <int dim>
-  CoupledState<dim>::CoupledState(const MPI_Comm               comm,
-                                  std::ostream                &log,
-                                  const ProblemSettings<dim>  &settings,
-                                  const FieldLayout           &layout,
-                                  ParticleRegion<dim>         &pd,
-                                  FERegion<dim>               &fe,
-                                  const TransferOperator<dim> &transfer,
-                                  CouplingMethod<dim>         &method)
+  CoupledState<dim>::CoupledState(const MPI_Comm              comm,
+                                  std::ostream               &log,
+                                  const ProblemSettings<dim> &settings,
+                                  const FieldLayout          &layout,
+                                  ParticleRegion<dim>        &pd,
+                                  FERegion<dim>              &fe,
+                                  CouplingMethod<dim>        &method)
     : comm(comm)
     , log(log)
     , is_root(Utilities::MPI::this_mpi_process(comm) == 0)
     , settings(settings)
     , pd(pd)
     , fe(fe)
-    , transfer(transfer)
     , method(method)
     , layout(layout)
   {}
@@ -39,20 +37,26 @@ namespace perideal
     const auto        &ps         = pd.particles();
     const unsigned int n_owned    = ps.n_owned();
     const auto        &conditions = pd.boundary_conditions();
+    const auto        &follows_fe = method.particles_following_fe();
+    AssertDimension(follows_fe.size(), n_owned);
 
-    // Free particles (in FE_Nothing cells) carry their own mass; PD boundary conditions may act
-    // only on them.
+    // The method decides which particles follow the FE field; the free ones carry their own
+    // mass, and PD boundary conditions may act only on them.
     motion.assign(std::size_t(n_owned) * nc, Motion::follows_fe);
     std::uint64_t n_constrained_slaved = 0;
     for (unsigned int i = 0; i < n_owned; ++i)
       for (unsigned int c = 0; c < nc; ++c)
         {
           const bool prescribed = conditions.is_prescribed(i, c);
-          if (transfer.is_slaved(i))
+          if (follows_fe[i])
             n_constrained_slaved += prescribed;
           else
             motion[i * nc + c] = prescribed ? Motion::prescribed : Motion::moves;
         }
+    particles_follow_fe =
+      Utilities::MPI::logical_or(std::find(follows_fe.begin(), follows_fe.end(), true) !=
+                                   follows_fe.end(),
+                                 comm);
     n_constrained_slaved = Utilities::MPI::sum(n_constrained_slaved, comm);
     AssertThrow(n_constrained_slaved == 0,
                 ExcMessage(

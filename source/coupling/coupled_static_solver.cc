@@ -85,7 +85,7 @@ namespace perideal
     AssertThrow(fe_owned.is_contiguous(),
                 ExcInternalError("The owned FE dofs are not contiguous."));
     // The FE region and the particles share one field layout (CoupledProblem checks it).
-    n_components               = fe_region.field_layout().n_components();
+    n_components               = transfer_operator.n_point_components();
     const unsigned int nc      = n_components;
     particle_rows              = particle_system.partitioner(nc)->locally_owned_range();
     const unsigned int n_owned = particle_system.n_owned();

@@ -69,7 +69,9 @@ namespace perideal
 
   template <int dim>
   void
-  TransferOperator<dim>::reinit(const FERegion<dim> &fe, const ParticleSystem<dim> &particles)
+  TransferOperator<dim>::reinit(const FERegion<dim>       &fe,
+                                const ParticleSystem<dim> &particles,
+                                const FieldLayout         &layout)
   {
     const MPI_Comm comm        = particles.get_communicator();
     const auto    &tria        = fe.get_triangulation();
@@ -77,7 +79,7 @@ namespace perideal
     const auto     n_owned     = particles.n_owned();
     const auto    &x           = particles.positions();
     // Component c of a particle follows component c of the FE field (the same layout).
-    n_components = fe.field_layout().n_components();
+    n_components = layout.n_components();
 
     // Each rank's first particle global index (owned particles are numbered contiguously).
     const types::global_dof_index first_global = n_owned > 0 ? particles.global_index(0) : 0;
@@ -254,6 +256,13 @@ namespace perideal
   }
 
   template <int dim>
+  const std::vector<bool> &
+  TransferOperator<dim>::slaved_particles() const
+  {
+    return slaved;
+  }
+
+  template <int dim>
   types::global_dof_index
   TransferOperator<dim>::n_global_slaved() const
   {
@@ -265,6 +274,13 @@ namespace perideal
   TransferOperator<dim>::matrix() const
   {
     return P;
+  }
+
+  template <int dim>
+  unsigned int
+  TransferOperator<dim>::n_point_components() const
+  {
+    return n_components;
   }
 
   template class TransferOperator<2>;

@@ -102,7 +102,7 @@ namespace
                        {});
 
     perideal::TransferOperator<dim> transfer;
-    transfer.reinit(fe, particles);
+    transfer.reinit(fe, particles, fe.field_layout());
 
     // Slaved: the particles in cells with x < 0.0625 (cells of width 0.0125 that the weight
     // reaches).
@@ -202,7 +202,7 @@ namespace
     perideal::TransferOperator<2> transfer;
     try
       {
-        transfer.reinit(fe, particles);
+        transfer.reinit(fe, particles, fe.field_layout());
         std::cout << "particles outside the mesh accepted: FAILED" << std::endl;
       }
     catch (const ExceptionBase &exc)

@@ -14,7 +14,8 @@ namespace perideal
   /**
    * @brief <Coupling/Method> = blended: the energies are blended in the overlap, E = int (1 -
    * beta) W_FE dx + sum_i beta_i W_i V_i, the masses likewise, and the particles inside cells
-   * with FE unknowns are slaved to the FE field (u = P U, forces back with P^T).
+   * with FE unknowns are slaved to the FE field (u = P U, forces back with P^T, P the
+   * TransferOperator that initialize() builds; the others are free).
    *
    * Quasi-static load steps reach equilibrium either by one symmetric positive definite
    * Trilinos system for the FE dofs and the free particles, linearized about the reference
@@ -41,6 +42,16 @@ namespace perideal
     initialize(const CoupledRegions<dim> &regions) override;
     std::string
     summary() const override;
+    const std::vector<bool> &
+    particles_following_fe() const override;
+    void
+    interpolate_to_particles(const FEVector &U, ParticleVector &u) const override;
+    void
+    add_particle_forces(const ParticleVector &f, FEVector &F) const override;
+    /// The sum of the weighted energies: U^T K_FE U / 2 (K_FE weighted by 1 - beta) and the
+    /// particles' (weighted by beta).
+    CoupledEnergy
+    strain_energy(const FEVector &U, const double particle_energy) const override;
     void
     lumped_masses(FEVector &fe_mass, std::vector<double> &particle_mass) const override;
     void
@@ -79,6 +90,7 @@ namespace perideal
                  const bool            with_energy);
 
     CoupledRegions<dim>                        regions;
+    TransferOperator<dim>                      transfer;
     std::string                                conditions;
     std::unique_ptr<CoupledStaticSolver<dim>>  static_solver;
     std::unique_ptr<AdaptiveDynamicRelaxation> relaxation;

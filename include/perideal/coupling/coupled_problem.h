@@ -12,7 +12,6 @@
 #include <perideal/coupling/coupling_method.h>
 #include <perideal/coupling/postprocessors/postprocessor.h>
 #include <perideal/coupling/solvers/solver.h>
-#include <perideal/coupling/transfer_operator.h>
 #include <perideal/fem/fe_region.h>
 #include <perideal/pd/particle_region.h>
 
@@ -28,8 +27,8 @@ namespace perideal
    * joined in an overlap zone by a coupling method; either region may be empty.
    *
    * It only wires the parts together: the problem's settings (ProblemSettings), the particle
-   * region (ParticleRegion), the FE region (FERegion), the transfer operator P and the coupling
-   * method (<Coupling/Method>), the state both regions share (CoupledState), the solver of
+   * region (ParticleRegion), the FE region (FERegion), the coupling method (<Coupling/Method>,
+   * which owns the coupling), the state both regions share (CoupledState), the solver of
    * <Solver/Type> (create_solver(): ExplicitDynamics or LoadStepping) and the postprocessors
    * (energies, displacements, reactions, the error against <Coupling/Exact displacement>,
    * probes, field output).
@@ -38,10 +37,11 @@ namespace perideal
    * acts, 0 where only FE acts) gives, through the method's weights, where FE unknowns and
    * particles exist: particles fill the body (<Discretization/Body>) where the particle weight
    * is positive and within a horizon of it; FE cells where the FE weight vanishes carry
-   * FE_Nothing. Particles inside FE-carrying cells follow the FE field (u = P U), the others are
-   * free. Checked before any heavy work: beta in [0, 1]; the transition 0 < beta < 1 at least a
-   * horizon wide (no bond joins a particle with beta = 1 to one with beta = 0); PD boundary
-   * conditions only on free particles.
+   * FE_Nothing. The method decides which particles follow the FE field (the blended method:
+   * those inside FE-carrying cells, u = P U), the others are free. Checked before any heavy
+   * work: beta in [0, 1]; the transition 0 < beta < 1 at least a horizon wide (no bond joins a
+   * particle with beta = 1 to one with beta = 0); PD boundary conditions only on free
+   * particles.
    *
    * A file without a mesh is the coupled problem with beta = 1 and an FE region without
    * unknowns; a file without <Discretization/Body> is the one without particles
@@ -63,7 +63,7 @@ namespace perideal
     void
     parse_parameters(dealii::ParameterHandler &prm);
 
-    /// Both regions, P, the method, the state, the solver and the postprocessors (with every
+    /// Both regions, the method, the state, the solver and the postprocessors (with every
     /// check they make); writes nothing on disk.
     void
     setup();
@@ -117,7 +117,6 @@ namespace perideal
     FieldLayout                                  layout;
     ParticleRegion<dim>                          pd;
     FERegion<dim>                                fe;
-    TransferOperator<dim>                        transfer;
     std::string                                  method_name;
     std::unique_ptr<CouplingMethod<dim>>         method;
     std::string                                  blending_expression;

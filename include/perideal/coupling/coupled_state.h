@@ -9,7 +9,6 @@
 #include <perideal/base/field_layout.h>
 #include <perideal/base/problem_settings.h>
 #include <perideal/coupling/coupling_method.h>
-#include <perideal/coupling/transfer_operator.h>
 #include <perideal/fem/fe_region.h>
 #include <perideal/pd/particle_region.h>
 
@@ -21,10 +20,10 @@ namespace perideal
 {
   /**
    * @brief Everything a solver advances and a postprocessor reads (in the manner of ASPECT's
-   * SimulatorAccess): the two regions, the transfer operator and the coupling method (owned by
-   * CoupledProblem), the problem's settings, and the unknowns of both regions with what they
-   * derive from the set-up: how each particle component moves, the factors of the work of the
-   * loads, the masses.
+   * SimulatorAccess): the two regions and the coupling method (owned by CoupledProblem; the
+   * solvers and postprocessors reach the coupling only through the method), the problem's
+   * settings, and the unknowns of both regions with what they derive from the set-up: how each
+   * particle component moves, the factors of the work of the loads, the masses.
    *
    * Vectors are laid out by the field (FieldLayout): component c of local particle i is entry
    * i * n_components() + c of the particle vectors; the FE vectors are the FE region's.
@@ -38,7 +37,7 @@ namespace perideal
     /// How an owned particle component moves.
     enum class Motion : unsigned char
     {
-      /// with the FE field (the particle is slaved: u = P U)
+      /// with the FE field (CouplingMethod::particles_following_fe())
       follows_fe,
       /// by its acceleration (a free particle)
       moves,
@@ -47,19 +46,18 @@ namespace perideal
     };
 
     /// The state of a problem whose points have the unknowns @p layout.
-    CoupledState(const MPI_Comm               comm,
-                 std::ostream                &log,
-                 const ProblemSettings<dim>  &settings,
-                 const FieldLayout           &layout,
-                 ParticleRegion<dim>         &pd,
-                 FERegion<dim>               &fe,
-                 const TransferOperator<dim> &transfer,
-                 CouplingMethod<dim>         &method);
+    CoupledState(const MPI_Comm              comm,
+                 std::ostream               &log,
+                 const ProblemSettings<dim> &settings,
+                 const FieldLayout          &layout,
+                 ParticleRegion<dim>        &pd,
+                 FERegion<dim>              &fe,
+                 CouplingMethod<dim>        &method);
 
     /**
-     * @brief Once both regions, P and the method are set up: the motion of every
-     * owned particle component (refusing PD displacement or velocity conditions on slaved
-     * particles) and the factors of the work of the loads; every vector sized and zero.
+     * @brief Once both regions and the method are set up: the motion of every owned particle
+     * component (refusing PD displacement or velocity conditions on particles that follow the
+     * FE field) and the factors of the work of the loads; every vector sized and zero.
      */
     void
     setup();
@@ -127,22 +125,23 @@ namespace perideal
                  const double       local_scale) const;
 
     // The problem.
-    const MPI_Comm               comm;
-    std::ostream                &log;
-    const bool                   is_root;
-    const ProblemSettings<dim>  &settings;
-    ParticleRegion<dim>         &pd;
-    FERegion<dim>               &fe;
-    const TransferOperator<dim> &transfer;
-    CouplingMethod<dim>         &method;
+    const MPI_Comm              comm;
+    std::ostream               &log;
+    const bool                  is_root;
+    const ProblemSettings<dim> &settings;
+    ParticleRegion<dim>        &pd;
+    FERegion<dim>              &fe;
+    CouplingMethod<dim>        &method;
     /// The unknowns of a point (particle or FE node).
     const FieldLayout layout;
 
     // What the set-up derives, per owned particle component.
     std::vector<Motion> motion;
+    /// Whether any particle (on any rank) follows the FE field.
+    bool particles_follow_fe = false;
     /// Factors from the internal and the applied force density to the load that does work:
     /// -V_i and 0 on prescribed components (the support balances the internal force), 0 and
-    /// V_i on the others (slaved particles too: they move with u = P U).
+    /// V_i on the others (particles that follow the FE field too: they move with it).
     std::vector<double> internal_work_factor, applied_work_factor;
     /// The particles' masses of explicit runs (per owned particle; for free particles).
     std::vector<double> particle_mass;

@@ -160,11 +160,11 @@ namespace perideal
     void
     gather_particles(const ParticleVector &u, SolverVector &result) const;
 
-    Settings                        settings;
-    MPI_Comm                        comm      = MPI_COMM_SELF;
-    const FERegion<dim>            *fe        = nullptr;
-    const ParticleSystem<dim>      *particles = nullptr;
-    const TransferOperator<dim>    *transfer  = nullptr;
+    Settings                     settings;
+    MPI_Comm                     comm      = MPI_COMM_SELF;
+    const FERegion<dim>         *fe        = nullptr;
+    const ParticleSystem<dim>   *particles = nullptr;
+    const TransferOperator<dim> *transfer  = nullptr;
     /// Unknowns per point (the field layout of both regions).
     unsigned int                    n_components = 0;
     dealii::IndexSet                z_owned, fe_owned, particle_rows;

@@ -9,7 +9,6 @@
 
 #include <perideal/base/plugin_registry.h>
 #include <perideal/base/problem_settings.h>
-#include <perideal/coupling/transfer_operator.h>
 #include <perideal/fem/fe_region.h>
 #include <perideal/pd/adaptive_dynamic_relaxation.h>
 #include <perideal/pd/material_model.h>
@@ -23,18 +22,31 @@ namespace perideal
 {
   /**
    * @brief What a coupling method works on, owned by CoupledProblem: the FE region, the
-   * particles and their model, and the transfer operator P between them (particles in cells
-   * with FE unknowns are slaved to the FE field, the others free).
+   * particles and their model. How the two are joined (e.g. a TransferOperator) is the
+   * method's.
    */
   template <int dim>
   struct CoupledRegions
   {
-    const FERegion<dim>         *fe        = nullptr;
-    ParticleSystem<dim>         *particles = nullptr;
-    MaterialModel<dim>          *material  = nullptr;
-    const TransferOperator<dim> *transfer  = nullptr;
+    const FERegion<dim> *fe        = nullptr;
+    ParticleSystem<dim> *particles = nullptr;
+    MaterialModel<dim>  *material  = nullptr;
     /// The particles' mass density [kg/m^3].
     double density = 0.;
+    /// The unknowns of a point, the same in both regions.
+    FieldLayout layout;
+  };
+
+  /**
+   * @brief The strain energy of a coupled system as its two parts [J]: every part of the body
+   * counted once, whatever the method does in an overlap.
+   */
+  struct CoupledEnergy
+  {
+    /// The part of the FE region.
+    double fe = 0.;
+    /// The part of the particles.
+    double particles = 0.;
   };
 
   /**
@@ -55,17 +67,22 @@ namespace perideal
 
   /**
    * @brief A method that joins the FE region and the particles of a CoupledProblem
-   * (<Coupling/Method>): it decides how the two energies share the overlap, the masses, and how
-   * a quasi-static load step reaches equilibrium.
+   * (<Coupling/Method>): it owns the coupling. It decides how the two energies share the
+   * overlap, which particles follow the FE field and which are free, how the FE field moves the
+   * particles that follow it (P) and how their forces act on the FE dofs (P^T) in explicit
+   * runs, the masses, the strain energy of the coupled system, and how a quasi-static load
+   * step reaches equilibrium.
    *
-   * The solvers of CoupledProblem (the explicit time loop, the quasi-static load stepping with
-   * re-solves while bonds break, the statistics, reactions and output) call only this
-   * interface, so a method plugs in through the registry (PERIDEAL_REGISTER_COUPLING_METHOD)
-   * without a change to them. The overlap is given by <Coupling/Blending function> beta(x)
-   * (1: PD only, 0: FE only); particles exist where the method's particle weight is positive
-   * and within a horizon of such points, FE unknowns where its FE weight is positive.
+   * The solvers and postprocessors of CoupledProblem (the explicit time loop, the quasi-static
+   * load stepping with re-solves while bonds break, the statistics, reactions and output) call
+   * only this interface (through CoupledState), so a method plugs in through the registry
+   * (PERIDEAL_REGISTER_COUPLING_METHOD) without a change to them; it need not use a transfer
+   * operator at all. The overlap is given by <Coupling/Blending function> beta(x) (1: PD only,
+   * 0: FE only); particles exist where the method's particle weight is positive and within a
+   * horizon of such points, FE unknowns where its FE weight is positive.
    *
-   * One object per run; the virtual calls are per solve or per time step, never per bond.
+   * One object per run; the virtual calls are per solve or per time step, never per particle
+   * or bond.
    */
   template <int dim>
   class CouplingMethod
@@ -97,8 +114,8 @@ namespace perideal
     particle_weight(const double beta) const = 0;
 
     /**
-     * @brief Build what the method needs once the FE region (set up with fe_weight()) and the
-     * particles (with particle_weight() as energy weights) exist.
+     * @brief Build what the method needs (e.g. the transfer operator P) once the FE region (set
+     * up with fe_weight()) and the particles (with particle_weight() as energy weights) exist.
      */
     virtual void
     initialize(const CoupledRegions<dim> &regions) = 0;
@@ -106,6 +123,39 @@ namespace perideal
     /// What initialize() did, for the log line "Coupling: <name>, <summary>".
     virtual std::string
     summary() const = 0;
+
+    /**
+     * @brief After initialize(): per owned particle, whether it follows the FE field (its
+     * values come from interpolate_to_particles(), its forces act on the FE dofs through
+     * add_particle_forces()) or is free (it moves by its own forces and conditions).
+     */
+    virtual const std::vector<bool> &
+    particles_following_fe() const = 0;
+
+    /**
+     * @brief P: overwrite the owned entries of @p u of the particles that follow the FE field
+     * with their values from the FE field @p U (ghost values current); the free particles keep
+     * theirs. Call update_ghost_values() on @p u afterwards.
+     */
+    virtual void
+    interpolate_to_particles(const FEVector &U, ParticleVector &u) const = 0;
+
+    /**
+     * @brief P^T: add to @p F (FE dofs) the nodal forces of the particles that follow the FE
+     * field, from the particles' nodal forces @p f [N] (owned entries; those of free particles
+     * are ignored).
+     */
+    virtual void
+    add_particle_forces(const ParticleVector &f, FEVector &F) const = 0;
+
+    /**
+     * @brief The strain energy of the coupled system in the state whose FE displacement is
+     * @p U and whose particles store @p particle_energy [J] (the model's
+     * energy with the particle weights, summed over the ranks), each part of the body counted
+     * once. Collective.
+     */
+    virtual CoupledEnergy
+    strain_energy(const FEVector &U, const double particle_energy) const = 0;
 
     /**
      * @brief Explicit dynamics: the lumped masses of the FE dofs (@p fe_mass, sized like the FE

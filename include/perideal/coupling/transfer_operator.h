@@ -14,12 +14,13 @@ namespace perideal
 {
   /**
    * @brief P, the FE shape functions evaluated at the particle positions, as a distributed
-   * sparse matrix: u_particles = P U, forces back with P^T. One object serves every coupling
-   * method and every solver.
+   * sparse matrix: u_particles = P U, forces back with P^T. A coupling method that slaves
+   * particles to the FE field builds one (BlendedCoupling does).
    *
-   * Rows are particle components (global index * dim + component, partitioned like the
+   * Rows are particle components (global index * n_components + component, with the
+   * components of the FE region's FieldLayout, scalar or vector; partitioned like the
    * particles), columns FE dofs (partitioned like the dofs). A particle inside a cell with FE
-   * unknowns is *slaved*: its row holds the dim-component shape functions of that cell (each
+   * unknowns is *slaved*: its rows hold the shape functions of that cell (each
    * particle is given to exactly one cell, so every slaved row sums to 1 per component). A
    * particle inside an FE_Nothing cell is *free*: its row is empty. A particle outside the mesh
    * is an error. The cells are located with deal.II's distributed point search, so a particle's
@@ -33,10 +34,14 @@ namespace perideal
     using FEVector = dealii::LinearAlgebra::distributed::Vector<double>;
 
     /**
-     * @brief Build P for the current particle positions (reference configuration).
+     * @brief Build P for the current particle positions (reference configuration), with the
+     * unknowns @p layout per point (the problem's: both regions share it; without FE unknowns
+     * P is empty but its rows still have the particles' layout).
      */
     void
-    reinit(const FERegion<dim> &fe, const ParticleSystem<dim> &particles);
+    reinit(const FERegion<dim>       &fe,
+           const ParticleSystem<dim> &particles,
+           const FieldLayout         &layout);
 
     /**
      * @brief Overwrite the slaved particles' entries of @p u_particles (owned; call
@@ -58,6 +63,10 @@ namespace perideal
     bool
     is_slaved(const unsigned int i) const;
 
+    /// Per owned particle, whether it is slaved to the FE field.
+    const std::vector<bool> &
+    slaved_particles() const;
+
     /// Number of slaved particles (all ranks).
     dealii::types::global_dof_index
     n_global_slaved() const;
@@ -65,6 +74,10 @@ namespace perideal
     /// The matrix itself.
     const SparseMatrix &
     matrix() const;
+
+    /// The number of unknowns per point (the rows of a particle, the columns of an FE node).
+    unsigned int
+    n_point_components() const;
 
   private:
     SparseMatrix                    P;

@@ -29,9 +29,9 @@ namespace perideal
 
     if (data.quasi_static)
       {
-        const double fe_energy    = state.fe.strain_energy(state.U);
-        const double strain       = fe_energy + data.pd_energy;
-        const double energy_error = work - strain;
+        const CoupledEnergy energy       = state.method.strain_energy(state.U, data.pd_energy);
+        const double        strain       = energy.fe + energy.particles;
+        const double        energy_error = work - strain;
         // Relative to the work, unless the energies are below 1e-10 of the force scale times the
         // displacement (a rigid motion: round-off).
         state.U.update_ghost_values();
@@ -40,15 +40,15 @@ namespace perideal
         const double relative_error =
           std::max(std::abs(work), strain) > 1e-10 * scale * max_u ? energy_error / work : 0.;
         statistics.add_value("strain_energy", strain);
-        statistics.add_value("fe_strain_energy", fe_energy);
-        statistics.add_value("pd_strain_energy", data.pd_energy);
+        statistics.add_value("fe_strain_energy", energy.fe);
+        statistics.add_value("pd_strain_energy", energy.particles);
         statistics.add_value("external_work", work);
         statistics.add_value("energy_error", energy_error);
         if (state.is_root && data.final_row)
           {
             log << "Strain energy: " << strain << " J";
             if (state.is_coupled())
-              log << " (FE " << fe_energy << " J, particles " << data.pd_energy << " J)";
+              log << " (FE " << energy.fe << " J, particles " << energy.particles << " J)";
             log << "\n"
                 << "External work: " << work << " J\n"
                 << "Energy error: " << energy_error << " J (relative " << relative_error << ")\n";
@@ -59,7 +59,7 @@ namespace perideal
         // Kinetic energy of the FE dofs and the components that do not follow the FE field;
         // that of prescribed dofs and components separately (EnergyBalance counts it as work).
         const auto &mask    = state.fe.prescribed_mask();
-        double      kinetic = 0., prescribed_kinetic = 0., strain = 0.;
+        double      kinetic = 0., prescribed_kinetic = 0., particle_energy = 0.;
         for (unsigned int k = 0; k < state.V.locally_owned_size(); ++k)
           {
             const double e =
@@ -80,11 +80,13 @@ namespace perideal
                 if (state.motion[i * nc + c] == Motion::prescribed)
                   prescribed_kinetic += e;
               }
-            strain += state.energy_density[i] * volume[i];
+            particle_energy += state.energy_density[i] * volume[i];
           }
         kinetic            = Utilities::MPI::sum(kinetic, state.comm);
         prescribed_kinetic = Utilities::MPI::sum(prescribed_kinetic, state.comm);
-        strain = Utilities::MPI::sum(strain, state.comm) + state.fe.strain_energy(state.U);
+        const CoupledEnergy energy =
+          state.method.strain_energy(state.U, Utilities::MPI::sum(particle_energy, state.comm));
+        const double strain = energy.fe + energy.particles;
         balance.record(data.step, kinetic, strain, work, prescribed_kinetic);
         balance.check_stable(data.time, state.stable_dt);
         statistics.add_value("kinetic_energy", kinetic);

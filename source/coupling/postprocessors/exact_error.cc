@@ -33,8 +33,8 @@ namespace perideal
     const unsigned int n_owned = ps.n_owned(), nc = state.n_components();
     const MPI_Comm     comm = state.comm;
 
-    // The exact field at the FE nodes and the particles (slaved ones through P, as the
-    // coupled model sees them).
+    // The exact field at the FE nodes and the particles (those that follow the FE field through
+    // the method's P, as the coupled model sees them).
     FEVector       U_exact, fe_residual;
     ParticleVector u_exact, force;
     state.fe.initialize_vector(U_exact);
@@ -87,7 +87,7 @@ namespace perideal
     // The residual K z - F of the exact field: the ghost force of the coupling for a state the
     // uncoupled models reproduce (the number explicit runs print at t = 0).
     U_exact.update_ghost_values();
-    state.transfer.interpolate(U_exact, u_exact);
+    state.method.interpolate_to_particles(U_exact, u_exact);
     u_exact.update_ghost_values();
     state.method
       .equilibrium_forces(U_exact, u_exact, state.f_ext, state.external_force, fe_residual, force);

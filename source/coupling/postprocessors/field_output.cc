@@ -30,9 +30,9 @@ namespace perideal
         const auto        &ps      = state.pd.particles();
         const unsigned int n_owned = ps.n_owned(), nc = state.n_components();
         const auto        &x = ps.positions();
-        // The slaved particles move with the FE field: show its velocity there.
+        // The particles that follow the FE field move with it: show its velocity there.
         ParticleVector velocity(state.v);
-        state.transfer.interpolate(state.V, velocity);
+        state.method.interpolate_to_particles(state.V, velocity);
         particle_output->clear_fields();
         particle_output->set_points(std::vector<Point<dim>>(x.begin(), x.begin() + n_owned));
         // The fields of each group of components: displacement, velocity and force_density of

@@ -58,7 +58,7 @@ namespace perideal
                                               const bool         with_energy)
   {
     auto &pd = state.pd;
-    state.transfer.interpolate(state.U, state.u);
+    state.method.interpolate_to_particles(state.U, state.u);
     state.u.update_ghost_values();
     pd.material().compute_forces(pd.particles(),
                                  state.u,
@@ -73,7 +73,7 @@ namespace perideal
         pd.boundary_conditions().add_loads(time, state.external_force);
       }
     // Particles: a = f V / m on the components that move by it (one pass, no branches); the
-    // nodal forces f V only where P^T carries them to the FE dofs.
+    // nodal forces f V only if some particle follows the FE field (zero otherwise).
     const std::size_t n        = state.motion.size();
     const double     *internal = state.internal_force.begin();
     const double     *applied  = state.external_force.begin();
@@ -88,7 +88,7 @@ namespace perideal
     auto &fe = state.fe;
     if (fe.n_dofs() == 0)
       return;
-    if (state.transfer.n_global_slaved() > 0)
+    if (state.particles_follow_fe)
       {
         const unsigned int nc     = state.n_components();
         const auto        &volume = pd.particles().volumes();
@@ -97,12 +97,12 @@ namespace perideal
           nodal[k] = (internal[k] + applied[k]) * volume[k / nc];
       }
 
-    // FE: R = f_ext - K U + P^T f; prescribed dofs do not move by it, and the work their
-    // supports do is that of K U - P^T f (the part of R they balance).
+    // FE: R = f_ext - K U + P^T f (the method's P^T); prescribed dofs do not move by it, and the
+    // work their supports do is that of K U - P^T f (the part of R they balance).
     fe.assemble_load(time, state.f_ext);
     fe.stiffness_matrix().vmult(state.residual, state.U);
     state.residual.sadd(-1., 1., state.f_ext);
-    state.transfer.add_transpose(nodal_force, state.residual);
+    state.method.add_particle_forces(nodal_force, state.residual);
     const auto &mask = fe.prescribed_mask();
     for (unsigned int k = 0; k < state.U.locally_owned_size(); ++k)
       if (mask[k])
@@ -198,7 +198,6 @@ namespace perideal
                               settings.end_time,
                               settings.show_progress && state.is_root);
     unsigned int     output_index = 1;
-    const bool       slaved       = state.transfer.n_global_slaved() > 0;
     const auto       start        = std::chrono::steady_clock::now();
     for (unsigned int step = 1; step <= n_steps; ++step)
       {
@@ -210,7 +209,7 @@ namespace perideal
         fe.prescribe(time + 0.5 * dt, U, V);
         conditions.prescribe_step_velocity(time, dt, v);
         U.add(dt, V);
-        if (!slaved)
+        if (!state.particles_follow_fe)
           u.add(dt, v);
         else
           for (std::size_t k = 0; k < state.motion.size(); ++k)

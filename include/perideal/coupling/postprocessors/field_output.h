@@ -14,9 +14,9 @@ namespace perideal
   /**
    * @brief The fields of both regions at the output steps, in <Output/Directory>: the particles
    * (<Output/Base name>.xdmf + .h5, and .pvd + .vtu with <Output/Write VTU>): displacement,
-   * velocity (slaved particles: that of the FE field), force density, damage and strain-energy
-   * density; the FE region (solution.xdmf + .h5: the FE region's fields, FERegion::write_output())
-   * with <Output/Write HDF5>.
+   * velocity (particles that follow the FE field: its velocity), force density, damage and
+   * strain-energy density; the FE region (solution.xdmf + .h5: the FE region's fields,
+   * FERegion::write_output()) with <Output/Write HDF5>.
    */
   template <int dim>
   class FieldOutput : public Postprocessor<dim>

@@ -17,8 +17,9 @@ namespace perideal
    *
    * The stable step is the smaller of the FE region's (Gershgorin bound of M^-1 K with the full
    * coupled mass) and the particles'; a requested step above it is refused. Per step: half a
-   * step of the velocities, the positions (slaved particles u = P U), the forces of both regions
-   * (particles' forces to the FE dofs by P^T), the second half step, the work of the loads. The
+   * step of the velocities, the positions (particles that follow the FE field from it, by the
+   * method's P), the forces of both regions (their forces to the FE dofs by the method's P^T),
+   * the second half step, the work of the loads. The
    * acceleration works on contiguous arrays: per particle component the factor from force
    * density to acceleration is V_i / m_i where the component moves by its acceleration and 0
    * where it follows the FE field or is prescribed, so the pass has no branches.
@@ -35,8 +36,9 @@ namespace perideal
 
   private:
     /**
-     * @brief Forces and accelerations of both regions at @p time (P U into the slaved
-     * particles first); the particles' energy density only if @p with_energy.
+     * @brief Forces and accelerations of both regions at @p time (the method's P U into the
+     * particles that follow the FE field first); the particles' energy density only if @p
+     * with_energy.
      */
     void
     compute_acceleration(CoupledState<dim> &state, const double time, const bool with_energy);
@@ -57,7 +59,7 @@ namespace perideal
 
     /// Per owned particle component: force density to acceleration.
     std::vector<double> acceleration_factor;
-    /// The particles' nodal forces V_i f_i that P^T carries to the FE dofs.
+    /// The particles' nodal forces V_i f_i that the method's P^T carries to the FE dofs.
     ParticleVector nodal_force;
   };
 } // namespace perideal
