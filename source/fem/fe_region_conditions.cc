@@ -52,12 +52,15 @@ namespace perideal
                           "The boundary ids (gmsh physical groups or generator ids) it acts on.");
         prm.declare_entry(
           "Type",
-          "displacement",
-          Patterns::Selection("displacement|velocity|traction|value|rate|flux"),
-          "On translations (linear elasticity): 'displacement' [m] or 'velocity' [m/s, explicit "
-          "dynamics only] of the listed components, or 'traction' [Pa] (all components). On a "
-          "scalar field w (scalar laplace): 'value' [w] or 'rate' [w/s, explicit dynamics only], "
-          "or 'flux' (the normal flux k dw/dn [k w/m] into the body).");
+          "value",
+          Patterns::Selection("value|displacement|velocity|traction|rate|flux"),
+          "What it prescribes. 'value' (the default, accepted by every physics): the value of "
+          "the listed components of the field, the displacement of translations. On "
+          "translations (linear elasticity): 'displacement' [m] (the same as 'value') or "
+          "'velocity' [m/s, explicit dynamics only] of the listed components, or 'traction' "
+          "[Pa] (all components). On a scalar field w (scalar laplace): 'value' [w] or 'rate' "
+          "[w/s, explicit dynamics only], or 'flux' (the normal flux k dw/dn [k w/m] into the "
+          "body).");
         prm.declare_entry("Components",
                           "",
                           Patterns::Anything(),
@@ -92,17 +95,21 @@ namespace perideal
                     ExcMessage("The parameter <" + prefix +
                                "Boundary ids> is empty; list the "
                                "boundary ids the condition acts on."));
-        // The types of the field's kind (a field of one kind: all of its components).
+        // The types of the field's kind (a field of one kind: all of its components), and
+        // 'value', the value of any kind.
         const auto        names_of_kind = type_names(layout.kind(0));
         const std::string type          = prm.get("Type");
         const auto        found = std::find(names_of_kind.begin(), names_of_kind.end(), type);
-        AssertThrow(found != names_of_kind.end(),
+        AssertThrow(found != names_of_kind.end() || type == "value",
                     ExcMessage("The parameter <" + prefix + "Type> = <" + type +
                                "> is not a condition on the field of <" + section +
                                "/Physics> = <" + physics_name + "> (" + layout.description() +
-                               "): accepted values are " + names_of_kind[0] + ", " +
+                               "): accepted values are " + names_of_kind[0] +
+                               (names_of_kind[0] == "value" ? "" : " (or value)") + ", " +
                                names_of_kind[1] + ", " + names_of_kind[2] + "."));
-        c.type            = static_cast<Quantity>(found - names_of_kind.begin());
+        c.type =
+          (found == names_of_kind.end() ? Quantity::value :
+                                          static_cast<Quantity>(found - names_of_kind.begin()));
         const auto listed = Utilities::split_string_list(prm.get("Components"), ',');
         for (unsigned int k = 0; k < layout.n_components(); ++k)
           if (c.type == Quantity::load || listed.empty())
