@@ -19,6 +19,22 @@ namespace perideal
 {
   using namespace dealii;
 
+  namespace
+  {
+    // The registered FE physics whose unknowns are @p layout, separated by ', ' ("none").
+    template <int dim>
+    std::string
+    fe_physics_of(const FieldLayout &layout)
+    {
+      using Registry = PluginRegistry<FEPhysics<dim>>;
+      std::string names;
+      for (const auto &name : Utilities::split_string_list(Registry::pattern_string(), '|'))
+        if (Registry::create(name, "Finite elements/Physics")->field_layout() == layout)
+          names += (names.empty() ? "" : ", ") + name;
+      return names.empty() ? "none" : names;
+    }
+  } // namespace
+
   template <int dim>
   CoupledProblem<dim>::CoupledProblem(const MPI_Comm comm, std::ostream &log)
     : comm(comm)
@@ -88,12 +104,14 @@ namespace perideal
     // The unknowns: the particles' and the FE region's, the same in a coupled problem.
     layout = pd.has_body() ? pd.field_layout() : fe.field_layout();
     AssertThrow(!pd.has_body() || !fe.has_mesh() || pd.field_layout() == fe.field_layout(),
-                ExcMessage("The material model (<Material/Model>) has the unknowns " +
-                           pd.field_layout().description() +
-                           ", the FE region (<Finite elements>) has " +
+                ExcMessage("<Material/Model> = <" + prm.get({"Material"}, "Model") +
+                           "> has the unknowns " + pd.field_layout().description() +
+                           ", <Finite elements/Physics> = <" +
+                           prm.get({"Finite elements"}, "Physics") + "> has " +
                            fe.field_layout().description() +
-                           ": a coupled problem needs the same on both sides. Choose a "
-                           "material model and an FE physics of the same field."));
+                           ": a coupled problem needs the same on both sides. Accepted values "
+                           "of <Finite elements/Physics> with this material model: " +
+                           fe_physics_of<dim>(pd.field_layout()) + "."));
     // Every expression is parsed here, so that --validate finds a malformed one.
     const unsigned int n_components = layout.n_components();
     ParameterUtilities::make_function<dim>(settings.initial_displacement,

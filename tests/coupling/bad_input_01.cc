@@ -5,8 +5,11 @@
 // the FE field, two FE conditions on the same component of a boundary, an FE condition on a
 // boundary id the mesh does not have or on a boundary without FE unknowns, a body force in <Finite
 // elements> (a coupled run takes the body force of <Body force> only), a PD condition on a
-// component the field does not have, a moment condition on a model without rotations, a malformed
-// expression in a condition's function (found when the file is read). A state-based model is
+// component the field does not have, a moment condition on a model without rotations, an FE
+// physics of another field than the material model's (found when the file is read, before any
+// output: its output directory does not exist afterwards; the FE condition without a <Type>
+// takes the default, valid for the scalar field too), a malformed expression in a condition's
+// function (found when the file is read). A state-based model is
 // accepted (its energy is blended through the particles' weights). Quasi-static solves (run as
 // well): a valid file is solved statically and by adaptive dynamic relaxation; an FE velocity
 // condition, a component that no condition holds, and an exact-displacement tolerance without the
@@ -20,6 +23,7 @@
 
 #include "coupling_tests.h"
 
+#include <filesystem>
 #include <fstream>
 #include <iostream>
 #include <map>
@@ -96,7 +100,7 @@ subsection Time stepping
   set End time = 1e-7
 end
 subsection Output
-  set Directory  = results
+  set Directory  = OUTPUT_DIRECTORY
   set Write HDF5 = false
   set Progress   = false
 end
@@ -115,7 +119,8 @@ end
                                                  {"BETA", "min(1, max(0, (x - 0.04) / 0.01))"},
                                                  {"SOLVER", "explicit"},
                                                  {"LEFT_EXTRA", ""},
-                                                 {"COUPLING_EXTRA", ""}};
+                                                 {"COUPLING_EXTRA", ""},
+                                                 {"OUTPUT_DIRECTORY", "results"}};
     for (const auto &[key, value] : changes)
       values[key] = value;
     const std::string file = "bad_input.prm";
@@ -178,6 +183,13 @@ main(int argc, char **argv)
             {"PD_BLOCK",
              "  subsection twist\n    set Region = corner\n    set Type = moment\n"
              "    set Layer thickness = 1e-3\n  end"}});
+  const std::string field_directory = "results_field_mismatch";
+  if (Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0)
+    std::filesystem::remove_all(field_directory);
+  run_case("FE physics of another field than the material model's",
+           {{"FE_EXTRA", "  set Physics = scalar laplace"}, {"OUTPUT_DIRECTORY", field_directory}});
+  std::cout << "  output directory created: "
+            << (std::filesystem::exists(field_directory) ? "yes" : "no") << std::endl;
   run_case("malformed expression in a boundary-condition function",
            {{"PD_CONDITIONS", "hold"},
             {"PD_BLOCK",

@@ -3,10 +3,10 @@
 // square and cube, through the problem's static path (CoupledProblem, FE only): w = a phi(x) +
 // c . x with phi = prod_d sin(pi x_d), a = 1e-3 m, c = 1e-3 (0.5, 0.25, 0.125) (antiplane
 // shear: k = mu = 8e10 Pa), so f = k dim pi^2 a phi [N/m^3] (<Body force/Function>, first
-// expression) and w = c . x on the whole boundary (a 'value' condition). Under uniform
-// refinement the errors must fall at the optimal rates, |w - w_h|_L2 ~ h^(p+1) and
-// |w - w_h|_H1 ~ h^p (Q1 in 2D and 3D, Q2 in 2D). Printed: errors, rates and whether the
-// finest rates lie within 0.1 of the optimal ones.
+// expression) and w = c . x on the whole boundary (a 'value' condition: the default <Type>). Under
+// uniform refinement the errors must fall at the optimal rates, |w - w_h|_L2 ~ h^(p+1) and |w -
+// w_h|_H1 ~ h^p (Q1 in 2D and 3D, Q2 in 2D). Printed: errors, rates and whether the finest rates
+// lie within 0.1 of the optimal ones.
 // ---------------------------------------------------------------------
 #include <deal.II/base/function.h>
 #include <deal.II/base/quadrature_lib.h>
@@ -90,7 +90,6 @@ namespace
            "    set Names = boundary\n"
            "    subsection boundary\n"
            "      set Boundary ids = 0\n"
-           "      set Type = value\n"
            "      set Components = w\n"
            "      set Function = " +
            linear +

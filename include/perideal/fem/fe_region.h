@@ -54,6 +54,11 @@ namespace perideal
    * unconstrained; problems solve through CoupledStaticSolver, which holds the prescribed dofs
    * (prescribed_mask()) with the near-null space component_masks() (one constant mode per
    * component).
+   *
+   * The implementation is split by algorithm: fe_region.cc (parameters, accessors),
+   * fe_region_setup.cc (mesh, FE_Nothing activation, dofs, sparsity), fe_region_assembly.cc
+   * (stiffness, lumped mass, loads, stable step), fe_region_conditions.cc (boundary
+   * conditions, interior values, reactions) and fe_region_output.cc (summary, field output).
    */
   template <int dim>
   class FERegion
@@ -271,8 +276,36 @@ namespace perideal
       dealii::Point<dim> support_point;
     };
 
+    /// The parameter subsection of the region.
+    inline static const std::string section = "Finite elements";
+
+    /**
+     * @brief Create the mesh: the generator's or the gmsh file's (with the manifolds of
+     * <Circular boundaries>), refined; one cell without unknowns if there is no FE region.
+     */
     void
     make_mesh();
+    /**
+     * @brief Declare the entries of the boundary conditions @p names; @p prm is in
+     * <Finite elements/Boundary conditions>.
+     */
+    static void
+    declare_condition_parameters(dealii::ParameterHandler       &prm,
+                                 const std::vector<std::string> &names);
+    /**
+     * @brief Read and check the boundary conditions @p names on the field of <Physics> =
+     * @p physics_name (layout set); @p prm is in <Finite elements/Boundary conditions>.
+     */
+    void
+    parse_conditions(dealii::ParameterHandler       &prm,
+                     const std::vector<std::string> &names,
+                     const std::string              &physics_name);
+    /**
+     * @brief Find the owned dofs of the value and rate conditions (condition, component and
+     * support point of each) and forget the interior values of an earlier set-up.
+     */
+    void
+    locate_prescribed_dofs();
     /**
      * @brief Stop, naming the entry, if a boundary condition's ids name no boundary of the
      * mesh or only boundaries of cells without FE unknowns (it would act on nothing).
@@ -283,12 +316,14 @@ namespace perideal
     void
     quadrature_weights(const dealii::FEValuesBase<dim> &fe_values,
                        std::vector<double>             &weights) const;
+    /// The load of the body force and the load conditions on @p cell at @p time.
     void
     assemble_cell_load(const typename dealii::DoFHandler<dim>::active_cell_iterator &cell,
                        const double                                                  time,
                        dealii::FEValues<dim>                                        &fe_values,
                        dealii::FEFaceValues<dim>                                    &fe_face_values,
                        dealii::Vector<double> &cell_rhs) const;
+    /// The weighted stiffness and the lumped mass (unconstrained).
     void
     assemble_matrices();
 

@@ -1,0 +1,116 @@
+// ---------------------------------------------------------------------
+// PeriDeal: what the finite-element region reports: its summary line and the field output
+// (the solution and the physics' derived quantities on the FE-carrying cells, HDF5/XDMF).
+// ---------------------------------------------------------------------
+#include <deal.II/numerics/data_out.h>
+#include <deal.II/numerics/data_postprocessor.h>
+
+#include <perideal/base/hdf5_xdmf_writer.h>
+#include <perideal/fem/fe_region.h>
+
+#include <sstream>
+
+namespace perideal
+{
+  using namespace dealii;
+  using Vector = LinearAlgebra::distributed::Vector<double>;
+
+  template <int dim>
+  void
+  FERegion<dim>::write_output(const std::string &directory,
+                              const std::string &base_name,
+                              const unsigned int step,
+                              const double       time,
+                              const Vector      &u)
+  {
+    if (n_dofs() == 0)
+      return;
+    const auto   derived = physics_model->postprocessor();
+    DataOut<dim> data_out;
+    data_out.attach_dof_handler(dof_handler);
+    // Only the locally owned cells that carry FE unknowns (not the FE_Nothing ones).
+    using CellIterator       = typename Triangulation<dim>::cell_iterator;
+    using ActiveCellIterator = typename Triangulation<dim>::active_cell_iterator;
+    const auto selected      = [this](const ActiveCellIterator &cell) {
+      return cell->is_locally_owned() &&
+             typename DoFHandler<dim>::active_cell_iterator(&triangulation,
+                                                            cell->level(),
+                                                            cell->index(),
+                                                            &dof_handler)
+                 ->active_fe_index() == 0;
+    };
+    const auto next_selected = [selected](const Triangulation<dim> &tria, ActiveCellIterator cell) {
+      while (cell != tria.end() && !selected(cell))
+        ++cell;
+      return cell == tria.end() ? tria.end() : CellIterator(cell);
+    };
+    data_out.set_cell_selection(
+      [next_selected](const Triangulation<dim> &tria) {
+        return next_selected(tria, tria.begin_active());
+      },
+      [next_selected](const Triangulation<dim> &tria, const CellIterator &cell) {
+        ActiveCellIterator next(cell);
+        return next_selected(tria, ++next);
+      });
+    // The translations as the vector 'displacement', every other component by its name.
+    std::vector<std::string>                                              names;
+    std::vector<DataComponentInterpretation::DataComponentInterpretation> interpretation;
+    for (unsigned int c = 0; c < layout.n_components(); ++c)
+      {
+        const bool translation = layout.kind(c) == ComponentKind::translation;
+        names.push_back(translation ? "displacement" : layout.name(c));
+        interpretation.push_back(translation ?
+                                   DataComponentInterpretation::component_is_part_of_vector :
+                                   DataComponentInterpretation::component_is_scalar);
+      }
+    data_out.add_data_vector(u, names, DataOut<dim>::type_dof_data, interpretation);
+    data_out.add_data_vector(u, *derived);
+    data_out.build_patches();
+    write_hdf5_xdmf_step(data_out,
+                         !data_out.get_patches().empty(),
+                         true,
+                         comm,
+                         directory,
+                         base_name,
+                         step,
+                         time,
+                         xdmf_entries);
+  }
+
+  template <int dim>
+  std::string
+  FERegion<dim>::summary() const
+  {
+    if (!has_mesh())
+      return "FE region: none";
+    std::ostringstream out;
+    const auto         n_active = Utilities::MPI::sum<std::uint64_t>(
+      [&] {
+        std::uint64_t count = 0;
+        for (const auto &cell : dof_handler.active_cell_iterators())
+          if (cell->is_locally_owned() && cell->active_fe_index() == 0)
+            ++count;
+        return count;
+      }(),
+      comm);
+    out << "FE region: " << triangulation.n_global_active_cells() << " cells (" << n_active
+        << " with FE_Q(" << degree << ")";
+    if (layout.n_components() > 1)
+      out << "^" << layout.n_components();
+    out << "), " << dof_handler.n_dofs() << " dofs; " << physics_model->summary()
+        << ", rho = " << density << " kg/m^3";
+    return out.str();
+  }
+
+  // The members defined in this file (the class is instantiated in fe_region.cc).
+#define PERIDEAL_INSTANTIATE(dim)                                       \
+  template void        FERegion<dim>::write_output(const std::string &, \
+                                            const std::string &, \
+                                            const unsigned int,  \
+                                            const double,        \
+                                            const Vector &);     \
+  template std::string FERegion<dim>::summary() const;
+  PERIDEAL_INSTANTIATE(2)
+  PERIDEAL_INSTANTIATE(3)
+#undef PERIDEAL_INSTANTIATE
+} // namespace perideal
