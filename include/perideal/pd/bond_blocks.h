@@ -41,7 +41,9 @@ namespace perideal
     inline Vector
     inverse_sqrt(const Vector &a)
     {
-      using Single        = stdx::fixed_size_simd<float, width>;
+      // The floats in the same lanes with a native ABI (a fixed_size_simd<float, width> is
+      // kept on the stack: two stores per call).
+      using Single        = stdx::rebind_simd_t<float, Vector>;
       const Single single = stdx::static_simd_cast<Single>(a);
       Vector       r      = stdx::static_simd_cast<Vector>(Single(1.f) / stdx::sqrt(single));
       const Vector half_a = 0.5 * a;

@@ -51,21 +51,31 @@ namespace perideal
    * The loop adds to_b to the neighbours' entries at once and keeps the sums of to_a in
    * registers until the group ends. @p bonds and @p critical_stretch are read only if the law
    * breaks bonds. The kernel-order arrays come from BondBlocks::component().
+   *
+   * The vector stores of the loop may alias any memory (the SIMD types store through
+   * memcpy), so whatever the loop reads through a reference or a member would be read again
+   * after every store, i.e. several times per block. The loop therefore takes @p u,
+   * @p outputs and @p law by value and reads the groups, blocks and classes of @p blocks
+   * through local pointers (BondBlocks::break_lanes() changes only the lane states), and it
+   * hands BondBlocks::break_lanes() a copy of the stretch: the address of the law's strain
+   * would keep the whole strain in memory.
    */
   template <unsigned int n_components, int dim, typename PairLaw>
   inline void
-  for_each_bond_block(BondBlocks<dim>                                &blocks,
-                      const std::array<const double *, n_components> &u,
-                      const std::array<double *, PairLaw::n_outputs> &outputs,
-                      const PairLaw                                  &law,
-                      BondList                                       &bonds,
-                      const double                                    critical_stretch)
+  for_each_bond_block(BondBlocks<dim>                               &blocks,
+                      const std::array<const double *, n_components> u,
+                      const std::array<double *, PairLaw::n_outputs> outputs,
+                      const PairLaw                                  law,
+                      BondList                                      &bonds,
+                      const double                                   critical_stretch)
   {
     using namespace bond_simd;
+    using BondClass                   = typename BondBlocks<dim>::BondClass;
     constexpr unsigned int n_outputs  = PairLaw::n_outputs;
-    const auto            &groups     = blocks.groups();
-    const auto            &block_list = blocks.blocks();
-    const auto            &classes    = blocks.classes();
+    const std::size_t      n_entries  = blocks.groups().size();
+    const auto            *groups     = blocks.groups().data();
+    const auto            *block_list = blocks.blocks().data();
+    const BondClass       *classes    = blocks.classes().data();
     const std::uint8_t    *state      = blocks.state();
     const auto             add_to     = [](double *target, const Vector &value) {
       Vector sum(target, stdx::element_aligned);
@@ -73,7 +83,7 @@ namespace perideal
       sum.copy_to(target, stdx::element_aligned);
     };
 
-    for (std::size_t g = 0; g + 1 < groups.size(); ++g)
+    for (std::size_t g = 0; g + 1 < n_entries; ++g)
       {
         const unsigned int a = groups[g].first_particle;
         Vector             u_a[n_components], sum_a[n_outputs];
@@ -97,7 +107,8 @@ namespace perideal
             if constexpr (PairLaw::breaks_bonds)
               if (stdx::any_of(lanes.active && (strain.stretch > critical_stretch)))
                 {
-                  blocks.break_lanes(strain.stretch, critical_stretch, q, bonds);
+                  const Vector stretch = strain.stretch;
+                  blocks.break_lanes(stretch, critical_stretch, q, bonds);
                   lanes.active = intact_lanes(state + lanes.first_lane);
                 }
             Vector to_a[n_outputs], to_b[n_outputs];
