@@ -6,6 +6,10 @@
 #   BUILD_DIR: PeriDeal build (bin/perideal-solid); BENCH_DIR: directory with lammps_rate.sh and
 #   lammps_{pmb,lps}_41.in (shared/bench).
 set -eu
+# Open MPI refuses to run as root unless told (containers, CI): the two-rank line needs it.
+if [ "$(id -u)" = 0 ]; then
+  export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1
+fi
 build=$(realpath "$1"); bench=$(realpath "$2"); repeats=${3:-3}
 here=$(dirname "$(realpath "$0")")
 work=$(mktemp -d); cd "$work"
