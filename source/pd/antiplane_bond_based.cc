@@ -169,7 +169,6 @@ namespace perideal
     const double delta = context.horizon, pi = numbers::PI;
     c                       = (dim == 2) ? 6. * mu / (pi * context.thickness * std::pow(delta, 3)) :
                                            6. * mu / (pi * std::pow(delta, 4));
-    BondList        &bonds  = particles.bonds();
     BondBlocks<dim> &blocks = kernel->blocks;
     blocks.reinit(particles);
     blocks.reinit_field(kernel->w_field, 1);
@@ -177,17 +176,11 @@ namespace perideal
     blocks.reinit_field(kernel->e_field, 1);
     if (context.surface_correction)
       {
+        ParticleVector force;
+        particles.reinit_vector(force, 1);
+        set_bond_coefficients(particles, false);
         const auto energy = [&](const ParticleVector &w, std::vector<double> &density) {
-          ParticleVector force;
-          particles.reinit_vector(force, 1);
-          set_bond_coefficients(particles, false);
-          // Pre-cracked bonds take part: the correction describes the uncracked geometry.
-          const std::vector<std::uint8_t> intact = bonds.intact;
-          std::fill(bonds.intact.begin(), bonds.intact.end(), 1);
-          ++bonds.revision;
           compute_forces(particles, w, force, &density, std::numeric_limits<double>::infinity());
-          bonds.intact = intact;
-          ++bonds.revision;
         };
         std::array<double, dim> modulus;
         modulus.fill(mu);

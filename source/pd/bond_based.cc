@@ -153,7 +153,6 @@ namespace perideal
           c = 48. * E / (5. * pi * context.thickness * std::pow(delta, 3));
           break;
       }
-    BondList        &bonds  = particles.bonds();
     BondBlocks<dim> &blocks = kernel->blocks;
     blocks.reinit(particles);
     blocks.reinit_field(kernel->u_field, dim);
@@ -161,17 +160,11 @@ namespace perideal
     blocks.reinit_field(kernel->w_field, 1);
     if (context.surface_correction)
       {
+        ParticleVector force;
+        particles.reinit_vector(force, dim);
+        set_bond_coefficients(particles, false);
         const auto energy = [&](const ParticleVector &u, std::vector<double> &w) {
-          ParticleVector force;
-          particles.reinit_vector(force, dim);
-          set_bond_coefficients(particles, false);
-          // Pre-cracked bonds take part: the correction describes the uncracked geometry.
-          const std::vector<std::uint8_t> intact = bonds.intact;
-          std::fill(bonds.intact.begin(), bonds.intact.end(), 1);
-          ++bonds.revision;
           compute_forces(particles, u, force, &w, std::numeric_limits<double>::infinity());
-          bonds.intact = intact;
-          ++bonds.revision;
         };
         const auto              C = elasticity_tensor();
         std::array<double, dim> modulus;

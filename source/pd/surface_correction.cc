@@ -5,7 +5,9 @@
 
 #include <perideal/pd/surface_correction.h>
 
+#include <algorithm>
 #include <cmath>
+#include <cstdint>
 
 namespace perideal
 {
@@ -36,6 +38,10 @@ namespace perideal
     const double test_strain = 1e-6;
     BondList    &bonds       = particles.bonds();
     std::fill(bonds.surface_factor.begin(), bonds.surface_factor.end(), 1.);
+    // Pre-cracked bonds take part: the correction describes the uncracked geometry.
+    const std::vector<std::uint8_t> intact = bonds.intact;
+    std::fill(bonds.intact.begin(), bonds.intact.end(), 1);
+    ++bonds.revision;
 
     ParticleVector u, factors;
     particles.reinit_vector(u, nc);
@@ -53,6 +59,8 @@ namespace perideal
         for (unsigned int i = 0; i < particles.n_owned(); ++i)
           factors.local_element(i * dim + a) = classical / energy[i];
       }
+    bonds.intact = intact;
+    ++bonds.revision;
     factors.update_ghost_values();
 
     for (unsigned int i = 0; i < particles.n_owned(); ++i)

@@ -27,7 +27,9 @@ namespace perideal
    * elasticity tensor; the shear modulus of antiplane shear): g_a(i) = W / W_i. A bond takes
    * G = [sum_a (n_a / G_a)^2]^(-1/2) with G_a = (g_a(i) + g_a(j)) / 2 and n = xi/|xi| (the
    * ellipse rule). @p energy_density evaluates W_i of the owned particles for a field of
-   * @p layout with current ghost values; it is called with all surface factors equal to one.
+   * @p layout with current ghost values; it is called with all surface factors equal to one and
+   * every bond intact (pre-cracked ones too: the correction describes the uncracked geometry;
+   * BondList::intact is restored afterwards).
    */
   template <int dim>
   void
