@@ -14,12 +14,22 @@ namespace perideal
 
   namespace
   {
-    /// A value of <Type>: the quantity it prescribes of the components of one kind.
+    /**
+     * @brief A value of <Type>: the quantity it prescribes of the components of one kind, or,
+     * for 'value', of components of any kind.
+     */
     struct ConditionType
     {
       const char   *name;
       ComponentKind kind;
       Quantity      quantity;
+      bool          any_kind = false;
+
+      bool
+      acts_on(const ComponentKind component_kind) const
+      {
+        return any_kind || component_kind == kind;
+      }
     };
 
     const ConditionType condition_types[] = {
@@ -29,7 +39,7 @@ namespace perideal
       {"rotation", ComponentKind::rotation, Quantity::value},
       {"angular velocity", ComponentKind::rotation, Quantity::rate},
       {"moment", ComponentKind::rotation, Quantity::load},
-      {"value", ComponentKind::scalar, Quantity::value},
+      {"value", ComponentKind::scalar, Quantity::value, true},
       {"rate", ComponentKind::scalar, Quantity::rate},
       {"flux", ComponentKind::scalar, Quantity::load}};
 
@@ -39,7 +49,7 @@ namespace perideal
     {
       std::string result;
       for (const auto &type : condition_types)
-        if (!layout || layout->n_components(type.kind) > 0)
+        if (!layout || type.any_kind || layout->n_components(type.kind) > 0)
           result += (result.empty() ? "" : separator) + type.name;
       return result;
     }
@@ -70,23 +80,27 @@ namespace perideal
                           Patterns::Anything(),
                           "The region whose particles it acts on.");
         prm.declare_entry("Type",
-                          "displacement",
+                          "value",
                           Patterns::Selection(type_names(nullptr, "|")),
-                          "What it prescribes. Translations: 'displacement' [m] or 'velocity' "
-                          "[m/s] of the listed components, 'traction' [Pa] on all; rotations "
-                          "(micropolar models): 'rotation' [rad] or 'angular velocity' [rad/s] of "
-                          "the listed components, 'moment' [N m/m^2] on all; a scalar field: "
-                          "'value' or 'rate' of it, 'flux' (load per area). A load ('traction', "
-                          "'moment', 'flux') acts as a force density in the region, a surface "
-                          "layer of thickness 'Layer thickness'.");
+                          "What it prescribes. 'value' (the default, accepted by every model): "
+                          "the value of the listed components of any kind, the displacement of "
+                          "translations, the rotation of rotations, the scalar field itself; "
+                          "with <Components> empty, every component (a clamp). Translations: "
+                          "'displacement' [m] or 'velocity' [m/s] of the listed components, "
+                          "'traction' [Pa] on all; rotations (micropolar models): 'rotation' "
+                          "[rad] or 'angular velocity' [rad/s] of the listed components, "
+                          "'moment' [N m/m^2] on all; a scalar field: 'value' or 'rate' of it, "
+                          "'flux' (load per area). A load ('traction', 'moment', 'flux') acts as "
+                          "a force density in the region, a surface layer of thickness 'Layer "
+                          "thickness'.");
         prm.declare_entry("Components",
                           "",
                           Patterns::Anything(),
                           "The prescribed components (values and rates), by the names of the "
                           "field's components, separated by ',': x, y, z (translations); rx, ry, "
                           "rz (rotations; rz only in 2D); w (the scalar field of antiplane "
-                          "models). Empty: all components of the kind the type acts on. Loads "
-                          "act on all of them.");
+                          "models). Empty: all components of the kind the type acts on (all "
+                          "components for 'value'). Loads act on all of them.");
         prm.declare_entry("Function",
                           "0",
                           Patterns::Anything(),
@@ -132,7 +146,7 @@ namespace perideal
                                         std::end(condition_types),
                                         [&](const auto &type) { return t == type.name; });
         Assert(found != std::end(condition_types), ExcInternalError());
-        AssertThrow(layout.n_components(found->kind) > 0,
+        AssertThrow(found->any_kind || layout.n_components(found->kind) > 0,
                     ExcMessage("The parameter <" + prefix + "Type> is '" + t +
                                "', which acts on components the field of this problem (" +
                                layout.description() + ") does not have; accepted types: " +
@@ -140,7 +154,7 @@ namespace perideal
         c.type_name = t;
         c.quantity  = found->quantity;
         for (unsigned int k = 0; k < layout.n_components(); ++k)
-          if (layout.kind(k) == found->kind)
+          if (found->acts_on(layout.kind(k)))
             c.kind_components.push_back(k);
         std::string kind_names;
         for (const unsigned int k : c.kind_components)
@@ -152,7 +166,7 @@ namespace perideal
           for (const auto &component : listed)
             {
               const unsigned int k = layout.index(component, prefix + "Components");
-              AssertThrow(layout.kind(k) == found->kind,
+              AssertThrow(found->acts_on(layout.kind(k)),
                           ExcMessage("The parameter <" + prefix + "Components> names '" +
                                      component + "', which <" + prefix + "Type> = '" + t +
                                      "' does not act on; accepted: " + kind_names + "."));

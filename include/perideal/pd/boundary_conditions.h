@@ -101,7 +101,7 @@ namespace perideal
     /// The <Type> of condition @p k as the file names it ("displacement", "moment", ...).
     const std::string &
     type_name(const unsigned int k) const;
-    /// The components whose reaction condition @p k reports: all of its kind.
+    /// The components whose reaction condition @p k reports: all of its kind (all for 'value').
     const std::vector<unsigned int> &
     reaction_components(const unsigned int k) const;
     /**
@@ -120,7 +120,7 @@ namespace perideal
       Quantity           quantity = Quantity::value;
       /// The listed components (all of the kind for a load).
       std::vector<unsigned int> components;
-      /// Every component of the condition's kind (its reactions).
+      /// Every component the condition's type acts on (its reactions).
       std::vector<unsigned int>                    kind_components;
       double                                       layer_thickness = 0.;
       std::unique_ptr<dealii::FunctionParser<dim>> function;

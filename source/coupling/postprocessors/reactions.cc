@@ -111,11 +111,15 @@ namespace perideal
     log << std::scientific << std::setprecision(6);
     for (unsigned int k = 0; k < pd_reactions.size(); ++k)
       {
+        // Forces [N], moments [N m]; a 'value' condition on a micropolar field reports both.
+        unsigned int n_rotations = 0;
+        for (const unsigned int c : pd_conditions.reaction_components(k))
+          n_rotations += (layout.kind(c) == ComponentKind::rotation);
         log << "Reaction " << pd_names[k] << ": ";
         print_without_round_off(log, pd_reactions[k]);
-        log << (layout.kind(pd_conditions.reaction_components(k)[0]) == ComponentKind::rotation ?
-                  " N m\n" :
-                  " N\n");
+        log << (n_rotations == 0                      ? " N\n" :
+                n_rotations == pd_reactions[k].size() ? " N m\n" :
+                                                        " N (N m for rotations)\n");
       }
     for (unsigned int k = 0; k < fe_reactions.size(); ++k)
       if (fe_conditions[k].type != Quantity::load)
