@@ -1,9 +1,11 @@
 // ---------------------------------------------------------------------
 // PeriDeal: energy blending of the FE region and the particles in the overlap.
 // ---------------------------------------------------------------------
+#include <perideal/base/parameter_utilities.h>
 #include <perideal/coupling/blended_coupling.h>
 
 #include <cmath>
+#include <cstdint>
 #include <limits>
 
 namespace perideal
@@ -34,7 +36,39 @@ namespace perideal
   BlendedCoupling<dim>::initialize(const CoupledRegions<dim> &coupled_regions)
   {
     regions = coupled_regions;
+    check_overlap_width();
     transfer.reinit(*regions.fe, *regions.particles, regions.layout);
+  }
+
+  template <int dim>
+  void
+  BlendedCoupling<dim>::check_overlap_width() const
+  {
+    // No bond from beta = 1 to beta = 0: a particle whose neighbours all follow the FE field
+    // but which carries the whole energy of its bonds, or the reverse, is a ghost force the
+    // overlap cannot spread.
+    const auto         &particles = *regions.particles;
+    const auto         &x         = particles.positions();
+    std::vector<double> beta(x.size());
+    for (unsigned int i = 0; i < x.size(); ++i)
+      beta[i] = regions.blending(x[i]);
+    const auto   &bonds   = particles.bonds();
+    std::uint64_t n_short = 0;
+    for (unsigned int i = 0; i < particles.n_owned(); ++i)
+      for (unsigned int b = bonds.row_start[i]; b < bonds.row_start[i + 1]; ++b)
+        {
+          const double bi = beta[i], bj = beta[bonds.neighbor[b]];
+          if ((bi >= 1. && bj <= 0.) || (bi <= 0. && bj >= 1.))
+            ++n_short;
+        }
+    n_short = Utilities::MPI::sum(n_short, particles.get_communicator());
+    AssertThrow(n_short == 0,
+                ExcMessage(regions.blending_entry +
+                           ": the overlap (0 < beta < 1) is narrower than the horizon (" +
+                           ParameterUtilities::format_number(particles.settings().horizon) +
+                           " m): " + std::to_string(n_short) +
+                           " bonds join a particle with beta = 1 to one with beta = 0. Widen the "
+                           "ramp of the blending function to at least a horizon."));
   }
 
   template <int dim>
@@ -91,9 +125,12 @@ namespace perideal
     for (unsigned int i = 0; i < n_owned; ++i)
       {
         particle_mass[i] = weights[i] * regions.density * volume[i];
+        // Rotations of slaved particles follow 1/2 curl U: their (second-order) rotational
+        // inertia is not carried over to the FE translations.
         if (transfer.is_slaved(i))
           for (unsigned int c = 0; c < nc; ++c)
-            slaved_mass.local_element(i * nc + c) = particle_mass[i];
+            if (regions.layout.kind(c) != ComponentKind::rotation)
+              slaved_mass.local_element(i * nc + c) = particle_mass[i];
       }
     fe_mass = regions.fe->lumped_mass();
     transfer.add_transpose(slaved_mass, fe_mass);

@@ -223,15 +223,12 @@ namespace perideal
   {
     const std::string entry = "<Coupling/Blending function> = <" + blending_expression + ">";
     // beta in [0, 1] at the particles and the FE vertices.
-    const auto         &x = pd.particles().positions();
-    std::vector<double> beta_p(x.size());
-    for (unsigned int i = 0; i < x.size(); ++i)
-      beta_p[i] = blending(x[i]);
     double lowest = 1., highest = 0.;
-    for (const double b : beta_p)
+    for (const auto &x : pd.particles().positions())
       {
-        lowest  = std::min(lowest, b);
-        highest = std::max(highest, b);
+        const double b = blending(x);
+        lowest         = std::min(lowest, b);
+        highest        = std::max(highest, b);
       }
     for (const auto &cell : fe.get_triangulation().active_cell_iterators())
       if (cell->is_locally_owned())
@@ -248,23 +245,6 @@ namespace perideal
                            ParameterUtilities::format_number(lowest) + ", " +
                            ParameterUtilities::format_number(highest) +
                            "]; it must lie in [0, 1] (clamp it with min(1, max(0, ...)))."));
-    // The transition must be at least a horizon wide: no bond from beta = 1 to beta = 0.
-    const auto   &bonds   = pd.particles().bonds();
-    std::uint64_t n_short = 0;
-    for (unsigned int i = 0; i < pd.particles().n_owned(); ++i)
-      for (unsigned int b = bonds.row_start[i]; b < bonds.row_start[i + 1]; ++b)
-        {
-          const double bi = beta_p[i], bj = beta_p[bonds.neighbor[b]];
-          if ((bi >= 1. && bj <= 0.) || (bi <= 0. && bj >= 1.))
-            ++n_short;
-        }
-    n_short = Utilities::MPI::sum(n_short, comm);
-    AssertThrow(n_short == 0,
-                ExcMessage(entry + ": the overlap (0 < beta < 1) is narrower than the horizon (" +
-                           ParameterUtilities::format_number(pd.discretization().horizon) +
-                           " m): " + std::to_string(n_short) +
-                           " bonds join a particle with beta = 1 to one with beta = 0. Widen the "
-                           "ramp of the blending function to at least a horizon."));
   }
 
   template <int dim>
@@ -334,11 +314,13 @@ namespace perideal
     setup_particles();
     check_blending();
     CoupledRegions<dim> regions;
-    regions.fe        = &fe;
-    regions.particles = &pd.particles();
-    regions.material  = &pd.material();
-    regions.density   = pd.density();
-    regions.layout    = layout;
+    regions.fe             = &fe;
+    regions.particles      = &pd.particles();
+    regions.material       = &pd.material();
+    regions.density        = pd.density();
+    regions.layout         = layout;
+    regions.blending       = [this](const Point<dim> &x) { return blending(x); };
+    regions.blending_entry = "<Coupling/Blending function> = <" + blending_expression + ">";
     method->initialize(regions);
 
     state = std::make_unique<CoupledState<dim>>(comm, log, settings, layout, pd, fe, *method);

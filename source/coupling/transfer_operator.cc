@@ -65,7 +65,60 @@ namespace perideal
           result.push_back(*box);
       return result;
     }
+
+    /// The permutation symbol eps_rjk of three axes.
+    double
+    levi_civita(const unsigned int r, const unsigned int j, const unsigned int k)
+    {
+      if (r == j || j == k || k == r)
+        return 0.;
+      return (j == (r + 1) % 3) ? 1. : -1.;
+    }
   } // namespace
+
+  template <int dim>
+  typename TransferOperator<dim>::ComponentRows
+  TransferOperator<dim>::component_rows(const FieldLayout &fe_layout,
+                                        const FieldLayout &particle_layout,
+                                        const bool         check)
+  {
+    ComponentRows rows;
+    rows.value.assign(fe_layout.n_components(), 0);
+    std::vector<bool> fed(fe_layout.n_components(), false);
+    const auto        mismatch = [&](const std::string &what) {
+      return ExcMessage(what + ": the particles' unknowns (" + particle_layout.description() +
+                        ") and the FE field's (" + fe_layout.description() +
+                        ") must name the same components; the particles may add rotations, "
+                               "which follow half the curl of the FE displacement.");
+    };
+    bool first = true;
+    for (unsigned int c = 0; c < particle_layout.n_components(); ++c)
+      {
+        unsigned int f = 0;
+        while (f < fe_layout.n_components() && !(fe_layout[f] == particle_layout[c]))
+          ++f;
+        if (f < fe_layout.n_components())
+          {
+            rows.value[f] = c;
+            fed[f]        = true;
+            if (first)
+              rows.first_value_row = c;
+            first = false;
+          }
+        else if (particle_layout.kind(c) == ComponentKind::rotation &&
+                 fe_layout.n_components(ComponentKind::translation) == dim)
+          rows.curl.push_back(c);
+        else
+          AssertThrow(!check,
+                      mismatch("The particles' component '" + particle_layout.name(c) +
+                               "' has no counterpart in the FE field"));
+      }
+    for (unsigned int f = 0; f < fe_layout.n_components(); ++f)
+      AssertThrow(!check || fed[f],
+                  mismatch("The FE field's component '" + fe_layout.name(f) +
+                           "' has no counterpart among the particles' unknowns"));
+    return rows;
+  }
 
   template <int dim>
   void
@@ -78,8 +131,8 @@ namespace perideal
     const auto    &dof_handler = fe.get_dof_handler();
     const auto     n_owned     = particles.n_owned();
     const auto    &x           = particles.positions();
-    // Component c of a particle follows component c of the FE field (the same layout).
-    n_components = layout.n_components();
+    n_components               = layout.n_components();
+    const auto row_kinds = component_rows(fe.field_layout(), layout, dof_handler.n_dofs() > 0);
 
     // Each rank's first particle global index (owned particles are numbered contiguously).
     const types::global_dof_index first_global = n_owned > 0 ? particles.global_index(0) : 0;
@@ -142,10 +195,11 @@ namespace perideal
         }
 
         // The rows this rank computes: for each located point in an FE-carrying cell, the shape
-        // functions of that cell.
+        // functions of that cell (values; for rotations the FE field lacks, gradients).
         const auto                          &fe_element = fe.get_fe_collection()[0];
         const unsigned int                   n_dofs     = fe_element.n_dofs_per_cell();
         std::vector<types::global_dof_index> dofs(n_dofs);
+        const FieldLayout                   &fe_layout = fe.field_layout();
         for (const auto &component : located.send_components)
           {
             const auto &[level_index, rank, local, reference, real, permutation] = component;
@@ -164,14 +218,42 @@ namespace perideal
               continue; // FE_Nothing: the particle is free
             cell->get_dof_indices(dofs);
             const types::global_dof_index particle = offsets[rank] + local;
+            // The inverse transpose of the Jacobian of the (d-linear) mapping at the point, for
+            // the shape gradients the rotation rows need.
+            Tensor<2, dim> inverse_transpose;
+            if (!row_kinds.curl.empty())
+              {
+                Tensor<2, dim> jacobian;
+                for (const unsigned int v : cell->vertex_indices())
+                  jacobian +=
+                    outer_product(cell->vertex(v),
+                                  GeometryInfo<dim>::d_linear_shape_function_gradient(reference,
+                                                                                      v));
+                inverse_transpose = transpose(invert(jacobian));
+              }
             for (unsigned int a = 0; a < n_dofs; ++a)
               {
-                const double value = fe_element.shape_value(a, reference);
+                const unsigned int fe_component = fe_element.system_to_component_index(a).first;
+                const double       value        = fe_element.shape_value(a, reference);
                 if (value != 0.)
                   entries.push_back(
-                    {particle * n_components + fe_element.system_to_component_index(a).first,
-                     dofs[a],
-                     value});
+                    {particle * n_components + row_kinds.value[fe_component], dofs[a], value});
+                if (row_kinds.curl.empty() ||
+                    fe_layout.kind(fe_component) != ComponentKind::translation)
+                  continue;
+                // theta_r = 1/2 eps_rjk du_k/dx_j: shape function a moves translation k.
+                const Tensor<1, dim> gradient =
+                  inverse_transpose * fe_element.shape_grad(a, reference);
+                const unsigned int k = fe_layout[fe_component].axis;
+                for (const unsigned int c : row_kinds.curl)
+                  {
+                    const unsigned int r        = layout[c].axis;
+                    double             curl_row = 0.;
+                    for (unsigned int j = 0; j < dim; ++j)
+                      curl_row += 0.5 * levi_civita(r, j, k) * gradient[j];
+                    if (curl_row != 0.)
+                      entries.push_back({particle * n_components + c, dofs[a], curl_row});
+                  }
               }
           }
       }
@@ -211,7 +293,8 @@ namespace perideal
     slaved.assign(n_owned, false);
     for (unsigned int i = 0; i < n_owned; ++i)
       {
-        const double sum = particle_buffer.local_element(std::size_t(i) * n_components);
+        const double sum =
+          particle_buffer.local_element(std::size_t(i) * n_components + row_kinds.first_value_row);
         AssertThrow(sum == 0. || std::abs(sum - 1.) < 1e-10,
                     ExcInternalError("A row of the transfer operator sums to " +
                                      std::to_string(sum) + " instead of 0 or 1."));

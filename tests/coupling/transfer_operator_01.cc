@@ -7,6 +7,11 @@
 // - P U reproduces a linear displacement field exactly at the slaved particles;
 // - P^T transfers forces and moments exactly: sum_a F_a = sum_i f_i and
 //   sum_a x_a x F_a = sum_i x_i x f_i (linear completeness of the shape functions);
+// - particles with rotations (a micropolar layout: x, y, rz; x, y, z, rx, ry, rz) coupled to
+//   FE translations: the rotations of the slaved particles are 1/2 curl U (exact for the
+//   linear field), and P^T turns their moments into nodal forces with no net force and the
+//   same moment: sum_a x_a x F_a = sum_i (x_i x f_i + m_i);
+// - layouts that do not match (a scalar field against FE translations) are refused;
 // - a particle outside the mesh is refused.
 // ---------------------------------------------------------------------
 #include <deal.II/base/function.h>
@@ -43,6 +48,30 @@ namespace
       return v;
     }
   };
+
+  /// 1/2 curl of LinearField, about the axis @p r (0, 1, 2).
+  template <int dim>
+  double
+  linear_field_rotation(const unsigned int r)
+  {
+    // du_k/dx_j = 1e-3 (1 + k + 2 j); theta_r = 1/2 (du_{r+2}/dx_{r+1} - du_{r+1}/dx_{r+2}).
+    const unsigned int j = (r + 1) % 3, k = (r + 2) % 3;
+    return 0.5e-3 * ((1. + k + 2. * j) - (1. + j + 2. * k));
+  }
+
+  /// The moment about the origin of the force @p f at @p x, as a vector of 3 components.
+  template <int dim>
+  Tensor<1, 3>
+  moment_of(const Point<dim> &x, const Tensor<1, dim> &f)
+  {
+    Tensor<1, 3> x3, f3;
+    for (unsigned int d = 0; d < dim; ++d)
+      {
+        x3[d] = x[d];
+        f3[d] = f[d];
+      }
+    return cross_product_3d(x3, f3);
+  }
 
   template <int dim>
   std::string
@@ -185,6 +214,156 @@ namespace
               << std::endl;
   }
 
+  /// Particles with rotations over the FE translations of make_fe().
+  template <int dim>
+  void
+  run_micropolar(const unsigned int degree)
+  {
+    const MPI_Comm comm = MPI_COMM_WORLD;
+    std::cout << dim << "D, FE_Q(" << degree << "), particles with rotations" << std::endl;
+    perideal::FERegion<dim> fe(comm);
+    make_fe(fe, degree);
+    perideal::ParticleSystem<dim>                    particles(comm);
+    typename perideal::ParticleSystem<dim>::Settings settings;
+    settings.spacing = 0.0025;
+    settings.horizon = 3.015 * settings.spacing;
+    Point<dim> lower, upper;
+    lower[0] = 0.03;
+    upper[0] = 0.1;
+    upper[1] = 0.05;
+    if (dim == 3)
+      upper[dim - 1] = 0.025;
+    particles.generate(settings,
+                       BoundingBox<dim>(std::make_pair(lower, upper)),
+                       [](const Point<dim> &) { return true; },
+                       {});
+    const auto                      layout = perideal::FieldLayout::displacement_and_rotation(dim);
+    const unsigned int              nc     = layout.n_components();
+    perideal::TransferOperator<dim> transfer;
+    transfer.reinit(fe, particles, layout);
+    std::cout << "slaved " << transfer.n_global_slaved() << ", rows per particle "
+              << transfer.n_point_components() << " (" << layout.names() << ")" << std::endl;
+
+    // The linear field: translations and rotations at the slaved particles.
+    LinearAlgebra::distributed::Vector<double> U;
+    fe.initialize_vector(U);
+    VectorTools::interpolate(fe.get_dof_handler(), LinearField<dim>(), U);
+    perideal::ParticleVector u;
+    particles.reinit_vector(u, nc);
+    transfer.interpolate(U, u);
+    const LinearField<dim> field;
+    double                 translation_error = 0., rotation_error = 0.;
+    for (unsigned int i = 0; i < particles.n_owned(); ++i)
+      if (transfer.is_slaved(i))
+        for (unsigned int c = 0; c < nc; ++c)
+          {
+            const double value = u.local_element(i * nc + c);
+            if (layout.kind(c) == perideal::ComponentKind::translation)
+              translation_error =
+                std::max(translation_error,
+                         std::abs(value - field.value(particles.positions()[i], c)));
+            else
+              rotation_error =
+                std::max(rotation_error,
+                         std::abs(value - linear_field_rotation<dim>(layout[c].axis)));
+          }
+    translation_error = Utilities::MPI::max(translation_error, comm);
+    rotation_error    = Utilities::MPI::max(rotation_error, comm);
+    std::cout << "linear field: translations "
+              << (translation_error / 1e-4 < 1e-11 ? "exact" : "WRONG")
+              << ", rotations 1/2 curl U: " << (rotation_error / 0.5e-3 < 1e-10 ? "exact" : "WRONG")
+              << " (theta_z = " << linear_field_rotation<dim>(2) << ")" << std::endl;
+
+    // Forces and moments on the slaved particles, their resultant and moment about the origin.
+    perideal::ParticleVector f;
+    particles.reinit_vector(f, nc);
+    Tensor<1, dim> force_p;
+    Tensor<1, 3>   moment_p, couples;
+    for (unsigned int i = 0; i < particles.n_owned(); ++i)
+      if (transfer.is_slaved(i))
+        {
+          const auto     g = particles.global_index(i);
+          Tensor<1, dim> force;
+          for (unsigned int c = 0; c < nc; ++c)
+            {
+              const double value          = std::sin(1. + g + 0.3 * c);
+              f.local_element(i * nc + c) = value;
+              if (layout.kind(c) == perideal::ComponentKind::translation)
+                force[layout[c].axis] = value;
+              else
+                couples[layout[c].axis] += value;
+            }
+          force_p += force;
+          moment_p += moment_of(particles.positions()[i], force);
+        }
+    LinearAlgebra::distributed::Vector<double> F;
+    fe.initialize_vector(F);
+    transfer.add_transpose(f, F);
+    std::map<types::global_dof_index, Point<dim>> support;
+    DoFTools::map_dofs_to_support_points(hp::MappingCollection<dim>(MappingQ1<dim>()),
+                                         fe.get_dof_handler(),
+                                         support);
+    Tensor<1, dim> force_fe;
+    Tensor<1, 3>   moment_fe;
+    const auto     owned = fe.get_dof_handler().locally_owned_dofs();
+    for (unsigned int c = 0; c < dim; ++c)
+      {
+        std::vector<bool> mask(dim, false);
+        mask[c]                 = true;
+        const IndexSet selected = DoFTools::extract_dofs(fe.get_dof_handler(), ComponentMask(mask));
+        for (const auto dof : selected)
+          if (owned.is_element(dof))
+            {
+              Tensor<1, dim> nodal;
+              nodal[c] = F[dof];
+              force_fe[c] += F[dof];
+              moment_fe += moment_of(support.at(dof), nodal);
+            }
+      }
+    force_p                         = Utilities::MPI::sum(force_p, comm);
+    force_fe                        = Utilities::MPI::sum(force_fe, comm);
+    moment_p                        = Utilities::MPI::sum(moment_p, comm);
+    couples                         = Utilities::MPI::sum(couples, comm);
+    moment_fe                       = Utilities::MPI::sum(moment_fe, comm);
+    const Tensor<1, 3> moment_total = moment_p + couples;
+    std::cout << "P^T: force balance "
+              << ((force_fe - force_p).norm() / force_p.norm() < 1e-12 ? "< 1e-12" : "VIOLATED")
+              << ", moment balance with the couples "
+              << ((moment_fe - moment_total).norm() / moment_total.norm() < 1e-12 ? "< 1e-12" :
+                                                                                    "VIOLATED")
+              << " (the couples are "
+              << (couples.norm() / moment_total.norm() > 1e-3 ? "> 1e-3" : "< 1e-3, TOO SMALL")
+              << " of the total moment: the rotation rows carry them)" << std::endl;
+  }
+
+  /// A scalar particle field cannot follow FE translations.
+  void
+  mismatched_layouts()
+  {
+    const MPI_Comm        comm = MPI_COMM_WORLD;
+    perideal::FERegion<2> fe(comm);
+    make_fe(fe, 1);
+    perideal::ParticleSystem<2>                    particles(comm);
+    typename perideal::ParticleSystem<2>::Settings settings;
+    settings.spacing = 0.0025;
+    settings.horizon = 3.015 * settings.spacing;
+    particles.generate(settings,
+                       BoundingBox<2>(std::make_pair(Point<2>(0.03, 0.), Point<2>(0.1, 0.05))),
+                       [](const Point<2> &) { return true; },
+                       {});
+    perideal::TransferOperator<2> transfer;
+    try
+      {
+        transfer.reinit(fe, particles, perideal::FieldLayout::scalar("w"));
+        std::cout << "a scalar field over FE translations accepted: FAILED" << std::endl;
+      }
+    catch (const ExceptionBase &exc)
+      {
+        std::cout << "a scalar field over FE translations refused: "
+                  << perideal_tests::exception_text(exc) << std::endl;
+      }
+  }
+
   void
   outside_mesh()
   {
@@ -223,5 +402,9 @@ main(int argc, char **argv)
   run<2>(1);
   run<2>(2);
   run<3>(1);
+  run_micropolar<2>(1);
+  run_micropolar<2>(2);
+  run_micropolar<3>(1);
+  mismatched_layouts();
   outside_mesh();
 }

@@ -75,6 +75,13 @@ namespace perideal
 
   private:
     /**
+     * @brief Stop, naming the blending function, if a bond joins a particle with beta = 1 to one
+     * with beta = 0 (a transition narrower than the horizon).
+     */
+    void
+    check_overlap_width() const;
+
+    /**
      * @brief The forces of (@p U, @p u) with the model's own forces (no bond breaks here): @p
      * fe_residual as in equilibrium_forces(), @p pd_force the internal force density, and in
      * nodal_force the particles' unbalanced force V (f_int + f_pd) [N]. Returns the particles'

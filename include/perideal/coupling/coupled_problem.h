@@ -39,9 +39,9 @@ namespace perideal
    * is positive and within a horizon of it; FE cells where the FE weight vanishes carry
    * FE_Nothing. The method decides which particles follow the FE field (the blended method:
    * those inside FE-carrying cells, u = P U), the others are free. Checked before any heavy
-   * work: beta in [0, 1]; the transition 0 < beta < 1 at least a horizon wide (no bond joins a
-   * particle with beta = 1 to one with beta = 0); PD boundary conditions only on free
-   * particles.
+   * work: beta in [0, 1] (here), what the method needs of the overlap (its initialize(); the
+   * blended method: a transition 0 < beta < 1 at least a horizon wide); PD boundary conditions
+   * only on free particles.
    *
    * A file without a mesh is the coupled problem with beta = 1 and an FE region without
    * unknowns; a file without <Discretization/Body> is the one without particles
@@ -99,7 +99,7 @@ namespace perideal
   private:
     /**
      * @brief Stop, naming <Coupling/Blending function>, if beta leaves [0, 1] at a particle or
-     * FE vertex or if a bond joins a particle with beta = 1 to one with beta = 0.
+     * FE vertex.
      */
     void
     check_blending() const;

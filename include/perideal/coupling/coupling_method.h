@@ -15,6 +15,7 @@
 #include <perideal/pd/particle_system.h>
 #include <perideal/pd/static_solver.h>
 
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -35,6 +36,10 @@ namespace perideal
     double density = 0.;
     /// The unknowns of a point, the same in both regions.
     FieldLayout layout;
+    /// The overlap beta(x) in [0, 1] (1: PD only, 0: FE only).
+    std::function<double(const dealii::Point<dim> &)> blending;
+    /// The entry that gives it, "<Coupling/Blending function> = <...>", for messages.
+    std::string blending_entry;
   };
 
   /**
@@ -116,6 +121,8 @@ namespace perideal
     /**
      * @brief Build what the method needs (e.g. the transfer operator P) once the FE region (set
      * up with fe_weight()) and the particles (with particle_weight() as energy weights) exist.
+     * First check what the method needs of the overlap and stop, naming
+     * CoupledRegions::blending_entry, if it does not hold (collective).
      */
     virtual void
     initialize(const CoupledRegions<dim> &regions) = 0;

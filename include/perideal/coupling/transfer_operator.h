@@ -18,10 +18,15 @@ namespace perideal
    * particles to the FE field builds one (BlendedCoupling does).
    *
    * Rows are particle components (global index * n_components + component, with the
-   * components of the FE region's FieldLayout, scalar or vector; partitioned like the
+   * components of the particles' FieldLayout, scalar or vector; partitioned like the
    * particles), columns FE dofs (partitioned like the dofs). A particle inside a cell with FE
    * unknowns is *slaved*: its rows hold the shape functions of that cell (each
    * particle is given to exactly one cell, so every slaved row sums to 1 per component). A
+   * particle component follows the FE component of the same name; a rotation the FE field
+   * lacks (a micropolar model coupled to elasticity) follows half the curl of the FE
+   * displacement, theta = 1/2 curl U (2D: theta_z = 1/2 (dU_y/dx - dU_x/dy)), whose rows are
+   * the shape gradients of the cell (they sum to 0), so that P^T turns a moment m on a slaved
+   * particle into nodal forces 1/2 m x grad N_a: no net force, moment m. A
    * particle inside an FE_Nothing cell is *free*: its row is empty. A particle outside the mesh
    * is an error. The cells are located with deal.II's distributed point search, so a particle's
    * rank and its cell's rank may differ; the rank that owns the cell computes the row and
@@ -35,8 +40,10 @@ namespace perideal
 
     /**
      * @brief Build P for the current particle positions (reference configuration), with the
-     * unknowns @p layout per point (the problem's: both regions share it; without FE unknowns
-     * P is empty but its rows still have the particles' layout).
+     * unknowns @p layout per particle and the FE region's per node. The two must name the same
+     * components, except rotations the particles add to FE translations (throws otherwise,
+     * naming both). Without FE unknowns P is empty but its rows still have the particles'
+     * layout.
      */
     void
     reinit(const FERegion<dim>       &fe,
@@ -75,15 +82,32 @@ namespace perideal
     const SparseMatrix &
     matrix() const;
 
-    /// The number of unknowns per point (the rows of a particle, the columns of an FE node).
+    /// The number of unknowns per particle (its rows).
     unsigned int
     n_point_components() const;
 
   private:
+    /// What the rows of a particle are made of.
+    struct ComponentRows
+    {
+      /// Per FE component, the particle component that takes its values.
+      std::vector<unsigned int> value;
+      /// The particle rotations that follow 1/2 curl of the FE translations.
+      std::vector<unsigned int> curl;
+      /// A particle component with value rows (its rows sum to 1 where slaved).
+      unsigned int first_value_row = 0;
+    };
+
+    /// The rows of @p particle_layout from @p fe_layout; if @p check, throw on a mismatch.
+    static ComponentRows
+    component_rows(const FieldLayout &fe_layout,
+                   const FieldLayout &particle_layout,
+                   const bool         check);
+
     SparseMatrix                    P;
     std::vector<bool>               slaved;
     dealii::types::global_dof_index n_slaved = 0;
-    /// Components per point (the FE region's layout, the particles' too).
+    /// Components per particle (the particles' layout).
     unsigned int           n_components = dim;
     mutable ParticleVector particle_buffer;
     mutable FEVector       fe_buffer;
