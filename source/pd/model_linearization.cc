@@ -1,6 +1,6 @@
 // ---------------------------------------------------------------------
 // PeriDeal: stiffness bounds and linearizations of the material models (for the quasi-static
-// solvers). Kept apart from the force kernels in bond_based.cc and linear_peridynamic_solid.cc.
+// solvers). Kept apart from the force kernels of the models' own files.
 // ---------------------------------------------------------------------
 #include <perideal/pd/antiplane_bond_based.h>
 #include <perideal/pd/bond_based.h>
@@ -72,6 +72,36 @@ namespace perideal
     }
 
     /**
+     * @brief The stiffness k_b = @p coefficient[b] / |xi| of every intact bond (0 for broken
+     * ones): the bond row weight of a bond-based model of pair coefficients @p coefficient
+     * (bond_pair_coefficients()).
+     */
+    std::vector<double>
+    intact_bond_stiffness(const BondList &bonds, const std::vector<double> &coefficient)
+    {
+      std::vector<double> k(bonds.size(), 0.);
+      for (std::size_t b = 0; b < bonds.size(); ++b)
+        if (bonds.intact[b])
+          k[b] = coefficient[b] / bonds.length[b];
+      return k;
+    }
+
+    /**
+     * @brief The row w_j - w_i of bond b stored in the row of particle i: the bond slope of a
+     * scalar field times |xi| (the antiplane models' bond-based energy).
+     */
+    auto
+    slope_row(const BondList &bonds)
+    {
+      return [&bonds](const unsigned int                   i,
+                      const std::size_t                    b,
+                      std::vector<LinearizedModel::Entry> &row) {
+        row.push_back({i, 0, -1.});
+        row.push_back({bonds.neighbor[b], 0, 1.});
+      };
+    }
+
+    /**
      * @brief The row n_b . (u_j - u_i) of bond b stored in the row of particle i: the
      * linearized extension of a displacement model.
      */
@@ -104,13 +134,11 @@ namespace perideal
   void
   BondBased<dim>::linearize(const ParticleSystem<dim> &particles, LinearizedModel &linearized) const
   {
-    const BondList     &bonds = particles.bonds();
-    std::vector<double> k(bonds.size(), 0.);
-    for (std::size_t b = 0; b < bonds.size(); ++b)
-      if (bonds.intact[b])
-        k[b] = bond_coefficient[b] / bonds.length[b];
     linearized.reinit(this->field_layout().n_components(), particles.n_owned());
-    add_bond_rows(particles, k, extension_row<dim>(particles), linearized);
+    add_bond_rows(particles,
+                  intact_bond_stiffness(particles.bonds(), bond_coefficient),
+                  extension_row<dim>(particles),
+                  linearized);
   }
 
   // Antiplane: the bond b couples w_i and w_j through k_b = c G beta V_j / |xi| as PMB's
@@ -130,22 +158,12 @@ namespace perideal
   AntiplaneBondBased<dim>::linearize(const ParticleSystem<dim> &particles,
                                      LinearizedModel           &linearized) const
   {
-    const BondList     &bonds = particles.bonds();
-    std::vector<double> k(bonds.size(), 0.);
-    for (std::size_t b = 0; b < bonds.size(); ++b)
-      if (bonds.intact[b])
-        k[b] = bond_coefficient[b] / bonds.length[b];
+    const BondList &bonds = particles.bonds();
     linearized.reinit(this->field_layout().n_components(), particles.n_owned());
-    add_bond_rows(
-      particles,
-      k,
-      [&bonds](const unsigned int                   i,
-               const std::size_t                    b,
-               std::vector<LinearizedModel::Entry> &row) {
-        row.push_back({i, 0, -1.});
-        row.push_back({bonds.neighbor[b], 0, 1.});
-      },
-      linearized);
+    add_bond_rows(particles,
+                  intact_bond_stiffness(bonds, bond_coefficient),
+                  slope_row(bonds),
+                  linearized);
   }
 
   // LPS: the Gershgorin estimate behind stable_time_step() (direct deviatoric stiffness plus the
