@@ -385,7 +385,7 @@ namespace perideal
   AntiplaneStateBased<dim>::summary() const
   {
     std::ostringstream out;
-    out << "antiplane state based: mu = " << mu << " Pa, b = " << b_state
+    out << "antiplane state based: mu = " << mu << " Pa, b = " << b_state << " 1/m^4"
         << ", stabilization alpha = " << alpha;
     if (alpha > 0.)
       out << " (bond-based micromodulus c = " << c << " N/m^6)";

@@ -117,7 +117,8 @@ namespace perideal
     shear_modulus() const;
 
     /**
-     * @brief The constant b of the shear angles [1/m^4 in 3D, 1/(m^3 h) in 2D].
+     * @brief The constant b of the shear angles [1/m^4]: 2 / (pi h delta^3) in 2D,
+     * 9 / (4 pi delta^4) in 3D.
      */
     double
     shear_angle_constant() const;
