@@ -1,9 +1,10 @@
-// The shared bond-block loop (for_each_bond_block) with a scalar pair law of one component per
-// particle, the antiplane form u = w e_z: bond strain s = (w_j - w_i)/|xi|, pair energy
-// k s^2 |xi| / 4 at each end and force k s on i (-k s on j), breaking where |s| exceeds the
-// critical stretch (the loop orients a bond from its end of lower kernel index, so a law must
-// not depend on the orientation); forces, energies and broken bonds against a plain loop over the
-// compressed-row bond list on a body with a hole, in 2D and 3D, with bonds to ghost particles.
+// The shared bond-block loop (for_each_bond_block) with the scalar pair law of one component per
+// particle (SlopePairLaw, the antiplane models' bond-based law), the antiplane form u = w e_z: bond
+// strain s = (w_j - w_i)/|xi|, pair energy k s^2 |xi| / 4 at each end and force k s on i (-k s on
+// j), breaking where |s| exceeds the critical stretch (the loop orients a bond from its end of
+// lower kernel index, so a law must not depend on the orientation); forces, energies and broken
+// bonds against a plain loop over the compressed-row bond list on a body with a hole, in 2D and 3D,
+// with bonds to ghost particles.
 
 #include <deal.II/base/bounding_box.h>
 #include <deal.II/base/mpi.h>
@@ -27,59 +28,6 @@ namespace
 {
   using dealii::deallog;
   const double dx = 1e-3, crit = 1e-3;
-
-  // The scalar pair law: n_components = 1, outputs force and energy.
-  template <int dim>
-  struct ScalarPairLaw
-  {
-    static constexpr unsigned int n_outputs    = 2;
-    static constexpr bool         breaks_bonds = true;
-    // k per lane.
-    const double *coefficient;
-
-    struct Side
-    {};
-
-    Side
-    side(const unsigned int) const
-    {
-      return {};
-    }
-
-    // s, and |s| (what breaks).
-    struct Strain
-    {
-      perideal::bond_simd::Vector value, stretch;
-    };
-
-    Strain
-    strain(const typename perideal::BondBlocks<dim>::BondClass &bond,
-           const perideal::bond_simd::Vector                   *w_a,
-           const perideal::bond_simd::Vector                   *w_b) const
-    {
-      const perideal::bond_simd::Vector s = (w_b[0] - w_a[0]) * bond.inverse_length;
-      return {s, std::experimental::abs(s)};
-    }
-
-    void
-    pair(const typename perideal::BondBlocks<dim>::BondClass &bond,
-         const Strain                                        &s,
-         const Side &,
-         const perideal::BondLanes   &lanes,
-         perideal::bond_simd::Vector *to_a,
-         perideal::bond_simd::Vector *to_b) const
-    {
-      using namespace perideal::bond_simd;
-      const Vector k(coefficient + lanes.first_lane, stdx::element_aligned);
-      Vector       t = 0., e = 0.;
-      stdx::where(lanes.active, t) = k * s.value;
-      stdx::where(lanes.active, e) = (0.25 * bond.length) * k * s.value * s.value;
-      to_a[0]                      = t;
-      to_b[0]                      = -t;
-      to_a[1]                      = e;
-      to_b[1]                      = e;
-    }
-  };
 
   template <int dim>
   void
@@ -152,7 +100,7 @@ namespace
     perideal::for_each_bond_block<1>(blocks,
                                      {{blocks.component(w_field, 0)}},
                                      {{blocks.component(f_field, 0), blocks.component(e_field, 0)}},
-                                     ScalarPairLaw<dim>{lane_k.data()},
+                                     perideal::SlopePairLaw<dim, true>{lane_k.data()},
                                      bonds,
                                      crit);
     std::vector<double> f(ps.n_owned()), e(ps.n_owned());

@@ -34,13 +34,8 @@
 namespace
 {
   using dealii::deallog;
+  using pd_tests::ok;
   const MPI_Comm comm = MPI_COMM_WORLD;
-
-  const char *
-  ok(const bool condition)
-  {
-    return condition ? "ok" : "FAILED";
-  }
 
   // The test model (2D only).
   template <int dim>
@@ -293,20 +288,7 @@ namespace
     perideal::LinearizedModel linearized;
     model.linearize(ps, linearized);
     perideal::ParticleVector f_linear;
-    ps.reinit_vector(f_linear, 3);
-    double energy_linear = 0.;
-    for (std::size_t r = 0; r < linearized.n_rows(); ++r)
-      {
-        double e = 0.;
-        for (auto entry = linearized.row_begin(r); entry != linearized.row_end(r); ++entry)
-          e += entry->coefficient * u.local_element(3 * entry->particle + entry->component);
-        energy_linear += 0.5 * linearized.weight(r) * e * e;
-        for (auto entry = linearized.row_begin(r); entry != linearized.row_end(r); ++entry)
-          f_linear.local_element(3 * entry->particle + entry->component) -=
-            linearized.weight(r) * e * entry->coefficient / ps.volumes()[entry->particle];
-      }
-    f_linear.compress(dealii::VectorOperation::add);
-    energy_linear = dealii::Utilities::MPI::sum(energy_linear, comm);
+    const double energy_linear = pd_tests::linearized_forces(ps, linearized, u, f_linear);
     f_linear -= f;
     deallog << "linearization: 3 components " << ok(linearized.n_components() == 3)
             << ", max |f_G - f| / max |f| < 1e-12 " << ok(largest(f_linear) < 1e-12 * largest(f))

@@ -5,6 +5,7 @@
 #include <deal.II/base/bounding_box.h>
 #include <deal.II/base/exceptions.h>
 #include <deal.II/base/logstream.h>
+#include <deal.II/base/mpi.h>
 #include <deal.II/base/parameter_handler.h>
 #include <deal.II/base/point.h>
 #include <deal.II/base/tensor.h>
@@ -160,6 +161,40 @@ namespace pd_tests
     const double                  dx, delta;
     perideal::ParticleSystem<dim> ps;
   };
+
+  // The verdict printed after a check.
+  inline const char *
+  ok(const bool condition)
+  {
+    return condition ? "ok" : "FAILED";
+  }
+
+  // The nodal forces of a linearization divided by the volumes, f = -(1/V) G^T diag(w) G u, of
+  // the owned particles into f (laid out like u), and its energy 1/2 sum_r w_r (G_r u)^2 summed
+  // over the ranks.
+  template <int dim>
+  double
+  linearized_forces(const perideal::ParticleSystem<dim> &ps,
+                    const perideal::LinearizedModel     &linearized,
+                    const perideal::ParticleVector      &u,
+                    perideal::ParticleVector            &f)
+  {
+    const unsigned int nc = linearized.n_components();
+    ps.reinit_vector(f, nc);
+    double energy = 0.;
+    for (std::size_t r = 0; r < linearized.n_rows(); ++r)
+      {
+        double e = 0.;
+        for (auto entry = linearized.row_begin(r); entry != linearized.row_end(r); ++entry)
+          e += entry->coefficient * u.local_element(nc * entry->particle + entry->component);
+        energy += 0.5 * linearized.weight(r) * e * e;
+        for (auto entry = linearized.row_begin(r); entry != linearized.row_end(r); ++entry)
+          f.local_element(nc * entry->particle + entry->component) -=
+            linearized.weight(r) * e * entry->coefficient / ps.volumes()[entry->particle];
+      }
+    f.compress(dealii::VectorOperation::add);
+    return dealii::Utilities::MPI::sum(energy, ps.get_communicator());
+  }
 
   // Declare the parameters of a material model, set the given entries and parse them.
   template <typename Model>

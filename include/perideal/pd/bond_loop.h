@@ -190,6 +190,77 @@ namespace perideal
       return deformed_bond<dim>(bond, u_a, u_b);
     }
   };
+
+  /**
+   * @brief The bond slope of a scalar field per lane: r = (w_b - w_a)/|xi| and its magnitude
+   * |r|, the `stretch` that breaks a bond.
+   */
+  struct BondSlope
+  {
+    bond_simd::Vector value, stretch;
+  };
+
+  /**
+   * @brief The pair law of the bond-based energy of a scalar field (the antiplane models):
+   * slope r (BondSlope) as its strain, pair force k r on the particle side (-k r on the
+   * neighbour) and, if @p with_energy, the pair energy k r^2 |xi| / 4 at both ends, with k the
+   * per-lane coefficient (c G beta V_i V_j); a bond breaks where |r| exceeds the critical slope.
+   * The law does not depend on the bond's orientation. A scalar law that breaks bonds by their
+   * slope derives from it and adds its own outputs and pair().
+   */
+  template <int dim, bool with_energy>
+  struct SlopePairLaw
+  {
+    static constexpr unsigned int n_outputs    = 1 + (with_energy ? 1 : 0);
+    static constexpr bool         breaks_bonds = true;
+    /// k per lane.
+    const double *coefficient;
+
+    /// Nothing read per group on the particle side.
+    struct Side
+    {};
+
+    /// Nothing to read for the group of particle @p a.
+    Side
+    side(const unsigned int) const
+    {
+      return {};
+    }
+
+    /// The slope of the lanes and its magnitude (what breaks a bond).
+    BondSlope
+    strain(const typename BondBlocks<dim>::BondClass &bond,
+           const bond_simd::Vector                   *w_a,
+           const bond_simd::Vector                   *w_b) const
+    {
+      const bond_simd::Vector r = (w_b[0] - w_a[0]) * bond.inverse_length;
+      return {r, std::experimental::abs(r)};
+    }
+
+    /// The pair force k r (and energy) of the active lanes.
+    void
+    pair(const typename BondBlocks<dim>::BondClass &bond,
+         const BondSlope                           &r,
+         const Side &,
+         const BondLanes   &lanes,
+         bond_simd::Vector *to_a,
+         bond_simd::Vector *to_b) const
+    {
+      using namespace bond_simd;
+      const Vector k(coefficient + lanes.first_lane, stdx::element_aligned);
+      Vector       t               = 0.;
+      stdx::where(lanes.active, t) = k * r.value;
+      to_a[0]                      = t;
+      to_b[0]                      = -t;
+      if constexpr (with_energy)
+        {
+          Vector e                     = 0.;
+          stdx::where(lanes.active, e) = (0.25 * bond.length) * k * r.value * r.value;
+          to_a[1]                      = e;
+          to_b[1]                      = e;
+        }
+    }
+  };
 } // namespace perideal
 
 #endif
