@@ -106,6 +106,59 @@ namespace
       [](const Point<dim> &x) { return 1. - std::min(1., std::max(0., (x[0] - 0.04) / 0.02)); });
   }
 
+  /// Particles of spacing 2.5 mm over [@p x_low, @p x_high] x [0, 0.05] (x [0, 0.025]).
+  template <int dim>
+  void
+  generate_particles(perideal::ParticleSystem<dim> &particles,
+                     const double                   x_low,
+                     const double                   x_high)
+  {
+    typename perideal::ParticleSystem<dim>::Settings settings;
+    settings.spacing = 0.0025;
+    settings.horizon = 3.015 * settings.spacing;
+    Point<dim> lower, upper;
+    lower[0] = x_low;
+    upper[0] = x_high;
+    upper[1] = 0.05;
+    if (dim == 3)
+      upper[dim - 1] = 0.025;
+    particles.generate(settings,
+                       BoundingBox<dim>(std::make_pair(lower, upper)),
+                       [](const Point<dim> &) { return true; },
+                       {});
+  }
+
+  /// The resultant force and moment about the origin of the FE nodal forces @p F (all ranks).
+  template <int dim>
+  std::pair<Tensor<1, dim>, Tensor<1, 3>>
+  fe_resultants(const perideal::FERegion<dim>                    &fe,
+                const LinearAlgebra::distributed::Vector<double> &F)
+  {
+    std::map<types::global_dof_index, Point<dim>> support;
+    DoFTools::map_dofs_to_support_points(hp::MappingCollection<dim>(MappingQ1<dim>()),
+                                         fe.get_dof_handler(),
+                                         support);
+    Tensor<1, dim> force;
+    Tensor<1, 3>   moment;
+    const auto     owned = fe.get_dof_handler().locally_owned_dofs();
+    for (unsigned int c = 0; c < dim; ++c)
+      {
+        std::vector<bool> mask(dim, false);
+        mask[c]                 = true;
+        const IndexSet selected = DoFTools::extract_dofs(fe.get_dof_handler(), ComponentMask(mask));
+        for (const auto dof : selected)
+          if (owned.is_element(dof))
+            {
+              Tensor<1, dim> nodal;
+              nodal[c] = F[dof];
+              force += nodal;
+              moment += moment_of(support.at(dof), nodal);
+            }
+      }
+    const MPI_Comm comm = MPI_COMM_WORLD;
+    return {Utilities::MPI::sum(force, comm), Utilities::MPI::sum(moment, comm)};
+  }
+
   template <int dim>
   void
   run(const unsigned int degree)
@@ -115,20 +168,8 @@ namespace
     perideal::FERegion<dim> fe(comm);
     make_fe(fe, degree);
 
-    perideal::ParticleSystem<dim>                    particles(comm);
-    typename perideal::ParticleSystem<dim>::Settings settings;
-    settings.spacing = 0.0025;
-    settings.horizon = 3.015 * settings.spacing;
-    Point<dim> lower, upper;
-    lower[0] = 0.03;
-    upper[0] = 0.1;
-    upper[1] = 0.05;
-    if (dim == 3)
-      upper[dim - 1] = 0.025;
-    particles.generate(settings,
-                       BoundingBox<dim>(std::make_pair(lower, upper)),
-                       [](const Point<dim> &) { return true; },
-                       {});
+    perideal::ParticleSystem<dim> particles(comm);
+    generate_particles(particles, 0.03, 0.1);
 
     perideal::TransferOperator<dim> transfer;
     transfer.reinit(fe, particles, fe.field_layout());
@@ -180,32 +221,10 @@ namespace
     LinearAlgebra::distributed::Vector<double> F;
     fe.initialize_vector(F);
     transfer.add_transpose(f, F);
-    std::map<types::global_dof_index, Point<dim>> support;
-    DoFTools::map_dofs_to_support_points(hp::MappingCollection<dim>(MappingQ1<dim>()),
-                                         fe.get_dof_handler(),
-                                         support);
-    Tensor<1, dim> force_fe;
-    double         moment_fe = 0.;
-    // Per dof component: use the component masks of the FE space.
-    const auto owned = fe.get_dof_handler().locally_owned_dofs();
-    for (unsigned int c = 0; c < dim; ++c)
-      {
-        std::vector<bool> mask(dim, false);
-        mask[c]                 = true;
-        const IndexSet selected = DoFTools::extract_dofs(fe.get_dof_handler(), ComponentMask(mask));
-        for (const auto dof : selected)
-          if (owned.is_element(dof))
-            {
-              const double value = F[dof];
-              force_fe[c] += value;
-              const Point<dim> &x = support.at(dof);
-              moment_fe += (c == 1 ? x[0] * value : c == 0 ? -x[1] * value : 0.);
-            }
-      }
-    force_p   = Utilities::MPI::sum(force_p, comm);
-    force_fe  = Utilities::MPI::sum(force_fe, comm);
-    moment_p  = Utilities::MPI::sum(moment_p, comm);
-    moment_fe = Utilities::MPI::sum(moment_fe, comm);
+    const auto [force_fe, moment_fe_vector] = fe_resultants(fe, F);
+    const double moment_fe                  = moment_fe_vector[2];
+    force_p                                 = Utilities::MPI::sum(force_p, comm);
+    moment_p                                = Utilities::MPI::sum(moment_p, comm);
     std::cout << "force balance |sum F - sum f| / |sum f|: "
               << ((force_fe - force_p).norm() / force_p.norm() < 1e-12 ? "< 1e-12" : "VIOLATED")
               << ", moment balance: "
@@ -223,20 +242,8 @@ namespace
     std::cout << dim << "D, FE_Q(" << degree << "), particles with rotations" << std::endl;
     perideal::FERegion<dim> fe(comm);
     make_fe(fe, degree);
-    perideal::ParticleSystem<dim>                    particles(comm);
-    typename perideal::ParticleSystem<dim>::Settings settings;
-    settings.spacing = 0.0025;
-    settings.horizon = 3.015 * settings.spacing;
-    Point<dim> lower, upper;
-    lower[0] = 0.03;
-    upper[0] = 0.1;
-    upper[1] = 0.05;
-    if (dim == 3)
-      upper[dim - 1] = 0.025;
-    particles.generate(settings,
-                       BoundingBox<dim>(std::make_pair(lower, upper)),
-                       [](const Point<dim> &) { return true; },
-                       {});
+    perideal::ParticleSystem<dim> particles(comm);
+    generate_particles(particles, 0.03, 0.1);
     const auto                      layout = perideal::FieldLayout::displacement_and_rotation(dim);
     const unsigned int              nc     = layout.n_components();
     perideal::TransferOperator<dim> transfer;
@@ -299,33 +306,11 @@ namespace
     LinearAlgebra::distributed::Vector<double> F;
     fe.initialize_vector(F);
     transfer.add_transpose(f, F);
-    std::map<types::global_dof_index, Point<dim>> support;
-    DoFTools::map_dofs_to_support_points(hp::MappingCollection<dim>(MappingQ1<dim>()),
-                                         fe.get_dof_handler(),
-                                         support);
-    Tensor<1, dim> force_fe;
-    Tensor<1, 3>   moment_fe;
-    const auto     owned = fe.get_dof_handler().locally_owned_dofs();
-    for (unsigned int c = 0; c < dim; ++c)
-      {
-        std::vector<bool> mask(dim, false);
-        mask[c]                 = true;
-        const IndexSet selected = DoFTools::extract_dofs(fe.get_dof_handler(), ComponentMask(mask));
-        for (const auto dof : selected)
-          if (owned.is_element(dof))
-            {
-              Tensor<1, dim> nodal;
-              nodal[c] = F[dof];
-              force_fe[c] += F[dof];
-              moment_fe += moment_of(support.at(dof), nodal);
-            }
-      }
-    force_p                         = Utilities::MPI::sum(force_p, comm);
-    force_fe                        = Utilities::MPI::sum(force_fe, comm);
-    moment_p                        = Utilities::MPI::sum(moment_p, comm);
-    couples                         = Utilities::MPI::sum(couples, comm);
-    moment_fe                       = Utilities::MPI::sum(moment_fe, comm);
-    const Tensor<1, 3> moment_total = moment_p + couples;
+    const auto [force_fe, moment_fe] = fe_resultants(fe, F);
+    force_p                          = Utilities::MPI::sum(force_p, comm);
+    moment_p                         = Utilities::MPI::sum(moment_p, comm);
+    couples                          = Utilities::MPI::sum(couples, comm);
+    const Tensor<1, 3> moment_total  = moment_p + couples;
     std::cout << "P^T: force balance "
               << ((force_fe - force_p).norm() / force_p.norm() < 1e-12 ? "< 1e-12" : "VIOLATED")
               << ", moment balance with the couples "
@@ -343,14 +328,8 @@ namespace
     const MPI_Comm        comm = MPI_COMM_WORLD;
     perideal::FERegion<2> fe(comm);
     make_fe(fe, 1);
-    perideal::ParticleSystem<2>                    particles(comm);
-    typename perideal::ParticleSystem<2>::Settings settings;
-    settings.spacing = 0.0025;
-    settings.horizon = 3.015 * settings.spacing;
-    particles.generate(settings,
-                       BoundingBox<2>(std::make_pair(Point<2>(0.03, 0.), Point<2>(0.1, 0.05))),
-                       [](const Point<2> &) { return true; },
-                       {});
+    perideal::ParticleSystem<2> particles(comm);
+    generate_particles(particles, 0.03, 0.1);
     perideal::TransferOperator<2> transfer;
     try
       {
@@ -370,14 +349,8 @@ namespace
     const MPI_Comm        comm = MPI_COMM_WORLD;
     perideal::FERegion<2> fe(comm);
     make_fe(fe, 1);
-    perideal::ParticleSystem<2>                    particles(comm);
-    typename perideal::ParticleSystem<2>::Settings settings;
-    settings.spacing = 0.0025;
-    settings.horizon = 3.015 * settings.spacing;
-    particles.generate(settings,
-                       BoundingBox<2>(std::make_pair(Point<2>(0.05, 0.), Point<2>(0.11, 0.05))),
-                       [](const Point<2> &) { return true; },
-                       {});
+    perideal::ParticleSystem<2> particles(comm);
+    generate_particles(particles, 0.05, 0.11);
     perideal::TransferOperator<2> transfer;
     try
       {
