@@ -70,6 +70,18 @@ namespace perideal
     return 0;
   }
 
+  bool
+  FieldLayout::extends_by_rotations(const FieldLayout &base) const
+  {
+    if (base.n_components() >= n_components() || base.n_components(ComponentKind::rotation) > 0)
+      return false;
+    for (unsigned int c = 0; c < n_components(); ++c)
+      if (c < base.n_components() ? !(components[c] == base[c]) :
+                                    components[c].kind != ComponentKind::rotation)
+        return false;
+    return true;
+  }
+
   std::string
   FieldLayout::names() const
   {

@@ -21,7 +21,8 @@ namespace perideal
 
   namespace
   {
-    // The registered FE physics whose unknowns are @p layout, separated by ', ' ("none").
+    // The registered FE physics that can join particles with the unknowns @p layout (the same
+    // or @p layout without its rotations), separated by ', ' ("none").
     template <int dim>
     std::string
     fe_physics_of(const FieldLayout &layout)
@@ -29,8 +30,12 @@ namespace perideal
       using Registry = PluginRegistry<FEPhysics<dim>>;
       std::string names;
       for (const auto &name : Utilities::split_string_list(Registry::pattern_string(), '|'))
-        if (Registry::create(name, "Finite elements/Physics")->field_layout() == layout)
-          names += (names.empty() ? "" : ", ") + name;
+        {
+          const FieldLayout fe_layout =
+            Registry::create(name, "Finite elements/Physics")->field_layout();
+          if (fe_layout == layout || layout.extends_by_rotations(fe_layout))
+            names += (names.empty() ? "" : ", ") + name;
+        }
       return names.empty() ? "none" : names;
     }
   } // namespace
@@ -101,16 +106,19 @@ namespace perideal
                            ParameterUtilities::format_number(fe.get_density()) +
                            "; explicit dynamics (<Solver/Type> = explicit) needs the FE mass: "
                            "accepted values are > 0."));
-    // The unknowns: the particles' and the FE region's, the same in a coupled problem.
+    // The unknowns: the particles' and the FE region's, the same in a coupled problem, or the
+    // FE translations and the particles' rotations (half the curl of the FE displacement).
     layout = pd.has_body() ? pd.field_layout() : fe.field_layout();
-    AssertThrow(!pd.has_body() || !fe.has_mesh() || pd.field_layout() == fe.field_layout(),
+    AssertThrow(!pd.has_body() || !fe.has_mesh() || pd.field_layout() == fe.field_layout() ||
+                  pd.field_layout().extends_by_rotations(fe.field_layout()),
                 ExcMessage("<Material/Model> = <" + prm.get({"Material"}, "Model") +
                            "> has the unknowns " + pd.field_layout().description() +
                            ", <Finite elements/Physics> = <" +
                            prm.get({"Finite elements"}, "Physics") + "> has " +
                            fe.field_layout().description() +
-                           ": a coupled problem needs the same on both sides. Accepted values "
-                           "of <Finite elements/Physics> with this material model: " +
+                           ": a coupled problem needs the same on both sides (the particles "
+                           "may add rotations to FE translations). Accepted values of "
+                           "<Finite elements/Physics> with this material model: " +
                            fe_physics_of<dim>(pd.field_layout()) + "."));
     // Every expression is parsed here, so that --validate finds a malformed one.
     const unsigned int n_components = layout.n_components();

@@ -84,7 +84,7 @@ namespace perideal
     fe_owned = fe_region.get_dof_handler().locally_owned_dofs();
     AssertThrow(fe_owned.is_contiguous(),
                 ExcInternalError("The owned FE dofs are not contiguous."));
-    // The FE region and the particles share one field layout (CoupledProblem checks it).
+    // The particles' unknowns (the FE region's, or those and rotations; CoupledProblem checks).
     n_components               = transfer_operator.n_point_components();
     const unsigned int nc      = n_components;
     particle_rows              = particle_system.partitioner(nc)->locally_owned_range();
@@ -336,7 +336,10 @@ namespace perideal
         const auto                                        fe_modes = fe->component_masks();
         TrilinosWrappers::PreconditionAMG::AdditionalData data;
         data.elliptic = true;
-        data.constant_modes.assign(fe_modes.size(), std::vector<bool>(n_local, false));
+        // One mode per FE component and per particle component (particle rotations the FE
+        // field lacks have modes of their own).
+        data.constant_modes.assign(std::max<std::size_t>(fe_modes.size(), n_components),
+                                   std::vector<bool>(n_local, false));
         for (unsigned int d = 0; d < fe_modes.size(); ++d)
           for (std::size_t k = 0; k < n_fe_owned; ++k)
             data.constant_modes[d][k] = fe_modes[d][k];

@@ -33,6 +33,9 @@ using namespace dealii;
 
 namespace
 {
+  using coupling_tests::numbers_of;
+  using coupling_tests::ok;
+
   const double mu = 26e9, rho = 2700.;
 
   const std::string base = R"(
@@ -109,42 +112,9 @@ end
   run(const std::map<std::string, std::string>                       &values,
       const std::function<void(const perideal::CoupledProblem<2> &)> &inspect = {})
   {
-    const std::string file = "antiplane_coupling.prm";
-    coupling_tests::write_file(file, coupling_tests::substitute(base, values));
-    std::ostringstream          log;
-    perideal::CoupledProblem<2> problem(MPI_COMM_WORLD, log);
-    coupling_tests::parse(problem, file);
-    problem.setup();
-    problem.run();
-    if (inspect)
-      inspect(problem);
-    MPI_Barrier(MPI_COMM_WORLD);
-    return log.str();
-  }
-
-  // The numbers in the line of @p log that starts with @p key (after the key).
-  std::vector<double>
-  numbers_of(const std::string &log, const std::string &key)
-  {
-    std::istringstream lines(log);
-    for (std::string line; std::getline(lines, line);)
-      if (line.rfind(key, 0) == 0)
-        {
-          std::vector<double> numbers;
-          const std::string   rest = line.substr(key.size());
-          for (std::size_t at = 0; at < rest.size();)
-            {
-              const std::size_t start = rest.find_first_of("0123456789", at);
-              if (start == std::string::npos)
-                break;
-              std::size_t length = 0;
-              numbers.push_back(std::stod(rest.substr(start), &length));
-              at = start + length;
-            }
-          return numbers;
-        }
-    std::cout << "line '" << key << "' missing (FAILED)" << std::endl;
-    return {std::nan(""), std::nan(""), std::nan("")};
+    return coupling_tests::run("antiplane_coupling.prm",
+                               coupling_tests::substitute(base, values),
+                               inspect);
   }
 
   // The largest relative displacement error of FE nodes and particles, and the ghost force of
@@ -156,12 +126,6 @@ end
       numbers_of(log, "Displacement error (largest, relative to the largest exact value): ");
     const auto residual = numbers_of(log, "Force residual of the exact field: ");
     return {std::max(displacement[0], displacement[1]), residual.back()};
-  }
-
-  const char *
-  ok(const bool condition)
-  {
-    return condition ? "ok" : "FAILED";
   }
 
   std::map<std::string, std::string>

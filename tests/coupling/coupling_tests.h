@@ -9,9 +9,14 @@
 #include <perideal/base/region.h>
 #include <perideal/coupling/coupled_problem.h>
 
+#include <cmath>
 #include <fstream>
+#include <functional>
+#include <iostream>
 #include <map>
+#include <sstream>
 #include <string>
+#include <vector>
 
 namespace coupling_tests
 {
@@ -62,6 +67,59 @@ namespace coupling_tests
     perideal::ParameterUtilities::parse_file(prm, file);
     problem.parse_parameters(prm);
   }
+  /**
+   * Write @p text to @p file, run the 2D coupled problem it describes and return its log;
+   * @p inspect sees the problem after the run.
+   */
+  inline std::string
+  run(const std::string                                              &file,
+      const std::string                                              &text,
+      const std::function<void(const perideal::CoupledProblem<2> &)> &inspect = {})
+  {
+    write_file(file, text);
+    std::ostringstream          log;
+    perideal::CoupledProblem<2> problem(MPI_COMM_WORLD, log);
+    parse(problem, file);
+    problem.setup();
+    problem.run();
+    if (inspect)
+      inspect(problem);
+    MPI_Barrier(MPI_COMM_WORLD);
+    return log.str();
+  }
+
+  /// "ok" if @p condition holds, "FAILED" otherwise.
+  inline const char *
+  ok(const bool condition)
+  {
+    return condition ? "ok" : "FAILED";
+  }
+
+  // The numbers in the line of @p log that starts with @p key (after the key).
+  inline std::vector<double>
+  numbers_of(const std::string &log, const std::string &key)
+  {
+    std::istringstream lines(log);
+    for (std::string line; std::getline(lines, line);)
+      if (line.rfind(key, 0) == 0)
+        {
+          std::vector<double> numbers;
+          const std::string   rest = line.substr(key.size());
+          for (std::size_t at = 0; at < rest.size();)
+            {
+              const std::size_t start = rest.find_first_of("0123456789", at);
+              if (start == std::string::npos)
+                break;
+              std::size_t length = 0;
+              numbers.push_back(std::stod(rest.substr(start), &length));
+              at = start + length;
+            }
+          return numbers;
+        }
+    std::cout << "line '" << key << "' missing (FAILED)" << std::endl;
+    return {std::nan(""), std::nan(""), std::nan("")};
+  }
+
 } // namespace coupling_tests
 
 #endif

@@ -116,6 +116,14 @@ namespace perideal
     unsigned int
     index(const std::string &name, const std::string &entry) const;
 
+    /**
+     * @brief Whether this layout is @p base followed by rotations only (x, y, rz over x, y): a
+     * micropolar particle field over FE translations, whose rotations follow 1/2 curl of the
+     * FE displacement. The components shared keep their indices.
+     */
+    bool
+    extends_by_rotations(const FieldLayout &base) const;
+
     /// The names joined by ", " (for messages and documentation): "x, y, z".
     std::string
     names() const;

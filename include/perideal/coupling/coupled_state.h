@@ -132,7 +132,7 @@ namespace perideal
     ParticleRegion<dim>        &pd;
     FERegion<dim>              &fe;
     CouplingMethod<dim>        &method;
-    /// The unknowns of a point (particle or FE node).
+    /// The particles' unknowns (the FE nodes' are its first components: FERegion::field_layout()).
     const FieldLayout layout;
 
     // What the set-up derives, per owned particle component.

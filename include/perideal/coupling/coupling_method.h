@@ -34,7 +34,7 @@ namespace perideal
     MaterialModel<dim>  *material  = nullptr;
     /// The particles' mass density [kg/m^3].
     double density = 0.;
-    /// The unknowns of a point, the same in both regions.
+    /// The particles' unknowns: the FE region's, or those followed by rotations.
     FieldLayout layout;
     /// The overlap beta(x) in [0, 1] (1: PD only, 0: FE only).
     std::function<double(const dealii::Point<dim> &)> blending;

@@ -67,6 +67,11 @@ namespace perideal
           prescribed.local_element(k) = 1.;
           constrained[k % nc] += 1.;
         }
+    // Particle rotations the FE field lacks follow 1/2 curl of the FE displacement where
+    // particles follow it: the FE conditions that hold the translations hold them too.
+    for (unsigned int c = fe.field_layout().n_components(); c < nc; ++c)
+      if (state.particles_follow_fe && fe.has_mesh())
+        constrained[c] += 1.;
     // A component no displacement condition holds leaves a rigid mode free: the static system
     // is singular; the relaxation leaves it at rest while it is not loaded, but needs at least
     // one condition.
