@@ -337,8 +337,11 @@ namespace perideal
         TrilinosWrappers::PreconditionAMG::AdditionalData data;
         data.elliptic = true;
         // One mode per FE component and per particle component (particle rotations the FE
-        // field lacks have modes of their own).
-        data.constant_modes.assign(std::max<std::size_t>(fe_modes.size(), n_components),
+        // field lacks have modes of their own). A rank without rows keeps the FE region's
+        // (none without owned dofs), as ML expects.
+        data.constant_modes.assign(n_local > 0 ?
+                                     std::max<std::size_t>(fe_modes.size(), n_components) :
+                                     fe_modes.size(),
                                    std::vector<bool>(n_local, false));
         for (unsigned int d = 0; d < fe_modes.size(); ++d)
           for (std::size_t k = 0; k < n_fe_owned; ++k)
