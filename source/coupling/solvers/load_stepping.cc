@@ -56,11 +56,13 @@ namespace perideal
     const std::string solver_name = relax ? "adaptive dynamic relaxation" : "static";
 
     state.pd.particles().reinit_vector(prescribed, nc);
+    // The FE dofs held: those of value conditions and a held point (FEPhysics::held_point()).
     std::vector<double> constrained(nc, 0.);
-    for (const auto &c : fe.conditions())
-      if (c.type == Quantity::value)
-        for (const unsigned int comp : c.components)
-          constrained[comp] = 1.;
+    const auto         &held = fe.prescribed_mask();
+    const auto          of   = fe.component_masks();
+    for (unsigned int c = 0; c < nc && fe.n_dofs() > 0; ++c)
+      for (std::size_t k = 0; k < held.size(); ++k)
+        constrained[c] += (held[k] && of[c][k]) ? 1. : 0.;
     for (std::size_t k = 0; k < state.motion.size(); ++k)
       if (state.motion[k] == Motion::prescribed)
         {
