@@ -216,13 +216,6 @@ namespace perideal
   }
 
   template <int dim>
-  const Torsion &
-  AntiplaneBondBased<dim>::torsion() const
-  {
-    return twist;
-  }
-
-  template <int dim>
   double
   AntiplaneBondBased<dim>::critical_stretch(const double fracture_energy) const
   {

@@ -122,12 +122,6 @@ namespace perideal
     derived_fields(const ParticleSystem<dim> &particles, const ParticleVector &u) const override;
 
     /**
-     * @brief The twist of torsion (inactive by default).
-     */
-    const Torsion &
-    torsion() const;
-
-    /**
      * @brief The critical slope r_c of the fracture energy @p fracture_energy (G_IIIc).
      */
     double
