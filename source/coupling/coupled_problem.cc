@@ -9,6 +9,7 @@
 #include <perideal/coupling/postprocessors/field_output.h>
 #include <perideal/coupling/postprocessors/probes.h>
 #include <perideal/coupling/postprocessors/reactions.h>
+#include <perideal/coupling/postprocessors/section_integrals.h>
 
 #include <algorithm>
 #include <array>
@@ -106,6 +107,13 @@ namespace perideal
                            ParameterUtilities::format_number(fe.get_density()) +
                            "; explicit dynamics (<Solver/Type> = explicit) needs the FE mass: "
                            "accepted values are > 0."));
+    AssertThrow(!pd.has_body() || !pd.material().has_prestrain() ||
+                  settings.solver_type != SolverType::static_linear,
+                ExcMessage("<Material/Model> = <" + prm.get({"Material"}, "Model") +
+                           "> carries a strain at zero displacement (the twist of torsion), "
+                           "which the static linear solve does not assemble: set <Solver/Type> "
+                           "= adaptive dynamic relaxation (accepted with a twist), or the "
+                           "twist to 0."));
     // The unknowns: the particles' and the FE region's, the same in a coupled problem, or the
     // FE translations and the particles' rotations (half the curl of the FE displacement).
     layout = pd.has_body() ? pd.field_layout() : fe.field_layout();
@@ -345,6 +353,7 @@ namespace perideal
     list.push_back(std::make_unique<EnergyStatistics<dim>>());
     list.push_back(std::make_unique<DisplacementStatistics<dim>>());
     list.push_back(std::make_unique<Reactions<dim>>());
+    list.push_back(std::make_unique<SectionIntegrals<dim>>());
     if (exact_displacement)
       list.push_back(std::make_unique<ExactError<dim>>(exact_displacement, exact_tolerance));
     list.push_back(std::make_unique<Probes<dim>>());

@@ -106,24 +106,40 @@ namespace perideal
       }
     for (const unsigned int f : cell->face_indices())
       if (cell->face(f)->at_boundary())
-        for (const auto &c : condition_list)
-          if (c.type == Quantity::load && c.boundary_ids.count(cell->face(f)->boundary_id()) > 0)
+        {
+          const auto id = cell->face(f)->boundary_id();
+          const bool free =
+            std::none_of(condition_list.begin(), condition_list.end(), [id](const Condition &c) {
+              return c.boundary_ids.count(id) > 0;
+            });
+          if (free && physics_model->loads_free_boundaries())
             {
               fe_face_values.reinit(cell, f);
-              c.function->set_time(time);
               quadrature_weights(fe_face_values, weights);
-              value.reinit(c.function->n_components);
-              for (const unsigned int q : fe_face_values.quadrature_point_indices())
-                {
-                  const double w = weights[q];
-                  c.function->vector_value(fe_face_values.quadrature_point(q), value);
-                  for (unsigned int i = 0; i < n; ++i)
-                    {
-                      const unsigned int comp = fe.system_to_component_index(i).first;
-                      cell_rhs(i) += value(comp) * fe_face_values.shape_value(i, q) * w;
-                    }
-                }
+              physics_model->add_free_boundary_load(fe_face_values,
+                                                    cell->material_id(),
+                                                    weights,
+                                                    cell_rhs);
             }
+          for (const auto &c : condition_list)
+            if (c.type == Quantity::load && c.boundary_ids.count(id) > 0)
+              {
+                fe_face_values.reinit(cell, f);
+                c.function->set_time(time);
+                quadrature_weights(fe_face_values, weights);
+                value.reinit(c.function->n_components);
+                for (const unsigned int q : fe_face_values.quadrature_point_indices())
+                  {
+                    const double w = weights[q];
+                    c.function->vector_value(fe_face_values.quadrature_point(q), value);
+                    for (unsigned int i = 0; i < n; ++i)
+                      {
+                        const unsigned int comp = fe.system_to_component_index(i).first;
+                        cell_rhs(i) += value(comp) * fe_face_values.shape_value(i, q) * w;
+                      }
+                  }
+              }
+        }
   }
 
   template <int dim>
@@ -133,7 +149,7 @@ namespace perideal
     const bool has_load = std::any_of(condition_list.begin(),
                                       condition_list.end(),
                                       [](const Condition &c) { return c.type == Quantity::load; });
-    if (!body_force && !has_load)
+    if (!body_force && !has_load && !physics_model->loads_free_boundaries())
       {
         f = 0.;
         return;
@@ -144,7 +160,8 @@ namespace perideal
                             update_values | update_quadrature_points | update_JxW_values);
     FEFaceValues<dim>                    fe_face_values(fe,
                                      QGauss<dim - 1>(degree + 1),
-                                     update_values | update_quadrature_points | update_JxW_values);
+                                     update_values | update_quadrature_points |
+                                       update_normal_vectors | update_JxW_values);
     const unsigned int                   n = fe.n_dofs_per_cell();
     dealii::Vector<double>               cell_rhs(n);
     std::vector<types::global_dof_index> dofs(n);

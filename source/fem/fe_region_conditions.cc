@@ -12,6 +12,7 @@
 
 #include <algorithm>
 #include <array>
+#include <limits>
 #include <utility>
 
 namespace perideal
@@ -191,6 +192,57 @@ namespace perideal
                        x});
                   }
               }
+
+    // A field defined up to a constant (held_point()) is held at the vertex nearest to the
+    // point unless a condition prescribes its value.
+    held_dof.reset();
+    const auto held = physics_model->held_point();
+    if (!held || std::any_of(condition_list.begin(), condition_list.end(), [](const auto &c) {
+          return c.type == Quantity::value;
+        }))
+      return;
+    double                  distance = std::numeric_limits<double>::max();
+    types::global_dof_index nearest  = numbers::invalid_dof_index;
+    for (const auto &cell : dof_handler.active_cell_iterators())
+      if (cell->is_locally_owned() && cell->active_fe_index() == 0)
+        for (const unsigned int v : cell->vertex_indices())
+          {
+            const double d = cell->vertex(v).distance(held->first);
+            if (d < distance)
+              {
+                distance = d;
+                nearest  = cell->vertex_dof_index(v, 0, 0);
+              }
+          }
+    // The nearest vertex over all ranks; of equal distances the smallest dof index.
+    const double min_distance = Utilities::MPI::min(distance, comm);
+    nearest                   = Utilities::MPI::min(distance == min_distance ?
+                                    nearest :
+                                    std::numeric_limits<types::global_dof_index>::max(),
+                                  comm);
+    if (owned_dofs.is_element(nearest))
+      {
+        held_dof              = static_cast<unsigned int>(owned_dofs.index_within_set(nearest));
+        prescribed[*held_dof] = true;
+      }
+  }
+
+  template <int dim>
+  void
+  FERegion<dim>::check_held_point() const
+  {
+    const auto held = physics_model->held_point();
+    if (!held || !has_mesh())
+      return;
+    bool inside = false;
+    for (const auto &cell : triangulation.active_cell_iterators())
+      inside = inside || (cell->is_locally_owned() && cell->point_inside(held->first));
+    AssertThrow(Utilities::MPI::logical_or(inside, comm),
+                ExcMessage("The parameter " + held->second + " is the point (" +
+                           ParameterUtilities::format_number(held->first[0]) + ", " +
+                           ParameterUtilities::format_number(held->first[1]) +
+                           "), outside the mesh; accepted are points of the section (the "
+                           "twist axis must pierce the bar's cross-section)."));
   }
 
   template <int dim>
@@ -258,6 +310,8 @@ namespace perideal
       }
     for (const auto &[local_index, value] : interior_values)
       u.local_element(local_index) = value;
+    if (held_dof)
+      u.local_element(*held_dof) = 0.;
   }
 
   template <int dim>
@@ -325,6 +379,7 @@ namespace perideal
                                                 const std::vector<std::string> &,                \
                                                 const std::string &);                            \
   template void FERegion<dim>::locate_prescribed_dofs();                                         \
+  template void FERegion<dim>::check_held_point() const;                                         \
   template void FERegion<dim>::check_conditions_act() const;                                     \
   template void FERegion<dim>::prescribe(const double, Vector &, Vector &) const;                \
   template void FERegion<dim>::set_interior_values(const std::vector<types::global_dof_index> &, \

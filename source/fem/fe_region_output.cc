@@ -1,7 +1,9 @@
 // ---------------------------------------------------------------------
-// PeriDeal: what the finite-element region reports: its summary line and the field output
-// (the solution and the physics' derived quantities on the FE-carrying cells, HDF5/XDMF).
+// PeriDeal: what the finite-element region reports: its summary line, the physics' section
+// integrals and the field output (the solution and the physics' derived quantities on the
+// FE-carrying cells, HDF5/XDMF).
 // ---------------------------------------------------------------------
+#include <deal.II/base/quadrature_lib.h>
 #include <deal.II/numerics/data_out.h>
 #include <deal.II/numerics/data_postprocessor.h>
 
@@ -14,6 +16,46 @@ namespace perideal
 {
   using namespace dealii;
   using Vector = LinearAlgebra::distributed::Vector<double>;
+
+  template <int dim>
+  std::vector<double>
+  FERegion<dim>::section_integrals(const Vector &u) const
+  {
+    std::vector<double> integrals(physics_model->integral_names().size(), 0.);
+    if (integrals.empty() || n_dofs() == 0)
+      return integrals;
+    Vector ghosted;
+    initialize_vector(ghosted);
+    ghosted = u;
+    hanging_constraints.distribute(ghosted);
+    ghosted.update_ghost_values();
+    const auto            &fe = fe_collection[0];
+    FEValues<dim>          fe_values(fe,
+                            QGauss<dim>(degree + 1),
+                            update_values | update_gradients | update_quadrature_points |
+                              update_JxW_values);
+    dealii::Vector<double> cell_values(fe.n_dofs_per_cell());
+    std::vector<double>    weights;
+    for (const auto &cell : dof_handler.active_cell_iterators())
+      if (cell->is_locally_owned() && cell->active_fe_index() == 0)
+        {
+          fe_values.reinit(cell);
+          // Per unit thickness: the integrals over the section.
+          quadrature_weights(fe_values, weights);
+          for (double &w : weights)
+            w /= thickness;
+          cell->get_dof_values(ghosted, cell_values);
+          physics_model->add_cell_integrals(fe_values,
+                                            cell->material_id(),
+                                            weights,
+                                            cell_values,
+                                            integrals);
+        }
+    Utilities::MPI::sum(make_array_view(std::as_const(integrals)),
+                        comm,
+                        make_array_view(integrals));
+    return integrals;
+  }
 
   template <int dim>
   void
@@ -103,13 +145,14 @@ namespace perideal
   }
 
   // The members defined in this file (the class is instantiated in fe_region.cc).
-#define PERIDEAL_INSTANTIATE(dim)                                       \
-  template void        FERegion<dim>::write_output(const std::string &, \
+#define PERIDEAL_INSTANTIATE(dim)                                               \
+  template void                FERegion<dim>::write_output(const std::string &, \
                                             const std::string &, \
                                             const unsigned int,  \
                                             const double,        \
                                             const Vector &);     \
-  template std::string FERegion<dim>::summary() const;
+  template std::string         FERegion<dim>::summary() const;                  \
+  template std::vector<double> FERegion<dim>::section_integrals(const Vector &) const;
   PERIDEAL_INSTANTIATE(2)
   PERIDEAL_INSTANTIATE(3)
 #undef PERIDEAL_INSTANTIATE

@@ -102,6 +102,7 @@ namespace perideal
   {
     fe_weight = has_mesh() ? weight : [](const Point<dim> &) { return 0.; };
     make_mesh();
+    check_held_point();
 
     const unsigned int n_components = layout.n_components();
     fe_collection.push_back(FESystem<dim>(FE_Q<dim>(degree), n_components));

@@ -3,6 +3,7 @@
 // ---------------------------------------------------------------------
 #include <perideal/pd/antiplane_bond_based.h>
 #include <perideal/pd/antiplane_shear.h>
+#include <perideal/pd/antiplane_torsion.h>
 #include <perideal/pd/bond_loop.h>
 #include <perideal/pd/surface_correction.h>
 
@@ -21,10 +22,14 @@ namespace perideal
     typename BondBlocks<dim>::Array lane_coefficient;
     /// Kernel-order work fields: w, force, energy density.
     typename BondBlocks<dim>::Array w_field, f_field, e_field;
+    /// Torsion: the fixed fields p = psi (x - x0), q = psi (y - y0) of TwistedSlopePairLaw
+    /// (empty without a twist).
+    typename BondBlocks<dim>::Array twist_field;
 
     /**
-     * @brief The force loop of SlopePairLaw (the bond-based antiplane pair law); the energy
-     * density is accumulated only if @p with_energy.
+     * @brief The force loop of SlopePairLaw (the bond-based antiplane pair law), or of
+     * TwistedSlopePairLaw if twist_field is set; the energy density is accumulated only if
+     * @p with_energy.
      */
     template <bool with_energy>
     void
@@ -34,12 +39,23 @@ namespace perideal
       out[0] = blocks.component(f_field, 0);
       if constexpr (with_energy)
         out[1] = blocks.component(e_field, 0);
-      for_each_bond_block<1>(blocks,
-                             {{blocks.component(w_field, 0)}},
-                             out,
-                             SlopePairLaw<dim, with_energy>{lane_coefficient.data()},
-                             bonds,
-                             critical_slope);
+      const SlopePairLaw<dim, with_energy> law{lane_coefficient.data()};
+      if (twist_field.empty())
+        for_each_bond_block<1>(blocks,
+                               {{blocks.component(w_field, 0)}},
+                               out,
+                               law,
+                               bonds,
+                               critical_slope);
+      else
+        for_each_bond_block<3>(blocks,
+                               {{blocks.component(w_field, 0),
+                                 blocks.component(twist_field, 0),
+                                 blocks.component(twist_field, 1)}},
+                               out,
+                               TwistedSlopePairLaw<dim, with_energy>{law},
+                               bonds,
+                               critical_slope);
     }
   };
 
@@ -56,6 +72,7 @@ namespace perideal
   AntiplaneBondBased<dim>::declare_parameters(ParameterHandler &prm)
   {
     AntiplaneShear::declare_shear_modulus(prm);
+    Torsion::declare_parameters(prm);
   }
 
   template <int dim>
@@ -63,6 +80,7 @@ namespace perideal
   AntiplaneBondBased<dim>::parse_parameters(ParameterHandler &prm)
   {
     mu = AntiplaneShear::parse_shear_modulus(prm, "antiplane bond based");
+    twist.parse_parameters(prm, "Material/antiplane bond based", dim);
   }
 
   template <int dim>
@@ -93,7 +111,10 @@ namespace perideal
   {
     context = model_context;
     c       = AntiplaneShear::micromodulus(dim, mu, context.horizon, context.thickness);
+    if (twist.active())
+      AntiplaneTorsion::check_section(particles, twist);
     BondBlocks<dim> &blocks = kernel->blocks;
+    kernel->twist_field.clear();
     blocks.reinit(particles);
     blocks.reinit_field(kernel->w_field, 1);
     blocks.reinit_field(kernel->f_field, 1);
@@ -111,6 +132,13 @@ namespace perideal
         apply_energy_surface_correction<dim>(particles, field_layout(), modulus, energy);
       }
     set_bond_coefficients(particles, true);
+    if (twist.active())
+      {
+        blocks.reinit_field(kernel->twist_field, 2);
+        blocks.gather(AntiplaneTorsion::twist_fields(particles, twist).data(),
+                      2,
+                      kernel->twist_field);
+      }
   }
 
   template <int dim>
@@ -148,6 +176,46 @@ namespace perideal
   }
 
   template <int dim>
+  bool
+  AntiplaneBondBased<dim>::has_prestrain() const
+  {
+    return twist.active();
+  }
+
+  template <int dim>
+  std::vector<std::string>
+  AntiplaneBondBased<dim>::integral_names() const
+  {
+    return twist.active() ? AntiplaneTorsion::integral_names() : std::vector<std::string>();
+  }
+
+  template <int dim>
+  std::vector<double>
+  AntiplaneBondBased<dim>::section_integrals(const ParticleSystem<dim> &particles,
+                                             const ParticleVector      &u,
+                                             const double               strain_energy) const
+  {
+    if (!twist.active())
+      return {};
+    return AntiplaneTorsion::section_integrals(particles, u, twist, mu, strain_energy);
+  }
+
+  template <int dim>
+  std::vector<DerivedParticleField>
+  AntiplaneBondBased<dim>::derived_fields(const ParticleSystem<dim> &particles,
+                                          const ParticleVector      &u) const
+  {
+    if (!twist.active())
+      return {};
+    std::vector<Tensor<1, dim>> tau;
+    AntiplaneTorsion::shear_stresses(particles, u, twist, mu, tau);
+    DerivedParticleField field{"shear_stress", 2, {}};
+    for (const auto &t : tau)
+      field.values.insert(field.values.end(), {t[0], t[1]});
+    return {field};
+  }
+
+  template <int dim>
   double
   AntiplaneBondBased<dim>::critical_stretch(const double fracture_energy) const
   {
@@ -160,6 +228,8 @@ namespace perideal
   {
     std::ostringstream out;
     out << "antiplane bond based: mu = " << mu << " Pa, micromodulus c = " << c << " N/m^6";
+    if (twist.active())
+      out << "; torsion: twist " << twist.twist() << " rad/m about (" << twist.axis() << ")";
     return out.str();
   }
 

@@ -108,6 +108,36 @@ namespace perideal
   }
 
   template <int dim>
+  bool
+  MaterialModel<dim>::has_prestrain() const
+  {
+    return false;
+  }
+
+  template <int dim>
+  std::vector<std::string>
+  MaterialModel<dim>::integral_names() const
+  {
+    return {};
+  }
+
+  template <int dim>
+  std::vector<double>
+  MaterialModel<dim>::section_integrals(const ParticleSystem<dim> &,
+                                        const ParticleVector &,
+                                        const double) const
+  {
+    return {};
+  }
+
+  template <int dim>
+  std::vector<DerivedParticleField>
+  MaterialModel<dim>::derived_fields(const ParticleSystem<dim> &, const ParticleVector &) const
+  {
+    return {};
+  }
+
+  template <int dim>
   void
   MaterialModel<dim>::linearize(const ParticleSystem<dim> &, LinearizedModel &) const
   {

@@ -15,7 +15,9 @@
 #include <perideal/base/plugin_registry.h>
 
 #include <memory>
+#include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace perideal
@@ -72,6 +74,53 @@ namespace perideal
                        dealii::FullMatrix<double>      &cell_matrix) const = 0;
 
     /**
+     * @brief Whether add_free_boundary_load() adds anything (false by default).
+     */
+    virtual bool
+    loads_free_boundaries() const;
+
+    /**
+     * @brief Add sum_q @p weights[q] g(x_q) phi_i(x_q) to @p cell_rhs: the load of a boundary
+     * face that carries no boundary condition (a free face: torsion's traction-free faces and
+     * crack faces, whose load comes from the twist). @p fe_face_values has values, quadrature
+     * points and normal vectors; the weights hold the FE weight, the thickness and JxW. None by
+     * default.
+     */
+    virtual void
+    add_free_boundary_load(const dealii::FEFaceValues<dim> &fe_face_values,
+                           const dealii::types::material_id material_id,
+                           const std::vector<double>       &weights,
+                           dealii::Vector<double>          &cell_rhs) const;
+
+    /**
+     * @brief A point of the section where the field is held at 0 when no condition prescribes
+     * its value (a problem loaded on free faces only, defined up to a constant: torsion), with
+     * the entry that gives it; none by default. The region holds the vertex nearest to it and
+     * stops, naming the entry, if the point lies outside the mesh.
+     */
+    virtual std::optional<std::pair<dealii::Point<dim>, std::string>>
+    held_point() const;
+
+    /**
+     * @brief The names of the section integrals the physics computes from the solution (the
+     * statistics columns fe_<name>); none by default.
+     */
+    virtual std::vector<std::string>
+    integral_names() const;
+
+    /**
+     * @brief Add the integrands of integral_names() times @p weights[q] (FE weight and JxW)
+     * over the quadrature points of @p fe_values (values, gradients, quadrature points) of a
+     * cell of material id @p material_id with the dof values @p cell_values to @p integrals.
+     */
+    virtual void
+    add_cell_integrals(const dealii::FEValues<dim>     &fe_values,
+                       const dealii::types::material_id material_id,
+                       const std::vector<double>       &weights,
+                       const dealii::Vector<double>    &cell_values,
+                       std::vector<double>             &integrals) const;
+
+    /**
      * @brief The derived quantities written with the solution (strains and stresses, fluxes),
      * from the solution's gradients.
      */
@@ -84,6 +133,44 @@ namespace perideal
     virtual std::string
     summary() const = 0;
   };
+
+  template <int dim>
+  bool
+  FEPhysics<dim>::loads_free_boundaries() const
+  {
+    return false;
+  }
+
+  template <int dim>
+  void
+  FEPhysics<dim>::add_free_boundary_load(const dealii::FEFaceValues<dim> &,
+                                         const dealii::types::material_id,
+                                         const std::vector<double> &,
+                                         dealii::Vector<double> &) const
+  {}
+
+  template <int dim>
+  std::optional<std::pair<dealii::Point<dim>, std::string>>
+  FEPhysics<dim>::held_point() const
+  {
+    return {};
+  }
+
+  template <int dim>
+  std::vector<std::string>
+  FEPhysics<dim>::integral_names() const
+  {
+    return {};
+  }
+
+  template <int dim>
+  void
+  FEPhysics<dim>::add_cell_integrals(const dealii::FEValues<dim> &,
+                                     const dealii::types::material_id,
+                                     const std::vector<double> &,
+                                     const dealii::Vector<double> &,
+                                     std::vector<double> &) const
+  {}
 } // namespace perideal
 
 /**

@@ -24,6 +24,7 @@
 
 #include <functional>
 #include <memory>
+#include <optional>
 #include <set>
 #include <string>
 #include <vector>
@@ -197,6 +198,14 @@ namespace perideal
     reactions(const dealii::LinearAlgebra::distributed::Vector<double> &residual) const;
 
     /**
+     * @brief The physics' section integrals (FEPhysics::integral_names(), e.g. the torque and
+     * strain energy per unit length of torsion) of the field @p u over the FE-carrying cells,
+     * weighted by 1 - beta (collective).
+     */
+    std::vector<double>
+    section_integrals(const dealii::LinearAlgebra::distributed::Vector<double> &u) const;
+
+    /**
      * @brief Write the field (translations as the vector 'displacement', other components
      * by their names) and the physics' derived quantities of the FE-carrying cells as
      * `<directory>/<base_name>_<step>.h5` plus `<base_name>.xdmf` (nothing without FE unknowns).
@@ -307,6 +316,11 @@ namespace perideal
     void
     locate_prescribed_dofs();
     /**
+     * @brief Stop, naming the entry, if the physics' held_point() lies outside the mesh.
+     */
+    void
+    check_held_point() const;
+    /**
      * @brief Stop, naming the entry, if a boundary condition's ids name no boundary of the
      * mesh or only boundaries of cells without FE unknowns (it would act on nothing).
      */
@@ -355,7 +369,9 @@ namespace perideal
     /// The dofs of set_interior_values() (global) and, for those owned, local index and value.
     std::vector<dealii::types::global_dof_index> interior_dofs;
     std::vector<std::pair<unsigned int, double>> interior_values;
-    std::vector<dealii::XDMFEntry>               xdmf_entries;
+    /// The owned dof held at 0 at the physics' held_point() (none if not owned or not held).
+    std::optional<unsigned int>    held_dof;
+    std::vector<dealii::XDMFEntry> xdmf_entries;
   };
 } // namespace perideal
 

@@ -4,6 +4,7 @@
 #ifndef perideal_pd_antiplane_bond_based_h
 #define perideal_pd_antiplane_bond_based_h
 
+#include <perideal/base/torsion.h>
 #include <perideal/pd/material_model.h>
 
 #include <memory>
@@ -27,6 +28,17 @@ namespace perideal
    * r_c = sqrt(2 pi G / (3 mu delta)) in 2D and sqrt(5 G / (3 mu delta)) in 3D
    * (doc/theory/models.md). Surface correction by the energy method with the test fields
    * w = s x and w = s y (and z); see apply_energy_surface_correction().
+   *
+   * Saint-Venant torsion (2D; <Twist per unit length> psi and <Twist axis> (x0, y0) in the
+   * model's subsection, see Torsion): w is the warping, and the slope of a bond is the twisted
+   * slope r = (w_j - w_i + psi ((x_i - x0)(y_j - y0) - (x_j - x0)(y_i - y0)))/|xi|, the bond
+   * projection of the shear strain grad w + psi (-(y - y0), x - x0) (seed note 000, sec. 4.5;
+   * TwistedSlopePairLaw), in the force, the energy and the breaking. The traction-free
+   * condition of the outer faces and of crack faces then holds without fictitious layers
+   * (doc/theory/models.md, "Torsion"). The surface correction is computed without the twist.
+   * The static linear solve does not carry the twist (has_prestrain()); adaptive dynamic
+   * relaxation does. Section integrals: the torque and the strain energy per unit length
+   * (AntiplaneTorsion::section_integrals()); output: the shear stresses at the particles.
    */
   template <int dim>
   class AntiplaneBondBased : public MaterialModel<dim>
@@ -83,6 +95,33 @@ namespace perideal
     linearize(const ParticleSystem<dim> &particles, LinearizedModel &linearized) const override;
 
     /**
+     * @brief Whether a twist is given.
+     */
+    bool
+    has_prestrain() const override;
+
+    /**
+     * @brief "torque", "torsion_energy" with a twist.
+     */
+    std::vector<std::string>
+    integral_names() const override;
+
+    /**
+     * @brief The torque and strain energy per unit length of torsion.
+     */
+    std::vector<double>
+    section_integrals(const ParticleSystem<dim> &particles,
+                      const ParticleVector      &u,
+                      const double               strain_energy) const override;
+
+    /**
+     * @brief With a twist, "shear_stress": (tau_xz, tau_yz) of
+     * AntiplaneTorsion::shear_stresses().
+     */
+    std::vector<DerivedParticleField>
+    derived_fields(const ParticleSystem<dim> &particles, const ParticleVector &u) const override;
+
+    /**
      * @brief The critical slope r_c of the fracture energy @p fracture_energy (G_IIIc).
      */
     double
@@ -105,6 +144,7 @@ namespace perideal
 
   private:
     double       mu = 0.;
+    Torsion      twist;
     ModelContext context;
     double       c = 0.;
     /// c G beta V_i V_j per bond (the pair force per unit slope).

@@ -261,6 +261,31 @@ namespace perideal
         }
     }
   };
+
+  /**
+   * @brief The bond-based pair law of the warping w of Saint-Venant torsion (seed note 000,
+   * sec. 4.5): SlopePairLaw with the twisted slope
+   *   r = (w_b - w_a + p_a xi_y - q_a xi_x) / |xi|,  p = psi (x - x0), q = psi (y - y0),
+   * i.e. the bond projection of the shear strain grad w + psi (-(y - y0), x - x0) at the bond's
+   * midpoint (Torsion). The unknowns are three kernel-order components (w, p, q); p and q are
+   * fixed fields. Since p_b xi_y - q_b xi_x = p_a xi_y - q_a xi_x, the slope changes sign with
+   * the bond's orientation like (w_b - w_a)/|xi|, so the law does not depend on which end is
+   * which; a bond breaks by |r|, the full shear of the bond.
+   */
+  template <int dim, bool with_energy>
+  struct TwistedSlopePairLaw : SlopePairLaw<dim, with_energy>
+  {
+    /// The twisted slope of the lanes and its magnitude.
+    BondSlope
+    strain(const typename BondBlocks<dim>::BondClass &bond,
+           const bond_simd::Vector                   *u_a,
+           const bond_simd::Vector                   *u_b) const
+    {
+      const bond_simd::Vector r =
+        (u_b[0] - u_a[0] + u_a[1] * bond.xi[1] - u_a[2] * bond.xi[0]) * bond.inverse_length;
+      return {r, std::experimental::abs(r)};
+    }
+  };
 } // namespace perideal
 
 #endif

@@ -128,6 +128,18 @@ namespace perideal
   };
 
   /**
+   * @brief A field a model derives from the particles' unknowns for output (shear stresses):
+   * its name, its number of components and the values of the owned particles
+   * (values[i * n_components + c]).
+   */
+  struct DerivedParticleField
+  {
+    std::string         name;
+    unsigned int        n_components = 1;
+    std::vector<double> values;
+  };
+
+  /**
    * @brief Interface of a peridynamic material model (a plugin, chosen per region by name).
    *
    * The plugin boundary is per region: one virtual call computes the forces of all particles
@@ -224,6 +236,39 @@ namespace perideal
      */
     virtual dealii::SymmetricTensor<4, dim>
     elasticity_tensor() const;
+
+    /**
+     * @brief Whether the energy has a strain at zero displacement (the twist of torsion, whose
+     * bond strain is the projection of psi (-(y - y0), x - x0)): linearize() gives only the
+     * stiffness, so the static linear solve would miss this load; adaptive dynamic relaxation,
+     * which uses compute_forces(), carries it. False by default.
+     */
+    virtual bool
+    has_prestrain() const;
+
+    /**
+     * @brief The names of the section integrals the model computes from the particles' field
+     * (statistics columns pd_<name>: the torque and strain energy per unit length of torsion);
+     * none by default.
+     */
+    virtual std::vector<std::string>
+    integral_names() const;
+
+    /**
+     * @brief The section integrals of integral_names() for the field @p u (ghost values
+     * current) and the particles' strain energy @p strain_energy [J] (collective).
+     */
+    virtual std::vector<double>
+    section_integrals(const ParticleSystem<dim> &particles,
+                      const ParticleVector      &u,
+                      const double               strain_energy) const;
+
+    /**
+     * @brief The fields the model derives from the field @p u (ghost values current) for the
+     * particle output (ParaView); none by default.
+     */
+    virtual std::vector<DerivedParticleField>
+    derived_fields(const ParticleSystem<dim> &particles, const ParticleVector &u) const;
 
     /**
      * @brief The critical stretch that dissipates @p fracture_energy [J/m^2] per unit crack area.

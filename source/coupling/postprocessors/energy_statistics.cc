@@ -33,12 +33,14 @@ namespace perideal
         const double        strain       = energy.fe + energy.particles;
         const double        energy_error = work - strain;
         // Relative to the work, unless the energies are below 1e-10 of the force scale times the
-        // displacement (a rigid motion: round-off).
+        // displacement (a rigid motion: round-off); relative to the strain energy if no load
+        // works (a model's prestrain, the twist of PD torsion, is the only load).
         state.U.update_ghost_values();
-        const double scale = state.fe_force_scale();
-        const double max_u = state.max_particle_displacement();
-        const double relative_error =
-          std::max(std::abs(work), strain) > 1e-10 * scale * max_u ? energy_error / work : 0.;
+        const double scale          = state.fe_force_scale();
+        const double max_u          = state.max_particle_displacement();
+        const double relative_error = std::max(std::abs(work), strain) > 1e-10 * scale * max_u ?
+                                        energy_error / (work != 0. ? work : strain) :
+                                        0.;
         statistics.add_value("strain_energy", strain);
         statistics.add_value("fe_strain_energy", energy.fe);
         statistics.add_value("pd_strain_energy", energy.particles);

@@ -69,6 +69,9 @@ namespace perideal
               particle_output->add_vector_field(group.names[1], n, values(velocity));
               particle_output->add_vector_field(group.names[2], n, values(state.internal_force));
             }
+        state.u.update_ghost_values();
+        for (const auto &field : state.pd.material().derived_fields(ps, state.u))
+          particle_output->add_vector_field(field.name, field.n_components, field.values);
         particle_output->add_scalar_field("damage", damage_index(ps));
         if (state.energy_density.size() == n_owned)
           particle_output->add_scalar_field("strain_energy_density", state.energy_density);

@@ -56,11 +56,14 @@ namespace perideal
     const std::string solver_name = relax ? "adaptive dynamic relaxation" : "static";
 
     state.pd.particles().reinit_vector(prescribed, nc);
+    // The FE dofs held: those of value conditions and a held point (FEPhysics::held_point()).
     std::vector<double> constrained(nc, 0.);
-    for (const auto &c : fe.conditions())
-      if (c.type == Quantity::value)
-        for (const unsigned int comp : c.components)
-          constrained[comp] = 1.;
+    const auto         &held = fe.prescribed_mask();
+    const auto          of   = fe.component_masks();
+    const unsigned int  n_fe = fe.has_mesh() ? fe.field_layout().n_components() : 0;
+    for (unsigned int c = 0; c < n_fe && fe.n_dofs() > 0; ++c)
+      for (std::size_t k = 0; k < held.size(); ++k)
+        constrained[c] += (held[k] && of[c][k]) ? 1. : 0.;
     for (std::size_t k = 0; k < state.motion.size(); ++k)
       if (state.motion[k] == Motion::prescribed)
         {
@@ -69,8 +72,8 @@ namespace perideal
         }
     // Particle rotations the FE field lacks follow 1/2 curl of the FE displacement where
     // particles follow it: the FE conditions that hold the translations hold them too.
-    for (unsigned int c = fe.field_layout().n_components(); c < nc; ++c)
-      if (state.particles_follow_fe && fe.has_mesh())
+    if (state.particles_follow_fe && fe.has_mesh())
+      for (unsigned int c = n_fe; c < nc; ++c)
         constrained[c] += 1.;
     // A component no displacement condition holds leaves a rigid mode free: the static system
     // is singular; the relaxation leaves it at rest while it is not loaded, but needs at least

@@ -46,7 +46,7 @@ namespace perideal
       UpdateFlags
       get_needed_update_flags() const override
       {
-        return update_gradients;
+        return update_gradients | update_quadrature_points;
       }
 
       void
@@ -55,11 +55,18 @@ namespace perideal
       {
         const double k = physics.coefficient(inputs.template get_cell<dim>()->material_id());
         for (unsigned int q = 0; q < inputs.solution_gradients.size(); ++q)
-          for (unsigned int d = 0; d < dim; ++d)
-            {
-              computed[q][d]       = inputs.solution_gradients[q][d];
-              computed[q][dim + d] = k * inputs.solution_gradients[q][d];
-            }
+          {
+            const Tensor<1, dim> gamma =
+              inputs.solution_gradients[q] +
+              (physics.torsion().active() ?
+                 physics.torsion().twist_strain(inputs.evaluation_points[q]) :
+                 Tensor<1, dim>());
+            for (unsigned int d = 0; d < dim; ++d)
+              {
+                computed[q][d]       = inputs.solution_gradients[q][d];
+                computed[q][dim + d] = k * gamma[d];
+              }
+          }
       }
 
     private:
@@ -84,6 +91,7 @@ namespace perideal
                       "k of the cells with a given material id (gmsh physical surface/volume "
                       "or generator), as 'id: k' items separated by ',' (e.g. '1: 8e10, 2: "
                       "4e10'); other cells take <Coefficient>.");
+    Torsion::declare_parameters(prm);
     prm.leave_subsection();
   }
 
@@ -125,6 +133,7 @@ namespace perideal
                                ">: accepted are material ids >= 0 and k > 0."));
         coefficients[static_cast<types::material_id>(id)] = k;
       }
+    twist.parse_parameters(prm, section, dim);
     prm.leave_subsection();
   }
 
@@ -141,6 +150,13 @@ namespace perideal
   {
     const auto found = coefficients.find(material_id);
     return found == coefficients.end() ? default_coefficient : found->second;
+  }
+
+  template <int dim>
+  const Torsion &
+  ScalarLaplace<dim>::torsion() const
+  {
+    return twist;
   }
 
   template <int dim>
@@ -165,6 +181,77 @@ namespace perideal
   }
 
   template <int dim>
+  bool
+  ScalarLaplace<dim>::loads_free_boundaries() const
+  {
+    return twist.active();
+  }
+
+  template <int dim>
+  void
+  ScalarLaplace<dim>::add_free_boundary_load(const FEFaceValues<dim>   &fe_face_values,
+                                             const types::material_id   material_id,
+                                             const std::vector<double> &weights,
+                                             dealii::Vector<double>    &cell_rhs) const
+  {
+    const double k = coefficient(material_id);
+    for (const unsigned int q : fe_face_values.quadrature_point_indices())
+      {
+        // tau . n = 0: k dw/dn = -k twist_strain . n.
+        const double g = -k *
+                         (twist.twist_strain(fe_face_values.quadrature_point(q)) *
+                          fe_face_values.normal_vector(q)) *
+                         weights[q];
+        for (unsigned int i = 0; i < fe_face_values.dofs_per_cell; ++i)
+          cell_rhs(i) += g * fe_face_values.shape_value(i, q);
+      }
+  }
+
+  template <int dim>
+  std::optional<std::pair<Point<dim>, std::string>>
+  ScalarLaplace<dim>::held_point() const
+  {
+    if (!twist.active())
+      return {};
+    Point<dim> p;
+    p[0] = twist.axis()[0];
+    p[1] = twist.axis()[1];
+    return std::make_pair(p, twist.axis_entry());
+  }
+
+  template <int dim>
+  std::vector<std::string>
+  ScalarLaplace<dim>::integral_names() const
+  {
+    if (!twist.active())
+      return {};
+    return {"torque", "torsion_energy"};
+  }
+
+  template <int dim>
+  void
+  ScalarLaplace<dim>::add_cell_integrals(const FEValues<dim>          &fe_values,
+                                         const types::material_id      material_id,
+                                         const std::vector<double>    &weights,
+                                         const dealii::Vector<double> &cell_values,
+                                         std::vector<double>          &integrals) const
+  {
+    if (!twist.active())
+      return;
+    const double k = coefficient(material_id);
+    for (const unsigned int q : fe_values.quadrature_point_indices())
+      {
+        const Point<dim> &x     = fe_values.quadrature_point(q);
+        Tensor<1, dim>    gamma = twist.twist_strain(x);
+        for (unsigned int i = 0; i < fe_values.dofs_per_cell; ++i)
+          gamma += cell_values(i) * fe_values.shape_grad(i, q);
+        const Tensor<1, dim> tau = k * gamma;
+        integrals[0] += twist.torque_density(x, tau) * weights[q];
+        integrals[1] += 0.5 * (tau * gamma) * weights[q];
+      }
+  }
+
+  template <int dim>
   std::unique_ptr<DataPostprocessor<dim>>
   ScalarLaplace<dim>::postprocessor() const
   {
@@ -179,6 +266,8 @@ namespace perideal
     out << "scalar laplace, k = " << default_coefficient;
     for (const auto &[id, k] : coefficients)
       out << ", k(" << static_cast<unsigned int>(id) << ") = " << k;
+    if (twist.active())
+      out << ", torsion: twist " << twist.twist() << " rad/m about (" << twist.axis() << ")";
     return out.str();
   }
 

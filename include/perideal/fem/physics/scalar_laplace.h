@@ -4,6 +4,7 @@
 #ifndef perideal_fem_physics_scalar_laplace_h
 #define perideal_fem_physics_scalar_laplace_h
 
+#include <perideal/base/torsion.h>
 #include <perideal/fem/fe_physics.h>
 
 #include <map>
@@ -26,6 +27,17 @@ namespace perideal
    * flux into the body of diffusion). Output: w, dw_dx, dw_dy(, dw_dz) and the flux k grad w as
    * flux_x, flux_y(, flux_z), the same sign as the 'flux' condition: for antiplane shear with
    * k = mu, flux_x = tau_xz and flux_y = tau_yz.
+   *
+   * Saint-Venant torsion (2D, <Twist per unit length> psi != 0 and <Twist axis> (x0, y0) in
+   * the same subsection, see Torsion): w is the warping psi phi, the flux is the shear stress
+   * tau = k (grad w + psi (-(y - y0), x - x0)) (output flux_x = tau_xz, flux_y = tau_yz), and
+   * every boundary face without a condition (outer faces, crack faces of a slit mesh) carries
+   * the traction-free load g = k psi ((y - y0) n_x - (x - x0) n_y), so that tau . n = 0 there
+   * (Timoshenko & Goodier 1970, sect. 104, eqs. 148-150). Without a 'value' condition w is held
+   * at 0 at the vertex nearest to the twist axis (the problem defines w up to a constant).
+   * Section integrals (statistics fe_torque, fe_torsion_energy): the torque per unit length
+   * T = int ((x - x0) tau_yz - (y - y0) tau_xz) dA and the strain energy per unit length
+   * E = 1/2 int tau . gamma dA, with T psi = 2 E at equilibrium.
    */
   template <int dim>
   class ScalarLaplace : public FEPhysics<dim>
@@ -50,6 +62,33 @@ namespace perideal
                        const std::vector<double>       &weights,
                        dealii::FullMatrix<double>      &cell_matrix) const override;
 
+    /// @brief Whether a twist is given.
+    bool
+    loads_free_boundaries() const override;
+
+    /// @brief The traction-free load of torsion (nothing without a twist).
+    void
+    add_free_boundary_load(const dealii::FEFaceValues<dim> &fe_face_values,
+                           const dealii::types::material_id material_id,
+                           const std::vector<double>       &weights,
+                           dealii::Vector<double>          &cell_rhs) const override;
+
+    /// @brief The twist axis and its entry, with a twist.
+    std::optional<std::pair<dealii::Point<dim>, std::string>>
+    held_point() const override;
+
+    /// @brief "torque", "torsion_energy" with a twist.
+    std::vector<std::string>
+    integral_names() const override;
+
+    /// @brief The integrands of the torque and the strain energy of torsion.
+    void
+    add_cell_integrals(const dealii::FEValues<dim>     &fe_values,
+                       const dealii::types::material_id material_id,
+                       const std::vector<double>       &weights,
+                       const dealii::Vector<double>    &cell_values,
+                       std::vector<double>             &integrals) const override;
+
     /// @brief The gradient dw_dx, ... and the flux k grad w as flux_x, ...
     std::unique_ptr<dealii::DataPostprocessor<dim>>
     postprocessor() const override;
@@ -62,9 +101,14 @@ namespace perideal
     double
     coefficient(const dealii::types::material_id material_id) const;
 
+    /// @brief The twist of torsion (inactive by default).
+    const Torsion &
+    torsion() const;
+
   private:
     double                                       default_coefficient = 1.;
     std::map<dealii::types::material_id, double> coefficients;
+    Torsion                                      twist;
   };
 } // namespace perideal
 
