@@ -1,5 +1,5 @@
 // ---------------------------------------------------------------------
-// PeriDeal: the energy balance of a dynamic run (work, error, instability stop).
+// PeriDeal: the energy balance of a dynamic run (work, dissipation, error, instability stop).
 // ---------------------------------------------------------------------
 #include <deal.II/base/exceptions.h>
 
@@ -16,11 +16,13 @@ namespace perideal
                         const double       row_kinetic,
                         const double       row_strain,
                         const double       work_of_loads,
-                        const double       prescribed_kinetic)
+                        const double       prescribed_kinetic,
+                        const double       row_dissipated)
   {
-    step    = row_step;
-    kinetic = row_kinetic;
-    strain  = row_strain;
+    step       = row_step;
+    kinetic    = row_kinetic;
+    strain     = row_strain;
+    dissipated = row_dissipated;
     if (step == 0)
       {
         initial_energy     = kinetic + strain;
@@ -38,7 +40,7 @@ namespace perideal
   double
   EnergyBalance::error() const
   {
-    return kinetic + strain - total_work - initial_energy;
+    return kinetic + strain + dissipated - total_work - initial_energy;
   }
 
   void

@@ -132,7 +132,9 @@ namespace perideal
   void
   CoupledState<dim>::start_work()
   {
-    local_work             = 0.;
+    local_work       = 0.;
+    local_dissipated = 0.;
+    pd.particles().bonds().newly_broken.clear();
     previous_U             = U;
     previous_fe_load       = fe_load;
     previous_u             = u;
@@ -181,6 +183,20 @@ namespace perideal
   CoupledState<dim>::external_work() const
   {
     return Utilities::MPI::sum(local_work, comm);
+  }
+
+  template <int dim>
+  void
+  CoupledState<dim>::accumulate_dissipated_energy()
+  {
+    local_dissipated += pd.material().released_energy(pd.particles(), u);
+  }
+
+  template <int dim>
+  double
+  CoupledState<dim>::dissipated_energy() const
+  {
+    return Utilities::MPI::sum(local_dissipated, comm);
   }
 
   template <int dim>

@@ -2,12 +2,14 @@
 // PeriDeal: the prototype microelastic brittle (PMB) bond-based model.
 // ---------------------------------------------------------------------
 #include <deal.II/base/numbers.h>
+#include <deal.II/base/tensor.h>
 
 #include <perideal/base/parameter_utilities.h>
 #include <perideal/pd/bond_based.h>
 #include <perideal/pd/bond_loop.h>
 #include <perideal/pd/surface_correction.h>
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <sstream>
@@ -207,6 +209,29 @@ namespace perideal
     else
       k.template force_loop<false>(particles.bonds(), critical_stretch);
     k.blocks.scatter_owned(k.f_field, dim, volume, force.begin());
+  }
+
+  template <int dim>
+  double
+  BondBased<dim>::released_energy(ParticleSystem<dim> &particles, const ParticleVector &u)
+  {
+    BondList   &bonds    = particles.bonds();
+    const auto &x        = particles.positions();
+    double      released = 0.;
+    for (const unsigned int b : bonds.newly_broken)
+      {
+        // The bond's particle: the row of the bond list that holds it.
+        const unsigned int i = std::upper_bound(bonds.row_start.begin(), bonds.row_start.end(), b) -
+                               bonds.row_start.begin() - 1;
+        const unsigned int j = bonds.neighbor[b];
+        Tensor<1, dim>     r = x[j] - x[i];
+        for (unsigned int d = 0; d < dim; ++d)
+          r[d] += u.local_element(j * dim + d) - u.local_element(i * dim + d);
+        const double s = r.norm() / bonds.length[b] - 1.;
+        released += particles.bond_share(b) * 0.5 * bond_coefficient[b] * s * s * bonds.length[b];
+      }
+    bonds.newly_broken.clear();
+    return released;
   }
 
   template <int dim>

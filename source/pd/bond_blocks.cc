@@ -185,8 +185,10 @@ namespace perideal
     for (unsigned int l = 0; l < width; ++l)
       if (state[l] == 1 && stretch[l] > critical_stretch)
         {
-          state[l]                                            = 0;
-          bonds.intact[lane_bond[std::size_t(q) * width + l]] = 0;
+          const unsigned int b = lane_bond[std::size_t(q) * width + l];
+          state[l]             = 0;
+          bonds.intact[b]      = 0;
+          bonds.newly_broken.push_back(b);
         }
   }
 

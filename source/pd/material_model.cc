@@ -4,6 +4,7 @@
 #include <perideal/pd/material_model.h>
 
 #include <cmath>
+#include <cstdint>
 #include <limits>
 
 namespace perideal
@@ -82,6 +83,35 @@ namespace perideal
       if (bound[k] > 0.)
         dt = std::min(dt, std::sqrt(4. * inertia[k % nc] / bound[k]));
     return dealii::Utilities::MPI::min(dt, particles.get_communicator());
+  }
+
+  template <int dim>
+  double
+  MaterialModel<dim>::released_energy(ParticleSystem<dim> &particles, const ParticleVector &u)
+  {
+    BondList &bonds = particles.bonds();
+    if (dealii::Utilities::MPI::max(bonds.newly_broken.empty() ? 0u : 1u,
+                                    particles.get_communicator()) == 0)
+      return 0.;
+    ParticleVector      force;
+    std::vector<double> density;
+    particles.reinit_vector(force, field_layout().n_components());
+    const auto energy = [&](const std::uint8_t state) {
+      for (const unsigned int b : bonds.newly_broken)
+        bonds.intact[b] = state;
+      ++bonds.revision;
+      compute_forces(particles, u, force, &density, std::numeric_limits<double>::infinity());
+      double sum = 0.;
+      for (unsigned int i = 0; i < particles.n_owned(); ++i)
+        sum += density[i] * particles.volumes()[i];
+      return sum;
+    };
+    // The broken state last: what a model keeps of an evaluation (the LPS dilatation) is then
+    // that of the bonds as they are.
+    const double with_bonds = energy(1);
+    const double without    = energy(0);
+    bonds.newly_broken.clear();
+    return with_bonds - without;
   }
 
   template <int dim>

@@ -7,7 +7,8 @@ Reads RESULTS_DIR/particles.xdmf (the time series of particle HDF5 files written
 perideal-solid: datasets /nodes (reference positions), /damage, /displacement, ...) and
 RESULTS_DIR/statistics.csv, and writes into RESULTS_DIR:
   damage_final.png    damage index at the last output time (reference configuration);
-  energies.png        kinetic, strain, external work, kinetic + strain, and the balance error;
+  energies.png        kinetic, strain, external work, kinetic + strain, the energy of the
+                      broken bonds (dissipated) and the balance with and without it;
   crack_angle.png     crack angle and crack length against time;
   crack_angle.csv     the same numbers (time, angle, chord angle, length, tip x, tip y).
 The LAST line printed is "crack angle [deg]: <value>" for the crack grown from the upper notch
@@ -165,7 +166,13 @@ def plot_energies(stats, out):
     ax.plot(t, strain, label="strain")
     ax.plot(t, work, label="external work")
     ax.plot(t, kin + strain, "k--", label="kinetic + strain")
-    ax.plot(t, stats["energy_error"], ":", label="kinetic + strain - work")
+    # energy_error is kinetic + strain + dissipated - work where the run reports the energy the
+    # broken bonds took (dissipated_energy).
+    dissipated = stats.get("dissipated_energy", np.zeros_like(t))
+    ax.plot(t, stats["energy_error"] - dissipated, ":", label="kinetic + strain - work")
+    if "dissipated_energy" in stats:
+        ax.plot(t, dissipated, label="dissipated (broken bonds)")
+        ax.plot(t, stats["energy_error"], "k-.", label="kinetic + strain + dissipated - work")
     ax.set_xlabel("time [us]")
     ax.set_ylabel("energy per unit thickness [J/m]")
     ax.grid(alpha=0.3)
@@ -268,10 +275,12 @@ def main():
 
     print("results: %s (t_end = %.3g us, dx = %.3g mm, %d output times)"
           % (args.results, time * 1e6, dx * 1e3, len(series)))
-    print("final energies [J/m]: kinetic %.6g, strain %.6g, external work %.6g, error %.3g; "
-          "broken bonds %d" % (stats["kinetic_energy"][-1], stats["strain_energy"][-1],
-                               stats["external_work"][-1], stats["energy_error"][-1],
-                               stats["broken_bonds"][-1]))
+    dissipated = stats.get("dissipated_energy", [0.])[-1]
+    print("final energies [J/m]: kinetic %.6g, strain %.6g, external work %.6g, dissipated %.6g, "
+          "kinetic + strain - work %.4g, kinetic + strain + dissipated - work %.3g; broken bonds %d"
+          % (stats["kinetic_energy"][-1], stats["strain_energy"][-1], stats["external_work"][-1],
+             dissipated, stats["energy_error"][-1] - dissipated, stats["energy_error"][-1],
+             stats["broken_bonds"][-1]))
     initiated = [h[0] for h in history if h[1] is not None]
     if initiated:
         print("first output time with a grown upper crack: %.3g us" % (initiated[0] * 1e6))

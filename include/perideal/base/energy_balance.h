@@ -1,5 +1,5 @@
 // ---------------------------------------------------------------------
-// PeriDeal: the energy balance of a dynamic run (work, error, instability stop).
+// PeriDeal: the energy balance of a dynamic run (work, dissipation, error, instability stop).
 // ---------------------------------------------------------------------
 #ifndef perideal_base_energy_balance_h
 #define perideal_base_energy_balance_h
@@ -7,14 +7,15 @@
 namespace perideal
 {
   /**
-   * @brief Kinetic + strain energy against the work done on the body, for the statistics of a
-   * time-stepping run.
+   * @brief Kinetic + strain + dissipated energy against the work done on the body, for the
+   * statistics of a time-stepping run.
    *
    * The work is that of the loads (external forces, and on prescribed components the force
    * the constraint balances), accumulated by the caller, plus the change of the kinetic energy
    * of the prescribed components (the constraints also accelerate them; it telescopes over the
-   * steps). The error is kinetic + strain - work - initial energy: the integration error, and in
-   * a fracture run the energy that the broken bonds took away.
+   * steps). The dissipated energy is the strain energy the broken bonds took with them,
+   * accumulated by the caller (MaterialModel::released_energy()). The error is kinetic + strain
+   * + dissipated - work - initial energy: the time-integration error, in a fracture run too.
    */
   class EnergyBalance
   {
@@ -28,13 +29,14 @@ namespace perideal
            const double       kinetic,
            const double       strain,
            const double       work_of_loads,
-           const double       prescribed_kinetic);
+           const double       prescribed_kinetic,
+           const double       dissipated);
 
     /// The work done on the body up to the recorded row [J].
     double
     work() const;
 
-    /// kinetic + strain - work - initial energy at the recorded row [J].
+    /// kinetic + strain + dissipated - work - initial energy at the recorded row [J].
     double
     error() const;
 
@@ -50,6 +52,7 @@ namespace perideal
     unsigned int step               = 0;
     double       kinetic            = 0.;
     double       strain             = 0.;
+    double       dissipated         = 0.;
     double       total_work         = 0.;
     double       initial_energy     = 0.;
     double       initial_prescribed = 0.;

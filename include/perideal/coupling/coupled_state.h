@@ -85,7 +85,8 @@ namespace perideal
     apply_initial_conditions();
 
     /**
-     * @brief Start the work of the loads at 0 from the current state.
+     * @brief Start the work of the loads and the dissipated energy at 0 from the current state
+     * (bonds broken before do not count).
      */
     void
     start_work();
@@ -102,6 +103,18 @@ namespace perideal
     /// The work of the loads since start_work(), summed over the ranks [J].
     double
     external_work() const;
+
+    /**
+     * @brief Add the energy that the bonds broken by the last force evaluation released at the
+     * particle displacement u (MaterialModel::released_energy(): nothing to do unless bonds
+     * broke). Call it on every rank after each force evaluation that may break bonds.
+     */
+    void
+    accumulate_dissipated_energy();
+
+    /// The energy the broken bonds released since start_work(), summed over the ranks [J].
+    double
+    dissipated_energy() const;
 
     /// The largest particle displacement (norm of the translations) over the ranks [m].
     double
@@ -170,6 +183,8 @@ namespace perideal
     FEVector       previous_fe_load, previous_U;
     ParticleVector previous_u, previous_load;
     double         local_work = 0.;
+    // The energy released by the bonds broken on this rank since start_work().
+    double local_dissipated = 0.;
   };
 } // namespace perideal
 

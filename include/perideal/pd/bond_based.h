@@ -58,6 +58,14 @@ namespace perideal
                    std::vector<double>  *energy_density,
                    const double          critical_stretch) override;
 
+    /**
+     * @brief The energy of the bonds broken since the last call, as
+     * MaterialModel::released_energy() defines it: the sum over BondList::newly_broken of the
+     * bond energy k s^2 |xi| / 2 at @p u (k = c G beta V_i V_j, the pair energy of both ends, s
+     * the stretch), each times its share on this rank; no force evaluation, no communication.
+     */
+    double
+    released_energy(ParticleSystem<dim> &particles, const ParticleVector &u) override;
 
     /**
      * @brief Gershgorin bound (see MaterialModel::stiffness_bound()); defined in

@@ -175,8 +175,9 @@ namespace perideal
 
     /**
      * @brief Break the bonds of block @p q whose @p stretch exceeds @p critical_stretch and that
-     * are breakable (state 1), in the lanes and in @p bonds. Bonds that never break (state 2)
-     * are left alone. The rare path of the kernels: they re-read the lane states afterwards.
+     * are breakable (state 1), in the lanes and in @p bonds, and list them in
+     * BondList::newly_broken. Bonds that never break (state 2) are left alone. The rare path of
+     * the kernels: they re-read the lane states afterwards.
      */
     void
     break_lanes(const bond_simd::Vector &stretch,

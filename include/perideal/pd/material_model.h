@@ -189,6 +189,24 @@ namespace perideal
                    const double          critical_stretch) = 0;
 
     /**
+     * @brief The strain energy that the bonds broken since the last call released
+     * (BondList::newly_broken, which it clears) [J]: the drop of the model's energy at the
+     * displacement @p u at which they broke, E(u, with them) - E(u, without them), counted on
+     * this rank's particles (the sum over the ranks is the total). Call it on every rank right
+     * after the compute_forces() that may have broken them, with the same @p u (ghost values
+     * current).
+     *
+     * The default evaluates the energy at @p u twice (infinite critical stretch), with the broken
+     * bonds restored and broken again, and only when some rank broke a bond (otherwise one
+     * reduction of a flag over the ranks): exact for every model, the state-based ones included,
+     * where a broken bond changes the dilatation of both ends so that its energy is not its own.
+     * A model whose energy is a sum of bond energies overrides it with the sum over the broken
+     * bonds (no force evaluation, no communication).
+     */
+    virtual double
+    released_energy(ParticleSystem<dim> &particles, const ParticleVector &u);
+
+    /**
      * @brief The inertia per unit volume of each component of field_layout() for the mass
      * density @p density [kg/m^3]: @p density for translations and scalars; for a rotation the
      * model's rotational inertia per unit volume [kg/m] (what multiplies the angular

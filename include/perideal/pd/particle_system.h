@@ -49,6 +49,9 @@ namespace perideal
     /// Incremented by every change of @p intact outside the force kernels, so that the kernels'
     /// copy of the states (BondBlocks::sync_state()) follows.
     std::uint64_t revision = 0;
+    /// The bonds the force kernels broke (BondBlocks::break_lanes()) since the list was last
+    /// cleared: MaterialModel::released_energy() takes their energy and clears it.
+    std::vector<unsigned int> newly_broken;
 
     /// Number of locally stored bonds.
     std::size_t

@@ -19,19 +19,22 @@ namespace perideal
   {
     if (!data.write_statistics)
       return;
-    using Motion             = typename CoupledState<dim>::Motion;
-    const auto        &ps    = state.pd.particles();
-    const unsigned int nc    = state.n_components();
-    const double       work  = state.external_work();
-    std::ostream      &log   = state.log;
-    const auto         flags = log.flags();
+    using Motion            = typename CoupledState<dim>::Motion;
+    const auto        &ps   = state.pd.particles();
+    const unsigned int nc   = state.n_components();
+    const double       work = state.external_work();
+    // The energy of the broken bonds, for runs that can break them.
+    const bool    breaks     = state.pd.has_body() && std::isfinite(state.pd.critical_stretch());
+    const double  dissipated = state.dissipated_energy();
+    std::ostream &log        = state.log;
+    const auto    flags      = log.flags();
     log << std::scientific << std::setprecision(6);
 
     if (data.quasi_static)
       {
         const CoupledEnergy energy       = state.method.strain_energy(state.U, data.pd_energy);
         const double        strain       = energy.fe + energy.particles;
-        const double        energy_error = work - strain;
+        const double        energy_error = work - strain - dissipated;
         // Relative to the work, unless the energies are below 1e-10 of the force scale times the
         // displacement (a rigid motion: round-off); relative to the strain energy if no load
         // works (a model's prestrain, the twist of PD torsion, is the only load).
@@ -45,6 +48,8 @@ namespace perideal
         statistics.add_value("fe_strain_energy", energy.fe);
         statistics.add_value("pd_strain_energy", energy.particles);
         statistics.add_value("external_work", work);
+        if (breaks)
+          statistics.add_value("dissipated_energy", dissipated);
         statistics.add_value("energy_error", energy_error);
         if (state.is_root && data.final_row)
           {
@@ -52,8 +57,10 @@ namespace perideal
             if (state.is_coupled())
               log << " (FE " << energy.fe << " J, particles " << energy.particles << " J)";
             log << "\n"
-                << "External work: " << work << " J\n"
-                << "Energy error: " << energy_error << " J (relative " << relative_error << ")\n";
+                << "External work: " << work << " J\n";
+            if (breaks)
+              log << "Dissipated energy: " << dissipated << " J\n";
+            log << "Energy error: " << energy_error << " J (relative " << relative_error << ")\n";
           }
       }
     else
@@ -89,17 +96,23 @@ namespace perideal
         const CoupledEnergy energy =
           state.method.strain_energy(state.U, Utilities::MPI::sum(particle_energy, state.comm));
         const double strain = energy.fe + energy.particles;
-        balance.record(data.step, kinetic, strain, work, prescribed_kinetic);
+        balance.record(data.step, kinetic, strain, work, prescribed_kinetic, dissipated);
         balance.check_stable(data.time, state.stable_dt);
         statistics.add_value("kinetic_energy", kinetic);
         statistics.add_value("strain_energy", strain);
         statistics.add_value("external_work", balance.work());
+        if (breaks)
+          statistics.add_value("dissipated_energy", dissipated);
         statistics.add_value("energy_error", balance.error());
         if (state.is_root && data.final_row)
-          log << "Kinetic energy: " << kinetic << " J\n"
-              << "Strain energy: " << strain << " J\n"
-              << "External work: " << balance.work() << " J\n"
-              << "Energy error: " << balance.error() << " J\n";
+          {
+            log << "Kinetic energy: " << kinetic << " J\n"
+                << "Strain energy: " << strain << " J\n"
+                << "External work: " << balance.work() << " J\n";
+            if (breaks)
+              log << "Dissipated energy: " << dissipated << " J\n";
+            log << "Energy error: " << balance.error() << " J\n";
+          }
       }
     log.flags(flags);
   }

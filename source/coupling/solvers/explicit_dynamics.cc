@@ -65,6 +65,7 @@ namespace perideal
                                  state.internal_force,
                                  with_energy ? &state.energy_density : nullptr,
                                  pd.critical_stretch());
+    state.accumulate_dissipated_energy();
     // The applied forces (zero since the set-up if there are none).
     const bool loads = pd.boundary_conditions().has_loads();
     if (loads)

@@ -185,6 +185,7 @@ namespace perideal
                                          state.internal_force,
                                          &state.energy_density,
                                          pd.critical_stretch());
+            state.accumulate_dissipated_energy();
             if (breaking_settled(ps, broken_before, step, passes))
               break;
           }

@@ -16,12 +16,24 @@ namespace perideal
    * coupling method reports it (CouplingMethod::strain_energy()) from the FE field and the
    * particles' energy. Explicit runs: kinetic energy (FE lumped masses, particles that do not
    * follow the FE field), strain energy (the particles' from the model's energy density), the
-   * work of the loads and the energy error KE + SE - W - E_0 (EnergyBalance, which also stops a
-   * run whose energy grows without bound). Quasi-static runs: the strain energy with the
-   * particles' in the coupling method's model of equilibrium, the work of the loads and their
-   * difference, relative to the work where the energies are not round-off.
+   * work of the loads and the energy error KE + SE + D - W - E_0 (EnergyBalance, which also
+   * stops a run whose energy grows without bound). Quasi-static runs: the strain energy with
+   * the particles' in the coupling method's model of equilibrium, the work of the loads and the
+   * error W - SE - D, relative to the work where the energies are not round-off.
+   *
+   * D, the dissipated energy, is the strain energy the broken bonds took with them since the
+   * start (CoupledState::dissipated_energy()): per force evaluation that broke bonds, the drop
+   * of the model's energy at the displacement of that evaluation, E(u, bonds before) - E(u,
+   * bonds after) (MaterialModel::released_energy(): for a bond-based model the energy
+   * k s^2 |xi| / 2 of each broken bond, k = c G beta V_i V_j with its surface-correction,
+   * partial-volume and blending weights; for LPS the change of the dilatation terms of both
+   * ends as well). An explicit run then closes KE + SE + D = W + E_0 to the time-integration
+   * error. A quasi-static run breaks bonds at a converged state and solves again at the same
+   * load: the energy the re-solve releases (kinetic energy in a dynamic run) stays in its error.
+   *
    * Columns kinetic_energy (explicit), strain_energy, fe_strain_energy and pd_strain_energy
-   * (quasi-static), external_work, energy_error.
+   * (quasi-static), external_work, dissipated_energy (runs whose damage model can break bonds),
+   * energy_error.
    */
   template <int dim>
   class EnergyStatistics : public Postprocessor<dim>

@@ -18,8 +18,9 @@ namespace perideal
    * The stable step is the smaller of the FE region's (Gershgorin bound of M^-1 K with the full
    * coupled mass) and the particles'; a requested step above it is refused. Per step: half a
    * step of the velocities, the positions (particles that follow the FE field from it, by the
-   * method's P), the forces of both regions (their forces to the FE dofs by the method's P^T),
-   * the second half step, the work of the loads. The
+   * method's P), the forces of both regions (their forces to the FE dofs by the method's P^T)
+   * and the energy of the bonds they broke (CoupledState::accumulate_dissipated_energy()), the
+   * second half step, the work of the loads. The
    * acceleration works on contiguous arrays: per particle component the factor from force
    * density to acceleration is V_i / m_i where the component moves by its acceleration and 0
    * where it follows the FE field or is prescribed, so the pass has no branches.
