@@ -2,8 +2,6 @@
 // PeriDeal: the bond-based peridynamic model of antiplane shear (one scalar per particle).
 // ---------------------------------------------------------------------
 #include <perideal/pd/antiplane_bond_based.h>
-#include <perideal/pd/antiplane_shear.h>
-#include <perideal/pd/antiplane_torsion.h>
 #include <perideal/pd/bond_loop.h>
 #include <perideal/pd/surface_correction.h>
 
@@ -71,30 +69,14 @@ namespace perideal
   void
   AntiplaneBondBased<dim>::declare_parameters(ParameterHandler &prm)
   {
-    AntiplaneShear::declare_shear_modulus(prm);
-    Torsion::declare_parameters(prm);
+    AntiplaneModel<dim>::declare_antiplane_parameters(prm);
   }
 
   template <int dim>
   void
   AntiplaneBondBased<dim>::parse_parameters(ParameterHandler &prm)
   {
-    mu = AntiplaneShear::parse_shear_modulus(prm, "antiplane bond based");
-    twist.parse_parameters(prm, "Material/antiplane bond based", dim);
-  }
-
-  template <int dim>
-  FieldLayout
-  AntiplaneBondBased<dim>::field_layout() const
-  {
-    return FieldLayout::scalar("w");
-  }
-
-  template <int dim>
-  double
-  AntiplaneBondBased<dim>::shear_modulus() const
-  {
-    return mu;
+    this->parse_antiplane_parameters(prm, "antiplane bond based");
   }
 
   template <int dim>
@@ -111,9 +93,8 @@ namespace perideal
   {
     context = model_context;
     c       = AntiplaneShear::micromodulus(dim, mu, context.horizon, context.thickness);
-    if (twist.active())
-      AntiplaneTorsion::check_section(particles, twist);
-    BondBlocks<dim> &blocks = kernel->blocks;
+    const std::vector<double> twist_values = this->twist_fields(particles);
+    BondBlocks<dim>          &blocks       = kernel->blocks;
     kernel->twist_field.clear();
     blocks.reinit(particles);
     blocks.reinit_field(kernel->w_field, 1);
@@ -129,15 +110,13 @@ namespace perideal
         };
         std::array<double, dim> modulus;
         modulus.fill(mu);
-        apply_energy_surface_correction<dim>(particles, field_layout(), modulus, energy);
+        apply_energy_surface_correction<dim>(particles, this->field_layout(), modulus, energy);
       }
     set_bond_coefficients(particles, true);
     if (twist.active())
       {
         blocks.reinit_field(kernel->twist_field, 2);
-        blocks.gather(AntiplaneTorsion::twist_fields(particles, twist).data(),
-                      2,
-                      kernel->twist_field);
+        blocks.gather(twist_values.data(), 2, kernel->twist_field);
       }
   }
 
@@ -176,60 +155,12 @@ namespace perideal
   }
 
   template <int dim>
-  bool
-  AntiplaneBondBased<dim>::has_prestrain() const
-  {
-    return twist.active();
-  }
-
-  template <int dim>
-  std::vector<std::string>
-  AntiplaneBondBased<dim>::integral_names() const
-  {
-    return twist.active() ? AntiplaneTorsion::integral_names() : std::vector<std::string>();
-  }
-
-  template <int dim>
-  std::vector<double>
-  AntiplaneBondBased<dim>::section_integrals(const ParticleSystem<dim> &particles,
-                                             const ParticleVector      &u,
-                                             const double               strain_energy) const
-  {
-    if (!twist.active())
-      return {};
-    return AntiplaneTorsion::section_integrals(particles, u, twist, mu, strain_energy);
-  }
-
-  template <int dim>
-  std::vector<DerivedParticleField>
-  AntiplaneBondBased<dim>::derived_fields(const ParticleSystem<dim> &particles,
-                                          const ParticleVector      &u) const
-  {
-    if (!twist.active())
-      return {};
-    std::vector<Tensor<1, dim>> tau;
-    AntiplaneTorsion::shear_stresses(particles, u, twist, mu, tau);
-    DerivedParticleField field{"shear_stress", 2, {}};
-    for (const auto &t : tau)
-      field.values.insert(field.values.end(), {t[0], t[1]});
-    return {field};
-  }
-
-  template <int dim>
-  double
-  AntiplaneBondBased<dim>::critical_stretch(const double fracture_energy) const
-  {
-    return AntiplaneShear::critical_slope(dim, fracture_energy, mu, context.horizon);
-  }
-
-  template <int dim>
   std::string
   AntiplaneBondBased<dim>::summary() const
   {
     std::ostringstream out;
-    out << "antiplane bond based: mu = " << mu << " Pa, micromodulus c = " << c << " N/m^6";
-    if (twist.active())
-      out << "; torsion: twist " << twist.twist() << " rad/m about (" << twist.axis() << ")";
+    out << "antiplane bond based: mu = " << mu << " Pa, micromodulus c = " << c << " N/m^6"
+        << this->torsion_summary();
     return out.str();
   }
 

@@ -5,31 +5,15 @@
 
 #include <perideal/base/parameter_utilities.h>
 #include <perideal/pd/antiplane_shear.h>
+#include <perideal/pd/antiplane_torsion.h>
 
 #include <cmath>
+#include <sstream>
 
 namespace perideal
 {
   namespace AntiplaneShear
   {
-    void
-    declare_shear_modulus(dealii::ParameterHandler &prm)
-    {
-      prm.declare_entry("Shear modulus",
-                        "0",
-                        dealii::Patterns::Double(0.),
-                        "Shear modulus mu [Pa] of antiplane shear (the field w is the "
-                        "out-of-plane displacement, its stresses tau_xz, tau_yz = mu grad w).");
-    }
-
-    double
-    parse_shear_modulus(dealii::ParameterHandler &prm, const std::string &model_name)
-    {
-      const double mu = prm.get_double("Shear modulus");
-      ParameterUtilities::require_positive(mu, "Material/" + model_name + "/Shear modulus");
-      return mu;
-    }
-
     double
     micromodulus(const unsigned int dim,
                  const double       shear_modulus,
@@ -52,4 +36,110 @@ namespace perideal
                           std::sqrt(5. * G / (3. * mu * horizon));
     }
   } // namespace AntiplaneShear
+
+  template <int dim>
+  FieldLayout
+  AntiplaneModel<dim>::field_layout() const
+  {
+    return FieldLayout::scalar("w");
+  }
+
+  template <int dim>
+  double
+  AntiplaneModel<dim>::critical_stretch(const double fracture_energy) const
+  {
+    return AntiplaneShear::critical_slope(dim, fracture_energy, mu, context.horizon);
+  }
+
+  template <int dim>
+  bool
+  AntiplaneModel<dim>::has_prestrain() const
+  {
+    return twist.active();
+  }
+
+  template <int dim>
+  std::vector<std::string>
+  AntiplaneModel<dim>::integral_names() const
+  {
+    return twist.active() ? AntiplaneTorsion::integral_names() : std::vector<std::string>();
+  }
+
+  template <int dim>
+  std::vector<double>
+  AntiplaneModel<dim>::section_integrals(const ParticleSystem<dim> &particles,
+                                         const ParticleVector      &u,
+                                         const double               strain_energy) const
+  {
+    if (!twist.active())
+      return {};
+    return AntiplaneTorsion::section_integrals(particles, u, twist, mu, strain_energy);
+  }
+
+  template <int dim>
+  std::vector<DerivedParticleField>
+  AntiplaneModel<dim>::derived_fields(const ParticleSystem<dim> &particles,
+                                      const ParticleVector      &u) const
+  {
+    std::vector<dealii::Tensor<1, dim>> tau;
+    AntiplaneTorsion::shear_stresses(particles, u, twist, mu, tau);
+    DerivedParticleField field{"shear_stress", dim, {}};
+    for (const auto &t : tau)
+      for (unsigned int d = 0; d < dim; ++d)
+        field.values.push_back(t[d]);
+    return {field};
+  }
+
+  template <int dim>
+  double
+  AntiplaneModel<dim>::shear_modulus() const
+  {
+    return mu;
+  }
+
+  template <int dim>
+  void
+  AntiplaneModel<dim>::declare_antiplane_parameters(dealii::ParameterHandler &prm)
+  {
+    prm.declare_entry("Shear modulus",
+                      "0",
+                      dealii::Patterns::Double(0.),
+                      "Shear modulus mu [Pa] of antiplane shear (the field w is the "
+                      "out-of-plane displacement, its stresses tau_xz, tau_yz = mu grad w).");
+    Torsion::declare_parameters(prm);
+  }
+
+  template <int dim>
+  void
+  AntiplaneModel<dim>::parse_antiplane_parameters(dealii::ParameterHandler &prm,
+                                                  const std::string        &model_name)
+  {
+    mu = prm.get_double("Shear modulus");
+    ParameterUtilities::require_positive(mu, "Material/" + model_name + "/Shear modulus");
+    twist.parse_parameters(prm, "Material/" + model_name, dim);
+  }
+
+  template <int dim>
+  std::string
+  AntiplaneModel<dim>::torsion_summary() const
+  {
+    if (!twist.active())
+      return "";
+    std::ostringstream out;
+    out << "; torsion: twist " << twist.twist() << " rad/m about (" << twist.axis() << ")";
+    return out.str();
+  }
+
+  template <int dim>
+  std::vector<double>
+  AntiplaneModel<dim>::twist_fields(const ParticleSystem<dim> &particles) const
+  {
+    if (!twist.active())
+      return {};
+    AntiplaneTorsion::check_section(particles, twist);
+    return AntiplaneTorsion::twist_fields(particles, twist);
+  }
+
+  template class AntiplaneModel<2>;
+  template class AntiplaneModel<3>;
 } // namespace perideal

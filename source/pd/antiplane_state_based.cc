@@ -5,13 +5,13 @@
 #include <deal.II/base/numbers.h>
 
 #include <perideal/base/parameter_utilities.h>
-#include <perideal/pd/antiplane_shear.h>
 #include <perideal/pd/antiplane_state_based.h>
 #include <perideal/pd/bond_loop.h>
 #include <perideal/pd/surface_correction.h>
 
 #include <cmath>
 #include <sstream>
+#include <type_traits>
 
 namespace perideal
 {
@@ -21,20 +21,21 @@ namespace perideal
   {
     /**
      * @brief Pass 1 of the state-based antiplane kernel as a pair law of for_each_bond_block():
-     * breaks bonds by slope (SlopePairLaw), then adds the pair sum
+     * breaks bonds by slope (@p Slope: SlopePairLaw, or TwistedSlopePairLaw under torsion),
+     * then adds the pair sum
      * k r n = omega (w_b - w_a) n beta V_i V_j (k = delta beta V_i V_j per lane, n = xi/|xi|) to
      * the dim outputs at both ends (r and n change sign together): the shear angles before the
      * factor b g / V_i.
      */
-    template <int dim>
-    struct ShearAngleLaw : SlopePairLaw<dim, false>
+    template <int dim, typename Slope = SlopePairLaw<dim, false>>
+    struct ShearAngleLaw : Slope
     {
       static constexpr unsigned int n_outputs = dim;
 
       void
       pair(const typename BondBlocks<dim>::BondClass &bond,
            const BondSlope                           &r,
-           const typename SlopePairLaw<dim, false>::Side &,
+           const typename Slope::Side &,
            const BondLanes   &lanes,
            bond_simd::Vector *to_a,
            bond_simd::Vector *to_b) const
@@ -65,42 +66,51 @@ namespace perideal
      * @brief Pass 2 of the state-based antiplane kernel as a pair law of for_each_bond_block():
      * the pair force k (s_a + s_b) . n / |xi| = omega (s_a + s_b) . n beta V_i V_j (k = delta
      * beta V_i V_j per lane, @p weight) plus the bond-based term of SlopePairLaw (its coefficient
-     * alpha c G beta V_i V_j, and its pair energy if @p with_energy) on the particle side, the
-     * negative on the neighbour. No breaking (pass 1 broke the bonds).
+     * alpha c G beta V_i V_j, and its pair energy if @p with_energy; TwistedSlopePairLaw's if
+     * @p twisted) on the particle side, the negative on the neighbour. No breaking (pass 1
+     * broke the bonds).
      */
-    template <int dim, bool with_energy>
-    struct StateForceLaw : SlopePairLaw<dim, with_energy>
+    template <int dim, bool with_energy, bool twisted = false>
+    struct StateForceLaw : std::conditional_t<twisted,
+                                              TwistedSlopePairLaw<dim, with_energy>,
+                                              SlopePairLaw<dim, with_energy>>
     {
+      using Slope = std::conditional_t<twisted,
+                                       TwistedSlopePairLaw<dim, with_energy>,
+                                       SlopePairLaw<dim, with_energy>>;
       static constexpr bool breaks_bonds = false;
+      /// The first unknown of s: after w (and the twist fields p, q of TwistedSlopePairLaw).
+      static constexpr unsigned int first_state = twisted ? 3 : 1;
       /// delta beta V_i V_j per lane.
       const double *weight;
 
-      /// The slope (the unknown 0) and (s_a + s_b) . n / |xi| (the unknowns 1 ... dim).
+      /// The slope (the unknown 0, twisted by the unknowns 1 and 2 if @p twisted) and
+      /// (s_a + s_b) . n / |xi| (the dim unknowns from first_state).
       StateBondStrain
       strain(const typename BondBlocks<dim>::BondClass &bond,
              const bond_simd::Vector                   *u_a,
              const bond_simd::Vector                   *u_b) const
       {
         StateBondStrain y;
-        static_cast<BondSlope &>(y) = SlopePairLaw<dim, with_energy>::strain(bond, u_a, u_b);
+        static_cast<BondSlope &>(y) = Slope::strain(bond, u_a, u_b);
         y.state                     = 0.;
         for (unsigned int d = 0; d < dim; ++d)
-          y.state += (u_a[1 + d] + u_b[1 + d]) * bond.xi[d];
+          y.state += (u_a[first_state + d] + u_b[first_state + d]) * bond.xi[d];
         // n = xi / |xi| and omega = delta / |xi| (delta is in the lane weight)
         y.state *= bond.inverse_length * bond.inverse_length;
         return y;
       }
 
       void
-      pair(const typename BondBlocks<dim>::BondClass           &bond,
-           const StateBondStrain                               &y,
-           const typename SlopePairLaw<dim, with_energy>::Side &side,
-           const BondLanes                                     &lanes,
-           bond_simd::Vector                                   *to_a,
-           bond_simd::Vector                                   *to_b) const
+      pair(const typename BondBlocks<dim>::BondClass &bond,
+           const StateBondStrain                     &y,
+           const typename Slope::Side                &side,
+           const BondLanes                           &lanes,
+           bond_simd::Vector                         *to_a,
+           bond_simd::Vector                         *to_b) const
       {
         using namespace bond_simd;
-        SlopePairLaw<dim, with_energy>::pair(bond, y, side, lanes, to_a, to_b);
+        Slope::pair(bond, y, side, lanes, to_a, to_b);
         Vector t = 0.;
         stdx::where(lanes.active, t) =
           Vector(weight + lanes.first_lane, stdx::element_aligned) * y.state;
@@ -119,6 +129,9 @@ namespace perideal
     /// Kernel-order work fields: w, the force state s (dim components), the shear-angle sums
     /// of pass 1 (dim components), force and energy density.
     typename BondBlocks<dim>::Array w_field, s_field, r_field, f_field, e_field;
+    /// Torsion: the fixed fields p = psi (x - x0), q = psi (y - y0) of TwistedSlopePairLaw
+    /// (empty without a twist).
+    typename BondBlocks<dim>::Array twist_field;
 
     /**
      * @brief Pass 1 (ShearAngleLaw): breaks bonds whose slope exceeds @p critical_slope and
@@ -131,12 +144,23 @@ namespace perideal
       std::array<double *, dim> out;
       for (unsigned int d = 0; d < dim; ++d)
         out[d] = blocks.component(r_field, d);
-      for_each_bond_block<1>(blocks,
-                             {{blocks.component(w_field, 0)}},
-                             out,
-                             ShearAngleLaw<dim>{{lane_weight.data()}},
-                             bonds,
-                             critical_slope);
+      if (twist_field.empty())
+        for_each_bond_block<1>(blocks,
+                               {{blocks.component(w_field, 0)}},
+                               out,
+                               ShearAngleLaw<dim>{{lane_weight.data()}},
+                               bonds,
+                               critical_slope);
+      else
+        for_each_bond_block<3>(
+          blocks,
+          {{blocks.component(w_field, 0),
+            blocks.component(twist_field, 0),
+            blocks.component(twist_field, 1)}},
+          out,
+          ShearAngleLaw<dim, TwistedSlopePairLaw<dim, false>>{{{lane_weight.data()}}},
+          bonds,
+          critical_slope);
     }
 
     /**
@@ -154,13 +178,29 @@ namespace perideal
           std::fill(e_field.begin(), e_field.end(), 0.);
           out[1] = blocks.component(e_field, 0);
         }
-      // The unknowns of pass 2: w and the components of s.
-      std::array<const double *, dim + 1> u;
-      u[0] = blocks.component(w_field, 0);
-      for (unsigned int d = 0; d < dim; ++d)
-        u[1 + d] = blocks.component(s_field, d);
-      const StateForceLaw<dim, with_energy> law{{lane_coefficient.data()}, lane_weight.data()};
-      for_each_bond_block<dim + 1>(blocks, u, out, law, bonds, 0.);
+      // The unknowns of pass 2: w (the twist fields under torsion) and the components of s.
+      if (twist_field.empty())
+        {
+          std::array<const double *, dim + 1> u;
+          u[0] = blocks.component(w_field, 0);
+          for (unsigned int d = 0; d < dim; ++d)
+            u[1 + d] = blocks.component(s_field, d);
+          const StateForceLaw<dim, with_energy> law{{lane_coefficient.data()},
+                                                    lane_weight.data()};
+          for_each_bond_block<dim + 1>(blocks, u, out, law, bonds, 0.);
+        }
+      else
+        {
+          std::array<const double *, dim + 3> u;
+          u[0] = blocks.component(w_field, 0);
+          u[1] = blocks.component(twist_field, 0);
+          u[2] = blocks.component(twist_field, 1);
+          for (unsigned int d = 0; d < dim; ++d)
+            u[3 + d] = blocks.component(s_field, d);
+          const StateForceLaw<dim, with_energy, true> law{{{lane_coefficient.data()}},
+                                                          lane_weight.data()};
+          for_each_bond_block<dim + 3>(blocks, u, out, law, bonds, 0.);
+        }
     }
   };
 
@@ -176,7 +216,7 @@ namespace perideal
   void
   AntiplaneStateBased<dim>::declare_parameters(ParameterHandler &prm)
   {
-    AntiplaneShear::declare_shear_modulus(prm);
+    AntiplaneModel<dim>::declare_antiplane_parameters(prm);
     prm.declare_entry("Stabilization",
                       "0",
                       Patterns::Double(0.),
@@ -191,26 +231,12 @@ namespace perideal
   void
   AntiplaneStateBased<dim>::parse_parameters(ParameterHandler &prm)
   {
-    mu    = AntiplaneShear::parse_shear_modulus(prm, "antiplane state based");
+    this->parse_antiplane_parameters(prm, "antiplane state based");
     alpha = prm.get_double("Stabilization");
     AssertThrow(alpha >= 0. && alpha < 1.,
                 ExcMessage("The parameter <Material/antiplane state based/Stabilization> is " +
                            ParameterUtilities::format_number(alpha) +
                            "; accepted: 0 <= alpha < 1 (the fraction of the bond-based energy)."));
-  }
-
-  template <int dim>
-  FieldLayout
-  AntiplaneStateBased<dim>::field_layout() const
-  {
-    return FieldLayout::scalar("w");
-  }
-
-  template <int dim>
-  double
-  AntiplaneStateBased<dim>::shear_modulus() const
-  {
-    return mu;
   }
 
   template <int dim>
@@ -239,8 +265,9 @@ namespace perideal
   AntiplaneStateBased<dim>::initialize(ParticleSystem<dim> &particles,
                                        const ModelContext  &model_context)
   {
-    context            = model_context;
-    const double delta = context.horizon, pi = numbers::PI;
+    context                                = model_context;
+    const std::vector<double> twist_values = this->twist_fields(particles);
+    const double              delta = context.horizon, pi = numbers::PI;
     // b delta int_H n_a^2 dV = 1: int_H n_a^2 dV = pi h delta^2 / 2 in 2D, 4 pi delta^3 / 9 in 3D.
     b_state = (dim == 2) ? 2. / (pi * context.thickness * std::pow(delta, 3)) :
                            9. / (4. * pi * std::pow(delta, 4));
@@ -257,6 +284,7 @@ namespace perideal
           delta * bonds.volume_factor[b] * volume[i] * volume[bonds.neighbor[b]];
 
     Kernel &k = *kernel;
+    k.twist_field.clear();
     k.blocks.reinit(particles);
     k.blocks.to_lanes(state_coefficient, k.lane_weight);
     k.blocks.reinit_field(k.w_field, 1);
@@ -269,14 +297,15 @@ namespace perideal
 
     // Per-point correction (seed eqs. 50-54): g_i,a = 1 / (b sum_j omega x_a n_a V_j beta), one
     // over the shear angle of w = x_a without correction (omega x_a n_a = delta n_a^2), over
-    // every bond of the family (pre-cracked ones too: the correction describes the uncracked
-    // geometry). angle_factor holds b g.
+    // the intact bonds of the family: the faces of a pre-crack are free faces like the outer
+    // ones (bonds broken later do not change it). angle_factor holds b g.
     angle_factor.assign(std::size_t(n_owned) * dim, b_state);
     if (context.surface_correction)
       {
         std::vector<double> sum(std::size_t(n_owned) * dim, 0.);
         for (unsigned int i = 0; i < n_owned; ++i)
           for (unsigned int b = bonds.row_start[i]; b < bonds.row_start[i + 1]; ++b)
+            if (bonds.intact[b] != 0)
             {
               const unsigned int j = bonds.neighbor[b];
               for (unsigned int a = 0; a < dim; ++a)
@@ -307,9 +336,15 @@ namespace perideal
         };
         std::array<double, dim> modulus;
         modulus.fill(mu);
-        apply_energy_surface_correction<dim>(particles, field_layout(), modulus, energy);
+        apply_energy_surface_correction<dim>(particles, this->field_layout(), modulus, energy);
       }
     set_bond_coefficients(particles, alpha * c, true);
+    // The twist enters after the surface correction, which describes the untwisted geometry.
+    if (twist.active())
+      {
+        k.blocks.reinit_field(k.twist_field, 2);
+        k.blocks.gather(twist_values.data(), 2, k.twist_field);
+      }
   }
 
   template <int dim>
@@ -374,13 +409,6 @@ namespace perideal
   }
 
   template <int dim>
-  double
-  AntiplaneStateBased<dim>::critical_stretch(const double fracture_energy) const
-  {
-    return AntiplaneShear::critical_slope(dim, fracture_energy, mu, context.horizon);
-  }
-
-  template <int dim>
   std::string
   AntiplaneStateBased<dim>::summary() const
   {
@@ -389,6 +417,7 @@ namespace perideal
         << ", stabilization alpha = " << alpha;
     if (alpha > 0.)
       out << " (bond-based micromodulus c = " << c << " N/m^6)";
+    out << this->torsion_summary();
     return out.str();
   }
 

@@ -4,8 +4,7 @@
 #ifndef perideal_pd_antiplane_bond_based_h
 #define perideal_pd_antiplane_bond_based_h
 
-#include <perideal/base/torsion.h>
-#include <perideal/pd/material_model.h>
+#include <perideal/pd/antiplane_shear.h>
 
 #include <memory>
 
@@ -41,7 +40,7 @@ namespace perideal
    * (AntiplaneTorsion::section_integrals()); output: the shear stresses at the particles.
    */
   template <int dim>
-  class AntiplaneBondBased : public MaterialModel<dim>
+  class AntiplaneBondBased : public AntiplaneModel<dim>
   {
   public:
     /**
@@ -55,19 +54,13 @@ namespace perideal
     ~AntiplaneBondBased() override;
 
     /**
-     * @brief Declare "Shear modulus".
+     * @brief Declare the entries of AntiplaneModel.
      */
     static void
     declare_parameters(dealii::ParameterHandler &prm);
 
     void
     parse_parameters(dealii::ParameterHandler &prm) override;
-
-    /**
-     * @brief The scalar "w".
-     */
-    FieldLayout
-    field_layout() const override;
 
     void
     initialize(ParticleSystem<dim> &particles, const ModelContext &context) override;
@@ -94,47 +87,8 @@ namespace perideal
     void
     linearize(const ParticleSystem<dim> &particles, LinearizedModel &linearized) const override;
 
-    /**
-     * @brief Whether a twist is given.
-     */
-    bool
-    has_prestrain() const override;
-
-    /**
-     * @brief "torque", "torsion_energy" with a twist.
-     */
-    std::vector<std::string>
-    integral_names() const override;
-
-    /**
-     * @brief The torque and strain energy per unit length of torsion.
-     */
-    std::vector<double>
-    section_integrals(const ParticleSystem<dim> &particles,
-                      const ParticleVector      &u,
-                      const double               strain_energy) const override;
-
-    /**
-     * @brief With a twist, "shear_stress": (tau_xz, tau_yz) of
-     * AntiplaneTorsion::shear_stresses().
-     */
-    std::vector<DerivedParticleField>
-    derived_fields(const ParticleSystem<dim> &particles, const ParticleVector &u) const override;
-
-    /**
-     * @brief The critical slope r_c of the fracture energy @p fracture_energy (G_IIIc).
-     */
-    double
-    critical_stretch(const double fracture_energy) const override;
-
     std::string
     summary() const override;
-
-    /**
-     * @brief The shear modulus mu [Pa].
-     */
-    double
-    shear_modulus() const;
 
     /**
      * @brief The micromodulus c [N/m^6].
@@ -143,10 +97,11 @@ namespace perideal
     micromodulus() const;
 
   private:
-    double       mu = 0.;
-    Torsion      twist;
-    ModelContext context;
-    double       c = 0.;
+    using AntiplaneModel<dim>::mu;
+    using AntiplaneModel<dim>::twist;
+    using AntiplaneModel<dim>::context;
+
+    double c = 0.;
     /// c G beta V_i V_j per bond (the pair force per unit slope).
     std::vector<double> bond_coefficient;
     /// The force kernel's data (bonds in SIMD blocks, kernel-order fields): defined in

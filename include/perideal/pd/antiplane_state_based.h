@@ -5,7 +5,7 @@
 #ifndef perideal_pd_antiplane_state_based_h
 #define perideal_pd_antiplane_state_based_h
 
-#include <perideal/pd/material_model.h>
+#include <perideal/pd/antiplane_shear.h>
 
 #include <memory>
 #include <vector>
@@ -35,14 +35,22 @@ namespace perideal
    * r, i.e. the seed's eq. 55 with the factor b that the seed's eqs. 28-30 and 55 omit (seed note
    * 000, sec. 7 T1; doc/theory/models.md). The surface correction is the seed's per point:
    * g_i,a = 1 / (b sum_j omega x_a n_a V_j beta), the ratio of the classical to the PD shear
-   * angle for w = x_a over the uncracked family, so that r_i,a = zeta for w = zeta x_a at every
-   * particle (the cross terms near corners stay); the bond-based term takes the energy method
+   * angle for w = x_a over the family without its pre-cracked bonds (crack faces are free
+   * faces), so that r_i,a = zeta for w = zeta x_a at every particle (the cross terms near
+   * corners stay); the bond-based term takes the energy method
    * of AntiplaneBondBased. A bond breaks, irreversibly, when |r_ij| exceeds the critical slope
    * of the bond-based model (the seed's criterion for both models, eqs. 68-78); broken bonds
    * leave the sums of r and of the force.
+   *
+   * Saint-Venant torsion (2D, AntiplaneModel): w is the warping and every bond slope r_ij, in
+   * the shear angles, the bond-based term and the breaking, is the twisted slope of
+   * TwistedSlopePairLaw, the bond projection of grad w + psi (-(y - y0), x - x0), exact for the
+   * linear twist field; so r_i is the PD gradient of the whole shear strain and tau = mu r_i,
+   * and the faces and crack faces are traction free without fictitious layers
+   * (doc/theory/models.md, "Torsion").
    */
   template <int dim>
-  class AntiplaneStateBased : public MaterialModel<dim>
+  class AntiplaneStateBased : public AntiplaneModel<dim>
   {
   public:
     /**
@@ -56,19 +64,13 @@ namespace perideal
     ~AntiplaneStateBased() override;
 
     /**
-     * @brief Declare "Shear modulus" and "Stabilization".
+     * @brief Declare the entries of AntiplaneModel and "Stabilization".
      */
     static void
     declare_parameters(dealii::ParameterHandler &prm);
 
     void
     parse_parameters(dealii::ParameterHandler &prm) override;
-
-    /**
-     * @brief The scalar "w".
-     */
-    FieldLayout
-    field_layout() const override;
 
     void
     initialize(ParticleSystem<dim> &particles, const ModelContext &context) override;
@@ -100,21 +102,8 @@ namespace perideal
     void
     linearize(const ParticleSystem<dim> &particles, LinearizedModel &linearized) const override;
 
-    /**
-     * @brief The critical slope r_c of the fracture energy @p fracture_energy (G_IIIc), that of
-     * the bond-based model.
-     */
-    double
-    critical_stretch(const double fracture_energy) const override;
-
     std::string
     summary() const override;
-
-    /**
-     * @brief The shear modulus mu [Pa].
-     */
-    double
-    shear_modulus() const;
 
     /**
      * @brief The constant b of the shear angles [1/m^4]: 2 / (pi h delta^3) in 2D,
@@ -137,11 +126,13 @@ namespace perideal
     shear_angles() const;
 
   private:
-    double       mu    = 0.;
-    double       alpha = 0.;
-    ModelContext context;
-    double       b_state = 0.;
-    double       c       = 0.;
+    using AntiplaneModel<dim>::mu;
+    using AntiplaneModel<dim>::twist;
+    using AntiplaneModel<dim>::context;
+
+    double alpha   = 0.;
+    double b_state = 0.;
+    double c       = 0.;
     /// delta beta V_i V_j per bond (omega |xi| beta V_i V_j: what r and the force share).
     std::vector<double> state_coefficient;
     /// alpha c G beta V_i V_j per bond (the bond-based term's pair force per unit slope).

@@ -60,7 +60,12 @@ namespace perideal
                 << "External work: " << work << " J\n";
             if (breaks)
               log << "Dissipated energy: " << dissipated << " J\n";
-            log << "Energy error: " << energy_error << " J (relative " << relative_error << ")\n";
+            if (state.pd.has_body() && state.pd.material().has_prestrain() && work == 0.)
+              log << "Energy error: not defined (the twist of torsion is a prestrain, not a "
+                     "load whose work is tracked; check T psi = 2E of the section integrals)\n";
+            else
+              log << "Energy error: " << energy_error << " J (relative " << relative_error
+                  << ")\n";
           }
       }
     else
