@@ -72,6 +72,7 @@ namespace perideal
   AntiplaneBondBased<dim>::declare_parameters(ParameterHandler &prm)
   {
     AntiplaneShear::declare_shear_modulus(prm);
+    RegionModuli<dim>::declare_parameters(prm, "Shear moduli by region", "Pa");
     Torsion::declare_parameters(prm);
   }
 
@@ -81,6 +82,18 @@ namespace perideal
   {
     mu = AntiplaneShear::parse_shear_modulus(prm, "antiplane bond based");
     twist.parse_parameters(prm, "Material/antiplane bond based", dim);
+    region_moduli.parse_parameters(prm, "Shear moduli by region", "Material/antiplane bond based");
+    AssertThrow(!(twist.active() && !region_moduli.empty()),
+                ExcMessage("The parameter <Material/antiplane bond based/Shear moduli by region> "
+                           "is set together with a twist (<Twist per unit length>): torsion "
+                           "takes one shear modulus; accepted: an empty list with a twist."));
+  }
+
+  template <int dim>
+  void
+  AntiplaneBondBased<dim>::resolve_regions(const RegionCollection<dim> &regions)
+  {
+    region_moduli.resolve(regions);
   }
 
   template <int dim>
@@ -147,6 +160,8 @@ namespace perideal
                                                  const bool                 with_surface_factor)
   {
     bond_pair_coefficients(particles, c, with_surface_factor, bond_coefficient);
+    if (with_surface_factor)
+      region_moduli.scale_bonds(particles, mu, bond_coefficient);
     kernel->blocks.to_lanes(bond_coefficient, kernel->lane_coefficient);
   }
 
@@ -228,6 +243,8 @@ namespace perideal
   {
     std::ostringstream out;
     out << "antiplane bond based: mu = " << mu << " Pa, micromodulus c = " << c << " N/m^6";
+    if (!region_moduli.empty())
+      out << "; by region: " << region_moduli.summary();
     if (twist.active())
       out << "; torsion: twist " << twist.twist() << " rad/m about (" << twist.axis() << ")";
     return out.str();

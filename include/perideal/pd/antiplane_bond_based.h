@@ -6,6 +6,7 @@
 
 #include <perideal/base/torsion.h>
 #include <perideal/pd/material_model.h>
+#include <perideal/pd/region_moduli.h>
 
 #include <memory>
 
@@ -39,6 +40,12 @@ namespace perideal
    * The static linear solve does not carry the twist (has_prestrain()); adaptive dynamic
    * relaxation does. Section integrals: the torque and the strain energy per unit length
    * (AntiplaneTorsion::section_integrals()); output: the shear stresses at the particles.
+   *
+   * Dissimilar materials (<Shear moduli by region>, RegionModuli): a bond's micromodulus is
+   * that of the length-weighted harmonic mean of the shear moduli along it (seed eq. 60, the
+   * series rule; c is proportional to mu, so the rule for c and for mu agree). The surface
+   * correction is that of one material (its factors do not depend on mu); the critical slope
+   * and torsion take the model's <Shear modulus>, so a twist with region moduli is rejected.
    */
   template <int dim>
   class AntiplaneBondBased : public MaterialModel<dim>
@@ -55,13 +62,19 @@ namespace perideal
     ~AntiplaneBondBased() override;
 
     /**
-     * @brief Declare "Shear modulus".
+     * @brief Declare "Shear modulus", "Shear moduli by region" and the twist.
      */
     static void
     declare_parameters(dealii::ParameterHandler &prm);
 
     void
     parse_parameters(dealii::ParameterHandler &prm) override;
+
+    /**
+     * @brief Look up the regions of <Shear moduli by region>.
+     */
+    void
+    resolve_regions(const RegionCollection<dim> &regions) override;
 
     /**
      * @brief The scalar "w".
@@ -143,10 +156,11 @@ namespace perideal
     micromodulus() const;
 
   private:
-    double       mu = 0.;
-    Torsion      twist;
-    ModelContext context;
-    double       c = 0.;
+    double            mu = 0.;
+    RegionModuli<dim> region_moduli;
+    Torsion           twist;
+    ModelContext      context;
+    double            c = 0.;
     /// c G beta V_i V_j per bond (the pair force per unit slope).
     std::vector<double> bond_coefficient;
     /// The force kernel's data (bonds in SIMD blocks, kernel-order fields): defined in
@@ -155,7 +169,8 @@ namespace perideal
     std::unique_ptr<Kernel> kernel;
 
     /**
-     * @brief Set bond_coefficient (bond_pair_coefficients()) and the kernel's lanes.
+     * @brief Set bond_coefficient (bond_pair_coefficients(), with the region moduli's bond
+     * moduli if @p with_surface_factor) and the kernel's lanes.
      */
     void
     set_bond_coefficients(const ParticleSystem<dim> &particles, const bool with_surface_factor);

@@ -6,6 +6,7 @@
 #define perideal_pd_antiplane_state_based_h
 
 #include <perideal/pd/material_model.h>
+#include <perideal/pd/region_moduli.h>
 
 #include <memory>
 #include <vector>
@@ -40,6 +41,14 @@ namespace perideal
    * of AntiplaneBondBased. A bond breaks, irreversibly, when |r_ij| exceeds the critical slope
    * of the bond-based model (the seed's criterion for both models, eqs. 68-78); broken bonds
    * leave the sums of r and of the force.
+   *
+   * Dissimilar materials (<Shear moduli by region>, RegionModuli): the state term takes the
+   * shear modulus mu_i of each particle, W_i = (1 - alpha) mu_i/2 |r_i|^2 (the variationally
+   * consistent form; the seed gives its eq. 60 for the parameter a = mu/2 of a bond, which the
+   * nonlocal gradient of this model does not have, seed note 000, sec. 7 A9), so the force
+   * density reads f_i = sum_j omega (s_i + s_j) . n V_j beta with s = (1 - alpha) mu b g (.) r of
+   * each end; the bond-based term takes the series rule of AntiplaneBondBased. The critical
+   * slope takes the model's <Shear modulus>.
    */
   template <int dim>
   class AntiplaneStateBased : public MaterialModel<dim>
@@ -56,13 +65,19 @@ namespace perideal
     ~AntiplaneStateBased() override;
 
     /**
-     * @brief Declare "Shear modulus" and "Stabilization".
+     * @brief Declare "Shear modulus", "Shear moduli by region" and "Stabilization".
      */
     static void
     declare_parameters(dealii::ParameterHandler &prm);
 
     void
     parse_parameters(dealii::ParameterHandler &prm) override;
+
+    /**
+     * @brief Look up the regions of <Shear moduli by region>.
+     */
+    void
+    resolve_regions(const RegionCollection<dim> &regions) override;
 
     /**
      * @brief The scalar "w".
@@ -137,15 +152,18 @@ namespace perideal
     shear_angles() const;
 
   private:
-    double       mu    = 0.;
-    double       alpha = 0.;
-    ModelContext context;
-    double       b_state = 0.;
-    double       c       = 0.;
+    double            mu    = 0.;
+    double            alpha = 0.;
+    RegionModuli<dim> region_moduli;
+    ModelContext      context;
+    double            b_state = 0.;
+    double            c       = 0.;
     /// delta beta V_i V_j per bond (omega |xi| beta V_i V_j: what r and the force share).
     std::vector<double> state_coefficient;
     /// alpha c G beta V_i V_j per bond (the bond-based term's pair force per unit slope).
     std::vector<double> bond_coefficient;
+    /// (1 - alpha) mu_i per owned particle (mu_i the shear modulus at the particle).
+    std::vector<double> state_modulus;
     /// b g_i,a per owned particle and direction (r_i,a = this times the sum over j / V_i).
     std::vector<double> angle_factor;
     /// The shear angles r (owned), and s = (1 - alpha) mu beta_i b g (.) r (owned and ghost).
@@ -157,7 +175,8 @@ namespace perideal
 
     /**
      * @brief Set bond_coefficient (bond_pair_coefficients() of the micromodulus
-     * @p micromodulus) and the kernel's lanes.
+     * @p micromodulus, with the region moduli's bond moduli if @p with_surface_factor) and the
+     * kernel's lanes.
      */
     void
     set_bond_coefficients(const ParticleSystem<dim> &particles,
