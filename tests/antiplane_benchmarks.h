@@ -1,0 +1,101 @@
+// The exact solutions of the antiplane shear benchmarks of seed 000 (Oterkus & Madenci 2015;
+// seed note 000, sec. 5.1 and 5.2), S = 12000, mu = 12e6 (the paper's psi; any unit), and what
+// their short variants measure of a run: the largest error of the particles against an exact
+// field, and the value of the particle nearest to a point.
+#ifndef perideal_tests_antiplane_benchmarks_h
+#define perideal_tests_antiplane_benchmarks_h
+
+#include <deal.II/base/mpi.h>
+#include <deal.II/base/numbers.h>
+#include <deal.II/base/point.h>
+
+#include <perideal/coupling/coupled_problem.h>
+
+#include <cmath>
+#include <functional>
+#include <limits>
+
+namespace antiplane_benchmarks
+{
+  /// The load S (the traction on the top face) and the shear modulus mu of example 8.1 (mu1 of
+  /// example 8.2, below the interface); mu2 of example 8.2 (above it).
+  constexpr double S = 12000., mu = 12e6, mu2 = 6e6;
+
+  /**
+   * Example 8.1, the square bar |x|, |y| <= 1/2, sides clamped, bottom free, traction S on the
+   * top: w = (S/mu) sum_n 4 (-1)^n / k_n^2 cosh(k_n (y + 1/2)) / sinh(k_n) cos(k_n x),
+   * k_n = (2n + 1) pi (the cosine series of the unit flux on the top face), 2000 terms (on the
+   * top face the terms fall like 1/n^2), the ratio of hyperbolic functions without overflow.
+   */
+  inline double
+  square_bar(const dealii::Point<2> &p)
+  {
+    double sum = 0.;
+    for (unsigned int n = 0; n < 2000; ++n)
+      {
+        const double k = (2. * n + 1.) * dealii::numbers::PI;
+        const double ratio =
+          (std::exp(k * (p[1] - 0.5)) + std::exp(-k * (p[1] + 1.5))) / (1. - std::exp(-2. * k));
+        sum += (n % 2 == 0 ? 4. : -4.) / (k * k) * ratio * std::cos(k * p[0]);
+      }
+    return S / mu * sum;
+  }
+
+  /**
+   * Example 8.2, the bar |x| <= 0.1, |y| <= 1/2 clamped at the bottom, free sides, traction S
+   * on the top, mu below the interface y = 0 and mu2 above it: w = S (y + 1/2)/mu below,
+   * S/(2 mu) + S y/mu2 above (1.5e-3 at the top face).
+   */
+  inline double
+  bimaterial(const dealii::Point<2> &p)
+  {
+    return p[1] < 0. ? S * (p[1] + 0.5) / mu : S * 0.5 / mu + S * p[1] / mu2;
+  }
+
+  /**
+   * The largest |w - @p exact| over the particles of @p problem (after its run) that satisfy
+   * @p keep, over all ranks.
+   */
+  inline double
+  largest_error(const perideal::CoupledProblem<2>                     &problem,
+                const std::function<double(const dealii::Point<2> &)> &exact,
+                const std::function<bool(const dealii::Point<2> &)>   &keep)
+  {
+    const auto &x     = problem.particles().positions();
+    const auto &w     = problem.particle_displacement();
+    double      error = 0.;
+    for (unsigned int i = 0; i < problem.particles().n_owned(); ++i)
+      if (keep(x[i]))
+        error = std::max(error, std::abs(w.local_element(i) - exact(x[i])));
+    return dealii::Utilities::MPI::max(error, MPI_COMM_WORLD);
+  }
+
+  /**
+   * w at the particle of @p problem (after its run) nearest to @p p (the first found of equally
+   * near ones on the lowest rank holding one).
+   */
+  inline double
+  value_near(const perideal::CoupledProblem<2> &problem, const dealii::Point<2> &p)
+  {
+    const auto &x    = problem.particles().positions();
+    const auto &w    = problem.particle_displacement();
+    double      best = std::numeric_limits<double>::max(), value = 0.;
+    for (unsigned int i = 0; i < problem.particles().n_owned(); ++i)
+      if (x[i].distance(p) < best - 1e-12)
+        {
+          best  = x[i].distance(p);
+          value = w.local_element(i);
+        }
+    const double nearest = dealii::Utilities::MPI::min(best, MPI_COMM_WORLD);
+    // The lowest rank with a particle at the nearest distance supplies the value.
+    const unsigned int rank = dealii::Utilities::MPI::this_mpi_process(MPI_COMM_WORLD);
+    const unsigned int owner =
+      dealii::Utilities::MPI::min(best <= nearest + 1e-12 ?
+                                    rank :
+                                    std::numeric_limits<unsigned int>::max(),
+                                  MPI_COMM_WORLD);
+    return dealii::Utilities::MPI::sum(rank == owner ? value : 0., MPI_COMM_WORLD);
+  }
+} // namespace antiplane_benchmarks
+
+#endif
