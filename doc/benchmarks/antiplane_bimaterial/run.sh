@@ -41,8 +41,7 @@ for dx in 0.02 0.01 0.005 0.0025; do
 done
 fe_runs=()
 for level in 0 3; do
-  variant bimaterial_fe "fe_l$level" -e "s|Global refinements = .*|Global refinements = $level|" \
-    -e "s|Mesh file          = .*|Mesh file          = ../../../meshes/bimaterial_bar.msh|"
+  variant bimaterial_fe "fe_l$level" -e "s|Global refinements = .*|Global refinements = $level|"
   fe_runs+=("results/fe_l$level")
 done
 for run in "${runs[@]}" "${fe_runs[@]}"; do
