@@ -13,34 +13,21 @@ Exact solution (seed note 000, sec. 5.2): the sides are free, so w depends on y 
 w = S (y + 1/2)/mu1 for y < 0 (mu1 = 12e6), S/(2 mu1) + S y/mu2 for y > 0 (mu2 = 6e6), S = 12000.
 """
 import argparse
-import glob
-import re
+import os
+import sys
 
-import h5py
 import numpy as np
+
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), ".."))
+from antiplane_runs import label, read_run  # noqa: E402
 
 S, MU1, MU2 = 12000.0, 12e6, 6e6
 W_MAX = S * (0.5 / MU1 + 0.5 / MU2)
-LABELS = {"bb": "PD bond-based", "sb": "PD state-based"}
 
 
 def exact(y):
     y = np.asarray(y, float)
     return np.where(y < 0, S * (y + 0.5) / MU1, S * 0.5 / MU1 + S * y / MU2)
-
-
-def label(model):
-    if model.startswith("sbs"):
-        return f"PD state-based, stabilization {model[3:]}"
-    return LABELS[model]
-
-
-def field(directory, prefix):
-    files = sorted(glob.glob(f"{directory}/{prefix}_*.h5"))
-    if not files:
-        raise SystemExit(f"no {prefix}_*.h5 in {directory}")
-    with h5py.File(files[-1], "r") as h5:
-        return np.asarray(h5["nodes"][:, :2], float), np.asarray(h5["w"][:, 0], float)
 
 
 def main():
@@ -56,14 +43,7 @@ def main():
           "    error")
     for run in args.pd + args.fe:
         name = run.rstrip("/").split("/")[-1]
-        if name.startswith("fe_"):
-            level = int(re.search(r"fe_l(\d+)", name).group(1))
-            size, model = 0.1 / 2**level, "fe"
-            nodes, w = field(run, "solution")
-        else:
-            model, size = re.match(r"([\w.]+?)_dx([0-9.]+)", name).groups()
-            size = float(size)
-            nodes, w = field(run, "particles")
+        model, size, nodes, w = read_run(run, 0.1)
         body = nodes[:, 1] >= -0.5
         nodes, w = nodes[body], w[body]
         error = np.max(np.abs(w - exact(nodes[:, 1]))) / W_MAX
@@ -90,7 +70,7 @@ def main():
             column = np.abs(nodes[:, 0] - np.min(np.abs(nodes[:, 0]))) < 1e-9
             column &= nodes[:, 0] >= 0
             order = np.argsort(nodes[column, 1])
-            name = "FE Q1" if model == "fe" else label(model)
+            name = label(model)
             axes[0].plot(w[column][order], nodes[column, 1][order], next(markers), ms=3,
                          mfc="none", label=f"{name} ({size:g})")
             axes[1].plot(nodes[column, 1][order],
