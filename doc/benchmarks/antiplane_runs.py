@@ -38,3 +38,26 @@ def read_run(run, coarse_size):
         nodes = np.asarray(h5["nodes"][:, :2], float)
         w = np.asarray(h5["w"][:, 0], float)
     return model, size, nodes, w
+
+
+def convergence_plot(runs, curves, xlabel, ylabel, title, output):
+    """Draw into output, for each model of runs ({model: [(size, values...), ...]}), the absolute
+    values of each curve of curves [(column, line style, legend suffix)] against the size, on
+    log-log axes."""
+    import matplotlib
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+    fig, ax = plt.subplots(figsize=(6, 4.5))
+    for model, values in runs.items():
+        values = sorted(values, key=lambda v: v[0])
+        size = [v[0] for v in values]
+        for column, style, suffix in curves:
+            ax.loglog(size, [abs(v[column]) for v in values], style, label=f"{label(model)}: {suffix}")
+    ax.set_xlabel(xlabel)
+    ax.set_ylabel(ylabel)
+    ax.set_title(title)
+    ax.grid(True, which="both", lw=0.3)
+    ax.legend(fontsize=6)
+    fig.tight_layout()
+    fig.savefig(output, dpi=120)
+    print(f"wrote {output}")

@@ -19,7 +19,7 @@ import sys
 import numpy as np
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), ".."))
-from antiplane_runs import label, read_run  # noqa: E402
+from antiplane_runs import convergence_plot, label, read_run  # noqa: E402
 
 S, MU1, MU2 = 12000.0, 12e6, 6e6
 W_MAX = S * (0.5 / MU1 + 0.5 / MU2)
@@ -90,22 +90,10 @@ def main():
         fig.savefig(profile, dpi=120)
         print(f"\nwrote {profile}")
 
-        fig, ax = plt.subplots(figsize=(6, 4.5))
-        for model, values in runs.items():
-            if model == "fe":
-                continue
-            values = sorted(values, key=lambda v: v[0])
-            size = np.array([v[0] for v in values])
-            ax.loglog(size, [v[1] for v in values], "o-", label=f"{label(model)}: max error")
-            ax.loglog(size, [abs(v[2]) for v in values], "s--", label=f"{label(model)}: |top error|")
-        ax.set_xlabel("dx")
-        ax.set_ylabel("relative to w_max = 1.5e-3")
-        ax.set_title("Bimaterial bar: PD error against the exact solution")
-        ax.grid(True, which="both", lw=0.3)
-        ax.legend(fontsize=7)
-        fig.tight_layout()
-        fig.savefig(convergence, dpi=120)
-        print(f"wrote {convergence}")
+        convergence_plot({m: v for m, v in runs.items() if m != "fe"},
+                         [(1, "o-", "max error"), (2, "s--", "|top error|")], "dx",
+                         "relative to w_max = 1.5e-3",
+                         "Bimaterial bar: PD error against the exact solution", convergence)
 
 
 if __name__ == "__main__":

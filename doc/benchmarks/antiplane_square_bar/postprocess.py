@@ -21,7 +21,7 @@ import sys
 import numpy as np
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), ".."))
-from antiplane_runs import label, read_run  # noqa: E402
+from antiplane_runs import convergence_plot, label, read_run  # noqa: E402
 
 GAMMA = 12000.0 / 12e6
 K = (2 * np.arange(2000) + 1) * np.pi
@@ -89,21 +89,9 @@ def main():
         fig.savefig(field_plot, dpi=110)
         print(f"\nwrote {field_plot}")
 
-        fig, ax = plt.subplots(figsize=(6, 4.5))
-        for model, values in runs.items():
-            values = sorted(values, key=lambda v: v[0])
-            size = np.array([v[0] for v in values])
-            ax.loglog(size, [abs(v[1]) for v in values], "o-", label=f"{label(model)}: |w_max error|")
-            ax.loglog(size, [v[3] for v in values], "s--",
-                      label=f"{label(model)}: max error (0.1 from corners)")
-        ax.set_xlabel("dx (PD), h (FE)")
-        ax.set_ylabel("relative to w_max = 3.727e-4")
-        ax.set_title("Square bar: error against the series")
-        ax.grid(True, which="both", lw=0.3)
-        ax.legend(fontsize=6)
-        fig.tight_layout()
-        fig.savefig(convergence, dpi=120)
-        print(f"wrote {convergence}")
+        convergence_plot(runs, [(1, "o-", "|w_max error|"), (3, "s--", "max error (0.1 from corners)")],
+                         "dx (PD), h (FE)", "relative to w_max = 3.727e-4",
+                         "Square bar: error against the series", convergence)
 
 
 if __name__ == "__main__":
