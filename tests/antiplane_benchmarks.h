@@ -26,6 +26,35 @@ namespace antiplane_benchmarks
   constexpr double S = 12000., mu = 12e6, mu2 = 6e6;
 
   /**
+   * What a short variant appends to a benchmark's PD file (after its own region overrides): the
+   * lattice spacing 0.02 and the loaded row of that thickness, the model MODEL with the
+   * stabilization ALPHA (of the state-based model; the test substitutes both), output without
+   * files, progress or probes.
+   */
+  inline const std::string short_variant = R"(
+subsection Discretization
+  set Lattice spacing = 0.02
+end
+subsection Material
+  set Model = MODEL
+  subsection antiplane state based
+    set Stabilization = ALPHA
+  end
+end
+subsection Boundary conditions
+  subsection load
+    set Layer thickness = 0.02
+  end
+end
+subsection Output
+  set Directory    = results
+  set Write HDF5   = false
+  set Progress     = false
+  set Probe points =
+end
+)";
+
+  /**
    * Example 8.1, the square bar |x|, |y| <= 1/2, sides clamped, bottom free, traction S on the
    * top: w = (S/mu) sum_n 4 (-1)^n / k_n^2 cosh(k_n (y + 1/2)) / sinh(k_n) cos(k_n x),
    * k_n = (2n + 1) pi (the cosine series of the unit flux on the top face), 2000 terms (on the

@@ -29,12 +29,11 @@ namespace ab = antiplane_benchmarks;
 
 namespace
 {
-  // The benchmark's PD file at dx = 0.02 with the model MODEL.
-  const std::string pd_short = R"(
-include )" SOURCE_DIR R"(/../../doc/benchmarks/antiplane_square_bar/square_bar_pd.prm
-subsection Discretization
-  set Lattice spacing = 0.02
-end
+  // The benchmark's PD file at dx = 0.02 (six layers beyond each side, the top row) with the model
+  // MODEL and stabilization ALPHA.
+  const std::string pd_short = "include " SOURCE_DIR
+                               "/../../doc/benchmarks/antiplane_square_bar/square_bar_pd.prm"
+                               R"(
 subsection Regions
   subsection left
     set Lower corner = -0.62, -0.5
@@ -46,24 +45,7 @@ subsection Regions
     set Lower corner = -0.5, 0.48
   end
 end
-subsection Material
-  set Model = MODEL
-  subsection antiplane state based
-    set Stabilization = ALPHA
-  end
-end
-subsection Boundary conditions
-  subsection load
-    set Layer thickness = 0.02
-  end
-end
-subsection Output
-  set Directory    = results
-  set Write HDF5   = false
-  set Progress     = false
-  set Probe points =
-end
-)";
+)" + ab::short_variant;
 
   // The short variant of @p model with stabilization @p alpha: accepted within @p top_tolerance
   // (the top particle) and @p tolerance (away from the corners), or, for a @p known_failure, with
