@@ -126,6 +126,8 @@ namespace perideal
                                                  const bool                 with_surface_factor)
   {
     bond_pair_coefficients(particles, c, with_surface_factor, bond_coefficient);
+    if (with_surface_factor)
+      region_moduli.scale_bonds(particles, mu, bond_coefficient);
     kernel->blocks.to_lanes(bond_coefficient, kernel->lane_coefficient);
   }
 
@@ -160,7 +162,7 @@ namespace perideal
   {
     std::ostringstream out;
     out << "antiplane bond based: mu = " << mu << " Pa, micromodulus c = " << c << " N/m^6"
-        << this->torsion_summary();
+        << this->antiplane_summary();
     return out.str();
   }
 

@@ -83,10 +83,15 @@ namespace perideal
   {
     std::vector<dealii::Tensor<1, dim>> tau;
     AntiplaneTorsion::shear_stresses(particles, u, twist, mu, tau);
+    const auto          &x = particles.positions();
     DerivedParticleField field{"shear_stress", dim, {}};
-    for (const auto &t : tau)
-      for (unsigned int d = 0; d < dim; ++d)
-        field.values.push_back(t[d]);
+    for (unsigned int i = 0; i < tau.size(); ++i)
+      {
+        // tau = mu_i grad w with the modulus of the particle's region (no twist with regions).
+        const double factor = region_moduli.empty() ? 1. : region_moduli.at(x[i], mu) / mu;
+        for (unsigned int d = 0; d < dim; ++d)
+          field.values.push_back(factor * tau[i][d]);
+      }
     return {field};
   }
 
@@ -99,6 +104,13 @@ namespace perideal
 
   template <int dim>
   void
+  AntiplaneModel<dim>::resolve_regions(const RegionCollection<dim> &regions)
+  {
+    region_moduli.resolve(regions);
+  }
+
+  template <int dim>
+  void
   AntiplaneModel<dim>::declare_antiplane_parameters(dealii::ParameterHandler &prm)
   {
     prm.declare_entry("Shear modulus",
@@ -106,6 +118,7 @@ namespace perideal
                       dealii::Patterns::Double(0.),
                       "Shear modulus mu [Pa] of antiplane shear (the field w is the "
                       "out-of-plane displacement, its stresses tau_xz, tau_yz = mu grad w).");
+    RegionModuli<dim>::declare_parameters(prm, "Shear moduli by region", "Pa");
     Torsion::declare_parameters(prm);
   }
 
@@ -116,17 +129,24 @@ namespace perideal
   {
     mu = prm.get_double("Shear modulus");
     ParameterUtilities::require_positive(mu, "Material/" + model_name + "/Shear modulus");
+    region_moduli.parse_parameters(prm, "Shear moduli by region", "Material/" + model_name);
     twist.parse_parameters(prm, "Material/" + model_name, dim);
+    AssertThrow(!(twist.active() && !region_moduli.empty()),
+                dealii::ExcMessage("The parameter <Material/" + model_name +
+                                   "/Shear moduli by region> is set together with a twist "
+                                   "(<Twist per unit length>): torsion takes one shear modulus; "
+                                   "accepted: an empty list with a twist."));
   }
 
   template <int dim>
   std::string
-  AntiplaneModel<dim>::torsion_summary() const
+  AntiplaneModel<dim>::antiplane_summary() const
   {
-    if (!twist.active())
-      return "";
     std::ostringstream out;
-    out << "; torsion: twist " << twist.twist() << " rad/m about (" << twist.axis() << ")";
+    if (!region_moduli.empty())
+      out << "; by region: " << region_moduli.summary();
+    if (twist.active())
+      out << "; torsion: twist " << twist.twist() << " rad/m about (" << twist.axis() << ")";
     return out.str();
   }
 

@@ -277,6 +277,9 @@ namespace perideal
     const auto        &volume  = particles.volumes();
     const auto        &x       = particles.positions();
     const unsigned int n_owned = particles.n_owned();
+    state_modulus.resize(n_owned);
+    for (unsigned int i = 0; i < n_owned; ++i)
+      state_modulus[i] = (1. - alpha) * region_moduli.at(x[i], mu);
     state_coefficient.resize(bonds.size());
     for (unsigned int i = 0; i < n_owned; ++i)
       for (unsigned int b = bonds.row_start[i]; b < bonds.row_start[i + 1]; ++b)
@@ -354,6 +357,8 @@ namespace perideal
                                                   const bool                 with_surface_factor)
   {
     bond_pair_coefficients(particles, micromodulus, with_surface_factor, bond_coefficient);
+    if (with_surface_factor)
+      region_moduli.scale_bonds(particles, mu, bond_coefficient);
     kernel->blocks.to_lanes(bond_coefficient, kernel->lane_coefficient);
   }
 
@@ -374,17 +379,16 @@ namespace perideal
     k.blocks.gather(w.begin(), 1, k.w_field);
 
     // Pass 1: break bonds, then the shear angles r = b g (.) sum / V_i and the force states
-    // s = (1 - alpha) mu beta_i r (.) b g (beta_i the energy weight of a blended coupling).
+    // s = (1 - alpha) mu_i beta_i r (.) b g (beta_i the energy weight of a blended coupling).
     k.angle_loop(bonds, critical_slope);
     double *r = angles.begin();
     k.blocks.scatter_owned(k.r_field, dim, volume, r);
-    const double state_modulus = (1. - alpha) * mu;
     for (unsigned int i = 0; i < n_owned; ++i)
       for (unsigned int a = 0; a < dim; ++a)
         {
           const std::size_t q = std::size_t(i) * dim + a;
           r[q] *= angle_factor[q];
-          force_state.local_element(q) = state_modulus * beta[i] * angle_factor[q] * r[q];
+          force_state.local_element(q) = state_modulus[i] * beta[i] * angle_factor[q] * r[q];
         }
     force_state.update_ghost_values();
     k.blocks.gather(force_state.begin(), dim, k.s_field);
@@ -400,7 +404,7 @@ namespace perideal
             double r2 = 0.;
             for (unsigned int a = 0; a < dim; ++a)
               r2 += r[i * dim + a] * r[i * dim + a];
-            (*energy_density)[i] += 0.5 * state_modulus * beta[i] * r2;
+            (*energy_density)[i] += 0.5 * state_modulus[i] * beta[i] * r2;
           }
       }
     else
@@ -417,7 +421,7 @@ namespace perideal
         << ", stabilization alpha = " << alpha;
     if (alpha > 0.)
       out << " (bond-based micromodulus c = " << c << " N/m^6)";
-    out << this->torsion_summary();
+    out << this->antiplane_summary();
     return out.str();
   }
 

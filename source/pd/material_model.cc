@@ -138,6 +138,11 @@ namespace perideal
   }
 
   template <int dim>
+  void
+  MaterialModel<dim>::resolve_regions(const RegionCollection<dim> &)
+  {}
+
+  template <int dim>
   bool
   MaterialModel<dim>::has_prestrain() const
   {

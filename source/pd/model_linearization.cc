@@ -170,11 +170,12 @@ namespace perideal
   // Antiplane state based (doc/theory/models.md): E = sum_i W_i V_i with the shear angles
   // r_i,a = sum_j G_(i,a),j w_j linear in w, G_(i,a),j = b g_i,a omega beta V_j n_a for a
   // neighbour and minus their sum for i. Each row (i, a) has the weight
-  // w_(i,a) = (1 - alpha) mu beta_i V_i (beta_i the energy weight), with
+  // w_(i,a) = (1 - alpha) mu_i beta_i V_i (beta_i the energy weight, mu_i the particle's shear
+  // modulus), with
   // S_i,a = sum_j |G_(i,a),j| (intact bonds) and |G_(i,a),i| = S_i,a; the row of a neighbour l
   // holds i with |G_(l,a),i| = b g_l,a omega beta V_i |n_a|. Gershgorin:
   // sum_k |K_ik| <= (1/V_i) sum_rows w_r |G_ri| sum_k |G_rk|
-  //              = sum_a 2 (1 - alpha) mu beta_i S_i,a^2
+  //              = sum_a 2 (1 - alpha) mu_i beta_i S_i,a^2
   //                + sum_l sum_a P_l,a omega beta |n_a|,   P_l,a = 2 w_(l,a) S_l,a b g_l,a,
   // P of a ghost neighbour from its owner; plus the bond-based term's bound.
   template <int dim>
@@ -187,7 +188,6 @@ namespace perideal
     const auto        &x       = particles.positions();
     const auto        &beta    = particles.energy_weights();
     const unsigned int n_owned = particles.n_owned();
-    const double       modulus = (1. - alpha) * mu;
     // |n_a| omega beta V_i V_j per intact bond and direction.
     const auto n_weight = [&](const unsigned int i, const std::size_t b, const unsigned int a) {
       const unsigned int j = bonds.neighbor[b];
@@ -213,13 +213,13 @@ namespace perideal
     for (unsigned int i = 0; i < n_owned; ++i)
       for (unsigned int a = 0; a < dim; ++a)
         P.local_element(i * dim + a) =
-          2. * modulus * beta[i] * volume[i] * S[i * dim + a] * angle_factor[i * dim + a];
+          2. * state_modulus[i] * beta[i] * volume[i] * S[i * dim + a] * angle_factor[i * dim + a];
     P.update_ghost_values();
 
     bond_pair_stiffness_bound(particles, bond_coefficient, 1, per_particle);
     for (unsigned int i = 0; i < n_owned; ++i)
       for (unsigned int a = 0; a < dim; ++a)
-        per_particle[i] += 2. * modulus * beta[i] * S[i * dim + a] * S[i * dim + a];
+        per_particle[i] += 2. * state_modulus[i] * beta[i] * S[i * dim + a] * S[i * dim + a];
     for (unsigned int i = 0; i < n_owned; ++i)
       for (unsigned int b = bonds.row_start[i]; b < bonds.row_start[i + 1]; ++b)
         if (bonds.intact[b])
@@ -238,9 +238,9 @@ namespace perideal
   // Antiplane state based linearized (the model is linear): per owned particle i and direction
   // a the row r_i,a (entries b g_i,a omega beta V_j n_a at j and their negatives at i, over the
   // intact bonds stored in row i and in the rows of owned neighbours) with weight
-  // (1 - alpha) mu beta_i V_i; per intact bond the row w_j - w_i of the bond-based term with
+  // (1 - alpha) mu_i beta_i V_i; per intact bond the row w_j - w_i of the bond-based term with
   // weight alpha c G beta V_i V_j / |xi|. The stiffness scale adds the diagonal of the rows of
-  // particle i, sum_a (1 - alpha) mu beta_i V_i S_i,a^2 (stiffness_bound()).
+  // particle i, sum_a (1 - alpha) mu_i beta_i V_i S_i,a^2 (stiffness_bound()).
   template <int dim>
   void
   AntiplaneStateBased<dim>::linearize(const ParticleSystem<dim> &particles,
@@ -279,11 +279,10 @@ namespace perideal
                   intact_bond_stiffness(bonds, bond_coefficient),
                   slope_row(bonds),
                   linearized);
-    const double modulus = (1. - alpha) * mu;
     for (unsigned int i = 0; i < n_owned; ++i)
       for (unsigned int a = 0; a < dim; ++a)
         {
-          const double weight = modulus * beta[i] * volume[i];
+          const double weight = state_modulus[i] * beta[i] * volume[i];
           linearized.add_row(weight, rows[i * dim + a]);
           linearized.stiffness_scale()[i] += weight * S[i * dim + a] * S[i * dim + a];
         }

@@ -183,6 +183,7 @@ namespace perideal
           prm.enter_subsection(model_name);
           model->parse_parameters(prm);
           prm.leave_subsection();
+          model->resolve_regions(regions);
         }
       no_fail_regions = ParameterUtilities::split_names(prm.get("No-fail regions"));
       for (const auto &name : no_fail_regions)

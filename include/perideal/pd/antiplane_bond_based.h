@@ -38,6 +38,12 @@ namespace perideal
    * The static linear solve does not carry the twist (has_prestrain()); adaptive dynamic
    * relaxation does. Section integrals: the torque and the strain energy per unit length
    * (AntiplaneTorsion::section_integrals()); output: the shear stresses at the particles.
+   *
+   * Dissimilar materials (<Shear moduli by region>, RegionModuli): a bond's micromodulus is
+   * that of the length-weighted harmonic mean of the shear moduli along it (seed eq. 60, the
+   * series rule; c is proportional to mu, so the rule for c and for mu agree). The surface
+   * correction is that of one material (its factors do not depend on mu); the critical slope
+   * and torsion take the model's <Shear modulus>, so a twist with region moduli is rejected.
    */
   template <int dim>
   class AntiplaneBondBased : public AntiplaneModel<dim>
@@ -98,6 +104,7 @@ namespace perideal
 
   private:
     using AntiplaneModel<dim>::mu;
+    using AntiplaneModel<dim>::region_moduli;
     using AntiplaneModel<dim>::twist;
     using AntiplaneModel<dim>::context;
 
@@ -110,7 +117,8 @@ namespace perideal
     std::unique_ptr<Kernel> kernel;
 
     /**
-     * @brief Set bond_coefficient (bond_pair_coefficients()) and the kernel's lanes.
+     * @brief Set bond_coefficient (bond_pair_coefficients(), with the region moduli's bond
+     * moduli if @p with_surface_factor) and the kernel's lanes.
      */
     void
     set_bond_coefficients(const ParticleSystem<dim> &particles, const bool with_surface_factor);

@@ -8,6 +8,7 @@
 
 #include <perideal/base/torsion.h>
 #include <perideal/pd/material_model.h>
+#include <perideal/pd/region_moduli.h>
 
 #include <string>
 #include <vector>
@@ -46,7 +47,8 @@ namespace perideal
 
   /**
    * @brief The base of the antiplane models: the one unknown w per particle (the out-of-plane
-   * displacement, or the warping under torsion), the shear modulus mu, Saint-Venant torsion
+   * displacement, or the warping under torsion), the shear modulus mu and its values by
+   * region (<Shear moduli by region>, RegionModuli: dissimilar materials), Saint-Venant torsion
    * (<Twist per unit length> psi and <Twist axis> in the model's subsection, see Torsion:
    * the models add the twist to the bond slope, TwistedSlopePairLaw), the critical slope of
    * a fracture energy, and the outputs: the shear stresses tau = mu (grad w + psi (-(y - y0),
@@ -97,30 +99,39 @@ namespace perideal
     derived_fields(const ParticleSystem<dim> &particles, const ParticleVector &u) const override;
 
     /**
-     * @brief The shear modulus mu [Pa].
+     * @brief The shear modulus mu [Pa] (of the particles outside the regions of <Shear moduli
+     * by region>).
      */
     double
     shear_modulus() const;
 
+    /**
+     * @brief Look up the regions of <Shear moduli by region>.
+     */
+    void
+    resolve_regions(const RegionCollection<dim> &regions) override;
+
   protected:
     /**
-     * @brief Declare "Shear modulus", "Twist per unit length" and "Twist axis" in the model's
-     * subsection.
+     * @brief Declare "Shear modulus", "Shear moduli by region", "Twist per unit length" and
+     * "Twist axis" in the model's subsection.
      */
     static void
     declare_antiplane_parameters(dealii::ParameterHandler &prm);
 
     /**
-     * @brief Read them; messages name <Material/@p model_name/...>. Throws unless mu > 0.
+     * @brief Read them; messages name <Material/@p model_name/...>. Throws unless mu > 0, and
+     * for region moduli together with a twist (torsion takes one shear modulus).
      */
     void
     parse_antiplane_parameters(dealii::ParameterHandler &prm, const std::string &model_name);
 
     /**
-     * @brief "; torsion: twist psi rad/m about (x0 y0)" with a twist, else empty.
+     * @brief "; by region: ..." with region moduli, "; torsion: twist psi rad/m about (x0 y0)"
+     * with a twist, else empty.
      */
     std::string
-    torsion_summary() const;
+    antiplane_summary() const;
 
     /**
      * @brief Check, under torsion, that the section holds the horizon and the axis
@@ -130,9 +141,10 @@ namespace perideal
     std::vector<double>
     twist_fields(const ParticleSystem<dim> &particles) const;
 
-    double       mu = 0.;
-    Torsion      twist;
-    ModelContext context;
+    double            mu = 0.;
+    RegionModuli<dim> region_moduli;
+    Torsion           twist;
+    ModelContext      context;
   };
 } // namespace perideal
 

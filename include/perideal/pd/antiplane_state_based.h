@@ -48,6 +48,14 @@ namespace perideal
    * linear twist field; so r_i is the PD gradient of the whole shear strain and tau = mu r_i,
    * and the faces and crack faces are traction free without fictitious layers
    * (doc/theory/models.md, "Torsion").
+   *
+   * Dissimilar materials (<Shear moduli by region>, RegionModuli): the state term takes the
+   * shear modulus mu_i of each particle, W_i = (1 - alpha) mu_i/2 |r_i|^2 (the variationally
+   * consistent form; the seed gives its eq. 60 for the parameter a = mu/2 of a bond, which the
+   * nonlocal gradient of this model does not have, seed note 000, sec. 7 A9), so the force
+   * density reads f_i = sum_j omega (s_i + s_j) . n V_j beta with s = (1 - alpha) mu b g (.) r of
+   * each end; the bond-based term takes the series rule of AntiplaneBondBased. The critical
+   * slope takes the model's <Shear modulus>.
    */
   template <int dim>
   class AntiplaneStateBased : public AntiplaneModel<dim>
@@ -127,12 +135,15 @@ namespace perideal
 
   private:
     using AntiplaneModel<dim>::mu;
+    using AntiplaneModel<dim>::region_moduli;
     using AntiplaneModel<dim>::twist;
     using AntiplaneModel<dim>::context;
 
     double alpha   = 0.;
     double b_state = 0.;
     double c       = 0.;
+    /// (1 - alpha) mu_i per owned particle (mu_i the shear modulus at the particle).
+    std::vector<double> state_modulus;
     /// delta beta V_i V_j per bond (omega |xi| beta V_i V_j: what r and the force share).
     std::vector<double> state_coefficient;
     /// alpha c G beta V_i V_j per bond (the bond-based term's pair force per unit slope).
@@ -148,7 +159,8 @@ namespace perideal
 
     /**
      * @brief Set bond_coefficient (bond_pair_coefficients() of the micromodulus
-     * @p micromodulus) and the kernel's lanes.
+     * @p micromodulus, with the region moduli's bond moduli if @p with_surface_factor) and the
+     * kernel's lanes.
      */
     void
     set_bond_coefficients(const ParticleSystem<dim> &particles,

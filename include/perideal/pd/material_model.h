@@ -11,6 +11,7 @@
 #include <perideal/base/field_layout.h>
 #include <perideal/base/linear_algebra.h>
 #include <perideal/base/plugin_registry.h>
+#include <perideal/base/region.h>
 #include <perideal/pd/particle_system.h>
 
 #include <string>
@@ -157,6 +158,14 @@ namespace perideal
      */
     virtual void
     parse_parameters(dealii::ParameterHandler &prm) = 0;
+
+    /**
+     * @brief Look up the regions that the model's parameters name (per-region moduli,
+     * RegionModuli) in @p regions, which outlive the model; throws, naming the entry, for a
+     * region that does not exist. Called right after parse_parameters(); nothing by default.
+     */
+    virtual void
+    resolve_regions(const RegionCollection<dim> &regions);
 
     /**
      * @brief Compute the per-bond and per-particle constants (micromoduli, weighted volumes,
