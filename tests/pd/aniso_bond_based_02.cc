@@ -116,7 +116,7 @@ main(int argc, char **argv)
 
   // The sign of c(n) (continuum calibration: exactly the note's bounds 2.2 <= C11/C12 <= 5) and
   // of the Fourier symbol of the lattice operator, for both calibrations.
-  for (const double ratio : {1.5, 2.0, 2.15, 2.25, 3.0, 4.9, 5.1, 6.0, 8.0})
+  for (const double ratio : {1.01, 1.1, 1.5, 2.0, 2.15, 2.25, 3.0, 4.9, 5.1, 6.0, 8.0})
     for (const std::string calibration : {"continuum", "discrete"})
       {
         const Entries e = {{"Symmetry", "cubic"},
