@@ -33,13 +33,13 @@ namespace perideal
     };
 
     /**
-     * @brief The pair law of the linearized bond: pair force k s n on the particle side (-k s n
-     * on the neighbour), k = c(n) G beta V_i V_j per lane, and, if @p with_energy, the pair
-     * energy k s^2 |xi| / 4 at both ends; if @p breaks, a bond breaks where s times its class's
-     * factor exceeds the reference critical stretch.
+     * @brief The pair law of the linearized bond (StretchPairLaw's side, its own strain): pair
+     * force k s n on the particle side (-k s n on the neighbour), k = c(n) G beta V_i V_j per lane,
+     * and, if @p with_energy, the pair energy k s^2 |xi| / 4 at both ends; if @p breaks, a bond
+     * breaks where s times its class's factor exceeds the reference critical stretch.
      */
     template <bool with_energy, bool breaks>
-    struct LinearizedPairLaw
+    struct LinearizedPairLaw : StretchPairLaw<3>
     {
       static constexpr unsigned int n_outputs    = 3 + (with_energy ? 1 : 0);
       static constexpr bool         breaks_bonds = breaks;
@@ -49,15 +49,7 @@ namespace perideal
       const BondBlocks<3>::BondClass *classes;
       const double                   *break_factor;
 
-      struct Side
-      {};
-
-      Side
-      side(const unsigned int) const
-      {
-        return {};
-      }
-
+      /// The linearized stretch (hides StretchPairLaw's deformed bond).
       LinearStretch
       strain(const BondBlocks<3>::BondClass &bond,
              const bond_simd::Vector        *u_a,
@@ -76,7 +68,7 @@ namespace perideal
       void
       pair(const BondBlocks<3>::BondClass &bond,
            const LinearStretch            &y,
-           const Side &,
+           const StretchPairLaw<3>::Side &,
            const BondLanes   &lanes,
            bond_simd::Vector *to_a,
            bond_simd::Vector *to_b) const
@@ -120,7 +112,7 @@ namespace perideal
     run_loop(BondList &bonds, const double critical_stretch)
     {
       using Law = LinearizedPairLaw<with_energy, breaks>;
-      std::array<const double *, 3>       u;
+      std::array<const double *, 3>        u;
       std::array<double *, Law::n_outputs> out;
       for (unsigned int d = 0; d < 3; ++d)
         {
@@ -133,7 +125,7 @@ namespace perideal
         blocks,
         u,
         out,
-        Law{lane_coefficient.data(), blocks.classes().data(), class_break_factor.data()},
+        Law{{}, lane_coefficient.data(), blocks.classes().data(), class_break_factor.data()},
         bonds,
         critical_stretch);
     }
@@ -184,8 +176,8 @@ namespace perideal
   AnisotropicBondBased::parse_parameters(ParameterHandler &prm)
   {
     material.parse_parameters(prm, section);
-    calibration = prm.get("Calibration") == "discrete" ? Calibration::discrete :
-                                                         Calibration::continuum;
+    calibration =
+      prm.get("Calibration") == "discrete" ? Calibration::discrete : Calibration::continuum;
     const auto C_input = material.tensor<3>(PlanarAssumption::three_dimensional);
     double     scale   = 0.;
     for (unsigned int i = 0; i < 3; ++i)
@@ -214,7 +206,7 @@ namespace perideal
     symmetrization_report.clear();
     if (!violated.str().empty())
       {
-        const auto         C_sym = am::to_tensor(C);
+        const auto         C_sym      = am::to_tensor(C);
         const unsigned int pair[6][2] = {{0, 0}, {1, 1}, {2, 2}, {1, 2}, {0, 2}, {0, 1}};
         std::ostringstream report;
         report << "Cauchy relations violated (" << violated.str()
@@ -235,13 +227,14 @@ namespace perideal
   void
   AnisotropicBondBased::initialize(ParticleSystem<3> &particles, const ModelContext &model_context)
   {
-    context                          = model_context;
-    const am::LatticeFamily family   = am::interior_family(particles);
+    context                        = model_context;
+    const am::LatticeFamily family = am::interior_family(particles);
     AssertThrow(!family.xi.empty(),
-                ExcMessage("The region of <" + section + "> has no bonds: the horizon is too "
+                ExcMessage("The region of <" + section +
+                           "> has no bonds: the horizon is too "
                            "small for the particle spacing."));
-    const FullMatrix<double> M_lattice = am::lattice_moment_matrix(family);
-    const auto relative_error = [&](const am::Components &Lambda_trial) {
+    const FullMatrix<double> M_lattice      = am::lattice_moment_matrix(family);
+    const auto               relative_error = [&](const am::Components &Lambda_trial) {
       am::Components residual = am::multiply(M_lattice, Lambda_trial);
       for (unsigned int k = 0; k < 15; ++k)
         residual[k] -= C[k];
@@ -249,9 +242,8 @@ namespace perideal
     };
     const am::Components Lambda_continuum =
       am::solve(am::continuum_moment_matrix(context.horizon), C);
-    lattice_error        = relative_error(Lambda_continuum);
-    Lambda               = calibration == Calibration::discrete ? am::solve(M_lattice, C) :
-                                                                  Lambda_continuum;
+    lattice_error = relative_error(Lambda_continuum);
+    Lambda = calibration == Calibration::discrete ? am::solve(M_lattice, C) : Lambda_continuum;
     calibration_residual = relative_error(Lambda);
     directions           = am::scan_directions(Lambda);
     double spacing       = std::numeric_limits<double>::infinity();
@@ -323,20 +315,19 @@ namespace perideal
                                        const double          critical_stretch)
   {
     Kernel &k = *kernel;
-    k.blocks.sync_state(particles.bonds());
-    k.blocks.gather(u.begin(), 3, k.u_field);
-    std::fill(k.f_field.begin(), k.f_field.end(), 0.);
-    const double *volume = particles.volumes().data();
-    if (energy_density != nullptr)
-      {
-        std::fill(k.w_field.begin(), k.w_field.end(), 0.);
-        k.template force_loop<true>(particles.bonds(), critical_stretch);
-        energy_density->resize(particles.n_owned());
-        k.blocks.scatter_owned(k.w_field, 1, volume, energy_density->data());
-      }
-    else
-      k.template force_loop<false>(particles.bonds(), critical_stretch);
-    k.blocks.scatter_owned(k.f_field, 3, volume, force.begin());
+    evaluate_bond_kernel<3>(k.blocks,
+                            particles,
+                            u,
+                            3,
+                            k.u_field,
+                            k.f_field,
+                            k.w_field,
+                            force,
+                            energy_density,
+                            [&](auto with_energy) {
+                              k.template force_loop<decltype(with_energy)::value>(particles.bonds(),
+                                                                                  critical_stretch);
+                            });
   }
 
   SymmetricTensor<4, 3>
@@ -348,9 +339,9 @@ namespace perideal
   double
   AnisotropicBondBased::critical_stretch(const double fracture_energy) const
   {
-    return std::sqrt(10. * fracture_energy /
-                     (numbers::PI * am::mean_directional_modulus(Lambda) *
-                      std::pow(context.horizon, 5)));
+    return std::sqrt(
+      10. * fracture_energy /
+      (numbers::PI * am::mean_directional_modulus(Lambda) * std::pow(context.horizon, 5)));
   }
 
   const am::Components &
@@ -384,15 +375,14 @@ namespace perideal
     out << "anisotropic bond based (linearized, omega = 1/|xi|): " << material.summary() << "; "
         << (calibration == Calibration::discrete ? "discrete" : "continuum")
         << " calibration, interior error |M Lambda - C|/|C| = " << calibration_residual
-        << " (continuum calibration on this lattice: " << lattice_error
-        << "); surface correction: "
+        << " (continuum calibration on this lattice: " << lattice_error << "); surface correction: "
         << (context.surface_correction ? "energy method (C_aaaa per axis)" : "none");
     if (!symmetrization_report.empty())
       out << "\n  " << symmetrization_report;
     if (directions.negative_fraction > 0.)
       out << "\n  warning: the micromodulus is negative in " << 100. * directions.negative_fraction
-          << " % of the directions (smallest c(n) = " << directions.minimum
-          << " N/m^6 at n = (" << directions.minimum_direction
+          << " % of the directions (smallest c(n) = " << directions.minimum << " N/m^6 at n = ("
+          << directions.minimum_direction
           << ")); the Fourier symbol is positive definite (smallest eigenvalue "
           << symbol.relative_minimum << " of the largest)";
     return out.str();
