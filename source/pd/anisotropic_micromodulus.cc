@@ -39,7 +39,7 @@ namespace perideal
       double
       multiplicity(const unsigned int k)
       {
-        const auto   e         = exponent_table[k];
+        const auto   e           = exponent_table[k];
         const double factorial[] = {1., 1., 2., 6., 24.};
         return 24. / (factorial[e[0]] * factorial[e[1]] * factorial[e[2]]);
       }
@@ -171,8 +171,7 @@ namespace perideal
             if (bonds.neighbor[b] < n_owned)
               ++n_bonds[bonds.neighbor[b]];
           }
-      const auto best =
-        std::max_element(n_bonds.begin(), n_bonds.end()) - n_bonds.begin();
+      const auto         best = std::max_element(n_bonds.begin(), n_bonds.end()) - n_bonds.begin();
       const unsigned int n_best = n_owned > 0 ? n_bonds[best] : 0;
       const unsigned int n_max  = Utilities::MPI::max(n_best, comm);
       const unsigned int rank   = Utilities::MPI::this_mpi_process(comm);
@@ -180,8 +179,7 @@ namespace perideal
         Utilities::MPI::min(n_best == n_max ? rank : std::numeric_limits<unsigned int>::max(),
                             comm);
       std::vector<double> flat;
-      const auto          add = [&](const unsigned int from, const unsigned int to,
-                           const std::size_t b) {
+      const auto add = [&](const unsigned int from, const unsigned int to, const std::size_t b) {
         const auto xi = particles.positions()[to] - particles.positions()[from];
         flat.insert(flat.end(),
                     {xi[0], xi[1], xi[2], bonds.volume_factor[b] * particles.volumes()[to]});
@@ -237,8 +235,8 @@ namespace perideal
         for (unsigned int beta = 0; beta < 15; ++beta)
           {
             const auto a = exponent_table[alpha], e = exponent_table[beta];
-            M(alpha, beta) = scale * multiplicity(beta) *
-                             sphere_moment(a[0] + e[0], a[1] + e[1], a[2] + e[2]);
+            M(alpha, beta) =
+              scale * multiplicity(beta) * sphere_moment(a[0] + e[0], a[1] + e[1], a[2] + e[2]);
           }
       return M;
     }
@@ -279,7 +277,8 @@ namespace perideal
       for (unsigned int t = 0; t < 180; ++t)
         for (unsigned int f = 0; f < 360; ++f)
           {
-            const double theta = (t + 0.5) * numbers::PI / 180., phi = (f + 0.5) * numbers::PI / 180.;
+            const double theta   = (t + 0.5) * numbers::PI / 180.,
+                         phi     = (f + 0.5) * numbers::PI / 180.;
             const Tensor<1, 3> n = Point<3>(std::sin(theta) * std::cos(phi),
                                             std::sin(theta) * std::sin(phi),
                                             std::cos(theta));
@@ -298,21 +297,22 @@ namespace perideal
     }
 
     SymbolScan
-    scan_symbol(const Components   &Lambda,
+    scan_symbol(const Components    &Lambda,
                 const LatticeFamily &family,
                 const double         spacing,
                 const unsigned int   n_k)
     {
-      const std::size_t                 n_bonds = family.xi.size();
+      const std::size_t                  n_bonds = family.xi.size();
       std::vector<SymmetricTensor<2, 3>> nn(n_bonds);
       for (std::size_t b = 0; b < n_bonds; ++b)
         {
           const double       r = family.xi[b].norm();
           const Tensor<1, 3> n = family.xi[b] / r;
-          nn[b] = directional_modulus(Lambda, n) * family.weight[b] / r * symmetrize(outer_product(n, n));
+          nn[b] =
+            directional_modulus(Lambda, n) * family.weight[b] / r * symmetrize(outer_product(n, n));
         }
-      SymbolScan scan;
-      double     smallest = std::numeric_limits<double>::infinity(), largest = 0.;
+      SymbolScan   scan;
+      double       smallest = std::numeric_limits<double>::infinity(), largest = 0.;
       const double dk = 2. * numbers::PI / (spacing * n_k);
       for (unsigned int q = 1; q < n_k * n_k * n_k; ++q)
         {

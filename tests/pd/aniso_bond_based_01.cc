@@ -37,19 +37,17 @@ exact(const double value)
 FullMatrix<double>
 measured_stiffness(perideal::AnisotropicBondBased &model)
 {
-  const double                                   dx = 1e-3;
-  const int                                      n  = 11;
-  perideal::ParticleSystem<3>                    ps(MPI_COMM_WORLD);
+  const double                          dx = 1e-3;
+  const int                             n  = 11;
+  perideal::ParticleSystem<3>           ps(MPI_COMM_WORLD);
   perideal::ParticleSystem<3>::Settings s;
   s.spacing        = dx;
   s.horizon        = 3. * dx;
   s.partial_volume = perideal::PartialVolume::geometric;
   pd_tests::generate_box<3>(ps, s, Point<3>(), Point<3>(n * dx, n * dx, n * dx));
-  model.initialize(ps,
-                   pd_tests::model_context(s.horizon,
-                                           1.,
-                                           perideal::PlanarAssumption::three_dimensional,
-                                           false));
+  model.initialize(
+    ps,
+    pd_tests::model_context(s.horizon, 1., perideal::PlanarAssumption::three_dimensional, false));
   const double centre = 0.5 * n * dx;
   const auto   energy = [&](const std::array<double, 6> &strain) {
     perideal::ParticleVector u, f;
@@ -149,15 +147,15 @@ random_lambda_material()
   for (unsigned int I = 0; I < 6; ++I)
     for (unsigned int J = I; J < 6; ++J)
       constants << (I + J > 0 ? ", " : "")
-                << exact(1e10 * C[voigt_pair[I][0]][voigt_pair[I][1]][voigt_pair[J][0]]
-                                 [voigt_pair[J][1]]);
+                << exact(1e10 *
+                         C[voigt_pair[I][0]][voigt_pair[I][1]][voigt_pair[J][0]][voigt_pair[J][1]]);
   return {{"Symmetry", "general"}, {"Stiffness constants", constants.str()}};
 }
 
 // The continuum Lambda against seed note 004, sec. 3.3: (m/2) Lambda in units of C, m = pi delta^4.
 void
-check_closed_form(const std::string                            &label,
-                  const Entries                                &entries,
+check_closed_form(const std::string                                  &label,
+                  const Entries                                      &entries,
                   const std::vector<std::pair<unsigned int, double>> &expected)
 {
   perideal::AnisotropicBondBased model;
@@ -168,8 +166,9 @@ check_closed_form(const std::string                            &label,
   const double m     = numbers::PI * std::pow(3e-3, 4);
   double       error = 0.;
   for (const auto &[k, value] : expected)
-    error = std::max(error, std::abs(0.5 * m * model.micromodulus_tensor()[k] / 1e10 - value) /
-                              std::abs(value));
+    error =
+      std::max(error,
+               std::abs(0.5 * m * model.micromodulus_tensor()[k] / 1e10 - value) / std::abs(value));
   deallog << label << ": (m/2) Lambda against the note's closed form: "
           << (error < 1e-13 ? "agrees to 1e-13 ok" : "FAILED") << std::endl;
 }
@@ -209,8 +208,12 @@ main(int argc, char **argv)
 
   // lambda_L = mu = 10 GPa: (m/2) Lambda_1111 = 15, (m/2) Lambda_1122 = 5 (units of 10 GPa).
   check_closed_form("isotropic", isotropic, {{0, 15.}, {1, 15.}, {2, 15.}, {3, 5.}, {5, 5.}});
-  check_closed_form(
-    "orthotropic",
-    orthotropic,
-    {{0, 795. / 8.}, {1, 345. / 4.}, {2, 585. / 8.}, {3, 45. / 4.}, {4, -85. / 8.}, {5, -65. / 2.}});
+  check_closed_form("orthotropic",
+                    orthotropic,
+                    {{0, 795. / 8.},
+                     {1, 345. / 4.},
+                     {2, 585. / 8.},
+                     {3, 45. / 4.},
+                     {4, -85. / 8.},
+                     {5, -65. / 2.}});
 }

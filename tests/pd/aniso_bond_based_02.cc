@@ -33,11 +33,9 @@ struct Lattice
   void
   initialize(perideal::AnisotropicBondBased &model)
   {
-    model.initialize(ps,
-                     pd_tests::model_context(3e-3,
-                                             1.,
-                                             perideal::PlanarAssumption::three_dimensional,
-                                             false));
+    model.initialize(
+      ps,
+      pd_tests::model_context(3e-3, 1., perideal::PlanarAssumption::three_dimensional, false));
   }
 
   perideal::ParticleSystem<3> ps;
@@ -98,8 +96,8 @@ main(int argc, char **argv)
     const auto   C        = model.elasticity_tensor();
     const double expected = 35e9 / 3.;
     const double error    = std::max({std::abs(C[0][0][1][1] - expected),
-                                   std::abs(C[0][1][0][1] - expected),
-                                   std::abs(C[0][0][0][0] - 3. * expected)}) /
+                                      std::abs(C[0][1][0][1] - expected),
+                                      std::abs(C[0][0][0][0] - 3. * expected)}) /
                          expected;
     deallog << "isotropic nu = 0.3 symmetrized: C12 = C66 = (lambda + 2 mu)/3, C11 = 3 C12: "
             << pd_tests::ok(error < 1e-14) << std::endl;
@@ -120,8 +118,7 @@ main(int argc, char **argv)
     for (const std::string calibration : {"continuum", "discrete"})
       {
         const Entries e = {{"Symmetry", "cubic"},
-                           {"Cubic constants",
-                            std::to_string(ratio * 10e9) + ", 10e9, 10e9"},
+                           {"Cubic constants", std::to_string(ratio * 10e9) + ", 10e9, 10e9"},
                            {"Calibration", calibration}};
         try
           {
@@ -130,9 +127,9 @@ main(int argc, char **argv)
             Lattice lattice;
             lattice.initialize(model);
             const auto &directions = model.direction_scan();
-            deallog << "cubic C11/C12 = " << ratio << ", " << calibration
-                    << ": lambda < 0 in " << std::setprecision(3)
-                    << 100. * directions.negative_fraction << " % of the directions"
+            deallog << "cubic C11/C12 = " << ratio << ", " << calibration << ": lambda < 0 in "
+                    << std::setprecision(3) << 100. * directions.negative_fraction
+                    << " % of the directions"
                     << (directions.negative_fraction > 0. ? " (warned)" : "")
                     << ", symbol positive definite (smallest/largest eigenvalue "
                     << model.symbol_scan().relative_minimum << ")" << std::setprecision(6)
@@ -186,13 +183,13 @@ main(int argc, char **argv)
       for (unsigned int i = 0; i < ps.n_local(); ++i)
         u.local_element(3 * i) = eps * ps.positions()[i][0];
       model.compute_forces(ps, u, f, nullptr, s_ref);
-      const perideal::BondList &bonds = ps.bonds();
-      double along_x = 0., broken_along_x = 0., broken = 0., mismatched = 0.;
+      const perideal::BondList &bonds   = ps.bonds();
+      double                    along_x = 0., broken_along_x = 0., broken = 0., mismatched = 0.;
       for (unsigned int i = 0; i < ps.n_owned(); ++i)
         for (unsigned int b = bonds.row_start[i]; b < bonds.row_start[i + 1]; ++b)
           {
-            const Tensor<1, 3> n = (ps.positions()[bonds.neighbor[b]] - ps.positions()[i]) /
-                                   bonds.length[b];
+            const Tensor<1, 3> n =
+              (ps.positions()[bonds.neighbor[b]] - ps.positions()[i]) / bonds.length[b];
             const bool predicted =
               eps * n[0] * n[0] * std::sqrt(std::abs(am::directional_modulus(Lambda, n)) / c_mean) >
               s_ref;

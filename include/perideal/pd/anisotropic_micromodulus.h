@@ -173,7 +173,7 @@ namespace perideal
      * @brief The SymbolScan of @p Lambda on @p family (lattice spacing @p spacing).
      */
     SymbolScan
-    scan_symbol(const Components   &Lambda,
+    scan_symbol(const Components    &Lambda,
                 const LatticeFamily &family,
                 const double         spacing,
                 const unsigned int   n_k);
