@@ -195,20 +195,19 @@ namespace perideal
                                  const double          critical_stretch)
   {
     Kernel &k = *kernel;
-    k.blocks.sync_state(particles.bonds());
-    k.blocks.gather(u.begin(), dim, k.u_field);
-    std::fill(k.f_field.begin(), k.f_field.end(), 0.);
-    const double *volume = particles.volumes().data();
-    if (energy_density != nullptr)
-      {
-        std::fill(k.w_field.begin(), k.w_field.end(), 0.);
-        k.template force_loop<true>(particles.bonds(), critical_stretch);
-        energy_density->resize(particles.n_owned());
-        k.blocks.scatter_owned(k.w_field, 1, volume, energy_density->data());
-      }
-    else
-      k.template force_loop<false>(particles.bonds(), critical_stretch);
-    k.blocks.scatter_owned(k.f_field, dim, volume, force.begin());
+    evaluate_bond_kernel<dim>(
+      k.blocks,
+      particles,
+      u,
+      dim,
+      k.u_field,
+      k.f_field,
+      k.w_field,
+      force,
+      energy_density,
+      [&](auto with_energy) {
+        k.template force_loop<decltype(with_energy)::value>(particles.bonds(), critical_stretch);
+      });
   }
 
   template <int dim>

@@ -2,11 +2,13 @@
 // PeriDeal: stiffness bounds and linearizations of the material models (for the quasi-static
 // solvers). Kept apart from the force kernels of the models' own files.
 // ---------------------------------------------------------------------
+#include <perideal/pd/anisotropic_bond_based.h>
 #include <perideal/pd/antiplane_bond_based.h>
 #include <perideal/pd/antiplane_state_based.h>
 #include <perideal/pd/bond_based.h>
 #include <perideal/pd/linear_peridynamic_solid.h>
 
+#include <algorithm>
 #include <cmath>
 
 namespace perideal
@@ -139,6 +141,33 @@ namespace perideal
     add_bond_rows(particles,
                   intact_bond_stiffness(particles.bonds(), bond_coefficient),
                   extension_row<dim>(particles),
+                  linearized);
+  }
+
+  // Anisotropic linearized bond: the block k_b n n^T of PMB with a direction factor that may be
+  // negative, so the Gershgorin bound takes |k_b|.
+  void
+  AnisotropicBondBased::stiffness_bound(const ParticleSystem<3> &particles,
+                                        std::vector<double>     &per_particle) const
+  {
+    std::vector<double> magnitude(bond_coefficient.size());
+    std::transform(bond_coefficient.begin(),
+                   bond_coefficient.end(),
+                   magnitude.begin(),
+                   [](const double k) { return std::abs(k); });
+    bond_pair_stiffness_bound(particles, magnitude, 3, per_particle);
+  }
+
+  // Anisotropic linearized bond (the model is linear): PMB's rows with k_b = c(n_b) G beta V_i
+  // V_j / |xi|.
+  void
+  AnisotropicBondBased::linearize(const ParticleSystem<3> &particles,
+                                  LinearizedModel         &linearized) const
+  {
+    linearized.reinit(this->field_layout().n_components(), particles.n_owned());
+    add_bond_rows(particles,
+                  intact_bond_stiffness(particles.bonds(), bond_coefficient),
+                  extension_row<3>(particles),
                   linearized);
   }
 

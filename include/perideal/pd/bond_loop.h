@@ -6,8 +6,11 @@
 
 #include <perideal/pd/bond_blocks.h>
 
+#include <algorithm>
 #include <array>
 #include <cstddef>
+#include <type_traits>
+#include <vector>
 
 namespace perideal
 {
@@ -122,6 +125,44 @@ namespace perideal
         for (unsigned int k = 0; k < n_outputs; ++k)
           add_to(outputs[k] + a, sum_a[k]);
       }
+  }
+
+  /**
+   * @brief One force evaluation of a bond-block kernel, the frame the models share around
+   * their loop: the kernel's copy of the bond states follows the bonds of @p particles, the
+   * @p n_components components of @p u are gathered into @p u_field, @p f_field (and, if
+   * @p energy_density is given, @p w_field) is zeroed, @p loop runs (called with
+   * std::true_type if the energy density is wanted, std::false_type otherwise) and the force
+   * (and energy) densities of the owned particles are scattered into @p force
+   * (@p energy_density), divided by the volumes.
+   */
+  template <int dim, typename Loop>
+  inline void
+  evaluate_bond_kernel(BondBlocks<dim>                 &blocks,
+                       const ParticleSystem<dim>       &particles,
+                       const ParticleVector            &u,
+                       const unsigned int               n_components,
+                       typename BondBlocks<dim>::Array &u_field,
+                       typename BondBlocks<dim>::Array &f_field,
+                       typename BondBlocks<dim>::Array &w_field,
+                       ParticleVector                  &force,
+                       std::vector<double>             *energy_density,
+                       const Loop                      &loop)
+  {
+    blocks.sync_state(particles.bonds());
+    blocks.gather(u.begin(), n_components, u_field);
+    std::fill(f_field.begin(), f_field.end(), 0.);
+    const double *volume = particles.volumes().data();
+    if (energy_density != nullptr)
+      {
+        std::fill(w_field.begin(), w_field.end(), 0.);
+        loop(std::true_type());
+        energy_density->resize(particles.n_owned());
+        blocks.scatter_owned(w_field, 1, volume, energy_density->data());
+      }
+    else
+      loop(std::false_type());
+    blocks.scatter_owned(f_field, n_components, volume, force.begin());
   }
 
   /**

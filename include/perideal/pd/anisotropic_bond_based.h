@@ -1,0 +1,172 @@
+// ---------------------------------------------------------------------
+// PeriDeal: anisotropic linearized bond-based PD in 3D (seed 004).
+// ---------------------------------------------------------------------
+#ifndef perideal_pd_anisotropic_bond_based_h
+#define perideal_pd_anisotropic_bond_based_h
+
+#include <perideal/base/elasticity.h>
+#include <perideal/pd/anisotropic_micromodulus.h>
+#include <perideal/pd/material_model.h>
+
+#include <memory>
+
+namespace perideal
+{
+  /**
+   * @brief Anisotropic linearized bond-based model in 3D (Trageser & Seleson, SAND2019-12685C,
+   * eq. 3 and the micromodulus of the "3D fully anisotropic PD model" slide; seed note 004,
+   * secs. 1.2-1.3).
+   *
+   * Force density rho u_tt = int lambda(xi) xi (xi . eta) dx' with the micromodulus
+   * lambda(xi) = omega(|xi|)/|xi|^2 Lambda_ijkl n_i n_j n_k n_l, omega = 1/|xi|, n = xi/|xi|,
+   * eta = u' - u. Discretely the pair force is k_b s n with the linearized stretch
+   * s = n . eta / |xi| and k_b = c(n_b) G beta V_i V_j, c(n) = Lambda_ijkl n_i n_j n_k n_l the
+   * direction factor computed per bond at set-up (G surface correction, beta partial volume);
+   * pair energy k_b s^2 |xi| / 2. Lambda (completely symmetric) follows from the elasticity
+   * tensor C of the entries of ElasticMaterial (the FE side's: symmetry class, constants,
+   * orientation) by C = M Lambda, C_ijkl = 1/2 sum_b lambda_b xi_i xi_j xi_k xi_l beta V_j:
+   * - "discrete" calibration: M from the neighbour sums of an interior particle, so that a
+   *   homogeneous deformation reproduces C there to round-off;
+   * - "continuum": M from the integrals over the ball (the note's closed form); its error on
+   *   the lattice is reported.
+   * C must satisfy Cauchy's relations (complete symmetry); otherwise it is refused or, with
+   * <Cauchy relations> = symmetrize, replaced by its completely symmetric part.
+   * Set-up checks: directions where c(n) < 0 (a warning in the summary) and the Fourier symbol
+   * of the interior operator (an error if it is not positive definite).
+   * Fracture: the PMB critical stretch with the bond's own direction factor,
+   * s0(n) = sqrt(10 G0 / (pi |c(n)| delta^5)) (doc/theory/models.md); the linearized stretch
+   * breaks the bond.
+   */
+  class AnisotropicBondBased : public MaterialModel<3>
+  {
+  public:
+    /**
+     * @brief A model without parameters; parse_parameters() and initialize() set it up.
+     */
+    AnisotropicBondBased();
+
+    /**
+     * @brief Destructor (the kernel's data are defined in anisotropic_bond_based.cc).
+     */
+    ~AnisotropicBondBased() override;
+
+    /**
+     * @brief Declare the entries of ElasticMaterial, "Cauchy relations" and "Calibration".
+     */
+    static void
+    declare_parameters(dealii::ParameterHandler &prm);
+
+    /**
+     * @brief Read the material and check Cauchy's relations (refuse or symmetrize).
+     */
+    void
+    parse_parameters(dealii::ParameterHandler &prm) override;
+
+    /**
+     * @brief Calibrate Lambda, check its stability, set the per-bond coefficients and the
+     * surface correction.
+     */
+    void
+    initialize(ParticleSystem<3> &particles, const ModelContext &context) override;
+
+    void
+    compute_forces(ParticleSystem<3>    &particles,
+                   const ParticleVector &u,
+                   ParticleVector       &force,
+                   std::vector<double>  *energy_density,
+                   const double          critical_stretch) override;
+
+    /**
+     * @brief Gershgorin bound with |k_b| (negative direction factors count with their size);
+     * defined in source/pd/model_linearization.cc.
+     */
+    void
+    stiffness_bound(const ParticleSystem<3> &particles,
+                    std::vector<double>     &per_particle) const override;
+
+    /**
+     * @brief One row n_b . (u_j - u_i) per intact bond with weight k_b / |xi| (the model is
+     * linear); defined in source/pd/model_linearization.cc.
+     */
+    void
+    linearize(const ParticleSystem<3> &particles, LinearizedModel &linearized) const override;
+
+    /**
+     * @brief The completely symmetric C that the model reproduces (the input, or its
+     * completely symmetric part).
+     */
+    dealii::SymmetricTensor<4, 3>
+    elasticity_tensor() const override;
+
+    /**
+     * @brief The reference critical stretch sqrt(10 G0 / (pi c_mean delta^5)), c_mean the mean
+     * of c(n) over the sphere; a bond of direction n breaks at sqrt(c_mean / |c(n)|) times it.
+     */
+    double
+    critical_stretch(const double fracture_energy) const override;
+
+    /**
+     * @brief The material, the calibration and its errors, the Cauchy symmetrization and the
+     * stability warnings.
+     */
+    std::string
+    summary() const override;
+
+    /**
+     * @brief The micromodulus tensor Lambda [N/m^6] (after initialize()).
+     */
+    const anisotropic_micromodulus::Components &
+    micromodulus_tensor() const;
+
+    /**
+     * @brief The relative lattice error |M_lattice Lambda_continuum - C| / |C| of the
+     * continuum calibration (after initialize()).
+     */
+    double
+    continuum_lattice_error() const;
+
+    /**
+     * @brief The scan of the directions where c(n) < 0 (after initialize()).
+     */
+    const anisotropic_micromodulus::DirectionScan &
+    direction_scan() const;
+
+    /**
+     * @brief The scan of the Fourier symbol of the interior operator (after initialize()).
+     */
+    const anisotropic_micromodulus::SymbolScan &
+    symbol_scan() const;
+
+  private:
+    /// The calibration of Lambda.
+    enum class Calibration
+    {
+      discrete,
+      continuum
+    };
+
+    ElasticMaterial                         material;
+    Calibration                             calibration = Calibration::discrete;
+    anisotropic_micromodulus::Components    C{};
+    anisotropic_micromodulus::Components    Lambda{};
+    std::string                             symmetrization_report;
+    double                                  lattice_error = 0., calibration_residual = 0.;
+    anisotropic_micromodulus::DirectionScan directions;
+    anisotropic_micromodulus::SymbolScan    symbol;
+    ModelContext                            context;
+    /// k_b = c(n_b) G beta V_i V_j per bond.
+    std::vector<double> bond_coefficient;
+    /// The force kernel's data (bonds in SIMD blocks, per-lane k_b, per-class breaking
+    /// factors): defined in anisotropic_bond_based.cc, compiled with the kernel options.
+    struct Kernel;
+    std::unique_ptr<Kernel> kernel;
+
+    /**
+     * @brief Set bond_coefficient (with or without the surface factor) and the kernel's lanes.
+     */
+    void
+    set_bond_coefficients(const ParticleSystem<3> &particles, const bool with_surface_factor);
+  };
+} // namespace perideal
+
+#endif
