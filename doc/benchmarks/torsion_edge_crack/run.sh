@@ -1,0 +1,59 @@
+#!/usr/bin/env bash
+# Torsion of the 1 x 2 bar with an edge crack (seed 000, example 8.5): for the crack lengths
+# a = 0, 0.25, 0.5, 0.75 (a/b with b = 1, the side the crack runs across) the FE file
+# torsion_crack_fe.prm on the slit mesh of make_mesh.py (Q2, h = 1/32, 1/64, 1/128) and the PD file
+# torsion_crack_pd.prm with the bond-based and the state-based antiplane model (dx = 0.02, 0.01),
+# then postprocess.py prints the torque table against the FE value extrapolated to h = 0 and draws
+# torque_vs_crack.png and stress_near_crack.png. About 15 minutes on 2 cores; results go to
+# results/ next to this script.
+# usage: bash doc/benchmarks/torsion_edge_crack/run.sh [BUILD_DIR]   (default: build)
+set -euo pipefail
+here="$(cd "$(dirname "$0")" && pwd)"
+build="$(cd "${1:-build}" && pwd)"
+solver="$build/bin/perideal-solid"
+export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1
+cd "$here"
+rm -rf results
+mkdir -p results
+
+# variant SOURCE NAME SED-EXPRESSIONS...: SOURCE.prm with its output directory set to
+# results/NAME and the given edits, written to results/NAME.prm.
+variant() {
+  local source=$1 name=$2
+  shift 2
+  sed -e "s|set Directory = .*|set Directory = results/$name|" "$@" "$source.prm" > "results/$name.prm"
+}
+
+runs=()
+for a in 0 0.25 0.5 0.75; do
+  /usr/bin/python3 make_mesh.py "$a" 16 "results/section_a$a.msh"
+  for level in 1 2 3; do
+    name="fe_a${a}_l$level"
+    variant torsion_crack_fe "$name" -e "s|Mesh file *= .*|Mesh file = results/section_a$a.msh|" \
+      -e "s|Global refinements = .*|Global refinements = $level|"
+    runs+=("results/$name")
+  done
+  tip=$(python3 -c "print(-0.5 + $a)")
+  for model in bond state; do
+    for dx in 0.02 0.01; do
+      name="pd_${model}_a${a}_dx$dx"
+      lo=$(python3 -c "print($dx * 0.1)")
+      hi=$(python3 -c "print($dx * 0.9)")
+      crack="-0.6, 0 : $tip, 0"
+      [ "$a" = 0 ] && crack=""
+      variant torsion_crack_pd "$name" -e "s|Lattice spacing = .*|Lattice spacing = $dx|" \
+        -e "s|Cracks = .*|Cracks = $crack|" \
+        -e "s|Model   = antiplane bond based|Model   = antiplane $model based|" \
+        -e "s|subsection antiplane bond based|subsection antiplane $model based|" \
+        -e "s|Lower corner = 0.002, 0.002|Lower corner = $lo, $lo|" \
+        -e "s|Upper corner = 0.018, 0.018|Upper corner = $hi, $hi|"
+      runs+=("results/$name")
+    done
+  done
+done
+for run in "${runs[@]}"; do
+  echo "== $run"
+  mpirun -np 2 "$solver" "$run.prm" | grep -E '^(Particles|FE region|Load step|Section integrals)'
+done
+/usr/bin/python3 postprocess.py "${runs[@]}" --plot torque_vs_crack.png \
+  --stresses results/pd_bond_a0.5_dx0.01 results/pd_state_a0.5_dx0.01 stress_near_crack.png
