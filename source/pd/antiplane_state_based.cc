@@ -75,7 +75,7 @@ namespace perideal
                                               TwistedSlopePairLaw<dim, with_energy>,
                                               SlopePairLaw<dim, with_energy>>
     {
-      using Slope = std::conditional_t<twisted,
+      using Slope                        = std::conditional_t<twisted,
                                        TwistedSlopePairLaw<dim, with_energy>,
                                        SlopePairLaw<dim, with_energy>>;
       static constexpr bool breaks_bonds = false;
@@ -152,15 +152,15 @@ namespace perideal
                                bonds,
                                critical_slope);
       else
-        for_each_bond_block<3>(
-          blocks,
-          {{blocks.component(w_field, 0),
-            blocks.component(twist_field, 0),
-            blocks.component(twist_field, 1)}},
-          out,
-          ShearAngleLaw<dim, TwistedSlopePairLaw<dim, false>>{{{lane_weight.data()}}},
-          bonds,
-          critical_slope);
+        for_each_bond_block<3>(blocks,
+                               {{blocks.component(w_field, 0),
+                                 blocks.component(twist_field, 0),
+                                 blocks.component(twist_field, 1)}},
+                               out,
+                               ShearAngleLaw<dim, TwistedSlopePairLaw<dim, false>>{
+                                 {{lane_weight.data()}}},
+                               bonds,
+                               critical_slope);
     }
 
     /**
@@ -185,8 +185,7 @@ namespace perideal
           u[0] = blocks.component(w_field, 0);
           for (unsigned int d = 0; d < dim; ++d)
             u[1 + d] = blocks.component(s_field, d);
-          const StateForceLaw<dim, with_energy> law{{lane_coefficient.data()},
-                                                    lane_weight.data()};
+          const StateForceLaw<dim, with_energy> law{{lane_coefficient.data()}, lane_weight.data()};
           for_each_bond_block<dim + 1>(blocks, u, out, law, bonds, 0.);
         }
       else
@@ -309,17 +308,17 @@ namespace perideal
         for (unsigned int i = 0; i < n_owned; ++i)
           for (unsigned int b = bonds.row_start[i]; b < bonds.row_start[i + 1]; ++b)
             if (bonds.intact[b] != 0)
-            {
-              const unsigned int j = bonds.neighbor[b];
-              for (unsigned int a = 0; a < dim; ++a)
-                {
-                  const double n_a = (x[j][a] - x[i][a]) / bonds.length[b];
-                  const double p   = state_coefficient[b] * n_a * n_a;
-                  sum[i * dim + a] += p / volume[i];
-                  if (j < n_owned)
-                    sum[j * dim + a] += p / volume[j];
-                }
-            }
+              {
+                const unsigned int j = bonds.neighbor[b];
+                for (unsigned int a = 0; a < dim; ++a)
+                  {
+                    const double n_a = (x[j][a] - x[i][a]) / bonds.length[b];
+                    const double p   = state_coefficient[b] * n_a * n_a;
+                    sum[i * dim + a] += p / volume[i];
+                    if (j < n_owned)
+                      sum[j * dim + a] += p / volume[j];
+                  }
+              }
         for (std::size_t q = 0; q < sum.size(); ++q)
           angle_factor[q] = 1. / sum[q];
       }

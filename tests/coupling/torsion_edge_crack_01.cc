@@ -104,7 +104,10 @@ main(int argc, char **argv)
       "subsection Finite elements\n  set Mesh file = " SOURCE_DIR
       "/../../meshes/torsion_edge_crack_2d.msh\n  set Global refinements = 1\nend\n",
       0.01);
-  run("PD bond-based, dx = 0.025", "torsion_crack_pd.prm", pd_overrides("antiplane bond based"), 0.04);
+  run("PD bond-based, dx = 0.025",
+      "torsion_crack_pd.prm",
+      pd_overrides("antiplane bond based"),
+      0.04);
   run("PD state-based, dx = 0.025",
       "torsion_crack_pd.prm",
       pd_overrides("antiplane state based"),

@@ -95,10 +95,9 @@ main(int argc, char **argv)
   run("torsion_pd.prm", "torsion_pd.prm", coarse, 0.01, 0.03);
   run("torsion_pd.prm, antiplane state based",
       "torsion_pd.prm",
-      coarse +
-        "subsection Material\n  set Model = antiplane state based\n"
-        "  subsection antiplane state based\n    set Shear modulus = 1\n"
-        "    set Twist per unit length = 1\n    set Twist axis = 0, 0\n  end\nend\n",
+      coarse + "subsection Material\n  set Model = antiplane state based\n"
+               "  subsection antiplane state based\n    set Shear modulus = 1\n"
+               "    set Twist per unit length = 1\n    set Twist axis = 0, 0\n  end\nend\n",
       0.03,
       0.02);
 }

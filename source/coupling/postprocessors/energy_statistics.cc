@@ -64,8 +64,7 @@ namespace perideal
               log << "Energy error: not defined (the twist of torsion is a prestrain, not a "
                      "load whose work is tracked; check T psi = 2E of the section integrals)\n";
             else
-              log << "Energy error: " << energy_error << " J (relative " << relative_error
-                  << ")\n";
+              log << "Energy error: " << energy_error << " J (relative " << relative_error << ")\n";
           }
       }
     else
