@@ -140,20 +140,19 @@ namespace perideal
                                           const double          critical_slope)
   {
     Kernel &k = *kernel;
-    k.blocks.sync_state(particles.bonds());
-    k.blocks.gather(w.begin(), 1, k.w_field);
-    std::fill(k.f_field.begin(), k.f_field.end(), 0.);
-    const double *volume = particles.volumes().data();
-    if (energy_density != nullptr)
-      {
-        std::fill(k.e_field.begin(), k.e_field.end(), 0.);
-        k.template force_loop<true>(particles.bonds(), critical_slope);
-        energy_density->resize(particles.n_owned());
-        k.blocks.scatter_owned(k.e_field, 1, volume, energy_density->data());
-      }
-    else
-      k.template force_loop<false>(particles.bonds(), critical_slope);
-    k.blocks.scatter_owned(k.f_field, 1, volume, force.begin());
+    evaluate_bond_kernel<dim>(
+      k.blocks,
+      particles,
+      w,
+      1,
+      k.w_field,
+      k.f_field,
+      k.e_field,
+      force,
+      energy_density,
+      [&](auto with_energy) {
+        k.template force_loop<decltype(with_energy)::value>(particles.bonds(), critical_slope);
+      });
   }
 
   template <int dim>

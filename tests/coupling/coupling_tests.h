@@ -18,6 +18,8 @@
 #include <string>
 #include <vector>
 
+#include <tests.h>
+
 namespace coupling_tests
 {
   /**
@@ -86,6 +88,36 @@ namespace coupling_tests
       inspect(problem);
     MPI_Barrier(MPI_COMM_WORLD);
     return log.str();
+  }
+
+  /// The torque and the strain energy per unit length of a torsion run (the last row of the
+  /// fe_ or pd_ section integrals).
+  struct SectionIntegrals
+  {
+    bool   fe;
+    double torque;
+    double energy;
+  };
+
+  /**
+   * Run the benchmark file @p benchmark (a path below doc/benchmarks/) with @p overrides and the
+   * output in results/ (no HDF5, no progress) and return its section integrals.
+   */
+  inline SectionIntegrals
+  run_torsion(const std::string &benchmark, const std::string &overrides)
+  {
+    run("torsion.prm",
+        "include " SOURCE_DIR "/../../doc/benchmarks/" + benchmark + "\n" + overrides +
+          "subsection Output\n"
+          "  set Directory  = results\n"
+          "  set Write HDF5 = false\n"
+          "  set Progress   = false\n"
+          "end\n");
+    const auto columns = perideal_tests::read_statistics("results/statistics.csv");
+    const bool fe      = columns.count("fe_torque") > 0;
+    return {fe,
+            columns.at(fe ? "fe_torque" : "pd_torque").back(),
+            columns.at(fe ? "fe_torsion_energy" : "pd_torsion_energy").back()};
   }
 
   /// "ok" if @p condition holds, "FAILED" otherwise.

@@ -36,27 +36,10 @@ namespace
       const std::string &overrides,
       const double       tolerance)
   {
-    const std::string file = "torsion.prm";
-    coupling_tests::write_file(file,
-                               "include " SOURCE_DIR "/../../doc/benchmarks/torsion_edge_crack/" +
-                                 name + "\n" + overrides +
-                                 "subsection Output\n"
-                                 "  set Directory  = results\n"
-                                 "  set Write HDF5 = false\n"
-                                 "  set Progress   = false\n"
-                                 "end\n");
-    {
-      std::ostringstream          log;
-      perideal::CoupledProblem<2> problem(MPI_COMM_WORLD, log);
-      coupling_tests::parse(problem, file);
-      problem.setup();
-      problem.run();
-    }
-    MPI_Barrier(MPI_COMM_WORLD);
-    const auto   columns   = perideal_tests::read_statistics("results/statistics.csv");
-    const bool   fe        = columns.count("fe_torque") > 0;
-    const double T         = columns.at(fe ? "fe_torque" : "pd_torque").back();
-    const double E         = columns.at(fe ? "fe_torsion_energy" : "pd_torsion_energy").back();
+    const auto   integrals = coupling_tests::run_torsion("torsion_edge_crack/" + name, overrides);
+    const bool   fe        = integrals.fe;
+    const double T         = integrals.torque;
+    const double E         = integrals.energy;
     const double error     = T / slit_section_torque - 1.;
     const double ratio     = T / saint_venant::torque(0.5, 1.);
     const double clapeyron = T / (2. * E) - 1.;
