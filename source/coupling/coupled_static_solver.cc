@@ -15,6 +15,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include <EpetraExt_Transpose_RowMatrix.h>
+
 namespace perideal
 {
   using namespace dealii;
@@ -41,6 +43,24 @@ namespace perideal
             columns,
             values);
         }
+    }
+
+    /// @p result = @p A^T diag(@p w) @p B with A transposed explicitly and a product without
+    /// transposition: deal.II's transposed product (EpetraExt's Multiply with A transposed)
+    /// corrupts the heap on two ranks for the coupled torsion of
+    /// tests/coupling/torsion_edge_crack_02.
+    void
+    transposed_product(const SparseMatrix &A,
+                       const SparseMatrix &B,
+                       const SolverVector &w,
+                       SparseMatrix       &result)
+    {
+      EpetraExt::RowMatrix_Transpose transposer;
+      SparseMatrix                   transpose;
+      // The transform's result is an Epetra_CrsMatrix it owns; reinit() copies it.
+      transpose.reinit(dynamic_cast<const Epetra_CrsMatrix &>(
+        transposer(const_cast<Epetra_CrsMatrix &>(A.trilinos_matrix()))));
+      transpose.mmult(result, B, w);
     }
   } // namespace
 
@@ -208,6 +228,7 @@ namespace perideal
     // Without FE unknowns it is formed as T_f^T (G^T diag(w) G) T_f: the first form then
     // overflows a heap buffer inside deal.II's Trilinos product (ML) on two ranks, the second
     // overflows it with FE unknowns (3D linear-strain test); both found with AddressSanitizer.
+    // With FE unknowns (G T_f)^T is formed explicitly (transposed_product()).
     LinearizedModel linearized;
     material.linearize(*particles, linearized);
     StaticSolver<dim>::extension_matrix(*particles, linearized, G, weights);
@@ -216,7 +237,7 @@ namespace perideal
       {
         SparseMatrix GT;
         G.mmult(GT, T_free);
-        GT.Tmmult(pd_part, GT, weights);
+        transposed_product(GT, GT, weights, pd_part);
       }
     else
       {

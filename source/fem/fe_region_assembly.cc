@@ -1,8 +1,9 @@
 // ---------------------------------------------------------------------
 // PeriDeal: the assembly of the finite-element region: the weighted stiffness (the physics'
 // bilinear form times 1 - beta, thickness and JxW), the lumped mass (Gauss-Lobatto nodal
-// quadrature), the load of the body force and the load conditions, and what is computed from
-// the stiffness: the stable explicit step, its row sums and the strain energy.
+// quadrature), the load of the body force, the physics' own load (the twist of torsion) and the
+// load conditions, and what is computed from the stiffness: the stable explicit step, its row sums
+// and the strain energy.
 // ---------------------------------------------------------------------
 #include <deal.II/base/quadrature_lib.h>
 #include <deal.II/fe/fe_values.h>
@@ -84,43 +85,31 @@ namespace perideal
     cell_rhs              = 0.;
     std::vector<double>    weights;
     dealii::Vector<double> value(layout.n_components());
+    if (body_force || physics_model->has_cell_load())
+      quadrature_weights(fe_values, weights);
     if (body_force)
       {
         body_force->set_time(time);
-        quadrature_weights(fe_values, weights);
         value.reinit(body_force->n_components);
-      }
-    for (const unsigned int q : fe_values.quadrature_point_indices())
-      {
-        if (!body_force)
-          break;
-        const double w = weights[q];
-        if (w == 0.)
-          continue;
-        body_force->vector_value(fe_values.quadrature_point(q), value);
-        for (unsigned int i = 0; i < n; ++i)
+        for (const unsigned int q : fe_values.quadrature_point_indices())
           {
-            const unsigned int c = fe.system_to_component_index(i).first;
-            cell_rhs(i) += value(c) * fe_values.shape_value(i, q) * w;
+            const double w = weights[q];
+            if (w == 0.)
+              continue;
+            body_force->vector_value(fe_values.quadrature_point(q), value);
+            for (unsigned int i = 0; i < n; ++i)
+              {
+                const unsigned int c = fe.system_to_component_index(i).first;
+                cell_rhs(i) += value(c) * fe_values.shape_value(i, q) * w;
+              }
           }
       }
+    if (physics_model->has_cell_load())
+      physics_model->add_cell_load(fe_values, cell->material_id(), weights, cell_rhs);
     for (const unsigned int f : cell->face_indices())
       if (cell->face(f)->at_boundary())
         {
           const auto id = cell->face(f)->boundary_id();
-          const bool free =
-            std::none_of(condition_list.begin(), condition_list.end(), [id](const Condition &c) {
-              return c.boundary_ids.count(id) > 0;
-            });
-          if (free && physics_model->loads_free_boundaries())
-            {
-              fe_face_values.reinit(cell, f);
-              quadrature_weights(fe_face_values, weights);
-              physics_model->add_free_boundary_load(fe_face_values,
-                                                    cell->material_id(),
-                                                    weights,
-                                                    cell_rhs);
-            }
           for (const auto &c : condition_list)
             if (c.type == Quantity::load && c.boundary_ids.count(id) > 0)
               {
@@ -149,7 +138,7 @@ namespace perideal
     const bool has_load = std::any_of(condition_list.begin(),
                                       condition_list.end(),
                                       [](const Condition &c) { return c.type == Quantity::load; });
-    if (!body_force && !has_load && !physics_model->loads_free_boundaries())
+    if (!body_force && !has_load && !physics_model->has_cell_load())
       {
         f = 0.;
         return;
@@ -157,11 +146,11 @@ namespace perideal
     const auto                          &fe = fe_collection[0];
     FEValues<dim>                        fe_values(fe,
                             QGauss<dim>(degree + 1),
-                            update_values | update_quadrature_points | update_JxW_values);
+                            update_values | update_gradients | update_quadrature_points |
+                              update_JxW_values);
     FEFaceValues<dim>                    fe_face_values(fe,
                                      QGauss<dim - 1>(degree + 1),
-                                     update_values | update_quadrature_points |
-                                       update_normal_vectors | update_JxW_values);
+                                     update_values | update_quadrature_points | update_JxW_values);
     const unsigned int                   n = fe.n_dofs_per_cell();
     dealii::Vector<double>               cell_rhs(n);
     std::vector<types::global_dof_index> dofs(n);

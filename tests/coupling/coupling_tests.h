@@ -91,9 +91,10 @@ namespace coupling_tests
   }
 
   /// The torque and the strain energy per unit length of a torsion run (the last row of the
-  /// fe_ or pd_ section integrals).
+  /// section integrals: total_ of a coupled run, else fe_ or pd_).
   struct SectionIntegrals
   {
+    /// Whether the run is FE only (T psi = 2E exactly).
     bool   fe;
     double torque;
     double energy;
@@ -113,11 +114,41 @@ namespace coupling_tests
           "  set Write HDF5 = false\n"
           "  set Progress   = false\n"
           "end\n");
-    const auto columns = perideal_tests::read_statistics("results/statistics.csv");
-    const bool fe      = columns.count("fe_torque") > 0;
-    return {fe,
-            columns.at(fe ? "fe_torque" : "pd_torque").back(),
-            columns.at(fe ? "fe_torsion_energy" : "pd_torsion_energy").back()};
+    const auto        columns = perideal_tests::read_statistics("results/statistics.csv");
+    const std::string region  = columns.count("total_torque") > 0 ? "total" :
+                                columns.count("fe_torque") > 0    ? "fe" :
+                                                                    "pd";
+    return {region == "fe",
+            columns.at(region + "_torque").back(),
+            columns.at(region + "_torsion_energy").back()};
+  }
+
+  /// The overrides of <Material> for the torsion benchmarks' files with the antiplane model
+  /// @p model (mu = 1, twist 1 about the origin, as in the files).
+  inline std::string
+  torsion_material(const std::string &model)
+  {
+    return "subsection Material\n  set Model = " + model + "\n  subsection " + model +
+           "\n    set Shear modulus = 1\n    set Twist per unit length = 1\n"
+           "    set Twist axis = 0, 0\n  end\nend\n";
+  }
+
+  /// The overrides of the torsion benchmarks' all-PD files for the lattice spacing @p dx and
+  /// the antiplane model @p model: the region 'hold' shrunk to the particle (dx/2, dx/2).
+  inline std::string
+  torsion_pd_overrides(const double dx, const std::string &model)
+  {
+    const auto number = [](const double x) {
+      std::ostringstream out;
+      out << x;
+      return out.str();
+    };
+    return "subsection Discretization\n  set Lattice spacing = " + number(dx) +
+           "\nend\n"
+           "subsection Regions\n  subsection hold\n    set Lower corner = " +
+           number(0.1 * dx) + ", " + number(0.1 * dx) +
+           "\n    set Upper corner = " + number(0.9 * dx) + ", " + number(0.9 * dx) +
+           "\n  end\nend\n" + torsion_material(model);
   }
 
   /// "ok" if @p condition holds, "FAILED" otherwise.

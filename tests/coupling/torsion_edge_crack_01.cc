@@ -62,18 +62,6 @@ namespace
     deallog << std::endl;
     MPI_Barrier(MPI_COMM_WORLD);
   }
-
-  std::string
-  pd_overrides(const std::string &model)
-  {
-    return "subsection Discretization\n  set Lattice spacing = 0.025\nend\n"
-           "subsection Regions\n  subsection hold\n    set Lower corner = 0.0025, 0.0025\n"
-           "    set Upper corner = 0.0225, 0.0225\n  end\nend\n"
-           "subsection Material\n  set Model = " +
-           model + "\n  subsection " + model +
-           "\n    set Shear modulus = 1\n    set Twist per unit length = 1\n"
-           "    set Twist axis = 0, 0\n  end\nend\n";
-  }
 } // namespace
 
 int
@@ -89,10 +77,10 @@ main(int argc, char **argv)
       0.01);
   run("PD bond-based, dx = 0.025",
       "torsion_crack_pd.prm",
-      pd_overrides("antiplane bond based"),
+      coupling_tests::torsion_pd_overrides(0.025, "antiplane bond based"),
       0.04);
   run("PD state-based, dx = 0.025",
       "torsion_crack_pd.prm",
-      pd_overrides("antiplane state based"),
+      coupling_tests::torsion_pd_overrides(0.025, "antiplane state based"),
       0.04);
 }

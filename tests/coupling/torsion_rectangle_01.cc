@@ -70,16 +70,14 @@ main(int argc, char **argv)
       "subsection Finite elements\n  set Global refinements = 3\nend\n",
       0.01,
       1e-8);
-  const std::string coarse =
-    "subsection Discretization\n  set Lattice spacing = 0.05\nend\n"
-    "subsection Regions\n  subsection hold\n    set Lower corner = 0.005, 0.005\n"
-    "    set Upper corner = 0.045, 0.045\n  end\nend\n";
-  run("torsion_pd.prm", "torsion_pd.prm", coarse, 0.01, 0.03);
+  run("torsion_pd.prm",
+      "torsion_pd.prm",
+      coupling_tests::torsion_pd_overrides(0.05, "antiplane bond based"),
+      0.01,
+      0.03);
   run("torsion_pd.prm, antiplane state based",
       "torsion_pd.prm",
-      coarse + "subsection Material\n  set Model = antiplane state based\n"
-               "  subsection antiplane state based\n    set Shear modulus = 1\n"
-               "    set Twist per unit length = 1\n    set Twist axis = 0, 0\n  end\nend\n",
+      coupling_tests::torsion_pd_overrides(0.05, "antiplane state based"),
       0.03,
       0.02);
 }

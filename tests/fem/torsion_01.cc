@@ -2,7 +2,8 @@
 // Saint-Venant torsion of the 1 x 2 rectangular bar (seed 000, example 8.4) with the FE physics
 // 'scalar laplace' and a twist per unit length (k = mu = 1 Pa, psi = 1 rad/m, axis at the
 // centroid), through the problem's static path: the section |x| <= 1/2, |y| <= 1, only the
-// traction-free load of the twist on the whole boundary, w held at the vertex at the axis.
+// load of the twist (the volume load of the energy, every face traction free), w held at the
+// vertex at the axis.
 // Checked against the Saint-Venant series (Timoshenko & Goodier 1970, sect. 109), computed here
 // with 200 terms (tests/saint_venant.h): the torque T = k1 mu psi (2a)(2b)^3 with 2b = 1 the short
 // side (k1 = 0.228682, T = 0.457363 mu psi), the largest stress tau_yz(1/2, 0) = 0.930060 mu psi,

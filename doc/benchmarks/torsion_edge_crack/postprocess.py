@@ -3,15 +3,19 @@
 
 usage: postprocess.py RESULTS... [--plot torque.png] [--stresses BOND_RUN STATE_RUN stresses.png]
 
-RESULTS are the directories of run.sh, named fe_a<a>_l<level> (FE, Q2, h = 1/(16 2^level)) and
-pd_<bond|state>_a<a>_dx<dx> (PD). For each crack length a it reads the torque T/(mu psi) from the
-last row of statistics.csv (fe_torque, pd_torque), extrapolates the FE torques to h = 0 (the
+RESULTS are the directories of run.sh, named fe_a<a>_l<level> (FE, Q2, h = 1/(16 2^level)),
+pd_<bond|state>_a<a>_dx<dx> (PD) and coupled_<bond|state>_a<a>_dx<dx> (PD around the crack, FE
+elsewhere). For each crack length a it reads the torque T/(mu psi) from the last row of
+statistics.csv (fe_torque, pd_torque; total_torque = fe_torque + pd_torque of a coupled run),
+extrapolates the FE torques to h = 0 (the
 energy of the cracked section converges like h: the r^(1/2) tip field; like h^4 without a crack,
 where the finest value is taken) and prints every torque with its difference from the
 extrapolated FE value, and the median and largest |tau_yz| of the particles next to the crack
 faces (y = +-dx/2, two horizons or more behind the tip), which the traction-free faces make
 small. PD stresses (--stresses): |tau| = sqrt(tau_xz^2 + tau_yz^2) near the crack of two PD runs
-(bond-based, state-based; the seed's Figs. 20/21).
+(bond-based, state-based; the seed's Figs. 20/21). Coupled runs: their torque against the all-PD
+run of the same a, model and dx and against the FE value, with the wall times of both that run.sh
+wrote (RESULT.time: 2 ranks; RESULT.time1: one core, where measured).
 """
 import argparse
 import csv
@@ -38,6 +42,14 @@ def particles(directory):
         return np.asarray(h5["nodes"][:, :2], float), np.asarray(h5["shear_stress"][:, :2], float)
 
 
+def wall_time(run, suffix):
+    try:
+        with open(f"{run}.{suffix}") as f:
+            return float(f.read())
+    except FileNotFoundError:
+        return float("nan")
+
+
 def crack_length(run):
     return float(re.search(r"_a([0-9.]+)", run).group(1))
 
@@ -62,12 +74,18 @@ def main():
     parser.add_argument("--stresses", nargs=3)
     args = parser.parse_args()
 
-    fe, pd = {}, {}
+    fe, pd, coupled = {}, {}, {}
     for run in args.runs:
         a = crack_length(run)
         if "/fe_" in run or run.startswith("fe_"):
             level = int(re.search(r"_l(\d+)", run).group(1))
             fe.setdefault(a, []).append((1.0 / (16 * 2**level), float(last_row(run)["fe_torque"])))
+        elif "coupled_" in run:
+            model = re.search(r"coupled_(bond|state)", run).group(1)
+            dx = float(re.search(r"dx([0-9.]+)", run).group(1))
+            row = last_row(run)
+            coupled[(a, model, dx)] = (float(row["total_torque"]), float(row["fe_torque"]),
+                                       float(row["pd_torque"]), run)
         else:
             model = re.search(r"pd_(bond|state)", run).group(1)
             dx = float(re.search(r"dx([0-9.]+)", run).group(1))
@@ -98,6 +116,27 @@ def main():
                 faces = f"{100 * median:.2f} %, {100 * largest:.2f} %"
             print(f"  {a:<6g} {model:<6s} {dx:<7g} {t:.6f}    {difference:+.2f} %     {faces}")
 
+    if coupled:
+        print("\nCoupled (PD around the crack, FE Q2 elsewhere) against all-PD at the same dx "
+              "and against FE; wall times in s, 2 ranks (one core)")
+        print("  a      model  dx      coupled T (FE + PD)           all-PD T    difference  "
+              "vs FE     wall all-PD     wall coupled")
+        all_pd = {(a, m, d): (t, r) for a in pd for m, d, t, r in pd[a]}
+        for key in sorted(coupled):
+            a, model, dx = key
+            t, t_fe, t_pd, run = coupled[key]
+            t_all, run_all = all_pd.get(key, (float("nan"), None))
+            difference = 100 * (t / t_all - 1)
+            against_fe = 100 * (t / reference[a] - 1) if a in reference else float("nan")
+            times = []
+            for r in (run_all, run):
+                one = wall_time(r, "time1") if r else float("nan")
+                text = f"{wall_time(r, 'time'):.1f}" if r else "-"
+                times.append(text + (f" ({one:.1f})" if one == one else ""))
+            print(f"  {a:<6g} {model:<6s} {dx:<7g} {t:.6f} ({t_fe:.6f} + {t_pd:.6f})  "
+                  f"{t_all:.6f}    {difference:+.2f} %     {against_fe:+.2f} %   "
+                  f"{times[0]:<15s} {times[1]}")
+
     if args.plot:
         import matplotlib
         matplotlib.use("Agg")
@@ -111,6 +150,12 @@ def main():
                 if points:
                     x, y = np.array(points).T
                     ax.plot(x, y, marker + style, label=f"PD {model}-based, dx = {dx:g}")
+                points = [(a, coupled[(a, m, d)][0]) for a, m, d in sorted(coupled)
+                          if m == model and d == dx]
+                if points:
+                    x, y = np.array(points).T
+                    ax.plot(x, y, marker, mfc="none", ms=9,
+                            label=f"coupled {model}-based, dx = {dx:g}")
         ax.set_xlabel("crack length a/b (b = 1, the short side)")
         ax.set_ylabel("torque T / (mu psi)")
         ax.set_title("1 x 2 bar with an edge crack under torsion")

@@ -74,23 +74,24 @@ namespace perideal
                        dealii::FullMatrix<double>      &cell_matrix) const = 0;
 
     /**
-     * @brief Whether add_free_boundary_load() adds anything (false by default).
+     * @brief Whether add_cell_load() adds anything (false by default).
      */
     virtual bool
-    loads_free_boundaries() const;
+    has_cell_load() const;
 
     /**
-     * @brief Add sum_q @p weights[q] g(x_q) phi_i(x_q) to @p cell_rhs: the load of a boundary
-     * face that carries no boundary condition (a free face: torsion's traction-free faces and
-     * crack faces, whose load comes from the twist). @p fe_face_values has values, quadrature
-     * points and normal vectors; the weights hold the FE weight, the thickness and JxW. None by
+     * @brief Add the physics' own load sum_q @p weights[q] l(phi_i)(x_q) to @p cell_rhs: a
+     * volume load that is part of its energy, not of the problem's body force (the twist of
+     * torsion: l(phi_i) = -k grad phi_i . gamma_t from the energy k/2 |grad w + gamma_t|^2).
+     * @p fe_values has values, gradients and quadrature points; the weights hold the FE weight
+     * 1 - beta, the thickness and JxW, so the load is that of the blended energy. None by
      * default.
      */
     virtual void
-    add_free_boundary_load(const dealii::FEFaceValues<dim> &fe_face_values,
-                           const dealii::types::material_id material_id,
-                           const std::vector<double>       &weights,
-                           dealii::Vector<double>          &cell_rhs) const;
+    add_cell_load(const dealii::FEValues<dim>     &fe_values,
+                  const dealii::types::material_id material_id,
+                  const std::vector<double>       &weights,
+                  dealii::Vector<double>          &cell_rhs) const;
 
     /**
      * @brief A point of the section where the field is held at 0 when no condition prescribes
@@ -136,17 +137,17 @@ namespace perideal
 
   template <int dim>
   bool
-  FEPhysics<dim>::loads_free_boundaries() const
+  FEPhysics<dim>::has_cell_load() const
   {
     return false;
   }
 
   template <int dim>
   void
-  FEPhysics<dim>::add_free_boundary_load(const dealii::FEFaceValues<dim> &,
-                                         const dealii::types::material_id,
-                                         const std::vector<double> &,
-                                         dealii::Vector<double> &) const
+  FEPhysics<dim>::add_cell_load(const dealii::FEValues<dim> &,
+                                const dealii::types::material_id,
+                                const std::vector<double> &,
+                                dealii::Vector<double> &) const
   {}
 
   template <int dim>

@@ -44,11 +44,12 @@ namespace perideal
    * layout). Their <Type> depends on the kind of the components: on translations
    * 'displacement' [m], 'velocity' [m/s, explicit dynamics only] or 'traction' [Pa]; on a
    * scalar field 'value', 'rate' (explicit dynamics only) or 'flux' (the boundary flux of the
-   * field's equation, e.g. k dw/dn). A load condition ('traction', 'flux') acts on every
-   * component of the field, and with the body force b(x, t) (set_body_force()) it enters the
-   * load as int g . v ds and int b . v dx. In 2D forces are per unit thickness times the
-   * 'Thickness' (so that they are in N, like the particles' forces). Dofs inside the body can
-   * be prescribed too (set_interior_values()).
+   * field's equation, e.g. k dw/dn; under torsion the shear traction k (grad w + gamma_t) . n,
+   * the twist included, since the twist is a volume load of the energy). A load condition
+   * ('traction', 'flux') acts on every component of the field, and with the body force b(x, t)
+   * (set_body_force()) it enters the load as int g . v ds and int b . v dx. In 2D forces are per
+   * unit thickness times the 'Thickness' (so that they are in N, like the particles' forces). Dofs
+   * inside the body can be prescribed too (set_interior_values()).
    *
    * The stiffness K = sum_cells int (1 - beta) a(v, u) dx (a from the physics) and the lumped
    * mass (Gauss-Lobatto nodal quadrature, so positive for every degree) are assembled
@@ -148,7 +149,8 @@ namespace perideal
     interior_reactions(const dealii::LinearAlgebra::distributed::Vector<double> &residual) const;
 
     /**
-     * @brief The external load f(t): load conditions and body force.
+     * @brief The external load f(t): load conditions, body force and the physics' own load
+     * (FEPhysics::add_cell_load(): the twist of torsion), each weighted by 1 - beta.
      */
     void
     assemble_load(const double time, dealii::LinearAlgebra::distributed::Vector<double> &f) const;
@@ -330,7 +332,8 @@ namespace perideal
     void
     quadrature_weights(const dealii::FEValuesBase<dim> &fe_values,
                        std::vector<double>             &weights) const;
-    /// The load of the body force and the load conditions on @p cell at @p time.
+    /// The load of the body force, the physics' own load (FEPhysics::add_cell_load()) and the
+    /// load conditions on @p cell at @p time.
     void
     assemble_cell_load(const typename dealii::DoFHandler<dim>::active_cell_iterator &cell,
                        const double                                                  time,

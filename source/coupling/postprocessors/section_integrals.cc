@@ -30,16 +30,34 @@ namespace perideal
         log << (k == 0 ? " " : ", ") << names[k] << " = " << values[k];
       log << "\n";
     };
+    std::vector<std::string> fe_names, pd_names;
+    std::vector<double>      fe_values, pd_values;
     if (state.fe.n_dofs() > 0)
-      report("fe", state.fe.physics().integral_names(), state.fe.section_integrals(state.U));
+      {
+        fe_names  = state.fe.physics().integral_names();
+        fe_values = state.fe.section_integrals(state.U);
+        report("fe", fe_names, fe_values);
+      }
     if (state.has_particles())
       {
         const auto &model = state.pd.material();
         state.u.update_ghost_values();
-        report("pd",
-               model.integral_names(),
-               model.section_integrals(state.pd.particles(), state.u, data.pd_energy));
+        pd_names  = model.integral_names();
+        pd_values = model.section_integrals(state.pd.particles(), state.u, data.pd_energy);
+        report("pd", pd_names, pd_values);
       }
+    // A coupled body: the FE integrands carry 1 - beta, the particles beta, so an integral both
+    // regions name is the body's as their sum.
+    std::vector<std::string> names;
+    std::vector<double>      totals;
+    for (unsigned int k = 0; k < fe_names.size(); ++k)
+      for (unsigned int l = 0; l < pd_names.size(); ++l)
+        if (fe_names[k] == pd_names[l])
+          {
+            names.push_back(fe_names[k]);
+            totals.push_back(fe_values[k] + pd_values[l]);
+          }
+    report("total", names, totals);
     log.flags(flags);
   }
 

@@ -182,28 +182,31 @@ namespace perideal
 
   template <int dim>
   bool
-  ScalarLaplace<dim>::loads_free_boundaries() const
+  ScalarLaplace<dim>::has_cell_load() const
   {
     return twist.active();
   }
 
   template <int dim>
   void
-  ScalarLaplace<dim>::add_free_boundary_load(const FEFaceValues<dim>   &fe_face_values,
-                                             const types::material_id   material_id,
-                                             const std::vector<double> &weights,
-                                             dealii::Vector<double>    &cell_rhs) const
+  ScalarLaplace<dim>::add_cell_load(const FEValues<dim>       &fe_values,
+                                    const types::material_id   material_id,
+                                    const std::vector<double> &weights,
+                                    dealii::Vector<double>    &cell_rhs) const
   {
+    if (!twist.active())
+      return;
+    // The energy k/2 |grad w + gamma_t|^2 has the load -k grad phi_i . gamma_t: with weight 1
+    // and one k it integrates by parts to the traction-free data -k gamma_t . n on the
+    // boundary (div gamma_t = 0); with the weight 1 - beta of a blended problem it is the load
+    // of the weighted energy, which the boundary form is not.
     const double k = coefficient(material_id);
-    for (const unsigned int q : fe_face_values.quadrature_point_indices())
+    for (const unsigned int q : fe_values.quadrature_point_indices())
       {
-        // tau . n = 0: k dw/dn = -k twist_strain . n.
-        const double g = -k *
-                         (twist.twist_strain(fe_face_values.quadrature_point(q)) *
-                          fe_face_values.normal_vector(q)) *
-                         weights[q];
-        for (unsigned int i = 0; i < fe_face_values.dofs_per_cell; ++i)
-          cell_rhs(i) += g * fe_face_values.shape_value(i, q);
+        const Tensor<1, dim> load =
+          -k * weights[q] * twist.twist_strain(fe_values.quadrature_point(q));
+        for (unsigned int i = 0; i < fe_values.dofs_per_cell; ++i)
+          cell_rhs(i) += load * fe_values.shape_grad(i, q);
       }
   }
 

@@ -64,14 +64,15 @@ namespace perideal
 
     /// @brief Whether a twist is given.
     bool
-    loads_free_boundaries() const override;
+    has_cell_load() const override;
 
-    /// @brief The traction-free load of torsion (nothing without a twist).
+    /// @brief The load of the twist, -sum_q w_q k grad phi_i . gamma_t(x_q) (nothing without a
+    /// twist).
     void
-    add_free_boundary_load(const dealii::FEFaceValues<dim> &fe_face_values,
-                           const dealii::types::material_id material_id,
-                           const std::vector<double>       &weights,
-                           dealii::Vector<double>          &cell_rhs) const override;
+    add_cell_load(const dealii::FEValues<dim>     &fe_values,
+                  const dealii::types::material_id material_id,
+                  const std::vector<double>       &weights,
+                  dealii::Vector<double>          &cell_rhs) const override;
 
     /// @brief The twist axis and its entry, with a twist.
     std::optional<std::pair<dealii::Point<dim>, std::string>>
