@@ -124,6 +124,14 @@ namespace perideal
   }
 
   std::string
+  FieldLayout::free_motions() const
+  {
+    if (n_components(ComponentKind::scalar) == n_components())
+      return std::string(n_components() > 1 ? "constants " : "a constant ") + names();
+    return "rigid-body motions (2D: 3, 3D: 6)";
+  }
+
+  std::string
   quantity_name(const ComponentKind kind, const Quantity quantity)
   {
     switch (kind)

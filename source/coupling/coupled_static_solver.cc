@@ -376,9 +376,10 @@ namespace perideal
         return data;
       },
       "coupled static solve",
-      " The boundary conditions (" + conditions +
-        ") may leave rigid-body modes free (2D: 3, 3D: 6 must be held by 'displacement' "
-        "conditions), or broken bonds may have split off free pieces of the PD region.");
+      " The boundary conditions (" + conditions + ") may leave " +
+        material.field_layout().free_motions() +
+        " free (to be held by displacement conditions, 'value' for a scalar field), or broken "
+        "bonds may have split off free pieces of the PD region.");
 
     // Back to the FE dofs and the particles (slaved ones through P).
     ParticleVector solution;

@@ -150,9 +150,10 @@ namespace perideal
     AssertThrow(n_prescribed > 0.,
                 ExcMessage("The static system is singular: no displacement component is "
                            "prescribed (boundary conditions: " +
-                           (conditions.empty() ? std::string("none") : conditions) +
-                           "), so rigid-body motions are free. Add a 'displacement' boundary "
-                           "condition that holds at least the rigid-body modes (2D: 3, 3D: 6)."));
+                           (conditions.empty() ? std::string("none") : conditions) + "), so " +
+                           material.field_layout().free_motions() +
+                           " cost no energy. Add a displacement ('value' for a scalar field) "
+                           "boundary condition that holds them."));
 
     LinearizedModel linearized;
     material.linearize(particles, linearized);
@@ -219,9 +220,10 @@ namespace perideal
         return data;
       },
       "static solve",
-      " The boundary conditions (" + conditions +
-        ") may leave rigid-body modes free (2D: 3, 3D: 6 must be held by 'displacement' "
-        "conditions), or broken bonds may have split the body into free pieces.");
+      " The boundary conditions (" + conditions + ") may leave " +
+        material.field_layout().free_motions() +
+        " free (to be held by displacement conditions, 'value' for a scalar field), or broken "
+        "bonds may have split the body into free pieces.");
 
     for (std::size_t k = 0; k < std::size_t(n_owned) * nc; ++k)
       u.local_element(k) = solution[dofs.nth_index_in_set(k)];

@@ -136,6 +136,13 @@ namespace perideal
     std::string
     description() const;
 
+    /**
+     * @brief The motions without energy that conditions must hold in a static solve, for
+     * messages: "rigid-body motions (2D: 3, 3D: 6)", or "a constant w" for scalar fields.
+     */
+    std::string
+    free_motions() const;
+
     bool
     operator==(const FieldLayout &other) const
     {
