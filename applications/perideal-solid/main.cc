@@ -21,13 +21,16 @@ namespace
   print_usage()
   {
     std::cout
-      << "Usage: perideal-solid [--validate] FILE.prm\n"
+      << "Usage: perideal-solid [--validate | --restart] FILE.prm\n"
          "       perideal-solid --print-parameters [2|3]\n"
          "  FILE.prm              run the problem described in FILE.prm: particles "
          "(<Discretization/Body>),\n"
          "                        an FE mesh (<Finite elements>), or both joined through an "
          "overlap\n"
          "  --validate FILE.prm   check every entry of FILE.prm and exit (0: valid)\n"
+         "  --restart FILE.prm    continue the run of FILE.prm from its newest checkpoint\n"
+         "                        (<Output/Directory>/checkpoint, written every <Output/"
+         "Checkpoint interval> steps)\n"
          "  --print-parameters    print a complete annotated parameter file that runs as "
          "printed:\n"
          "                        a bar clamped in its FE part and pulled at its PD end (regions "
@@ -38,7 +41,7 @@ namespace
 
   template <int dim>
   void
-  run(const std::string &file, const bool validate_only)
+  run(const std::string &file, const bool validate_only, const bool restart)
   {
     using namespace perideal;
     // First pass: the lists of names that decide which subsections exist.
@@ -65,6 +68,8 @@ namespace
         return;
       }
     problem.setup();
+    if (restart)
+      problem.restart_from_checkpoint();
     problem.run();
   }
 
@@ -152,18 +157,18 @@ main(int argc, char **argv)
             print_parameters<2>();
           return 0;
         }
-      const bool validate = (args[0] == "--validate");
-      AssertThrow(!validate || args.size() == 2,
-                  dealii::ExcMessage("--validate takes exactly one parameter file."));
-      const std::string file = validate ? args[1] : args[0];
+      const bool validate = (args[0] == "--validate"), restart = (args[0] == "--restart");
+      AssertThrow(!(validate || restart) || args.size() == 2,
+                  dealii::ExcMessage(args[0] + " takes exactly one parameter file."));
+      const std::string file = (validate || restart) ? args[1] : args[0];
 
       dealii::ParameterHandler dimension_only;
       dimension_only.declare_entry("Dimension", "2", dealii::Patterns::Integer(2, 3), "");
       perideal::ParameterUtilities::parse_partially(dimension_only, file);
       if (dimension_only.get_integer("Dimension") == 2)
-        run<2>(file, validate);
+        run<2>(file, validate, restart);
       else
-        run<3>(file, validate);
+        run<3>(file, validate, restart);
     }
   catch (const dealii::ExceptionBase &exc)
     {

@@ -9,6 +9,10 @@
 #include <fstream>
 #include <memory>
 
+#include <boost/serialization/string.hpp>
+#include <boost/serialization/utility.hpp>
+#include <boost/serialization/vector.hpp>
+
 namespace perideal
 {
   template <int dim>
@@ -255,6 +259,25 @@ namespace perideal
   }
 
 
+
+  template <int dim>
+  std::string
+  ParticleOutput<dim>::save_records() const
+  {
+    const std::vector<char> packed =
+      dealii::Utilities::pack(std::make_pair(xdmf_entries, pvd_records), false);
+    return std::string(packed.begin(), packed.end());
+  }
+
+  template <int dim>
+  void
+  ParticleOutput<dim>::load_records(const std::string &packed)
+  {
+    std::tie(xdmf_entries, pvd_records) = dealii::Utilities::unpack<
+      std::pair<std::vector<dealii::XDMFEntry>, std::vector<std::pair<double, std::string>>>>(
+      std::vector<char>(packed.begin(), packed.end()),
+      false);
+  }
 
   template class ParticleOutput<2>;
   template class ParticleOutput<3>;

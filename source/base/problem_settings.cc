@@ -129,6 +129,13 @@ namespace perideal
                       "10",
                       Patterns::Integer(1),
                       "Write a row of statistics.csv every this many steps.");
+    prm.declare_entry("Checkpoint interval",
+                      "0",
+                      Patterns::Integer(),
+                      "Write the complete state of the run to <Directory>/checkpoint every this "
+                      "many time steps (explicit) or load steps (quasi-static), in steps, not in "
+                      "simulated time; 0: never. 'perideal-solid --restart FILE.prm' continues "
+                      "the run from it. Accepted: >= 0.");
     prm.declare_entry("Write HDF5", "true", Patterns::Bool(), "Particle fields as HDF5 + XDMF.");
     prm.declare_entry("Write VTU", "false", Patterns::Bool(), "Particle fields as VTU + PVD.");
     prm.declare_entry("Progress", "true", Patterns::Bool(), "Print progress and timing lines.");
@@ -186,6 +193,12 @@ namespace perideal
     base_name           = prm.get("Base name");
     output_interval     = prm.get_integer("Output interval");
     statistics_interval = prm.get_integer("Statistics interval");
+    const long interval = prm.get_integer("Checkpoint interval");
+    AssertThrow(interval >= 0,
+                ExcMessage("The parameter <Output/Checkpoint interval> is " +
+                           std::to_string(interval) +
+                           "; accepted values are 0 (no checkpoints) or a number of steps > 0."));
+    checkpoint_interval = interval;
     write_hdf5          = prm.get_bool("Write HDF5");
     write_vtu           = prm.get_bool("Write VTU");
     show_progress       = prm.get_bool("Progress");

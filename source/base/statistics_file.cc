@@ -85,6 +85,43 @@ namespace perideal
 
 
 
+  void
+  StatisticsFile::resume(const std::string &contents)
+  {
+    AssertThrow(!header_written,
+                dealii::ExcMessage("The statistics file <" + filename +
+                                   "> can only be resumed before its first row."));
+    const std::string header = contents.substr(0, contents.find('\n'));
+    columns                  = dealii::Utilities::split_string_list(header, ',');
+    header_written           = !contents.empty();
+    if (is_root)
+      {
+        file.open(filename, std::ios::out | std::ios::trunc);
+        AssertThrow(file, dealii::ExcFileNotOpen(filename));
+        file << contents;
+        file.flush();
+        AssertThrow(file,
+                    dealii::ExcMessage("Writing to the statistics file <" + filename +
+                                       "> failed."));
+      }
+  }
+
+
+
+  std::string
+  StatisticsFile::contents() const
+  {
+    if (!is_root || !header_written)
+      return {};
+    std::ifstream      in(filename);
+    std::ostringstream text;
+    text << in.rdbuf();
+    AssertThrow(in, dealii::ExcMessage("Reading the statistics file <" + filename + "> failed."));
+    return text.str();
+  }
+
+
+
   const std::string &
   StatisticsFile::get_filename() const
   {

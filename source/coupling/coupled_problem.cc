@@ -128,6 +128,11 @@ namespace perideal
                            "may add rotations to FE translations). Accepted values of "
                            "<Finite elements/Physics> with this material model: " +
                            fe_physics_of<dim>(pd.field_layout()) + "."));
+    model_lines =
+      "material model = " + (pd.has_body() ? prm.get({"Material"}, "Model") : std::string("none")) +
+      "\nFE physics = " +
+      (fe.has_mesh() ? prm.get({"Finite elements"}, "Physics") : std::string("none")) +
+      "\ncoupling method = " + prm.get({"Coupling"}, "Method") + "\n";
     // Every expression is parsed here, so that --validate finds a malformed one.
     const unsigned int n_components = layout.n_components();
     ParameterUtilities::make_function<dim>(settings.initial_displacement,
@@ -364,9 +369,24 @@ namespace perideal
 
   template <int dim>
   void
+  CoupledProblem<dim>::restart_from_checkpoint()
+  {
+    restart = true;
+  }
+
+  template <int dim>
+  void
+  CoupledProblem<dim>::stop_after_step(const unsigned int step)
+  {
+    stop_step = step;
+  }
+
+  template <int dim>
+  void
   CoupledProblem<dim>::run()
   {
-    solver->run(*state, *postprocessors);
+    Checkpoint<dim> checkpoint(settings, model_lines, restart, stop_step);
+    solver->run(*state, *postprocessors, checkpoint);
   }
 
   template class CoupledProblem<2>;

@@ -91,6 +91,17 @@ namespace perideal
   }
 
   template <int dim>
+  typename CoupledState<dim>::StoredParts
+  CoupledState<dim>::stored_parts()
+  {
+    return {{&u, &v, &a, &internal_force, &external_force, &previous_u, &previous_load},
+            &energy_density,
+            {&U, &V, &A, &f_ext, &residual, &fe_load, &fe_support, &previous_fe_load, &previous_U},
+            &local_work,
+            &local_dissipated};
+  }
+
+  template <int dim>
   bool
   CoupledState<dim>::is_coupled() const
   {

@@ -12,6 +12,8 @@
 
 #include <sstream>
 
+#include <boost/serialization/vector.hpp>
+
 namespace perideal
 {
   using namespace dealii;
@@ -121,6 +123,23 @@ namespace perideal
 
   template <int dim>
   std::string
+  FERegion<dim>::save_output_records() const
+  {
+    const std::vector<char> packed = Utilities::pack(xdmf_entries, false);
+    return std::string(packed.begin(), packed.end());
+  }
+
+  template <int dim>
+  void
+  FERegion<dim>::load_output_records(const std::string &packed)
+  {
+    xdmf_entries =
+      Utilities::unpack<std::vector<XDMFEntry>>(std::vector<char>(packed.begin(), packed.end()),
+                                                false);
+  }
+
+  template <int dim>
+  std::string
   FERegion<dim>::summary() const
   {
     if (!has_mesh())
@@ -145,13 +164,15 @@ namespace perideal
   }
 
   // The members defined in this file (the class is instantiated in fe_region.cc).
-#define PERIDEAL_INSTANTIATE(dim)                                               \
-  template void                FERegion<dim>::write_output(const std::string &, \
-                                            const std::string &, \
-                                            const unsigned int,  \
-                                            const double,        \
-                                            const Vector &);     \
-  template std::string         FERegion<dim>::summary() const;                  \
+#define PERIDEAL_INSTANTIATE(dim)                                                       \
+  template void                FERegion<dim>::write_output(const std::string &,         \
+                                            const std::string &,         \
+                                            const unsigned int,          \
+                                            const double,                \
+                                            const Vector &);             \
+  template std::string         FERegion<dim>::summary() const;                          \
+  template std::string         FERegion<dim>::save_output_records() const;              \
+  template void                FERegion<dim>::load_output_records(const std::string &); \
   template std::vector<double> FERegion<dim>::section_integrals(const Vector &) const;
   PERIDEAL_INSTANTIATE(2)
   PERIDEAL_INSTANTIATE(3)

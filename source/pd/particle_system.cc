@@ -138,11 +138,13 @@ namespace perideal
     std::vector<Point<dim>>              owned, ghost_candidates, cell_points;
     std::vector<types::global_dof_index> first_of_cell(background.n_active_cells(), 0);
     std::vector<std::pair<unsigned int, unsigned int>> ghost_range(background.n_active_cells());
+    std::vector<std::uint64_t> particles_in_cell(background.n_active_cells(), 0);
     for (const auto &cell : background.active_cell_iterators())
       if (cell->is_locally_owned())
         {
           points_of_cell(cell, cell_points);
-          first_of_cell[cell->active_cell_index()] = owned.size();
+          first_of_cell[cell->active_cell_index()]     = owned.size();
+          particles_in_cell[cell->active_cell_index()] = cell_points.size();
           owned.insert(owned.end(), cell_points.begin(), cell_points.end());
         }
       else if (cell->is_ghost())
@@ -150,6 +152,33 @@ namespace perideal
           points_of_cell(cell, cell_points);
           ghost_range[cell->active_cell_index()] = {ghost_candidates.size(), cell_points.size()};
           ghost_candidates.insert(ghost_candidates.end(), cell_points.begin(), cell_points.end());
+        }
+
+    // The rank-invariant index: the particles of all cells before a cell (in the order of the
+    // cell index, the same on every rank count), plus the lattice order within the cell.
+    std::vector<std::uint64_t> invariant_first(particles_in_cell.size());
+    const int                  ierr_cells = MPI_Allreduce(particles_in_cell.data(),
+                                         invariant_first.data(),
+                                         particles_in_cell.size(),
+                                         MPI_UINT64_T,
+                                         MPI_SUM,
+                                         communicator);
+    AssertThrowMPI(ierr_cells);
+    std::exclusive_scan(invariant_first.begin(),
+                        invariant_first.end(),
+                        invariant_first.begin(),
+                        std::uint64_t(0));
+    invariant_indices.assign(owned.size() + ghost_candidates.size(), 0);
+    for (const auto &cell : background.active_cell_iterators())
+      if (cell->is_locally_owned() || cell->is_ghost())
+        {
+          const unsigned int c = cell->active_cell_index();
+          const std::size_t  start =
+            cell->is_locally_owned() ? first_of_cell[c] : owned.size() + ghost_range[c].first;
+          const std::size_t count =
+            cell->is_locally_owned() ? particles_in_cell[c] : ghost_range[c].second;
+          for (std::size_t k = 0; k < count; ++k)
+            invariant_indices[start + k] = invariant_first[c] + k;
         }
 
     n_owned_particles      = owned.size();
@@ -317,14 +346,18 @@ namespace perideal
                                       reference_positions.begin() + n_owned_particles);
     std::vector<types::global_dof_index> indices(global_indices.begin(),
                                                  global_indices.begin() + n_owned_particles);
+    std::vector<std::uint64_t>           invariant(invariant_indices.begin(),
+                                         invariant_indices.begin() + n_owned_particles);
     for (const unsigned int old : kept)
       {
         new_index[old] = positions.size();
         positions.push_back(reference_positions[old]);
         indices.push_back(global_indices[old]);
+        invariant.push_back(invariant_indices[old]);
       }
     reference_positions.swap(positions);
     global_indices.swap(indices);
+    invariant_indices.swap(invariant);
     for (auto &j : found.neighbor)
       j = new_index[j];
 
@@ -430,6 +463,13 @@ namespace perideal
   ParticleSystem<dim>::global_index(const unsigned int i) const
   {
     return global_indices[i];
+  }
+
+  template <int dim>
+  std::uint64_t
+  ParticleSystem<dim>::invariant_index(const unsigned int i) const
+  {
+    return invariant_indices[i];
   }
 
   template <int dim>

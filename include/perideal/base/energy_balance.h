@@ -48,6 +48,14 @@ namespace perideal
     void
     check_stable(const double time, const double stable_dt) const;
 
+    /// Read or write the recorded totals (boost serialization; a checkpoint keeps them).
+    template <class Archive>
+    void
+    serialize(Archive &archive, const unsigned int)
+    {
+      archive &step &kinetic &strain &dissipated &total_work &initial_energy &initial_prescribed;
+    }
+
   private:
     unsigned int step               = 0;
     double       kinetic            = 0.;

@@ -103,6 +103,20 @@ namespace perideal
     write(const unsigned int step, const double time);
 
     /**
+     * @brief The XDMF and PVD records of the steps written so far, packed: a checkpoint keeps
+     * them, so that a restarted run continues the records (load_records()).
+     */
+    std::string
+    save_records() const;
+
+    /**
+     * @brief Continue the records of save_records(): the steps a restarted run does not write
+     * again; the next write() rewrites the `.xdmf` and `.pvd` files from them.
+     */
+    void
+    load_records(const std::string &packed);
+
+    /**
      * @brief The name of the `.xdmf` record (whether or not it was written).
      */
     std::string

@@ -84,9 +84,9 @@ namespace perideal
     std::string body_force = "0";
 
     // <Output>
-    std::string                     output_directory = "output", base_name = "particles";
-    unsigned int                    output_interval = 0, statistics_interval = 10;
-    bool                            write_hdf5 = true, write_vtu = false, show_progress = true;
+    std::string  output_directory = "output", base_name = "particles";
+    unsigned int output_interval = 0, statistics_interval = 10, checkpoint_interval = 0;
+    bool         write_hdf5 = true, write_vtu = false, show_progress = true;
     std::vector<dealii::Point<dim>> probe_points;
   };
 } // namespace perideal

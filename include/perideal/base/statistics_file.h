@@ -51,6 +51,23 @@ namespace perideal
     end_row();
 
     /**
+     * @brief Continue a table of which @p contents (the header and the rows, as written) are
+     * the part to keep: rank 0 rewrites the file with them (rows written after them are
+     * dropped), and the next end_row() appends to it with the columns of its header. Used by
+     * a restart, with the contents a checkpoint kept (contents()). Collective; every rank
+     * passes the same @p contents.
+     */
+    void
+    resume(const std::string &contents);
+
+    /**
+     * @brief What the file holds so far (rank 0; empty on the other ranks and before the
+     * first end_row()).
+     */
+    std::string
+    contents() const;
+
+    /**
      * @brief The name of the file written.
      */
     const std::string &

@@ -8,6 +8,7 @@
 #include <deal.II/base/parameter_handler.h>
 
 #include <perideal/base/problem_settings.h>
+#include <perideal/coupling/checkpoint.h>
 #include <perideal/coupling/coupled_state.h>
 #include <perideal/coupling/coupling_method.h>
 #include <perideal/coupling/postprocessors/postprocessor.h>
@@ -68,6 +69,20 @@ namespace perideal
     void
     setup();
 
+    /**
+     * @brief Continue from the checkpoint in <Output/Directory> (perideal-solid --restart)
+     * instead of starting from the initial conditions. Before run().
+     */
+    void
+    restart_from_checkpoint();
+
+    /**
+     * @brief End the run after writing the checkpoint of step @p step (a run interrupted
+     * there, for the tests of the restart). Before run().
+     */
+    void
+    stop_after_step(const unsigned int step);
+
     /// Run the solver with the postprocessors (which create the output directory and files).
     void
     run();
@@ -123,6 +138,11 @@ namespace perideal
     std::unique_ptr<dealii::FunctionParser<dim>> beta;
     std::shared_ptr<dealii::FunctionParser<dim>> exact_displacement;
     double                                       exact_tolerance = 0.;
+
+    /// The fingerprint's lines of the models (Checkpoint).
+    std::string  model_lines;
+    bool         restart   = false;
+    unsigned int stop_step = Checkpoint<dim>::no_step;
 
     std::unique_ptr<CoupledState<dim>>   state;
     std::unique_ptr<Solver<dim>>         solver;

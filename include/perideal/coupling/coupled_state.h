@@ -137,6 +137,27 @@ namespace perideal
                  const double       local_largest,
                  const double       local_scale) const;
 
+    /// Pointers to the parts of the state that change during a run (stored_parts()).
+    struct StoredParts
+    {
+      /// Every particle vector, and the particles' strain-energy density.
+      std::vector<ParticleVector *> particle_vectors;
+      std::vector<double>          *energy_density;
+      /// Every FE vector.
+      std::vector<FEVector *> fe_vectors;
+      /// This rank's sums of the work of the loads and of the dissipated energy.
+      double *work, *dissipated;
+    };
+
+    /**
+     * @brief What a checkpoint holds of this state (Checkpoint): everything that changes during
+     * a run, the previous state of the work of the loads and this rank's partial sums included,
+     * so that a restarted run repeats the uninterrupted one bit for bit on the same number of
+     * ranks.
+     */
+    StoredParts
+    stored_parts();
+
     // The problem.
     const MPI_Comm              comm;
     std::ostream               &log;

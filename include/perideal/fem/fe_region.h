@@ -219,6 +219,18 @@ namespace perideal
                  const double                                              time,
                  const dealii::LinearAlgebra::distributed::Vector<double> &u);
 
+    /**
+     * @brief The XDMF records of the steps write_output() wrote so far, packed: a checkpoint
+     * keeps them, so that a restarted run continues the record (load_output_records()).
+     */
+    std::string
+    save_output_records() const;
+
+    /// Continue the records of save_output_records() (the steps a restarted run does not write
+    /// again).
+    void
+    load_output_records(const std::string &packed);
+
     /// A vector with the layout of the solution (owned + ghosted dofs).
     void
     initialize_vector(dealii::LinearAlgebra::distributed::Vector<double> &vector) const;

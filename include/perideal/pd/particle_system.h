@@ -158,6 +158,14 @@ namespace perideal
     /// Global index of local particle @p i.
     dealii::types::global_dof_index
     global_index(const unsigned int i) const;
+    /**
+     * @brief The index of local particle @p i (owned or ghost) in an order that does not depend
+     * on the number of ranks: the background cells in the order of their index, the lattice
+     * order within a cell. The global indices follow p4est's partition of the cells and differ
+     * between rank counts; a checkpoint stores particles by this index.
+     */
+    std::uint64_t
+    invariant_index(const unsigned int i) const;
     /// The bonds.
     const BondList &
     bonds() const;
@@ -221,6 +229,7 @@ namespace perideal
     std::vector<double>                                                particle_volumes;
     std::vector<double>                                                particle_energy_weights;
     std::vector<dealii::types::global_dof_index>                       global_indices;
+    std::vector<std::uint64_t>                                         invariant_indices;
     BondList                                                           bond_list;
     mutable std::map<unsigned int, std::shared_ptr<const Partitioner>> partitioners;
 

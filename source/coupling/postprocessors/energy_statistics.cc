@@ -123,6 +123,22 @@ namespace perideal
     log.flags(flags);
   }
 
+  template <int dim>
+  std::string
+  EnergyStatistics<dim>::save_state(const CoupledState<dim> &) const
+  {
+    const std::vector<char> packed = Utilities::pack(balance, false);
+    return std::string(packed.begin(), packed.end());
+  }
+
+  template <int dim>
+  void
+  EnergyStatistics<dim>::load_state(const CoupledState<dim> &, const std::string &packed)
+  {
+    balance =
+      Utilities::unpack<EnergyBalance>(std::vector<char>(packed.begin(), packed.end()), false);
+  }
+
   template class EnergyStatistics<2>;
   template class EnergyStatistics<3>;
 } // namespace perideal

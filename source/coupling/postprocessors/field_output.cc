@@ -8,6 +8,9 @@
 #include <string>
 #include <vector>
 
+#include <boost/serialization/string.hpp>
+#include <boost/serialization/utility.hpp>
+
 namespace perideal
 {
   using namespace dealii;
@@ -19,12 +22,8 @@ namespace perideal
     if (!data.write_fields)
       return;
     const auto &settings = state.settings;
-    if (!particle_output && state.pd.has_body() && (settings.write_hdf5 || settings.write_vtu))
-      particle_output = std::make_unique<ParticleOutput<dim>>(state.comm,
-                                                              settings.output_directory,
-                                                              settings.base_name,
-                                                              settings.write_hdf5,
-                                                              settings.write_vtu);
+    if (!particle_output)
+      create_particle_output(state);
     if (particle_output)
       {
         const auto        &ps      = state.pd.particles();
@@ -84,6 +83,45 @@ namespace perideal
                             data.output_index,
                             data.time,
                             state.U);
+  }
+
+  template <int dim>
+  void
+  FieldOutput<dim>::create_particle_output(const CoupledState<dim> &state)
+  {
+    const auto &settings = state.settings;
+    if (state.pd.has_body() && (settings.write_hdf5 || settings.write_vtu))
+      particle_output = std::make_unique<ParticleOutput<dim>>(state.comm,
+                                                              settings.output_directory,
+                                                              settings.base_name,
+                                                              settings.write_hdf5,
+                                                              settings.write_vtu);
+  }
+
+  template <int dim>
+  std::string
+  FieldOutput<dim>::save_state(const CoupledState<dim> &state) const
+  {
+    const std::vector<char> packed =
+      Utilities::pack(std::make_pair(particle_output ? particle_output->save_records() :
+                                                       std::string(),
+                                     state.fe.save_output_records()),
+                      false);
+    return std::string(packed.begin(), packed.end());
+  }
+
+  template <int dim>
+  void
+  FieldOutput<dim>::load_state(const CoupledState<dim> &state, const std::string &packed)
+  {
+    const auto records =
+      Utilities::unpack<std::pair<std::string, std::string>>(std::vector<char>(packed.begin(),
+                                                                               packed.end()),
+                                                             false);
+    create_particle_output(state);
+    if (particle_output)
+      particle_output->load_records(records.first);
+    state.fe.load_output_records(records.second);
   }
 
   template class FieldOutput<2>;

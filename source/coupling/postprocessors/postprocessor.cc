@@ -6,8 +6,13 @@
 #include <filesystem>
 #include <iomanip>
 
+#include <boost/serialization/string.hpp>
+#include <boost/serialization/vector.hpp>
+
 namespace perideal
 {
+  using namespace dealii;
+
   template <int dim>
   Postprocessors<dim>::Postprocessors(
     std::vector<std::unique_ptr<Postprocessor<dim>>> postprocessors)
@@ -27,13 +32,7 @@ namespace perideal
   Postprocessors<dim>::execute(const CoupledState<dim> &state, const StepData &data)
   {
     if (!statistics)
-      {
-        if (state.is_root)
-          std::filesystem::create_directories(state.settings.output_directory);
-        statistics =
-          std::make_unique<StatisticsFile>(state.comm,
-                                           state.settings.output_directory + "/statistics.csv");
-      }
+      create_statistics(state);
     if (data.write_statistics)
       {
         statistics->add_value("step", data.step);
@@ -55,6 +54,45 @@ namespace perideal
       postprocessor->execute(state, data, *statistics);
     if (data.write_statistics)
       statistics->end_row();
+  }
+
+  template <int dim>
+  void
+  Postprocessors<dim>::create_statistics(const CoupledState<dim> &state)
+  {
+    if (state.is_root)
+      std::filesystem::create_directories(state.settings.output_directory);
+    statistics =
+      std::make_unique<StatisticsFile>(state.comm,
+                                       state.settings.output_directory + "/statistics.csv");
+  }
+
+  template <int dim>
+  std::string
+  Postprocessors<dim>::save_state(const CoupledState<dim> &state) const
+  {
+    std::vector<std::string> parts{statistics ? statistics->contents() : std::string()};
+    for (const auto &postprocessor : postprocessors)
+      parts.push_back(postprocessor->save_state(state));
+    const std::vector<char> packed = Utilities::pack(parts, false);
+    return std::string(packed.begin(), packed.end());
+  }
+
+  template <int dim>
+  void
+  Postprocessors<dim>::load_state(const CoupledState<dim> &state, const std::string &packed)
+  {
+    const auto parts =
+      Utilities::unpack<std::vector<std::string>>(std::vector<char>(packed.begin(), packed.end()),
+                                                  false);
+    AssertThrow(parts.size() == postprocessors.size() + 1,
+                ExcMessage("The checkpoint holds the state of " + std::to_string(parts.size() - 1) +
+                           " postprocessors, the run has " + std::to_string(postprocessors.size()) +
+                           "."));
+    create_statistics(state);
+    statistics->resume(parts[0]);
+    for (unsigned int k = 0; k < postprocessors.size(); ++k)
+      postprocessors[k]->load_state(state, parts[k + 1]);
   }
 
   template class Postprocessors<2>;

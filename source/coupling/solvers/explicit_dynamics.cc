@@ -8,6 +8,8 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <iomanip>
+#include <sstream>
 
 namespace perideal
 {
@@ -165,7 +167,9 @@ namespace perideal
 
   template <int dim>
   void
-  ExplicitDynamics<dim>::run(CoupledState<dim> &state, Postprocessors<dim> &postprocessors)
+  ExplicitDynamics<dim>::run(CoupledState<dim>   &state,
+                             Postprocessors<dim> &postprocessors,
+                             Checkpoint<dim>     &checkpoint)
   {
     using Motion                = typename CoupledState<dim>::Motion;
     const auto        &settings = state.settings;
@@ -174,33 +178,43 @@ namespace perideal
     const double dt = state.time_step;
     if (state.is_root)
       state.log << "Time step: " << dt << " s, steps: " << n_steps << std::endl;
+    std::ostringstream run_description;
+    run_description << "explicit dynamics, " << n_steps << " steps of " << std::setprecision(17)
+                    << dt << " s";
+    checkpoint.set_run(run_description.str(), n_steps);
 
-    auto &fe         = state.fe;
-    auto &conditions = state.pd.boundary_conditions();
-    auto &U = state.U, &V = state.V, &A = state.A;
-    auto &u = state.u, &v = state.v, &a = state.a;
-    state.apply_initial_conditions();
-    fe.prescribe(0., U, V);
-    conditions.prescribe_displacement(0., u);
-    compute_acceleration(state, 0., true);
-    if (state.is_coupled())
-      report_initial_residual(state);
-    state.start_work();
+    auto       &fe         = state.fe;
+    auto       &conditions = state.pd.boundary_conditions();
+    auto       &U = state.U, &V = state.V, &A = state.A;
+    auto       &u = state.u, &v = state.v, &a = state.a;
+    StepData    data;
+    RunPosition start;
+    if (checkpoint.restarting())
+      start = checkpoint.load(state, postprocessors);
+    else
+      {
+        state.apply_initial_conditions();
+        fe.prescribe(0., U, V);
+        conditions.prescribe_displacement(0., u);
+        compute_acceleration(state, 0., true);
+        if (state.is_coupled())
+          report_initial_residual(state);
+        state.start_work();
 
-    StepData data;
-    data.write_statistics = true;
-    data.write_fields     = true;
-    state.fe_support.equ(-1., state.residual);
-    postprocessors.execute(state, data);
+        data.write_statistics = true;
+        data.write_fields     = true;
+        state.fe_support.equ(-1., state.residual);
+        postprocessors.execute(state, data);
+      }
 
     ProgressReporter progress(state.comm,
                               state.log,
                               n_steps,
                               settings.end_time,
                               settings.show_progress && state.is_root);
-    unsigned int     output_index = 1;
-    const auto       start        = std::chrono::steady_clock::now();
-    for (unsigned int step = 1; step <= n_steps; ++step)
+    unsigned int     output_index = start.next_output;
+    const auto       start_time   = std::chrono::steady_clock::now();
+    for (unsigned int step = start.step + 1; step <= n_steps; ++step)
       {
         const double time = (step - 1) * dt;
 
@@ -241,16 +255,18 @@ namespace perideal
           state.fe_support.equ(-1., state.residual);
         postprocessors.execute(state, data);
         progress.update(step, data.time);
+        if (checkpoint.after_step(state, postprocessors, {step, data.time, output_index}))
+          return;
       }
     const double seconds =
-      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start_time).count();
     const std::uint64_t n_bonds = state.pd.particles().n_global_bonds();
     if (state.is_root && settings.show_progress)
       {
         state.log << "Wall time of the time loop: " << seconds << " s" << std::endl;
         if (n_bonds > 0)
-          state.log << "bond updates per second: " << double(n_bonds) * n_steps / seconds
-                    << std::endl;
+          state.log << "bond updates per second: "
+                    << double(n_bonds) * (n_steps - start.step) / seconds << std::endl;
       }
   }
 

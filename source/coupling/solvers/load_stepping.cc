@@ -5,6 +5,7 @@
 #include <perideal/pd/damage_model.h>
 
 #include <algorithm>
+#include <string>
 #include <vector>
 
 namespace perideal
@@ -132,7 +133,9 @@ namespace perideal
 
   template <int dim>
   void
-  LoadStepping<dim>::run(CoupledState<dim> &state, Postprocessors<dim> &postprocessors)
+  LoadStepping<dim>::run(CoupledState<dim>   &state,
+                         Postprocessors<dim> &postprocessors,
+                         Checkpoint<dim>     &checkpoint)
   {
     using FEVector                = typename CoupledState<dim>::FEVector;
     const auto        &settings   = state.settings;
@@ -156,13 +159,20 @@ namespace perideal
     fe.prescribe(settings.end_time, fe_target, state.V);
     fe.assemble_load(settings.end_time, fe_full_load);
 
-    state.start_work();
+    checkpoint.set_run("quasi-static, " + std::to_string(n_steps) + " load steps", n_steps);
     StepData data;
     data.quasi_static     = true;
     data.write_statistics = true;
-    postprocessors.execute(state, data);
+    RunPosition start;
+    if (checkpoint.restarting())
+      start = checkpoint.load(state, postprocessors);
+    else
+      {
+        state.start_work();
+        postprocessors.execute(state, data);
+      }
     const auto &mask = fe.prescribed_mask();
-    for (unsigned int step = 1; step <= n_steps; ++step)
+    for (unsigned int step = start.step + 1; step <= n_steps; ++step)
       {
         const double factor = double(step) / n_steps;
         state.f_ext.equ(factor, fe_full_load);
@@ -225,6 +235,8 @@ namespace perideal
         data.pd_energy    = pd_energy;
         state.fe_support  = state.residual;
         postprocessors.execute(state, data);
+        if (checkpoint.after_step(state, postprocessors, {step, factor, step + 1}))
+          return;
       }
   }
 

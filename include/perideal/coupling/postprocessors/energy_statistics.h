@@ -44,6 +44,13 @@ namespace perideal
             const StepData          &data,
             StatisticsFile          &statistics) override;
 
+    /// The energy balance's totals.
+    std::string
+    save_state(const CoupledState<dim> &state) const override;
+
+    void
+    load_state(const CoupledState<dim> &state, const std::string &packed) override;
+
   private:
     EnergyBalance balance;
   };

@@ -8,6 +8,7 @@
 #include <perideal/coupling/postprocessors/postprocessor.h>
 
 #include <memory>
+#include <string>
 
 namespace perideal
 {
@@ -27,7 +28,18 @@ namespace perideal
             const StepData          &data,
             StatisticsFile          &statistics) override;
 
+    /// The records of the particle and FE files written so far.
+    std::string
+    save_state(const CoupledState<dim> &state) const override;
+
+    void
+    load_state(const CoupledState<dim> &state, const std::string &packed) override;
+
   private:
+    /// Create the particle writer if the run has particles and writes their fields.
+    void
+    create_particle_output(const CoupledState<dim> &state);
+
     /// The particle writer, created at the first output.
     std::unique_ptr<ParticleOutput<dim>> particle_output;
   };

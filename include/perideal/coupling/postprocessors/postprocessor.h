@@ -8,6 +8,7 @@
 #include <perideal/coupling/coupled_state.h>
 
 #include <memory>
+#include <string>
 #include <vector>
 
 namespace perideal
@@ -61,6 +62,24 @@ namespace perideal
      */
     virtual void
     execute(const CoupledState<dim> &state, const StepData &data, StatisticsFile &statistics) = 0;
+
+    /**
+     * @brief What the postprocessor carried over the steps so far (totals, the records of the
+     * files written), packed for a checkpoint; empty if nothing. Collective; rank 0's is kept.
+     */
+    virtual std::string
+    save_state(const CoupledState<dim> &) const
+    {
+      return {};
+    }
+
+    /**
+     * @brief Continue from save_state()'s @p packed (the same on every rank), before the first
+     * execute() of a restarted run. Collective.
+     */
+    virtual void
+    load_state(const CoupledState<dim> &, const std::string &)
+    {}
   };
 
   /**
@@ -90,7 +109,26 @@ namespace perideal
     void
     execute(const CoupledState<dim> &state, const StepData &data);
 
+    /**
+     * @brief The statistics table written so far and every postprocessor's save_state(),
+     * packed for a checkpoint (complete on rank 0). Collective.
+     */
+    std::string
+    save_state(const CoupledState<dim> &state) const;
+
+    /**
+     * @brief Continue from save_state()'s @p packed (the same on every rank): rewrite the
+     * statistics table with the rows it kept (rows written after it are dropped) and restore
+     * every postprocessor. Instead of the first execute() of a restarted run. Collective.
+     */
+    void
+    load_state(const CoupledState<dim> &state, const std::string &packed);
+
   private:
+    /// Create the output directory and the statistics table (not its file).
+    void
+    create_statistics(const CoupledState<dim> &state);
+
     std::vector<std::unique_ptr<Postprocessor<dim>>> postprocessors;
     std::unique_ptr<StatisticsFile>                  statistics;
   };

@@ -33,7 +33,9 @@ namespace perideal
     setup(CoupledState<dim> &state) override;
 
     void
-    run(CoupledState<dim> &state, Postprocessors<dim> &postprocessors) override;
+    run(CoupledState<dim>   &state,
+        Postprocessors<dim> &postprocessors,
+        Checkpoint<dim>     &checkpoint) override;
 
   private:
     /**

@@ -5,6 +5,7 @@
 #define perideal_coupling_solvers_solver_h
 
 #include <perideal/base/problem_settings.h>
+#include <perideal/coupling/checkpoint.h>
 #include <perideal/coupling/coupled_state.h>
 #include <perideal/coupling/postprocessors/postprocessor.h>
 
@@ -33,9 +34,15 @@ namespace perideal
     virtual void
     setup(CoupledState<dim> &state) = 0;
 
-    /// Run from the initial conditions to the end; @p postprocessors are initialized.
+    /**
+     * @brief Run from the initial conditions, or from the checkpoint if @p checkpoint is
+     * restarting, to the end (or to the checkpoint's stop step); @p postprocessors are
+     * initialized. After each step @p checkpoint writes a checkpoint if one is due.
+     */
     virtual void
-    run(CoupledState<dim> &state, Postprocessors<dim> &postprocessors) = 0;
+    run(CoupledState<dim>   &state,
+        Postprocessors<dim> &postprocessors,
+        Checkpoint<dim>     &checkpoint) = 0;
   };
 
   /// The solver of <Solver/Type> = @p type.

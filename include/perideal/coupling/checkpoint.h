@@ -1,0 +1,126 @@
+// ---------------------------------------------------------------------
+// PeriDeal: checkpoints of a run and the restart from them.
+// ---------------------------------------------------------------------
+#ifndef perideal_coupling_checkpoint_h
+#define perideal_coupling_checkpoint_h
+
+#include <perideal/base/problem_settings.h>
+#include <perideal/coupling/coupled_state.h>
+#include <perideal/coupling/postprocessors/postprocessor.h>
+
+#include <limits>
+#include <string>
+
+namespace perideal
+{
+  /**
+   * @brief Where a run is, besides its state: what a solver needs to continue it.
+   */
+  struct RunPosition
+  {
+    /// The last step done (time step or load step; 0: the initial state).
+    unsigned int step = 0;
+    /// Its time [s] or load factor.
+    double time = 0.;
+    /// The index of the next field output.
+    unsigned int next_output = 1;
+  };
+
+  /**
+   * @brief Checkpoints of a run every <Output/Checkpoint interval> steps, and the restart from
+   * the newest one (perideal-solid --restart).
+   *
+   * The checkpoint `<Output/Directory>/checkpoint` holds the complete state of the run: every
+   * vector of CoupledState (particles: displacement, velocity, acceleration, forces, the
+   * previous state of the work of the loads, energy density; FE: the same), the broken bonds,
+   * each rank's partial sums of the work and the dissipated energy, the position (step, time,
+   * next output index) and the postprocessors' state (the statistics table so far, the energy
+   * balance, the records of the XDMF/PVD files). The state is restored exactly, so a restarted
+   * run gives the numbers of the uninterrupted run bit for bit on the same number of ranks.
+   *
+   * Layout (one binary file, written collectively with MPI-IO): a text header (the problem's
+   * fingerprint and the position), then each rank's two partial sums, the particles' records
+   * by ParticleSystem::invariant_index() (independent of the number of ranks), the broken bonds
+   * as pairs of invariant indices, the FE records of the FE-carrying cells by their CellId (the
+   * mesh is rebuilt from the parameter file, deterministically, so the cells are the same on
+   * any number of ranks), the postprocessors' state and an end mark. On another number of ranks
+   * the partial sums are added on rank 0, so the run continues to round-off.
+   *
+   * The file is written as `checkpoint.tmp` and renamed by rank 0 after every rank has closed
+   * it, so a run killed while writing leaves the previous checkpoint complete. A restart checks,
+   * before it writes anything, that the file exists, is complete (its size and end mark) and
+   * belongs to this problem (dimension, models, unknowns, numbers of particles, bonds, FE cells
+   * and dofs, solver and its steps); otherwise it stops naming the file and what differs.
+   */
+  template <int dim>
+  class Checkpoint
+  {
+  public:
+    /// No step: the run does not stop early.
+    static constexpr unsigned int no_step = std::numeric_limits<unsigned int>::max();
+
+    /**
+     * @brief Checkpoints of a run with @p settings whose models are described by
+     * @p problem_lines ("key = value" lines of the fingerprint); continue from the checkpoint if
+     * @p restart; end the run after the checkpoint of step @p stop_step (tests of the restart).
+     */
+    Checkpoint(const ProblemSettings<dim> &settings,
+               const std::string          &problem_lines,
+               const bool                  restart,
+               const unsigned int          stop_step);
+
+    /// The checkpoint file.
+    const std::string &
+    filename() const;
+
+    /**
+     * @brief The solver's run: @p description (e.g. its number and size of steps) is part of the
+     * fingerprint; @p n_steps is its last step (no checkpoint after it). Call before load()
+     * and after_step().
+     */
+    void
+    set_run(const std::string &description, const unsigned int n_steps);
+
+    /// Whether the run continues from the checkpoint.
+    bool
+    restarting() const;
+
+    /**
+     * @brief Restore @p state and @p postprocessors from the checkpoint (after the checks of
+     * the class description) and return the position to continue from. Collective.
+     */
+    RunPosition
+    load(CoupledState<dim> &state, Postprocessors<dim> &postprocessors) const;
+
+    /**
+     * @brief After the step of @p position: write a checkpoint if one is due (every
+     * <Output/Checkpoint interval> steps before the last, and at the stop step); return
+     * whether the run ends here (the stop step). Collective.
+     */
+    bool
+    after_step(CoupledState<dim>         &state,
+               const Postprocessors<dim> &postprocessors,
+               const RunPosition         &position) const;
+
+  private:
+    /// Write the checkpoint of @p position (to the temporary name, then renamed).
+    void
+    write(CoupledState<dim>         &state,
+          const Postprocessors<dim> &postprocessors,
+          const RunPosition         &position) const;
+
+    /// The fingerprint of the problem of @p state: "key = value" lines.
+    std::string
+    fingerprint(CoupledState<dim> &state) const;
+
+    std::string  file;
+    std::string  problem_lines;
+    unsigned int interval;
+    bool         restart;
+    unsigned int stop_step;
+    std::string  run_description;
+    unsigned int n_steps = 0;
+  };
+} // namespace perideal
+
+#endif
