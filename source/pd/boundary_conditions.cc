@@ -7,6 +7,7 @@
 #include <perideal/pd/boundary_conditions.h>
 
 #include <algorithm>
+#include <cmath>
 
 namespace perideal
 {
@@ -110,8 +111,14 @@ namespace perideal
         prm.declare_entry("Layer thickness",
                           "0",
                           Patterns::Double(0.),
-                          "Traction only: thickness of the loaded layer [m] (the region's extent "
-                          "normal to the surface).");
+                          "A load ('traction', 'moment', 'flux'): the thickness of the loaded "
+                          "layer [m] (the region's extent normal to the surface; required). A "
+                          "value or rate: 0 (the default) for a hold of any shape; > 0 declares "
+                          "the region a fictitious layer of that depth beyond a face of the body, "
+                          "checked against the depth the model's force reaches: delta - dx/2 "
+                          "for bond-based models (3 lattice layers at delta = 3.015 dx), 2 delta "
+                          "- dx/2 for state-based ones (6 layers), whose forces use the "
+                          "neighbours' families.");
         prm.leave_subsection();
       }
     prm.leave_subsection();
@@ -140,7 +147,8 @@ namespace perideal
         prm.enter_subsection(name);
         Condition c;
         c.name                  = name;
-        c.region                = &regions.get(prm.get("Region"), prefix + "Region");
+        c.region_name           = prm.get("Region");
+        c.region                = &regions.get(c.region_name, prefix + "Region");
         const std::string t     = prm.get("Type");
         const auto        found = std::find_if(std::begin(condition_types),
                                         std::end(condition_types),
@@ -172,11 +180,9 @@ namespace perideal
                                      "' does not act on; accepted: " + kind_names + "."));
               c.components.push_back(k);
             }
+        c.layer_thickness = prm.get_double("Layer thickness");
         if (c.quantity == Quantity::load)
-          {
-            c.layer_thickness = prm.get_double("Layer thickness");
-            ParameterUtilities::require_positive(c.layer_thickness, prefix + "Layer thickness");
-          }
+          ParameterUtilities::require_positive(c.layer_thickness, prefix + "Layer thickness");
         c.function = ParameterUtilities::make_function<dim>(prm.get("Function"),
                                                             c.components.size(),
                                                             prefix + "Function");
@@ -184,6 +190,32 @@ namespace perideal
         prm.leave_subsection();
       }
     prm.leave_subsection();
+  }
+
+  template <int dim>
+  void
+  BoundaryConditions<dim>::check_layer_depths(const double       horizon,
+                                              const double       spacing,
+                                              const unsigned int reach,
+                                              const std::string &model_name) const
+  {
+    const double needed = reach * horizon - 0.5 * spacing;
+    for (const auto &c : conditions)
+      AssertThrow(c.quantity == Quantity::load || c.layer_thickness == 0. ||
+                    c.layer_thickness >= needed * (1. - 1e-12),
+                  ExcMessage("The parameter <Boundary conditions/" + c.name +
+                             "/Layer thickness> is " +
+                             ParameterUtilities::format_number(c.layer_thickness) +
+                             " m: the fictitious layer is too thin for the model '" + model_name +
+                             "', whose force reaches " + std::to_string(reach) + " horizon" +
+                             (reach > 1 ? "s (the neighbours' families)" : "") +
+                             ", so the held particles next to the body would have cut families. "
+                             "Accepted: 0 (not a fictitious layer) or at least " +
+                             std::to_string(reach) +
+                             " delta - dx/2 = " + ParameterUtilities::format_number(needed) +
+                             " m (" + std::to_string(int(std::ceil(needed / spacing - 1e-9))) +
+                             " lattice layers); make the region <" + c.region_name +
+                             "> that deep and the entry with it."));
   }
 
   template <int dim>

@@ -354,6 +354,13 @@ namespace perideal
   }
 
   template <int dim>
+  unsigned int
+  LinearPeridynamicSolid<dim>::force_reach() const
+  {
+    return 2;
+  }
+
+  template <int dim>
   std::string
   LinearPeridynamicSolid<dim>::summary() const
   {

@@ -173,6 +173,13 @@ namespace perideal
   }
 
   template <int dim>
+  unsigned int
+  MaterialModel<dim>::force_reach() const
+  {
+    return 1;
+  }
+
+  template <int dim>
   void
   MaterialModel<dim>::linearize(const ParticleSystem<dim> &, LinearizedModel &) const
   {

@@ -171,12 +171,13 @@ namespace perideal
     pre_cracks = parse_pre_cracks<dim>(prm.get("Cracks"));
     prm.leave_subsection();
 
+    std::string model_name;
     prm.enter_subsection("Material");
     {
-      planar                       = planar_assumption_from_name(prm.get("Planar assumption"), dim);
-      rho                          = prm.get_double("Density");
-      const std::string model_name = prm.get("Model");
-      model = PluginRegistry<MaterialModel<dim>>::create(model_name, "Material/Model");
+      planar     = planar_assumption_from_name(prm.get("Planar assumption"), dim);
+      rho        = prm.get_double("Density");
+      model_name = prm.get("Model");
+      model      = PluginRegistry<MaterialModel<dim>>::create(model_name, "Material/Model");
       if (has_body())
         {
           ParameterUtilities::require_positive(rho, "Material/Density");
@@ -200,6 +201,11 @@ namespace perideal
     prm.leave_subsection();
 
     conditions.parse_parameters(prm, regions, model->field_layout());
+    if (has_body())
+      conditions.check_layer_depths(settings.horizon,
+                                    settings.spacing,
+                                    model->force_reach(),
+                                    model_name);
   }
 
   template <int dim>

@@ -67,6 +67,18 @@ namespace perideal
     set_body_force(const std::shared_ptr<dealii::Function<dim>> &function);
 
     /**
+     * @brief Check the value and rate conditions with a <Layer thickness> > 0 (declared
+     * fictitious layers) against the depth @p reach horizons @p horizon minus half the lattice
+     * spacing @p spacing that the forces of the model @p model_name reach
+     * (MaterialModel::force_reach()); throws, naming the entry and the accepted values.
+     */
+    void
+    check_layer_depths(const double       horizon,
+                       const double       spacing,
+                       const unsigned int reach,
+                       const std::string &model_name) const;
+
+    /**
      * @brief Find the particles of every condition; throws (naming the condition) if a region
      * holds no particle or two conditions prescribe the same component of a particle.
      */
@@ -115,6 +127,7 @@ namespace perideal
     struct Condition
     {
       std::string        name;
+      std::string        region_name;
       const Region<dim> *region = nullptr;
       std::string        type_name;
       Quantity           quantity = Quantity::value;

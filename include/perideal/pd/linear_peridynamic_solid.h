@@ -93,6 +93,12 @@ namespace perideal
     summary() const override;
 
     /**
+     * @brief 2: the force uses the neighbours' states.
+     */
+    unsigned int
+    force_reach() const override;
+
+    /**
      * @brief Dilatation of the owned particles from the last force computation.
      */
     const ParticleVector &

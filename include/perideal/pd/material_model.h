@@ -304,6 +304,15 @@ namespace perideal
     critical_stretch(const double fracture_energy) const = 0;
 
     /**
+     * @brief How far, in horizons, the force on a particle depends on the field: 1 for
+     * bond-based models (the default), 2 for state-based ones, whose force uses the neighbours'
+     * states over their own families. Fictitious layers must be that deep
+     * (BoundaryConditions::check_layer_depths()).
+     */
+    virtual unsigned int
+    force_reach() const;
+
+    /**
      * @brief A few lines for the log: the model's constants, including implied ones.
      */
     virtual std::string
