@@ -37,6 +37,8 @@ for a in 0 0.25 0.5 0.75; do
   done
   tip=$(python3 -c "print(-0.5 + $a)")
   for model in bond state; do
+    # The state-based model as the seed has it (stabilization 0; 'statestab': 0.1, below).
+    seed=(-e "/subsection antiplane state based/,/end/s|\(set Twist axis *= .*\)|\1\n    set Stabilization         = 0|")
     for dx in 0.02 0.01; do
       name="pd_${model}_a${a}_dx$dx"
       lo=$(python3 -c "print($dx * 0.1)")
@@ -46,10 +48,17 @@ for a in 0 0.25 0.5 0.75; do
       variant torsion_crack_pd "$name" -e "s|Lattice spacing = .*|Lattice spacing = $dx|" \
         -e "s|Cracks = .*|Cracks = $crack|" \
         -e "s|Model   = antiplane bond based|Model   = antiplane $model based|" \
-        -e "s|subsection antiplane bond based|subsection antiplane $model based|" \
+        -e "s|subsection antiplane bond based|subsection antiplane $model based|" "${seed[@]}" \
         -e "s|Lower corner = 0.002, 0.002|Lower corner = $lo, $lo|" \
         -e "s|Upper corner = 0.018, 0.018|Upper corner = $hi, $hi|"
       runs+=("results/$name")
+      if [ "$model" = state ] && [ "$a" = 0.5 ] && [ "$dx" = 0.01 ]; then
+        # The state-based model with the default stabilization 0.1: the crack opening.
+        sed -e "s|Stabilization         = 0|Stabilization         = 0.1|" \
+          -e "s|results/$name|results/pd_statestab_a${a}_dx$dx|" "results/$name.prm" \
+          > "results/pd_statestab_a${a}_dx$dx.prm"
+        runs+=("results/pd_statestab_a${a}_dx$dx")
+      fi
       [ "$a" = 0 ] && continue
       # Coupled: PD in the box of the crack (beta = 1 to 0.1 beyond the tip and the crack line,
       # ramps to 0.2), FE Q2 on the plain mesh (h = 1/16) elsewhere.
@@ -57,7 +66,7 @@ for a in 0 0.25 0.5 0.75; do
       variant torsion_crack_coupled "$name" -e "s|Lattice spacing = .*|Lattice spacing = $dx|" \
         -e "s|Cracks = .*|Cracks = $crack|" \
         -e "s|Model   = antiplane bond based|Model   = antiplane $model based|" \
-        -e "s|subsection antiplane bond based|subsection antiplane $model based|" \
+        -e "s|subsection antiplane bond based|subsection antiplane $model based|" "${seed[@]}" \
         -e "s|(0.2 - x) / 0.1|($(python3 -c "print(round($tip + 0.2, 6))") - x) / 0.1|"
       runs+=("results/$name")
     done
@@ -81,3 +90,5 @@ for model in bond state; do
 done
 /usr/bin/python3 postprocess.py "${runs[@]}" --plot torque_vs_crack.png \
   --stresses results/pd_bond_a0.5_dx0.01 results/pd_state_a0.5_dx0.01 stress_near_crack.png
+/usr/bin/python3 opening.py results/fe_a0.5_l3 results/pd_bond_a0.5_dx0.01 \
+  results/pd_state_a0.5_dx0.01 results/pd_statestab_a0.5_dx0.01 --plot crack_opening.png

@@ -114,6 +114,12 @@ namespace perideal
     summary() const override;
 
     /**
+     * @brief 2: the force uses the neighbours' states.
+     */
+    unsigned int
+    force_reach() const override;
+
+    /**
      * @brief The constant b of the shear angles [1/m^4]: 2 / (pi h delta^3) in 2D,
      * 9 / (4 pi delta^4) in 3D.
      */
