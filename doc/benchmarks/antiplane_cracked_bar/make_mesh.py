@@ -9,7 +9,11 @@ problem. Boundary ids (physical lines): 1 the ligament (y = 0, |x| >= a), 2 the 
 usage: make_mesh.py a n output.msh   (half crack length a, n cells across the width 1; a n must
 be an integer so that the tips are vertices, and n even)
 """
+import os
 import sys
+
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), ".."))
+import gmsh22  # noqa: E402
 
 
 def write_mesh(a, n, path):
@@ -32,21 +36,8 @@ def write_mesh(a, n, path):
         lines.append((3, node(nx, j), node(nx, j + 1)))
     quads = [(node(i, j), node(i + 1, j), node(i + 1, j + 1), node(i, j + 1))
              for j in range(ny) for i in range(nx)]
-    with open(path, "w") as f:
-        f.write("$MeshFormat\n2.2 0 8\n$EndMeshFormat\n$Nodes\n%d\n" % ((nx + 1) * (ny + 1)))
-        for j in range(ny + 1):
-            for i in range(nx + 1):
-                f.write("%d %.17g %.17g 0\n" % (node(i, j), -0.5 + i * h, j * h))
-        f.write("$EndNodes\n$Elements\n%d\n" % (len(lines) + len(quads)))
-        k = 0
-        for tag, v0, v1 in lines:
-            k += 1
-            f.write("%d 1 2 %d %d %d %d\n" % (k, tag, tag, v0, v1))
-        for q in quads:
-            k += 1
-            f.write("%d 3 2 1 1 %d %d %d %d\n" % ((k,) + q))
-        f.write("$EndElements\n")
-
+    nodes = [(-0.5 + i * h, j * h) for j in range(ny + 1) for i in range(nx + 1)]
+    gmsh22.write(path, nodes, lines, quads)
 
 if __name__ == "__main__":
     if len(sys.argv) != 4:

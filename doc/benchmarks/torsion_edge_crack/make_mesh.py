@@ -9,7 +9,11 @@ below, one for the cells above), so the crack faces are free faces of the mesh. 
 usage: make_mesh.py a n output.msh   (crack length a, n cells across the short side; a n must
 be an integer so that the tip is a vertex)
 """
+import os
 import sys
+
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), ".."))
+import gmsh22  # noqa: E402
 
 
 def write_mesh(a, n, path):
@@ -51,20 +55,7 @@ def write_mesh(a, n, path):
     for i in range(n_crack):
         lines.append((2, vertex(i, n, False), vertex(i + 1, n, False)))
         lines.append((2, vertex(i, n, True), vertex(i + 1, n, True)))
-    with open(path, "w") as f:
-        f.write("$MeshFormat\n2.2 0 8\n$EndMeshFormat\n$Nodes\n%d\n" % len(nodes))
-        for k, (x, y) in enumerate(nodes, 1):
-            f.write("%d %.17g %.17g 0\n" % (k, x, y))
-        f.write("$EndNodes\n$Elements\n%d\n" % (len(lines) + len(quads)))
-        k = 0
-        for tag, v0, v1 in lines:
-            k += 1
-            f.write("%d 1 2 %d %d %d %d\n" % (k, tag, tag, v0, v1))
-        for q in quads:
-            k += 1
-            f.write("%d 3 2 1 1 %d %d %d %d\n" % ((k,) + q))
-        f.write("$EndElements\n")
-
+    gmsh22.write(path, nodes, lines, quads)
 
 if __name__ == "__main__":
     if len(sys.argv) != 4:
