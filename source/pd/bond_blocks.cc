@@ -164,6 +164,15 @@ namespace perideal
 
   template <int dim>
   void
+  BondBlocks<dim>::from_lanes(const Array &per_lane, std::vector<double> &per_bond) const
+  {
+    for (std::size_t l = 0; l < lane_bond.size(); ++l)
+      if (lane_bond[l] != numbers::invalid_unsigned_int)
+        per_bond[lane_bond[l]] = per_lane[l];
+  }
+
+  template <int dim>
+  void
   BondBlocks<dim>::sync_state(const BondList &bonds)
   {
     if (bonds.revision == synced_revision)

@@ -97,14 +97,16 @@ namespace perideal
   bool
   breaking_settled(const ParticleSystem<dim> &particles,
                    const std::uint64_t        broken_before,
+                   const bool                 damage_changed,
                    const unsigned int         step,
                    const unsigned int         pass)
   {
-    if (n_broken_bonds(particles) == broken_before)
+    if (n_broken_bonds(particles) == broken_before && !damage_changed)
       return true;
     const unsigned int max_passes = 100;
     AssertThrow(pass + 1 < max_passes,
-                ExcMessage("Load step " + std::to_string(step) + ": bonds kept breaking through " +
+                ExcMessage("Load step " + std::to_string(step) +
+                           ": bonds kept breaking or softening through " +
                            std::to_string(max_passes) +
                            " re-solves (unstable crack growth); use more <Solver/Load steps>."));
     return false;
@@ -123,9 +125,9 @@ namespace perideal
   template std::uint64_t
   n_broken_bonds<3>(const ParticleSystem<3> &);
   template bool
-  breaking_settled<2>(const ParticleSystem<2> &, std::uint64_t, unsigned int, unsigned int);
+  breaking_settled<2>(const ParticleSystem<2> &, std::uint64_t, bool, unsigned int, unsigned int);
   template bool
-  breaking_settled<3>(const ParticleSystem<3> &, std::uint64_t, unsigned int, unsigned int);
+  breaking_settled<3>(const ParticleSystem<3> &, std::uint64_t, bool, unsigned int, unsigned int);
 } // namespace perideal
 
 PERIDEAL_REGISTER_DAMAGE_MODEL(perideal::NoDamage, "none", "bonds never break.")

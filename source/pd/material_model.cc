@@ -115,6 +115,13 @@ namespace perideal
   }
 
   template <int dim>
+  bool
+  MaterialModel<dim>::damage_changed() const
+  {
+    return false;
+  }
+
+  template <int dim>
   std::vector<double>
   MaterialModel<dim>::inertia_densities(const double density) const
   {

@@ -236,13 +236,8 @@ namespace perideal
   ParticleSystem<dim>::find_bonds(const std::vector<PreCrack<dim>>              &pre_cracks,
                                   const std::function<bool(const Point<dim> &)> &no_fail)
   {
-    const double delta = parameters.horizon;
-    const double dx    = parameters.spacing;
-    // Bonds of length delta exactly belong to the family; for the geometric partial volume the
-    // family ends where the factor reaches zero, at delta + dx/2 (excluded).
-    const bool   geometric = (parameters.partial_volume == PartialVolume::geometric);
-    const double reach     = geometric ? (delta + 0.5 * dx) * (1. - 1e-10) : delta * (1. + 1e-10);
-    const auto   n_all     = static_cast<unsigned int>(reference_positions.size());
+    const double reach = bond_reach();
+    const auto   n_all = static_cast<unsigned int>(reference_positions.size());
 
     // Cell list of all local particles (owned and ghost candidates): O(N).
     BoundingBox<dim> local_box(reference_positions.empty() ?
@@ -371,13 +366,10 @@ namespace perideal
     for (unsigned int i = 0; i < n_owned_particles; ++i)
       for (unsigned int b = found.row_start[i]; b < found.row_start[i + 1]; ++b)
         {
-          const Point<dim> &xj = reference_positions[found.neighbor[b]];
-          const double      r  = reference_positions[i].distance(xj);
-          found.length[b]      = r;
-          found.volume_factor[b] =
-            (parameters.partial_volume == PartialVolume::none || r <= delta - 0.5 * dx) ?
-              1. :
-              (delta + 0.5 * dx - r) / dx;
+          const Point<dim> &xj   = reference_positions[found.neighbor[b]];
+          const double      r    = reference_positions[i].distance(xj);
+          found.length[b]        = r;
+          found.volume_factor[b] = partial_volume_factor(r);
           for (const auto &crack : pre_cracks)
             if (crack.cuts(reference_positions[i], xj))
               found.intact[b] = 0;
@@ -484,6 +476,60 @@ namespace perideal
   ParticleSystem<dim>::bonds()
   {
     return bond_list;
+  }
+
+  template <int dim>
+  double
+  ParticleSystem<dim>::bond_reach() const
+  {
+    // Bonds of length delta exactly belong to the family; for the geometric partial volume the
+    // family ends where the factor reaches zero, at delta + dx/2 (excluded).
+    const double delta = parameters.horizon, dx = parameters.spacing;
+    return parameters.partial_volume == PartialVolume::geometric ?
+             (delta + 0.5 * dx) * (1. - 1e-10) :
+             delta * (1. + 1e-10);
+  }
+
+  template <int dim>
+  double
+  ParticleSystem<dim>::partial_volume_factor(const double r) const
+  {
+    const double delta = parameters.horizon, dx = parameters.spacing;
+    return (parameters.partial_volume == PartialVolume::none || r <= delta - 0.5 * dx) ?
+             1. :
+             (delta + 0.5 * dx - r) / dx;
+  }
+
+  template <int dim>
+  void
+  ParticleSystem<dim>::lattice_family(std::vector<Tensor<1, dim>> &xi,
+                                      std::vector<double>         &weight) const
+  {
+    const double dx     = parameters.spacing;
+    const double reach  = bond_reach();
+    const double volume = std::pow(dx, dim) * (dim == 2 ? parameters.thickness : 1.);
+    const int    n      = static_cast<int>(reach / dx) + 1;
+    xi.clear();
+    weight.clear();
+    std::array<int, dim> k;
+    k.fill(-n);
+    while (true)
+      {
+        Tensor<1, dim> v;
+        for (unsigned int d = 0; d < dim; ++d)
+          v[d] = k[d] * dx;
+        const double r = v.norm();
+        if (r > 0. && r <= reach)
+          {
+            xi.push_back(v);
+            weight.push_back(partial_volume_factor(r) * volume);
+          }
+        unsigned int d = 0;
+        while (d < dim && ++k[d] > n)
+          k[d++] = -n;
+        if (d == dim)
+          break;
+      }
   }
 
   template <int dim>

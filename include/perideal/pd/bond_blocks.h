@@ -161,6 +161,14 @@ namespace perideal
     to_lanes(const std::vector<double> &per_bond, Array &per_lane) const;
 
     /**
+     * @brief The inverse of to_lanes(): @p per_bond[bond_index(q, l)] = @p per_lane[q * width +
+     * l] (per-lane histories back in bond order, for the linearization and checkpoints);
+     * @p per_bond is sized like the bond list.
+     */
+    void
+    from_lanes(const Array &per_lane, std::vector<double> &per_bond) const;
+
+    /**
      * @brief Copy BondList::intact into the lane states if it changed since the last copy.
      */
     void

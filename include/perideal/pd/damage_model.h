@@ -92,13 +92,16 @@ namespace perideal
 
   /**
    * @brief For the re-solves of a quasi-static load step (PD or coupled): whether no bond broke
-   * in re-solve @p pass of load step @p step (@p broken_before bonds were broken before it).
-   * Throws (unstable crack growth: use more <Solver/Load steps>) after 100 re-solves.
+   * in re-solve @p pass of load step @p step (@p broken_before bonds were broken before it) and
+   * the bonds' damage did not otherwise change (@p damage_changed:
+   * MaterialModel::damage_changed()). Throws (unstable crack growth: use more <Solver/Load steps>)
+   * after 100 re-solves.
    */
   template <int dim>
   bool
   breaking_settled(const ParticleSystem<dim> &particles,
                    const std::uint64_t        broken_before,
+                   const bool                 damage_changed,
                    const unsigned int         step,
                    const unsigned int         pass);
 

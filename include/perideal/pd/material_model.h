@@ -216,6 +216,15 @@ namespace perideal
     released_energy(ParticleSystem<dim> &particles, const ParticleVector &u);
 
     /**
+     * @brief Whether the last compute_forces() that could break bonds (a finite critical
+     * stretch) changed the bonds' damage other than by breaking them: a softening law whose
+     * histories grew by more than 1e-3 of their limits (the load stepping then solves again).
+     * Collective; false by default.
+     */
+    virtual bool
+    damage_changed() const;
+
+    /**
      * @brief The inertia per unit volume of each component of field_layout() for the mass
      * density @p density [kg/m^3]: @p density for translations and scalars; for a rotation the
      * model's rotational inertia per unit volume [kg/m] (what multiplies the angular

@@ -175,6 +175,19 @@ namespace perideal
     /// The largest bond length: delta, or delta + dx/2 for PartialVolume::geometric.
     double
     search_radius() const;
+    /**
+     * @brief The partial-volume factor of a bond of length @p r: 1 inside delta - dx/2 (and
+     * everywhere for PartialVolume::none), (delta + dx/2 - r)/dx beyond.
+     */
+    double
+    partial_volume_factor(const double r) const;
+    /**
+     * @brief The family of an interior particle of the lattice, whatever the body: the lattice
+     * vectors @p xi of the bonds the search finds and their weights beta V_j (partial-volume
+     * factor times dx^dim, times the thickness in 2D). For lattice calibrations.
+     */
+    void
+    lattice_family(std::vector<dealii::Tensor<1, dim>> &xi, std::vector<double> &weight) const;
     /// The settings used by generate().
     const Settings &
     settings() const;
@@ -232,6 +245,10 @@ namespace perideal
     std::vector<std::uint64_t>                                         invariant_indices;
     BondList                                                           bond_list;
     mutable std::map<unsigned int, std::shared_ptr<const Partitioner>> partitioners;
+
+    /// The largest bond length the search accepts (search_radius() with a round-off margin).
+    double
+    bond_reach() const;
 
     void
     find_bonds(const std::vector<PreCrack<dim>>                      &pre_cracks,

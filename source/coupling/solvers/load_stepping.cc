@@ -196,7 +196,7 @@ namespace perideal
                                          &state.energy_density,
                                          pd.critical_stretch());
             state.accumulate_dissipated_energy();
-            if (breaking_settled(ps, broken_before, step, passes))
+            if (breaking_settled(ps, broken_before, pd.material().damage_changed(), step, passes))
               break;
           }
         const double pd_energy = state.method.equilibrium_forces(U,
