@@ -96,7 +96,9 @@ namespace perideal
     // <Output>
     std::string  output_directory = "output", base_name = "particles";
     unsigned int output_interval = 0, statistics_interval = 10, checkpoint_interval = 0;
-    bool         write_hdf5 = true, write_vtu = false, show_progress = true;
+    /// <Checkpoint time interval>: simulated time [s] (explicit) or load factor (quasi-static).
+    double                          checkpoint_time_interval = 0.;
+    bool                            write_hdf5 = true, write_vtu = false, show_progress = true;
     std::vector<dealii::Point<dim>> probe_points;
   };
 } // namespace perideal
