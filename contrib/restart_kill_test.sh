@@ -8,7 +8,9 @@
 #
 # Usage: contrib/restart_kill_test.sh BUILD_DIR FILE.prm [TRIALS [RANKS [INTERVAL]]]
 #   FILE.prm is included by a wrapper that sets Output/Directory, Output/Progress = false and
-#   Output/Checkpoint interval = INTERVAL (default 200). Not part of ctest (it runs the problem
+#   Output/Checkpoint interval = INTERVAL (default 200), or with INTERVAL = time:T
+#   Output/Checkpoint time interval = T (simulated time [s], a load factor for quasi-static
+#   runs) instead. Not part of ctest (it runs the problem
 #   2 x TRIALS + 1 times). Example:
 #   contrib/restart_kill_test.sh build contrib/restart_kill_test.prm 5 2
 set -u
@@ -20,9 +22,15 @@ interval=${5:-200}
 work=$(mktemp -d /tmp/restart_kill_test.XXXXXX)
 cd "$work" || exit 1
 
+if [ "${interval#time:}" != "$interval" ]; then
+  checkpoint_entry="Checkpoint time interval = ${interval#time:}"
+else
+  checkpoint_entry="Checkpoint interval = $interval"
+fi
+
 wrapper() { # directory
-  printf 'include %s\nsubsection Output\n  set Directory = %s\n  set Progress = false\n  set Checkpoint interval = %s\nend\n' \
-    "$prm" "$1" "$interval" >"$1.prm"
+  printf 'include %s\nsubsection Output\n  set Directory = %s\n  set Progress = false\n  set %s\nend\n' \
+    "$prm" "$1" "$checkpoint_entry" >"$1.prm"
 }
 
 launch() { # arguments of perideal-solid; sets pid to the run in the background
@@ -47,7 +55,7 @@ start=$(date +%s.%N)
 launch reference.prm
 wait "$pid" || { echo "reference run failed, see $work/log.txt"; exit 1; }
 seconds=$(echo "$(date +%s.%N) - $start" | bc)
-echo "reference: $seconds s on $ranks rank(s), checkpoint every $interval steps; in $work"
+echo "reference: $seconds s on $ranks rank(s), $checkpoint_entry; in $work"
 
 failures=0
 for trial in $(seq 1 "$trials"); do

@@ -6,6 +6,7 @@
 #include <perideal/base/parameter_utilities.h>
 #include <perideal/base/problem_settings.h>
 
+#include <cmath>
 #include <map>
 
 namespace perideal
@@ -133,9 +134,19 @@ namespace perideal
                       "0",
                       Patterns::Integer(),
                       "Write the complete state of the run to <Directory>/checkpoint every this "
-                      "many time steps (explicit) or load steps (quasi-static), in steps, not in "
-                      "simulated time; 0: never. 'perideal-solid --restart FILE.prm' continues "
-                      "the run from it. Accepted: >= 0.");
+                      "many steps: time steps (explicit) or load steps (quasi-static); 0: not by "
+                      "steps. 'perideal-solid --restart FILE.prm' continues the run from it. "
+                      "With <Checkpoint time interval> too, a checkpoint is written when either "
+                      "is due. Never after the last step. Accepted: >= 0.");
+    prm.declare_entry("Checkpoint time interval",
+                      "0",
+                      Patterns::Double(),
+                      "Write the checkpoint after the first step that reaches each multiple of "
+                      "this interval of simulated time: [s] of an explicit run; for quasi-static "
+                      "runs the pseudo time is the load factor k/N of load step k (0 to 1), so "
+                      "0.25 writes one each quarter of the load. 0: not by time. Accepted: >= 0. "
+                      "A quasi-static run that stops without convergence writes the checkpoint of "
+                      "its last converged load step whatever the intervals.");
     prm.declare_entry("Write HDF5", "true", Patterns::Bool(), "Particle fields as HDF5 + XDMF.");
     prm.declare_entry("Write VTU", "false", Patterns::Bool(), "Particle fields as VTU + PVD.");
     prm.declare_entry("Progress", "true", Patterns::Bool(), "Print progress and timing lines.");
@@ -197,11 +208,19 @@ namespace perideal
     AssertThrow(interval >= 0,
                 ExcMessage("The parameter <Output/Checkpoint interval> is " +
                            std::to_string(interval) +
-                           "; accepted values are 0 (no checkpoints) or a number of steps > 0."));
-    checkpoint_interval = interval;
-    write_hdf5          = prm.get_bool("Write HDF5");
-    write_vtu           = prm.get_bool("Write VTU");
-    show_progress       = prm.get_bool("Progress");
+                           "; accepted values are 0 (no checkpoints by steps) or a number of "
+                           "steps > 0."));
+    checkpoint_interval      = interval;
+    checkpoint_time_interval = prm.get_double("Checkpoint time interval");
+    AssertThrow(checkpoint_time_interval >= 0. && std::isfinite(checkpoint_time_interval),
+                ExcMessage("The parameter <Output/Checkpoint time interval> is " +
+                           ParameterUtilities::format_number(checkpoint_time_interval) +
+                           "; accepted values are 0 (no checkpoints by time) or an interval > 0 "
+                           "of simulated time [s] (explicit) or of the load factor "
+                           "(quasi-static)."));
+    write_hdf5    = prm.get_bool("Write HDF5");
+    write_vtu     = prm.get_bool("Write VTU");
+    show_progress = prm.get_bool("Progress");
     probe_points.clear();
     for (const auto &item : Utilities::split_string_list(prm.get("Probe points"), ';'))
       if (!item.empty())

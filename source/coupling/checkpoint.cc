@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <array>
+#include <cmath>
 #include <cstring>
 #include <filesystem>
 #include <iomanip>
@@ -166,6 +167,7 @@ namespace perideal
     : file(settings.output_directory + "/checkpoint")
     , problem_lines(problem_lines)
     , interval(settings.checkpoint_interval)
+    , time_interval(settings.checkpoint_time_interval)
     , restart(restart)
     , stop_step(stop_step)
   {}
@@ -220,21 +222,81 @@ namespace perideal
 
   template <int dim>
   bool
+  Checkpoint<dim>::due(const RunPosition &position) const
+  {
+    if (position.step >= n_steps)
+      return false;
+    if (interval > 0 && position.step % interval == 0)
+      return true;
+    // The multiples of the time interval reached by a time, with a margin for the round-off of
+    // a time that is a multiple by construction (k dt, k / N).
+    const auto multiples = [&](const double time) {
+      const double ratio = time / time_interval;
+      return std::floor(ratio + 1e-9 * std::max(1., std::abs(ratio)));
+    };
+    return time_interval > 0. && multiples(position.time) > multiples(previous_time);
+  }
+
+  template <int dim>
+  bool
   Checkpoint<dim>::after_step(CoupledState<dim>         &state,
                               const Postprocessors<dim> &postprocessors,
-                              const RunPosition         &position) const
+                              const RunPosition         &position)
   {
     const bool stop = (position.step == stop_step);
-    if (stop || (interval > 0 && position.step % interval == 0 && position.step < n_steps))
-      write(state, postprocessors, position);
+    if (stop || due(position))
+      write(state, postprocessors.save_state(state), position);
+    previous_time = position.time;
     return stop;
   }
 
   template <int dim>
   void
-  Checkpoint<dim>::write(CoupledState<dim>         &state,
-                         const Postprocessors<dim> &postprocessors,
-                         const RunPosition         &position) const
+  Checkpoint<dim>::keep(CoupledState<dim>         &state,
+                        const Postprocessors<dim> &postprocessors,
+                        const RunPosition         &position)
+  {
+    const auto parts = state.stored_parts();
+    kept.particle_vectors.resize(parts.particle_vectors.size());
+    for (unsigned int k = 0; k < parts.particle_vectors.size(); ++k)
+      kept.particle_vectors[k] = *parts.particle_vectors[k];
+    kept.energy_density = *parts.energy_density;
+    kept.fe_vectors.resize(parts.fe_vectors.size());
+    for (unsigned int k = 0; k < parts.fe_vectors.size(); ++k)
+      kept.fe_vectors[k] = *parts.fe_vectors[k];
+    kept.work           = *parts.work;
+    kept.dissipated     = *parts.dissipated;
+    kept.intact         = state.pd.particles().bonds().intact;
+    kept.postprocessors = postprocessors.save_state(state);
+    kept.position       = position;
+    kept.valid          = true;
+  }
+
+  template <int dim>
+  RunPosition
+  Checkpoint<dim>::write_kept(CoupledState<dim> &state)
+  {
+    Assert(kept.valid, ExcMessage("write_kept() without keep()."));
+    auto parts = state.stored_parts();
+    for (unsigned int k = 0; k < parts.particle_vectors.size(); ++k)
+      *parts.particle_vectors[k] = kept.particle_vectors[k];
+    *parts.energy_density = kept.energy_density;
+    for (unsigned int k = 0; k < parts.fe_vectors.size(); ++k)
+      *parts.fe_vectors[k] = kept.fe_vectors[k];
+    *parts.work       = kept.work;
+    *parts.dissipated = kept.dissipated;
+    BondList &bonds   = state.pd.particles().bonds();
+    bonds.intact      = kept.intact;
+    ++bonds.revision;
+    write(state, kept.postprocessors, kept.position);
+    return kept.position;
+  }
+
+  template <int dim>
+  void
+  Checkpoint<dim>::write(CoupledState<dim> &state,
+                         const std::string &postprocessor_state,
+                         const RunPosition &position) const
   {
     const MPI_Comm     comm    = state.comm;
     const auto        &ps      = state.pd.particles();
@@ -308,7 +370,7 @@ namespace perideal
       }
 
     // The postprocessors' state (rank 0's) and the header, the same on every rank.
-    const std::string   saved_state = postprocessors.save_state(state);
+    const std::string  &saved_state = postprocessor_state;
     const std::uint64_t state_bytes =
       Utilities::MPI::broadcast(comm, std::uint64_t(saved_state.size()), 0);
     const std::uint64_t n_broken = Utilities::MPI::sum<std::uint64_t>(broken.size() / 2, comm);
@@ -384,7 +446,7 @@ namespace perideal
 
   template <int dim>
   RunPosition
-  Checkpoint<dim>::load(CoupledState<dim> &state, Postprocessors<dim> &postprocessors) const
+  Checkpoint<dim>::load(CoupledState<dim> &state, Postprocessors<dim> &postprocessors)
   {
     const MPI_Comm     comm    = state.comm;
     const unsigned int n_ranks = Utilities::MPI::n_mpi_processes(comm);
@@ -394,8 +456,9 @@ namespace perideal
     AssertThrow(in.opened,
                 ExcMessage(name + " cannot be opened, so the run cannot restart (--restart "
                                   "continues from the checkpoint in <Output/Directory>, written "
-                                  "every <Output/Checkpoint interval> steps); nothing was "
-                                  "written."));
+                                  "by <Output/Checkpoint interval> or <Output/Checkpoint time "
+                                  "interval>, or by a quasi-static run that did not converge); "
+                                  "nothing was written."));
     MPI_Offset size = 0;
     int        ierr = MPI_File_get_size(in.handle, &size);
     AssertThrowMPI(ierr);
@@ -577,6 +640,7 @@ namespace perideal
     position.step        = number("step");
     position.time        = std::stod(header.at("time"));
     position.next_output = number("next output");
+    previous_time        = position.time;
     if (state.is_root)
       state.log << "Restart from the checkpoint of step " << position.step << ": " << file
                 << std::endl;

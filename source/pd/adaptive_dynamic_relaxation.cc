@@ -4,6 +4,7 @@
 #include <deal.II/base/exceptions.h>
 
 #include <perideal/base/parameter_utilities.h>
+#include <perideal/base/problem_settings.h>
 #include <perideal/pd/adaptive_dynamic_relaxation.h>
 
 #include <cmath>
@@ -122,7 +123,7 @@ namespace perideal
       message << "\n  " << iteration << ": " << value;
     message << "\nIncrease <Solver/Maximum iterations> or <Solver/Load steps>, or relax the "
                "tolerance.";
-    AssertThrow(false, ExcMessage(message.str()));
+    AssertThrow(false, ExcNotConverged(message.str()));
     return result;
   }
 } // namespace perideal

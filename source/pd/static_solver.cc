@@ -266,7 +266,7 @@ namespace perideal
     catch (const SolverControl::NoConvergence &e)
       {
         AssertThrow(false,
-                    ExcMessage(
+                    ExcNotConverged(
                       "The " + what + " did not converge: residual " +
                       std::to_string(e.last_residual / rhs_norm) + " after " +
                       std::to_string(e.last_step) +
@@ -277,23 +277,24 @@ namespace perideal
     catch (const std::exception &e)
       {
         AssertThrow(false,
-                    ExcMessage("The " + what + " failed (the stiffness matrix is singular?)." +
-                               advice + " Solver message: " + e.what()));
+                    ExcNotConverged("The " + what + " failed (the stiffness matrix is singular?)." +
+                                    advice + " Solver message: " + e.what()));
       }
     // A singular system can yield a solution that is not finite.
     AssertThrow(std::isfinite(x.l2_norm()),
-                ExcMessage("The " + what +
-                           " produced a non-finite displacement: the stiffness matrix is "
-                           "singular." +
-                           advice));
+                ExcNotConverged("The " + what +
+                                " produced a non-finite displacement: the stiffness matrix is "
+                                "singular." +
+                                advice));
     // Check the residual independently of the solver's own test.
     SolverVector residual(b);
     K.vmult(residual, x);
     residual -= b;
     AssertThrow(residual.l2_norm() <= std::max(1e3 * settings.tolerance, 1e-8) * rhs_norm,
-                ExcMessage("The " + what + " left the residual " +
-                           std::to_string(residual.l2_norm() / rhs_norm) +
-                           " (relative): the stiffness matrix is singular or nearly so." + advice));
+                ExcNotConverged("The " + what + " left the residual " +
+                                std::to_string(residual.l2_norm() / rhs_norm) +
+                                " (relative): the stiffness matrix is singular or nearly so." +
+                                advice));
     return iterations;
   }
 

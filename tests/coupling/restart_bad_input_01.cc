@@ -1,7 +1,8 @@
 // ---------------------------------------------------------------------
 // Bad input of checkpoint and restart: each case stops with a message naming the entry or the
 // file, and a refused restart leaves the results of the run it would continue as they were
-// (statistics.csv unchanged). Cases: <Output/Checkpoint interval> < 0 (when the file is read);
+// (statistics.csv unchanged). Cases: <Output/Checkpoint interval> < 0 and <Output/Checkpoint
+// time interval> < 0 (when the file is read);
 // a restart without a checkpoint; a restart with the checkpoint of another problem (another
 // material model; another horizon, so other bonds); a truncated checkpoint; a file that is not a
 // checkpoint. The good checkpoint is then accepted.
@@ -87,6 +88,7 @@ main(int argc, char **argv)
   const bool root = Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0;
 
   run(plate + "  set Checkpoint interval = -1\n", "negative_interval", 0, false);
+  run(plate + "  set Checkpoint time interval = -1e-7\n", "negative_time_interval", 0, false);
 
   run(plate, "no_checkpoint", 0, true);
   deallog << "  output directory created: " << std::filesystem::exists("no_checkpoint")

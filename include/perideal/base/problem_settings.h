@@ -45,6 +45,16 @@ namespace perideal
   };
 
   /**
+   * @brief A quasi-static solve that stopped without equilibrium: the relaxation or the linear
+   * solver reached <Solver/Maximum iterations> before <Solver/Tolerance>, or the linear solve
+   * failed (a singular or nearly singular system). The message names the entries to change.
+   * The solvers throw it on every rank at once (their tests are on global quantities), so that
+   * the load stepping can catch it and write, collectively, the state for inspection and the
+   * checkpoint of the last converged load step before the run stops.
+   */
+  DeclException1(ExcNotConverged, std::string, << arg1);
+
+  /**
    * @brief The settings of a problem that belong to neither region: the solver (<Solver>),
    * time stepping (<Time stepping>), initial conditions (<Initial conditions>), the body force
    * (<Body force>) and output (<Output>), plus <Dimension>. Declared and read in one place; the
@@ -86,7 +96,9 @@ namespace perideal
     // <Output>
     std::string  output_directory = "output", base_name = "particles";
     unsigned int output_interval = 0, statistics_interval = 10, checkpoint_interval = 0;
-    bool         write_hdf5 = true, write_vtu = false, show_progress = true;
+    /// <Checkpoint time interval>: simulated time [s] (explicit) or load factor (quasi-static).
+    double                          checkpoint_time_interval = 0.;
+    bool                            write_hdf5 = true, write_vtu = false, show_progress = true;
     std::vector<dealii::Point<dim>> probe_points;
   };
 } // namespace perideal

@@ -8,8 +8,10 @@
 #include <perideal/coupling/coupled_state.h>
 #include <perideal/coupling/postprocessors/postprocessor.h>
 
+#include <cstdint>
 #include <limits>
 #include <string>
+#include <vector>
 
 namespace perideal
 {
@@ -27,8 +29,9 @@ namespace perideal
   };
 
   /**
-   * @brief Checkpoints of a run every <Output/Checkpoint interval> steps, and the restart from
-   * the newest one (perideal-solid --restart).
+   * @brief Checkpoints of a run every <Output/Checkpoint interval> steps and at each multiple of
+   * <Output/Checkpoint time interval> of simulated time (the load factor of a quasi-static run),
+   * and the restart from the newest one (perideal-solid --restart).
    *
    * The checkpoint `<Output/Directory>/checkpoint` holds the complete state of the run: every
    * vector of CoupledState (particles: displacement, velocity, acceleration, forces, the
@@ -50,7 +53,12 @@ namespace perideal
    * it, so a run killed while writing leaves the previous checkpoint complete. A restart checks,
    * before it writes anything, that the file exists, is complete (its size and end mark) and
    * belongs to this problem (dimension, models, unknowns, numbers of particles, bonds, FE cells
-   * and dofs, solver and its steps); otherwise it stops naming the file and what differs.
+   * and dofs, the solver type and its number and size of steps); otherwise it stops naming the
+   * file and what differs. The settings that only decide how well a step is solved
+   * (<Solver/Tolerance>, <Solver/Maximum iterations>, <Solver/Linear solver>, <Solver/Density
+   * safety factor>) are not part of it: a quasi-static run that stopped without convergence
+   * continues from the checkpoint of its last converged load step (keep(), write_kept()) with
+   * other values of them.
    */
   template <int dim>
   class Checkpoint
@@ -90,36 +98,77 @@ namespace perideal
      * the class description) and return the position to continue from. Collective.
      */
     RunPosition
-    load(CoupledState<dim> &state, Postprocessors<dim> &postprocessors) const;
+    load(CoupledState<dim> &state, Postprocessors<dim> &postprocessors);
 
     /**
      * @brief After the step of @p position: write a checkpoint if one is due (every
-     * <Output/Checkpoint interval> steps before the last, and at the stop step); return
-     * whether the run ends here (the stop step). Collective.
+     * <Output/Checkpoint interval> steps, or the first step at or after each multiple of
+     * <Output/Checkpoint time interval>, before the last step; and at the stop step); return
+     * whether the run ends here (the stop step). Call after every step. Collective.
      */
     bool
     after_step(CoupledState<dim>         &state,
                const Postprocessors<dim> &postprocessors,
-               const RunPosition         &position) const;
+               const RunPosition         &position);
+
+    /**
+     * @brief Keep in memory what a checkpoint of @p position would hold (the stored parts of
+     * @p state, its broken bonds and the postprocessors' state): a quasi-static run keeps each
+     * converged load step before it solves the next one. Collective.
+     */
+    void
+    keep(CoupledState<dim>         &state,
+         const Postprocessors<dim> &postprocessors,
+         const RunPosition         &position);
+
+    /**
+     * @brief Put the state of the last keep() back into @p state (which loses what it held) and
+     * write its checkpoint; return its position. For a run that stops without convergence: the
+     * checkpoint is that of the last converged step. Collective.
+     */
+    RunPosition
+    write_kept(CoupledState<dim> &state);
 
   private:
-    /// Write the checkpoint of @p position (to the temporary name, then renamed).
+    /// Write the checkpoint of @p position (to the temporary name, then renamed), with the
+    /// postprocessors' state @p postprocessor_state (Postprocessors::save_state()).
     void
-    write(CoupledState<dim>         &state,
-          const Postprocessors<dim> &postprocessors,
-          const RunPosition         &position) const;
+    write(CoupledState<dim> &state,
+          const std::string &postprocessor_state,
+          const RunPosition &position) const;
+
+    /// Whether a checkpoint is due after the step of @p position by the intervals.
+    bool
+    due(const RunPosition &position) const;
 
     /// The fingerprint of the problem of @p state: "key = value" lines.
     std::string
     fingerprint(CoupledState<dim> &state) const;
 
+    /// What keep() keeps: copies of the stored parts, the bond states, the postprocessors.
+    struct Kept
+    {
+      std::vector<ParticleVector>                       particle_vectors;
+      std::vector<double>                               energy_density;
+      std::vector<typename CoupledState<dim>::FEVector> fe_vectors;
+      double                                            work = 0., dissipated = 0.;
+      std::vector<std::uint8_t>                         intact;
+      std::string                                       postprocessors;
+      RunPosition                                       position;
+      bool                                              valid = false;
+    };
+
     std::string  file;
     std::string  problem_lines;
     unsigned int interval;
+    double       time_interval;
     bool         restart;
     unsigned int stop_step;
     std::string  run_description;
     unsigned int n_steps = 0;
+    /// The time of the step before (the restart's or 0 at first): the time interval's reference.
+    double previous_time = 0.;
+    Kept   kept;
   };
 } // namespace perideal
 

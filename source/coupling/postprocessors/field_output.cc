@@ -1,6 +1,8 @@
 // ---------------------------------------------------------------------
 // PeriDeal: the particle and FE fields of a run, for ParaView.
 // ---------------------------------------------------------------------
+#include <deal.II/base/data_out_base.h>
+
 #include <perideal/coupling/postprocessors/field_output.h>
 #include <perideal/pd/damage_model.h>
 
@@ -10,6 +12,7 @@
 
 #include <boost/serialization/string.hpp>
 #include <boost/serialization/utility.hpp>
+#include <boost/serialization/vector.hpp>
 
 namespace perideal
 {
@@ -22,9 +25,15 @@ namespace perideal
     if (!data.write_fields)
       return;
     const auto &settings = state.settings;
-    if (!particle_output)
-      create_particle_output(state);
-    if (particle_output)
+    // The state of a step that did not converge: files of their own, outside the run's series.
+    const std::string                    suffix = data.not_converged ? "_not_converged" : "";
+    std::unique_ptr<ParticleOutput<dim>> separate;
+    if (data.not_converged)
+      separate = create_particle_output(state, settings.base_name + suffix);
+    else if (!particle_output)
+      particle_output = create_particle_output(state, settings.base_name);
+    ParticleOutput<dim> *const writer = data.not_converged ? separate.get() : particle_output.get();
+    if (writer)
       {
         const auto        &ps      = state.pd.particles();
         const unsigned int n_owned = ps.n_owned(), nc = state.n_components();
@@ -32,8 +41,8 @@ namespace perideal
         // The particles that follow the FE field move with it: show its velocity there.
         ParticleVector velocity(state.v);
         state.method.interpolate_to_particles(state.V, velocity);
-        particle_output->clear_fields();
-        particle_output->set_points(std::vector<Point<dim>>(x.begin(), x.begin() + n_owned));
+        writer->clear_fields();
+        writer->set_points(std::vector<Point<dim>>(x.begin(), x.begin() + n_owned));
         // The fields of each group of components: displacement, velocity and force_density of
         // the translations; rotation, angular_velocity, moment_density of the rotations; w,
         // w_rate, w_load of a scalar w.
@@ -64,38 +73,51 @@ namespace perideal
                 return result;
               };
               const unsigned int n = group.components.size();
-              particle_output->add_vector_field(group.names[0], n, values(state.u));
-              particle_output->add_vector_field(group.names[1], n, values(velocity));
-              particle_output->add_vector_field(group.names[2], n, values(state.internal_force));
+              writer->add_vector_field(group.names[0], n, values(state.u));
+              writer->add_vector_field(group.names[1], n, values(velocity));
+              writer->add_vector_field(group.names[2], n, values(state.internal_force));
             }
         state.u.update_ghost_values();
         for (const auto &field : state.pd.material().derived_fields(ps, state.u))
-          particle_output->add_vector_field(field.name, field.n_components, field.values);
-        particle_output->add_scalar_field("damage", damage_index(ps));
+          writer->add_vector_field(field.name, field.n_components, field.values);
+        writer->add_scalar_field("damage", damage_index(ps));
         if (state.energy_density.size() == n_owned)
-          particle_output->add_scalar_field("strain_energy_density", state.energy_density);
-        particle_output->write(data.output_index, data.time);
+          writer->add_scalar_field("strain_energy_density", state.energy_density);
+        writer->write(data.output_index, data.time);
       }
     state.U.update_ghost_values();
     if (settings.write_hdf5)
-      state.fe.write_output(state.settings.output_directory,
-                            "solution",
-                            data.output_index,
-                            data.time,
-                            state.U);
+      {
+        // A file of its own has only its own record: the run's are set aside meanwhile.
+        const std::string records = state.fe.save_output_records();
+        if (data.not_converged)
+          {
+            const std::vector<char> none = Utilities::pack(std::vector<XDMFEntry>(), false);
+            state.fe.load_output_records(std::string(none.begin(), none.end()));
+          }
+        state.fe.write_output(state.settings.output_directory,
+                              "solution" + suffix,
+                              data.output_index,
+                              data.time,
+                              state.U);
+        if (data.not_converged)
+          state.fe.load_output_records(records);
+      }
   }
 
   template <int dim>
-  void
-  FieldOutput<dim>::create_particle_output(const CoupledState<dim> &state)
+  std::unique_ptr<ParticleOutput<dim>>
+  FieldOutput<dim>::create_particle_output(const CoupledState<dim> &state,
+                                           const std::string       &base_name)
   {
     const auto &settings = state.settings;
     if (state.pd.has_body() && (settings.write_hdf5 || settings.write_vtu))
-      particle_output = std::make_unique<ParticleOutput<dim>>(state.comm,
-                                                              settings.output_directory,
-                                                              settings.base_name,
-                                                              settings.write_hdf5,
-                                                              settings.write_vtu);
+      return std::make_unique<ParticleOutput<dim>>(state.comm,
+                                                   settings.output_directory,
+                                                   base_name,
+                                                   settings.write_hdf5,
+                                                   settings.write_vtu);
+    return nullptr;
   }
 
   template <int dim>
@@ -118,9 +140,14 @@ namespace perideal
       Utilities::unpack<std::pair<std::string, std::string>>(std::vector<char>(packed.begin(),
                                                                                packed.end()),
                                                              false);
-    create_particle_output(state);
-    if (particle_output)
-      particle_output->load_records(records.first);
+    // Empty: no particle output before the checkpoint (a quasi-static run writes its fields
+    // at the last load step only); the writer is then created by the first output.
+    if (!records.first.empty())
+      {
+        particle_output = create_particle_output(state, state.settings.base_name);
+        if (particle_output)
+          particle_output->load_records(records.first);
+      }
     state.fe.load_output_records(records.second);
   }
 

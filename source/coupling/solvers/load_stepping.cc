@@ -5,6 +5,8 @@
 #include <perideal/pd/damage_model.h>
 
 #include <algorithm>
+#include <limits>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -159,7 +161,11 @@ namespace perideal
     fe.prescribe(settings.end_time, fe_target, state.V);
     fe.assemble_load(settings.end_time, fe_full_load);
 
-    checkpoint.set_run("quasi-static, " + std::to_string(n_steps) + " load steps", n_steps);
+    // What a restart must keep: the solver and its load steps (not its tolerance, iterations or
+    // linear solver, which a restart after a step that did not converge may change).
+    checkpoint.set_run(std::string(relax ? "adaptive dynamic relaxation" : "static") + ", " +
+                         std::to_string(n_steps) + " load steps",
+                       n_steps);
     StepData data;
     data.quasi_static     = true;
     data.write_statistics = true;
@@ -174,30 +180,44 @@ namespace perideal
     const auto &mask = fe.prescribed_mask();
     for (unsigned int step = start.step + 1; step <= n_steps; ++step)
       {
+        // The state after the last converged step, for a checkpoint if this one fails.
+        checkpoint.keep(state, postprocessors, {step - 1, double(step - 1) / n_steps, step});
         const double factor = double(step) / n_steps;
         state.f_ext.equ(factor, fe_full_load);
         state.external_force.equ(factor, full_load);
 
         unsigned int passes = 0, iterations = 0;
-        for (;; ++passes)
+        try
           {
-            const auto broken_before = n_broken_bonds(ps);
-            for (unsigned int k = 0; k < U.locally_owned_size(); ++k)
-              if (mask[k])
-                U.local_element(k) = factor * fe_target.local_element(k);
-            for (unsigned int k = 0; k < u.locally_owned_size(); ++k)
-              if (prescribed.local_element(k) != 0.)
-                u.local_element(k) = factor * target.local_element(k);
-            iterations += state.method.solve_equilibrium(state.f_ext, state.external_force, U, u);
-            // The model's own forces and energy density at the solution (breaks bonds).
-            pd.material().compute_forces(ps,
-                                         u,
-                                         state.internal_force,
-                                         &state.energy_density,
-                                         pd.critical_stretch());
-            state.accumulate_dissipated_energy();
-            if (breaking_settled(ps, broken_before, pd.material().damage_changed(), step, passes))
-              break;
+            for (;; ++passes)
+              {
+                const auto broken_before = n_broken_bonds(ps);
+                for (unsigned int k = 0; k < U.locally_owned_size(); ++k)
+                  if (mask[k])
+                    U.local_element(k) = factor * fe_target.local_element(k);
+                for (unsigned int k = 0; k < u.locally_owned_size(); ++k)
+                  if (prescribed.local_element(k) != 0.)
+                    u.local_element(k) = factor * target.local_element(k);
+                iterations +=
+                  state.method.solve_equilibrium(state.f_ext, state.external_force, U, u);
+                // The model's own forces and energy density at the solution (breaks bonds).
+                pd.material().compute_forces(ps,
+                                             u,
+                                             state.internal_force,
+                                             &state.energy_density,
+                                             pd.critical_stretch());
+                state.accumulate_dissipated_energy();
+                if (breaking_settled(ps,
+                                     broken_before,
+                                     pd.material().damage_changed(),
+                                     step,
+                                     passes))
+                  break;
+              }
+          }
+        catch (const ExcNotConverged &failure)
+          {
+            stop_without_convergence(state, postprocessors, checkpoint, step, failure);
           }
         const double pd_energy = state.method.equilibrium_forces(U,
                                                                  u,
@@ -238,6 +258,92 @@ namespace perideal
         if (checkpoint.after_step(state, postprocessors, {step, factor, step + 1}))
           return;
       }
+  }
+
+  template <int dim>
+  void
+  LoadStepping<dim>::stop_without_convergence(CoupledState<dim>     &state,
+                                              Postprocessors<dim>   &postprocessors,
+                                              Checkpoint<dim>       &checkpoint,
+                                              const unsigned int     step,
+                                              const ExcNotConverged &failure) const
+  {
+    const auto        &settings  = state.settings;
+    const unsigned int n_steps   = settings.load_steps;
+    const std::string &directory = settings.output_directory;
+    auto              &ps        = state.pd.particles();
+
+    // The last iterate for inspection: its forces and energy density (no bond breaks), its
+    // fields in files of their own (FieldOutput); no statistics row.
+    if (state.pd.has_body())
+      state.pd.material().compute_forces(ps,
+                                         state.u,
+                                         state.internal_force,
+                                         &state.energy_density,
+                                         std::numeric_limits<double>::infinity());
+    StepData data;
+    data.quasi_static  = true;
+    data.step          = step;
+    data.time          = double(step) / n_steps;
+    data.write_fields  = true;
+    data.output_index  = step;
+    data.not_converged = true;
+    postprocessors.execute(state, data);
+    std::vector<std::string> files;
+    if (state.pd.has_body() && settings.write_hdf5)
+      files.push_back(directory + "/" + settings.base_name + "_not_converged.xdmf");
+    if (state.pd.has_body() && settings.write_vtu)
+      files.push_back(directory + "/" + settings.base_name + "_not_converged.pvd");
+    if (state.fe.n_dofs() > 0 && settings.write_hdf5)
+      files.push_back(directory + "/solution_not_converged.xdmf");
+    std::string file_list;
+    for (const auto &file : files)
+      file_list += (file_list.empty() ? "" : ", ") + file;
+    const auto broken = n_broken_bonds(ps);
+    if (state.is_root)
+      {
+        state.log << "Load step " << step << "/" << n_steps << " did not converge";
+        if (state.pd.has_body())
+          state.log << " (" << broken << " broken bonds at its last iterate)";
+        state.log << "; its last iterate: "
+                  << (files.empty() ? std::string("no field files (<Output/Write HDF5> and "
+                                                  "<Output/Write VTU> are false)") :
+                                      file_list + " (output index " + std::to_string(step) + ")")
+                  << std::endl;
+      }
+
+    // The checkpoint of the last converged load step (the state goes back to it).
+    const RunPosition converged = checkpoint.write_kept(state);
+
+    // How to continue, in the log and in the message of the error.
+    const bool        relax = (type == SolverType::adaptive_dynamic_relaxation);
+    const std::string how =
+      "To continue from it, change " +
+      std::string(relax ? "<Solver/Maximum iterations>, <Solver/Tolerance> or <Solver/Density "
+                          "safety factor>" :
+                          "<Solver/Maximum iterations>, <Solver/Tolerance> or <Solver/Linear "
+                          "solver>") +
+      " in the parameter file and run 'perideal-solid --restart FILE.prm'; the problem, "
+      "<Solver/Type> and <Solver/Load steps> must stay as they are (other load steps need a new "
+      "run).";
+    if (state.is_root)
+      state.log << "Load step " << converged.step << " is the last converged one. " << how
+                << std::endl;
+
+    std::ostringstream message;
+    failure.print_info(message);
+    std::string text = message.str();
+    text.erase(0, text.find_first_not_of(" \n"));
+    while (!text.empty() && (text.back() == '\n' || text.back() == ' '))
+      text.pop_back();
+    AssertThrow(false,
+                ExcNotConverged(
+                  text + "\nLoad step " + std::to_string(step) + "/" + std::to_string(n_steps) +
+                  " did not converge. Its last iterate is written for inspection (" +
+                  (files.empty() ? std::string("no field files") : file_list) +
+                  "; statistics.csv ends at load step " + std::to_string(converged.step) +
+                  "), and the checkpoint of the last converged load step " +
+                  std::to_string(converged.step) + " to " + checkpoint.filename() + ". " + how));
   }
 
   template class LoadStepping<2>;

@@ -18,6 +18,11 @@ namespace perideal
    * velocity (particles that follow the FE field: its velocity), force density, damage and
    * strain-energy density; the FE region (solution.xdmf + .h5: the FE region's fields,
    * FERegion::write_output()) with <Output/Write HDF5>.
+   *
+   * The state of a quasi-static load step that did not converge (StepData::not_converged) goes
+   * to files of its own, outside the series of the run: <Output/Base name>_not_converged.xdmf
+   * (+ .h5, .pvd + .vtu) and solution_not_converged.xdmf (+ .h5), with the load step as their
+   * index; the records of the run's series (its checkpoint's) are left as they were.
    */
   template <int dim>
   class FieldOutput : public Postprocessor<dim>
@@ -36,9 +41,10 @@ namespace perideal
     load_state(const CoupledState<dim> &state, const std::string &packed) override;
 
   private:
-    /// Create the particle writer if the run has particles and writes their fields.
-    void
-    create_particle_output(const CoupledState<dim> &state);
+    /// A particle writer of files named @p base_name, if the run has particles and writes
+    /// their fields (otherwise null).
+    static std::unique_ptr<ParticleOutput<dim>>
+    create_particle_output(const CoupledState<dim> &state, const std::string &base_name);
 
     /// The particle writer, created at the first output.
     std::unique_ptr<ParticleOutput<dim>> particle_output;

@@ -29,6 +29,9 @@ namespace perideal
     /// Whether to write the particle and FE fields, and the index of that output.
     bool         write_fields = false;
     unsigned int output_index = 0;
+    /// Quasi-static: the step stopped without convergence; the fields written are of its last
+    /// iterate, to files of their own (FieldOutput); no statistics row, no summary.
+    bool not_converged = false;
     /// Quasi-static: iterations of the step's solves, and the particles' strain energy in the
     /// coupling method's model of equilibrium (CouplingMethod::equilibrium_forces()) [J].
     unsigned int iterations = 0;

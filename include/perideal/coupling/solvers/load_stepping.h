@@ -21,6 +21,13 @@ namespace perideal
    * displacement condition holds (a singular system). After each step the postprocessors see
    * the reactions (the FE residual K z - F on prescribed dofs, the particles' internal forces)
    * and the particles' energy in the method's model of equilibrium.
+   *
+   * A load step whose solve does not converge (ExcNotConverged: <Solver/Maximum iterations>
+   * reached, or a failed linear solve) stops the run after writing its last iterate for
+   * inspection (FieldOutput's files *_not_converged, no statistics row) and the checkpoint of
+   * the last converged load step (Checkpoint::keep() before each step, write_kept()), whatever
+   * <Output/Checkpoint interval>; the exception then names the files and how to continue with
+   * other solver settings (perideal-solid --restart).
    */
   template <int dim>
   class LoadStepping : public Solver<dim>
@@ -38,6 +45,18 @@ namespace perideal
         Checkpoint<dim>     &checkpoint) override;
 
   private:
+    /**
+     * @brief Load step @p step did not converge (@p failure): write its last iterate and the
+     * checkpoint of the last converged step, then throw ExcNotConverged with @p failure's
+     * message and how to continue. Collective.
+     */
+    [[noreturn]] void
+    stop_without_convergence(CoupledState<dim>     &state,
+                             Postprocessors<dim>   &postprocessors,
+                             Checkpoint<dim>       &checkpoint,
+                             const unsigned int     step,
+                             const ExcNotConverged &failure) const;
+
     SolverType type;
     /// 1 on the prescribed components of owned free particles.
     ParticleVector prescribed;
