@@ -1,5 +1,5 @@
 // ---------------------------------------------------------------------
-// PeriDeal: anisotropic linearized bond-based PD in 3D (seed 004).
+// PeriDeal: anisotropic linearized bond-based PD in 3D and 2D (seed 004).
 // ---------------------------------------------------------------------
 #include <deal.II/base/numbers.h>
 #include <deal.II/base/point.h>
@@ -38,25 +38,25 @@ namespace perideal
      * and, if @p with_energy, the pair energy k s^2 |xi| / 4 at both ends; if @p breaks, a bond
      * breaks where s times its class's factor exceeds the reference critical stretch.
      */
-    template <bool with_energy, bool breaks>
-    struct LinearizedPairLaw : StretchPairLaw<3>
+    template <int dim, bool with_energy, bool breaks>
+    struct LinearizedPairLaw : StretchPairLaw<dim>
     {
-      static constexpr unsigned int n_outputs    = 3 + (with_energy ? 1 : 0);
+      static constexpr unsigned int n_outputs    = dim + (with_energy ? 1 : 0);
       static constexpr bool         breaks_bonds = breaks;
       /// k per lane.
       const double *coefficient;
       /// The bond classes of the blocks (the loop hands their elements) and their factors.
-      const BondBlocks<3>::BondClass *classes;
-      const double                   *break_factor;
+      const typename BondBlocks<dim>::BondClass *classes;
+      const double                              *break_factor;
 
       /// The linearized stretch (hides StretchPairLaw's deformed bond).
       LinearStretch
-      strain(const BondBlocks<3>::BondClass &bond,
-             const bond_simd::Vector        *u_a,
-             const bond_simd::Vector        *u_b) const
+      strain(const typename BondBlocks<dim>::BondClass &bond,
+             const bond_simd::Vector                   *u_a,
+             const bond_simd::Vector                   *u_b) const
       {
         bond_simd::Vector e = 0.;
-        for (unsigned int d = 0; d < 3; ++d)
+        for (unsigned int d = 0; d < dim; ++d)
           e += bond.xi[d] * (u_b[d] - u_a[d]);
         const bond_simd::Vector s = e * (bond.inverse_length * bond.inverse_length);
         if constexpr (breaks)
@@ -66,9 +66,9 @@ namespace perideal
       }
 
       void
-      pair(const BondBlocks<3>::BondClass &bond,
-           const LinearStretch            &y,
-           const StretchPairLaw<3>::Side &,
+      pair(const typename BondBlocks<dim>::BondClass &bond,
+           const LinearStretch                       &y,
+           const typename StretchPairLaw<dim>::Side &,
            const BondLanes   &lanes,
            bond_simd::Vector *to_a,
            bond_simd::Vector *to_b) const
@@ -77,7 +77,7 @@ namespace perideal
         const Vector k(coefficient + lanes.first_lane, stdx::element_aligned);
         Vector       t               = 0.;
         stdx::where(lanes.active, t) = k * y.s * bond.inverse_length;
-        for (unsigned int d = 0; d < 3; ++d)
+        for (unsigned int d = 0; d < dim; ++d)
           {
             to_a[d] = bond.xi[d] * t;
             to_b[d] = -to_a[d];
@@ -86,22 +86,23 @@ namespace perideal
           {
             Vector e                     = 0.;
             stdx::where(lanes.active, e) = (0.25 * bond.length) * k * y.s * y.s;
-            to_a[3]                      = e;
-            to_b[3]                      = e;
+            to_a[dim]                    = e;
+            to_b[dim]                    = e;
           }
       }
     };
   } // namespace
 
-  struct AnisotropicBondBased::Kernel
+  template <int dim>
+  struct AnisotropicBondBased<dim>::Kernel
   {
     /// The bonds in SIMD blocks, bond_coefficient per lane and the breaking factor
     /// sqrt(|c(n)| / c_mean) per bond class.
-    BondBlocks<3>        blocks;
-    BondBlocks<3>::Array lane_coefficient;
-    std::vector<double>  class_break_factor;
+    BondBlocks<dim>                 blocks;
+    typename BondBlocks<dim>::Array lane_coefficient;
+    std::vector<double>             class_break_factor;
     /// Kernel-order work fields: displacement, force, energy density.
-    BondBlocks<3>::Array u_field, f_field, w_field;
+    typename BondBlocks<dim>::Array u_field, f_field, w_field;
 
     /**
      * @brief The loop of LinearizedPairLaw (energy density if @p with_energy, bond breaking
@@ -111,17 +112,17 @@ namespace perideal
     void
     run_loop(BondList &bonds, const double critical_stretch)
     {
-      using Law = LinearizedPairLaw<with_energy, breaks>;
-      std::array<const double *, 3>        u;
+      using Law = LinearizedPairLaw<dim, with_energy, breaks>;
+      std::array<const double *, dim>      u;
       std::array<double *, Law::n_outputs> out;
-      for (unsigned int d = 0; d < 3; ++d)
+      for (unsigned int d = 0; d < dim; ++d)
         {
           u[d]   = blocks.component(u_field, d);
           out[d] = blocks.component(f_field, d);
         }
       if constexpr (with_energy)
-        out[3] = blocks.component(w_field, 0);
-      for_each_bond_block<3>(
+        out[dim] = blocks.component(w_field, 0);
+      for_each_bond_block<dim>(
         blocks,
         u,
         out,
@@ -144,14 +145,17 @@ namespace perideal
     }
   };
 
-  AnisotropicBondBased::AnisotropicBondBased()
+  template <int dim>
+  AnisotropicBondBased<dim>::AnisotropicBondBased()
     : kernel(std::make_unique<Kernel>())
   {}
 
-  AnisotropicBondBased::~AnisotropicBondBased() = default;
+  template <int dim>
+  AnisotropicBondBased<dim>::~AnisotropicBondBased() = default;
 
+  template <int dim>
   void
-  AnisotropicBondBased::declare_parameters(ParameterHandler &prm)
+  AnisotropicBondBased<dim>::declare_parameters(ParameterHandler &prm)
   {
     ElasticMaterial::declare_parameters(prm);
     prm.declare_entry("Cauchy relations",
@@ -159,7 +163,8 @@ namespace perideal
                       Patterns::Selection("refuse|symmetrize"),
                       "What to do with constants that violate Cauchy's relations (C66 = C12, "
                       "C44 = C23, C55 = C13, C56 = C14, C46 = C25, C45 = C36 in the global axes, "
-                      "relative tolerance 1e-8 of the largest |C_ijkl|), which bond-based PD "
+                      "relative tolerance 1e-8 of the largest |C_ijkl|; in 2D C66 = C12 of the "
+                      "2D tensor of the planar assumption), which bond-based PD "
                       "imposes: refuse (stop with the violations) or symmetrize (use the "
                       "completely symmetric part (1/24) sum_perm C_ijkl; the change of every "
                       "constant is written to the log).");
@@ -172,18 +177,28 @@ namespace perideal
                       "1.3; its lattice error is written to the log).");
   }
 
+  template <int dim>
   void
-  AnisotropicBondBased::parse_parameters(ParameterHandler &prm)
+  AnisotropicBondBased<dim>::parse_parameters(ParameterHandler &prm)
   {
     material.parse_parameters(prm, section);
     calibration =
       prm.get("Calibration") == "discrete" ? Calibration::discrete : Calibration::continuum;
-    const auto C_input = material.tensor<3>(PlanarAssumption::three_dimensional);
-    double     scale   = 0.;
-    for (unsigned int i = 0; i < 3; ++i)
-      for (unsigned int j = 0; j < 3; ++j)
-        for (unsigned int k = 0; k < 3; ++k)
-          for (unsigned int l = 0; l < 3; ++l)
+    symmetrize = prm.get("Cauchy relations") == "symmetrize";
+    if constexpr (dim == 3)
+      set_target(material.tensor<3>(PlanarAssumption::three_dimensional), "elastic constants");
+  }
+
+  template <int dim>
+  void
+  AnisotropicBondBased<dim>::set_target(const SymmetricTensor<4, dim> &C_input,
+                                        const std::string             &what)
+  {
+    double scale = 0.;
+    for (unsigned int i = 0; i < dim; ++i)
+      for (unsigned int j = 0; j < dim; ++j)
+        for (unsigned int k = 0; k < dim; ++k)
+          for (unsigned int l = 0; l < dim; ++l)
             scale = std::max(scale, std::abs(C_input[i][j][k][l]));
     const double       tolerance = 1e-8 * scale;
     std::ostringstream violated;
@@ -193,59 +208,80 @@ namespace perideal
                  << ParameterUtilities::format_number(relation.difference) << " Pa ("
                  << ParameterUtilities::format_number(relation.difference / scale)
                  << " of the largest constant);";
-    AssertThrow(violated.str().empty() || prm.get("Cauchy relations") == "symmetrize",
-                ExcMessage("The elastic constants of <" + section + "> (" + material.summary() +
-                           ") violate Cauchy's relations, which bond-based peridynamics "
+    const std::string accepted =
+      dim == 3 ? "constants with C66 = C12, C44 = C23, C55 = C13, C56 = C14, C46 = C25, C45 = C36 "
+                 "(global axes, relative tolerance 1e-8)" :
+                 "constants whose 2D tensor has C66 = C12 (relative tolerance 1e-8)";
+    const std::string alternative =
+      (dim == 2 && context.planar == PlanarAssumption::plane_stress) ?
+        "; a 3D material with Cauchy's relations in plane stress is the model 'anisotropic "
+        "plane stress' (<Material/Model> = anisotropic plane stress), whose reduced stiffness "
+        "need not satisfy the 2D relation" :
+        "";
+    AssertThrow(violated.str().empty() || symmetrize,
+                ExcMessage("The " + what + " of <" + section + "> (" + material.summary() +
+                           (dim == 3 ? ") violate" : ") violates") +
+                           " Cauchy's relations, which bond-based peridynamics "
                            "imposes:" +
-                           violated.str() +
-                           " accepted: constants with C66 = C12, C44 = C23, C55 = C13, C56 = "
-                           "C14, C46 = C25, C45 = C36 (global axes, relative tolerance 1e-8), "
-                           "or <" +
-                           section + "/Cauchy relations> = symmetrize."));
+                           violated.str() + " accepted: " + accepted + ", or <" + section +
+                           "/Cauchy relations> = symmetrize" + alternative + "."));
     C = am::completely_symmetric_part(C_input);
     symmetrization_report.clear();
     if (!violated.str().empty())
       {
-        const auto         C_sym      = am::to_tensor(C);
-        const unsigned int pair[6][2] = {{0, 0}, {1, 1}, {2, 2}, {1, 2}, {0, 2}, {0, 1}};
+        const auto         C_sym       = am::to_tensor<dim>(C);
+        const unsigned int pair3[6][2] = {{0, 0}, {1, 1}, {2, 2}, {1, 2}, {0, 2}, {0, 1}};
+        const unsigned int pair2[3][2] = {{0, 0}, {1, 1}, {0, 1}};
+        const unsigned int voigt2[3]   = {1, 2, 6};
+        const unsigned int n_voigt     = dim == 3 ? 6 : 3;
         std::ostringstream report;
         report << "Cauchy relations violated (" << violated.str()
                << ") and symmetrized; changed constants (global axes):";
-        for (unsigned int I = 0; I < 6; ++I)
-          for (unsigned int J = I; J < 6; ++J)
+        for (unsigned int I = 0; I < n_voigt; ++I)
+          for (unsigned int J = I; J < n_voigt; ++J)
             {
-              const double before = C_input[pair[I][0]][pair[I][1]][pair[J][0]][pair[J][1]];
-              const double after  = C_sym[pair[I][0]][pair[I][1]][pair[J][0]][pair[J][1]];
+              const unsigned int *p      = dim == 3 ? pair3[I] : pair2[I];
+              const unsigned int *q      = dim == 3 ? pair3[J] : pair2[J];
+              const double        before = C_input[p[0]][p[1]][q[0]][q[1]];
+              const double        after  = C_sym[p[0]][p[1]][q[0]][q[1]];
               if (std::abs(after - before) > tolerance)
-                report << " C" << I + 1 << J + 1 << " " << ParameterUtilities::format_number(before)
-                       << " -> " << ParameterUtilities::format_number(after) << " Pa;";
+                report << " C" << (dim == 3 ? I + 1 : voigt2[I]) << (dim == 3 ? J + 1 : voigt2[J])
+                       << " " << ParameterUtilities::format_number(before) << " -> "
+                       << ParameterUtilities::format_number(after) << " Pa;";
             }
         symmetrization_report = report.str();
       }
   }
 
+  template <int dim>
   void
-  AnisotropicBondBased::initialize(ParticleSystem<3> &particles, const ModelContext &model_context)
+  AnisotropicBondBased<dim>::initialize(ParticleSystem<dim> &particles,
+                                        const ModelContext  &model_context)
   {
-    context                        = model_context;
-    const am::LatticeFamily family = am::interior_family(particles);
+    context = model_context;
+    if constexpr (dim == 2)
+      set_target(material.tensor<2>(context.planar),
+                 context.planar == PlanarAssumption::plane_stress ?
+                   "plane-stress reduced stiffness (2D tensor, sigma_i3 = 0)" :
+                   "plane-strain stiffness (the in-plane block, 2D tensor)");
+    const am::Family<dim> family = am::interior_family(particles);
     AssertThrow(!family.xi.empty(),
                 ExcMessage("The region of <" + section +
                            "> has no bonds: the horizon is too "
                            "small for the particle spacing."));
     const FullMatrix<double> M_lattice      = am::lattice_moment_matrix(family);
-    const auto               relative_error = [&](const am::Components &Lambda_trial) {
-      am::Components residual = am::multiply(M_lattice, Lambda_trial);
-      for (unsigned int k = 0; k < 15; ++k)
+    const auto               relative_error = [&](const am::ComponentsOf<dim> &Lambda_trial) {
+      am::ComponentsOf<dim> residual = am::multiply(M_lattice, Lambda_trial);
+      for (unsigned int k = 0; k < am::n_components<dim>; ++k)
         residual[k] -= C[k];
       return am::norm(residual) / am::norm(C);
     };
-    const am::Components Lambda_continuum =
-      am::solve(am::continuum_moment_matrix(context.horizon), C);
+    const am::ComponentsOf<dim> Lambda_continuum =
+      am::solve(am::continuum_moment_matrix<dim>(context.horizon, context.thickness), C);
     lattice_error = relative_error(Lambda_continuum);
     Lambda = calibration == Calibration::discrete ? am::solve(M_lattice, C) : Lambda_continuum;
     calibration_residual = relative_error(Lambda);
-    directions           = am::scan_directions(Lambda);
+    directions           = am::scan_directions<dim>(Lambda);
     double spacing       = std::numeric_limits<double>::infinity();
     for (const auto &xi : family.xi)
       spacing = std::min(spacing, xi.norm());
@@ -257,45 +293,49 @@ namespace perideal
                            ParameterUtilities::format_number(symbol.relative_minimum) +
                            " of the largest): the particle model would be unstable. Accepted: "
                            "constants whose bond-based operator is positive definite at every "
-                           "wave vector (the set-up checks 16^3 of them)."));
-    AssertThrow(am::mean_directional_modulus(Lambda) > 0.,
+                           "wave vector (the set-up checks " +
+                           (dim == 3 ? std::string("16^3") : std::string("16^2")) + " of them)."));
+    AssertThrow(am::mean_directional_modulus<dim>(Lambda) > 0.,
                 ExcMessage("The elastic constants of <" + section +
                            "> give a micromodulus whose mean over the directions is not "
                            "positive; accepted: a positive definite operator."));
 
     Kernel &k = *kernel;
     k.blocks.reinit(particles);
-    k.blocks.reinit_field(k.u_field, 3);
-    k.blocks.reinit_field(k.f_field, 3);
+    k.blocks.reinit_field(k.u_field, dim);
+    k.blocks.reinit_field(k.f_field, dim);
     k.blocks.reinit_field(k.w_field, 1);
-    const double c_mean = am::mean_directional_modulus(Lambda);
+    const double c_mean = am::mean_directional_modulus<dim>(Lambda);
     k.class_break_factor.clear();
     for (const auto &bond_class : k.blocks.classes())
       {
-        const Tensor<1, 3> n = Point<3>(bond_class.xi[0], bond_class.xi[1], bond_class.xi[2]);
-        k.class_break_factor.push_back(
-          std::sqrt(std::abs(am::directional_modulus(Lambda, n / n.norm())) / c_mean));
+        Tensor<1, dim> n;
+        for (unsigned int d = 0; d < dim; ++d)
+          n[d] = bond_class.xi[d];
+        k.class_break_factor.push_back(std::sqrt(
+          std::abs(am::directional_modulus(Lambda, Tensor<1, dim>(n / n.norm()))) / c_mean));
       }
     if (context.surface_correction)
       {
         ParticleVector force;
-        particles.reinit_vector(force, 3);
+        particles.reinit_vector(force, dim);
         set_bond_coefficients(particles, false);
         const auto energy = [&](const ParticleVector &u, std::vector<double> &w) {
           compute_forces(particles, u, force, &w, std::numeric_limits<double>::infinity());
         };
-        const auto            C_tensor = elasticity_tensor();
-        std::array<double, 3> modulus;
-        for (unsigned int a = 0; a < 3; ++a)
+        const auto              C_tensor = elasticity_tensor();
+        std::array<double, dim> modulus;
+        for (unsigned int a = 0; a < dim; ++a)
           modulus[a] = C_tensor[a][a][a][a];
-        apply_energy_surface_correction<3>(particles, this->field_layout(), modulus, energy);
+        apply_energy_surface_correction<dim>(particles, this->field_layout(), modulus, energy);
       }
     set_bond_coefficients(particles, true);
   }
 
+  template <int dim>
   void
-  AnisotropicBondBased::set_bond_coefficients(const ParticleSystem<3> &particles,
-                                              const bool               with_surface_factor)
+  AnisotropicBondBased<dim>::set_bond_coefficients(const ParticleSystem<dim> &particles,
+                                                   const bool                 with_surface_factor)
   {
     bond_pair_coefficients(particles, 1., with_surface_factor, bond_coefficient);
     const BondList &bonds = particles.bonds();
@@ -303,76 +343,93 @@ namespace perideal
     for (unsigned int i = 0; i < particles.n_owned(); ++i)
       for (unsigned int b = bonds.row_start[i]; b < bonds.row_start[i + 1]; ++b)
         bond_coefficient[b] *=
-          am::directional_modulus(Lambda, (x[bonds.neighbor[b]] - x[i]) / bonds.length[b]);
+          am::directional_modulus(Lambda,
+                                  Tensor<1, dim>((x[bonds.neighbor[b]] - x[i]) / bonds.length[b]));
     kernel->blocks.to_lanes(bond_coefficient, kernel->lane_coefficient);
   }
 
+  template <int dim>
   void
-  AnisotropicBondBased::compute_forces(ParticleSystem<3>    &particles,
-                                       const ParticleVector &u,
-                                       ParticleVector       &force,
-                                       std::vector<double>  *energy_density,
-                                       const double          critical_stretch)
+  AnisotropicBondBased<dim>::compute_forces(ParticleSystem<dim>  &particles,
+                                            const ParticleVector &u,
+                                            ParticleVector       &force,
+                                            std::vector<double>  *energy_density,
+                                            const double          critical_stretch)
   {
     Kernel &k = *kernel;
-    evaluate_bond_kernel<3>(k.blocks,
-                            particles,
-                            u,
-                            3,
-                            k.u_field,
-                            k.f_field,
-                            k.w_field,
-                            force,
-                            energy_density,
-                            [&](auto with_energy) {
-                              k.template force_loop<decltype(with_energy)::value>(particles.bonds(),
-                                                                                  critical_stretch);
-                            });
+    evaluate_bond_kernel<dim>(
+      k.blocks,
+      particles,
+      u,
+      dim,
+      k.u_field,
+      k.f_field,
+      k.w_field,
+      force,
+      energy_density,
+      [&](auto with_energy) {
+        k.template force_loop<decltype(with_energy)::value>(particles.bonds(), critical_stretch);
+      });
   }
 
-  SymmetricTensor<4, 3>
-  AnisotropicBondBased::elasticity_tensor() const
+  template <int dim>
+  SymmetricTensor<4, dim>
+  AnisotropicBondBased<dim>::elasticity_tensor() const
   {
-    return am::to_tensor(C);
+    return am::to_tensor<dim>(C);
   }
 
+  template <int dim>
   double
-  AnisotropicBondBased::critical_stretch(const double fracture_energy) const
+  AnisotropicBondBased<dim>::critical_stretch(const double fracture_energy) const
   {
-    return std::sqrt(
-      10. * fracture_energy /
-      (numbers::PI * am::mean_directional_modulus(Lambda) * std::pow(context.horizon, 5)));
+    const double c_mean = am::mean_directional_modulus<dim>(Lambda);
+    if constexpr (dim == 2)
+      return std::sqrt(4. * fracture_energy /
+                       (c_mean * context.thickness * std::pow(context.horizon, 4)));
+    else
+      return std::sqrt(10. * fracture_energy /
+                       (numbers::PI * c_mean * std::pow(context.horizon, 5)));
   }
 
-  const am::Components &
-  AnisotropicBondBased::micromodulus_tensor() const
+  template <int dim>
+  const am::ComponentsOf<dim> &
+  AnisotropicBondBased<dim>::micromodulus_tensor() const
   {
     return Lambda;
   }
 
+  template <int dim>
   double
-  AnisotropicBondBased::continuum_lattice_error() const
+  AnisotropicBondBased<dim>::continuum_lattice_error() const
   {
     return lattice_error;
   }
 
-  const am::DirectionScan &
-  AnisotropicBondBased::direction_scan() const
+  template <int dim>
+  const am::DirectionScanOf<dim> &
+  AnisotropicBondBased<dim>::direction_scan() const
   {
     return directions;
   }
 
-  const am::SymbolScan &
-  AnisotropicBondBased::symbol_scan() const
+  template <int dim>
+  const am::SymbolScanOf<dim> &
+  AnisotropicBondBased<dim>::symbol_scan() const
   {
     return symbol;
   }
 
+  template <int dim>
   std::string
-  AnisotropicBondBased::summary() const
+  AnisotropicBondBased<dim>::summary() const
   {
     std::ostringstream out;
-    out << "anisotropic bond based (linearized, omega = 1/|xi|): " << material.summary() << "; "
+    out << "anisotropic bond based (linearized, omega = 1/|xi|"
+        << (dim == 2 ? (context.planar == PlanarAssumption::plane_stress ? ", plane stress" :
+                                                                           ", plane strain") :
+                       "")
+        << "): " << material.summary() << "; "
         << (calibration == Calibration::discrete ? "discrete" : "continuum")
         << " calibration, interior error |M Lambda - C|/|C| = " << calibration_residual
         << " (continuum calibration on this lattice: " << lattice_error << "); surface correction: "
@@ -387,11 +444,14 @@ namespace perideal
           << symbol.relative_minimum << " of the largest)";
     return out.str();
   }
+
+  template class AnisotropicBondBased<2>;
+  template class AnisotropicBondBased<3>;
 } // namespace perideal
 
-PERIDEAL_REGISTER_PLUGIN(::perideal::MaterialModel<3>,
-                         ::perideal::AnisotropicBondBased,
-                         "anisotropic bond based",
-                         "linearized bond-based PD of any elasticity tensor with Cauchy's "
-                         "relations (seed 004), 3D only; the FE side's symmetry classes and "
-                         "orientation.")
+PERIDEAL_REGISTER_MATERIAL_MODEL(perideal::AnisotropicBondBased,
+                                 "anisotropic bond based",
+                                 "linearized bond-based PD of any elasticity tensor with Cauchy's "
+                                 "relations (seed 004); the FE side's symmetry classes and "
+                                 "orientation; in 2D the tensor of the planar assumption (2D "
+                                 "Cauchy relation C66 = C12).")

@@ -146,28 +146,30 @@ namespace perideal
 
   // Anisotropic linearized bond: the block k_b n n^T of PMB with a direction factor that may be
   // negative, so the Gershgorin bound takes |k_b|.
+  template <int dim>
   void
-  AnisotropicBondBased::stiffness_bound(const ParticleSystem<3> &particles,
-                                        std::vector<double>     &per_particle) const
+  AnisotropicBondBased<dim>::stiffness_bound(const ParticleSystem<dim> &particles,
+                                             std::vector<double>       &per_particle) const
   {
     std::vector<double> magnitude(bond_coefficient.size());
     std::transform(bond_coefficient.begin(),
                    bond_coefficient.end(),
                    magnitude.begin(),
                    [](const double k) { return std::abs(k); });
-    bond_pair_stiffness_bound(particles, magnitude, 3, per_particle);
+    bond_pair_stiffness_bound(particles, magnitude, dim, per_particle);
   }
 
   // Anisotropic linearized bond (the model is linear): PMB's rows with k_b = c(n_b) G beta V_i
   // V_j / |xi|.
+  template <int dim>
   void
-  AnisotropicBondBased::linearize(const ParticleSystem<3> &particles,
-                                  LinearizedModel         &linearized) const
+  AnisotropicBondBased<dim>::linearize(const ParticleSystem<dim> &particles,
+                                       LinearizedModel           &linearized) const
   {
     linearized.reinit(this->field_layout().n_components(), particles.n_owned());
     add_bond_rows(particles,
                   intact_bond_stiffness(particles.bonds(), bond_coefficient),
-                  extension_row<3>(particles),
+                  extension_row<dim>(particles),
                   linearized);
   }
 
@@ -406,6 +408,14 @@ namespace perideal
                          theta[i]);
   }
 
+  template void
+  AnisotropicBondBased<2>::stiffness_bound(const ParticleSystem<2> &, std::vector<double> &) const;
+  template void
+  AnisotropicBondBased<3>::stiffness_bound(const ParticleSystem<3> &, std::vector<double> &) const;
+  template void
+  AnisotropicBondBased<2>::linearize(const ParticleSystem<2> &, LinearizedModel &) const;
+  template void
+  AnisotropicBondBased<3>::linearize(const ParticleSystem<3> &, LinearizedModel &) const;
   template void
   BondBased<2>::stiffness_bound(const ParticleSystem<2> &, std::vector<double> &) const;
   template void

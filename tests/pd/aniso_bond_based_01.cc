@@ -35,7 +35,7 @@ exact(const double value)
 // (delta = 3 dx, no surface correction) from the energy densities of homogeneous strains:
 // C_II = 2 W(e_I), C_IJ = W(e_I + e_J) - W(e_I) - W(e_J) (engineering shear strains).
 FullMatrix<double>
-measured_stiffness(perideal::AnisotropicBondBased &model)
+measured_stiffness(perideal::AnisotropicBondBased<3> &model)
 {
   const double                          dx = 1e-3;
   const int                             n  = 11;
@@ -116,7 +116,7 @@ check(const std::string &label, const Entries &entries)
   fe_material.parse_parameters(prm, "Finite elements/Elasticity");
   const FullMatrix<double> &reference = fe_material.voigt_stiffness();
 
-  perideal::AnisotropicBondBased discrete, continuum;
+  perideal::AnisotropicBondBased<3> discrete, continuum;
   pd_tests::parse_model(discrete, entries);
   Entries continuum_entries = entries;
   continuum_entries.emplace_back("Calibration", "continuum");
@@ -158,8 +158,8 @@ check_closed_form(const std::string                                  &label,
                   const Entries                                      &entries,
                   const std::vector<std::pair<unsigned int, double>> &expected)
 {
-  perideal::AnisotropicBondBased model;
-  Entries                        e = entries;
+  perideal::AnisotropicBondBased<3> model;
+  Entries                           e = entries;
   e.emplace_back("Calibration", "continuum");
   pd_tests::parse_model(model, e);
   measured_stiffness(model);

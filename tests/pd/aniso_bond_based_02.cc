@@ -31,7 +31,7 @@ struct Lattice
   }
 
   void
-  initialize(perideal::AnisotropicBondBased &model)
+  initialize(perideal::AnisotropicBondBased<3> &model)
   {
     model.initialize(
       ps,
@@ -48,7 +48,7 @@ check_input(const std::string &label, const Entries &entries, const bool initial
 {
   try
     {
-      perideal::AnisotropicBondBased model;
+      perideal::AnisotropicBondBased<3> model;
       pd_tests::parse_model(model, entries);
       if (initialize)
         {
@@ -65,7 +65,7 @@ check_input(const std::string &label, const Entries &entries, const bool initial
 
 // The lines of the model's summary that contain @p word.
 void
-print_summary_lines(const perideal::AnisotropicBondBased &model, const std::string &word)
+print_summary_lines(const perideal::AnisotropicBondBased<3> &model, const std::string &word)
 {
   std::istringstream lines(model.summary());
   for (std::string line; std::getline(lines, line);)
@@ -87,8 +87,8 @@ main(int argc, char **argv)
 
   // Symmetrized: lambda_sym = mu_sym = (lambda + 2 mu)/3 = 35/3 GPa.
   {
-    perideal::AnisotropicBondBased model;
-    Entries                        e = nu03;
+    perideal::AnisotropicBondBased<3> model;
+    Entries                           e = nu03;
     e.emplace_back("Cauchy relations", "symmetrize");
     pd_tests::parse_model(model, e);
     Lattice lattice;
@@ -122,7 +122,7 @@ main(int argc, char **argv)
                            {"Calibration", calibration}};
         try
           {
-            perideal::AnisotropicBondBased model;
+            perideal::AnisotropicBondBased<3> model;
             pd_tests::parse_model(model, e);
             Lattice lattice;
             lattice.initialize(model);
@@ -145,7 +145,7 @@ main(int argc, char **argv)
   // Critical stretch: an isotropic C with Cauchy's relations (continuum calibration) gives
   // PMB's s0 = sqrt(5 G0 / (6 E delta)) for every bond.
   {
-    perideal::AnisotropicBondBased model;
+    perideal::AnisotropicBondBased<3> model;
     pd_tests::parse_model(model,
                           {{"Symmetry", "isotropic"},
                            {"Young's modulus", "25e9"},
@@ -164,7 +164,7 @@ main(int argc, char **argv)
   // s0(n) = s_ref sqrt(c_mean / |c(n)|). eps = 0.99 and 1.01 times s0(e_x).
   for (const double factor : {0.99, 1.01})
     {
-      perideal::AnisotropicBondBased model;
+      perideal::AnisotropicBondBased<3> model;
       pd_tests::parse_model(model,
                             {{"Symmetry", "cubic"},
                              {"Cubic constants", "40e9, 10e9, 10e9"},

@@ -1,5 +1,5 @@
 // ---------------------------------------------------------------------
-// PeriDeal: anisotropic linearized bond-based PD in 3D (seed 004).
+// PeriDeal: anisotropic linearized bond-based PD in 3D and 2D (seed 004).
 // ---------------------------------------------------------------------
 #ifndef perideal_pd_anisotropic_bond_based_h
 #define perideal_pd_anisotropic_bond_based_h
@@ -13,9 +13,9 @@
 namespace perideal
 {
   /**
-   * @brief Anisotropic linearized bond-based model in 3D (Trageser & Seleson, SAND2019-12685C,
-   * eq. 3 and the micromodulus of the "3D fully anisotropic PD model" slide; seed note 004,
-   * secs. 1.2-1.3).
+   * @brief Anisotropic linearized bond-based model in 3D and 2D (Trageser & Seleson,
+   * SAND2019-12685C, eq. 3 and the micromodulus of the "3D fully anisotropic PD model" slide; seed
+   * note 004, secs. 1.2-1.3).
    *
    * Force density rho u_tt = int lambda(xi) xi (xi . eta) dx' with the micromodulus
    * lambda(xi) = omega(|xi|)/|xi|^2 Lambda_ijkl n_i n_j n_k n_l, omega = 1/|xi|, n = xi/|xi|,
@@ -36,8 +36,18 @@ namespace perideal
    * Fracture: the PMB critical stretch with the bond's own direction factor,
    * s0(n) = sqrt(10 G0 / (pi |c(n)| delta^5)) (doc/theory/models.md); the linearized stretch
    * breaks the bond.
+   *
+   * In 2D (particle volumes dx^2 h) the same model with the 5 components of a completely
+   * symmetric 2D tensor: omega = 1/|xi|, lambda = c(n)/|xi|^3 (square symmetry: c(theta) = a + b
+   * cos 4 theta; rectangular: a + b cos 2 theta + c cos 4 theta), fitted to the 2D tensor of the
+   * planar assumption, the FE side's reduction of the same material (plane strain: the in-plane
+   * block of C; plane stress: the reduced stiffness). That target must satisfy the 2D Cauchy
+   * relation C66 = C12 (refused otherwise, or symmetrized); a 3D material whose reduced
+   * stiffness does not is the domain of 'anisotropic plane stress'. Reference critical stretch
+   * sqrt(4 G0 / (c_mean h delta^4)) (PMB's 2D relation G0 = c s0^2 h delta^4 / 4).
    */
-  class AnisotropicBondBased : public MaterialModel<3>
+  template <int dim>
+  class AnisotropicBondBased : public MaterialModel<dim>
   {
   public:
     /**
@@ -57,7 +67,8 @@ namespace perideal
     declare_parameters(dealii::ParameterHandler &prm);
 
     /**
-     * @brief Read the material and check Cauchy's relations (refuse or symmetrize).
+     * @brief Read the material and (3D) check Cauchy's relations (refuse or symmetrize); in 2D
+     * the check waits for the planar assumption (initialize()).
      */
     void
     parse_parameters(dealii::ParameterHandler &prm) override;
@@ -67,10 +78,10 @@ namespace perideal
      * surface correction.
      */
     void
-    initialize(ParticleSystem<3> &particles, const ModelContext &context) override;
+    initialize(ParticleSystem<dim> &particles, const ModelContext &context) override;
 
     void
-    compute_forces(ParticleSystem<3>    &particles,
+    compute_forces(ParticleSystem<dim>  &particles,
                    const ParticleVector &u,
                    ParticleVector       &force,
                    std::vector<double>  *energy_density,
@@ -81,21 +92,21 @@ namespace perideal
      * defined in source/pd/model_linearization.cc.
      */
     void
-    stiffness_bound(const ParticleSystem<3> &particles,
-                    std::vector<double>     &per_particle) const override;
+    stiffness_bound(const ParticleSystem<dim> &particles,
+                    std::vector<double>       &per_particle) const override;
 
     /**
      * @brief One row n_b . (u_j - u_i) per intact bond with weight k_b / |xi| (the model is
      * linear); defined in source/pd/model_linearization.cc.
      */
     void
-    linearize(const ParticleSystem<3> &particles, LinearizedModel &linearized) const override;
+    linearize(const ParticleSystem<dim> &particles, LinearizedModel &linearized) const override;
 
     /**
      * @brief The completely symmetric C that the model reproduces (the input, or its
      * completely symmetric part).
      */
-    dealii::SymmetricTensor<4, 3>
+    dealii::SymmetricTensor<4, dim>
     elasticity_tensor() const override;
 
     /**
@@ -115,7 +126,7 @@ namespace perideal
     /**
      * @brief The micromodulus tensor Lambda [N/m^6] (after initialize()).
      */
-    const anisotropic_micromodulus::Components &
+    const anisotropic_micromodulus::ComponentsOf<dim> &
     micromodulus_tensor() const;
 
     /**
@@ -128,13 +139,13 @@ namespace perideal
     /**
      * @brief The scan of the directions where c(n) < 0 (after initialize()).
      */
-    const anisotropic_micromodulus::DirectionScan &
+    const anisotropic_micromodulus::DirectionScanOf<dim> &
     direction_scan() const;
 
     /**
      * @brief The scan of the Fourier symbol of the interior operator (after initialize()).
      */
-    const anisotropic_micromodulus::SymbolScan &
+    const anisotropic_micromodulus::SymbolScanOf<dim> &
     symbol_scan() const;
 
   private:
@@ -145,15 +156,16 @@ namespace perideal
       continuum
     };
 
-    ElasticMaterial                         material;
-    Calibration                             calibration = Calibration::discrete;
-    anisotropic_micromodulus::Components    C{};
-    anisotropic_micromodulus::Components    Lambda{};
-    std::string                             symmetrization_report;
-    double                                  lattice_error = 0., calibration_residual = 0.;
-    anisotropic_micromodulus::DirectionScan directions;
-    anisotropic_micromodulus::SymbolScan    symbol;
-    ModelContext                            context;
+    ElasticMaterial                                material;
+    Calibration                                    calibration = Calibration::discrete;
+    bool                                           symmetrize  = false;
+    anisotropic_micromodulus::ComponentsOf<dim>    C{};
+    anisotropic_micromodulus::ComponentsOf<dim>    Lambda{};
+    std::string                                    symmetrization_report;
+    double                                         lattice_error = 0., calibration_residual = 0.;
+    anisotropic_micromodulus::DirectionScanOf<dim> directions;
+    anisotropic_micromodulus::SymbolScanOf<dim>    symbol;
+    ModelContext                                   context;
     /// k_b = c(n_b) G beta V_i V_j per bond.
     std::vector<double> bond_coefficient;
     /// The force kernel's data (bonds in SIMD blocks, per-lane k_b, per-class breaking
@@ -165,7 +177,15 @@ namespace perideal
      * @brief Set bond_coefficient (with or without the surface factor) and the kernel's lanes.
      */
     void
-    set_bond_coefficients(const ParticleSystem<3> &particles, const bool with_surface_factor);
+    set_bond_coefficients(const ParticleSystem<dim> &particles, const bool with_surface_factor);
+
+    /**
+     * @brief Set C, the completely symmetric tensor the model reproduces, from @p C_input:
+     * refuse a violation of Cauchy's relations (naming @p what, the tensor's origin) or
+     * symmetrize it.
+     */
+    void
+    set_target(const dealii::SymmetricTensor<4, dim> &C_input, const std::string &what);
   };
 } // namespace perideal
 
