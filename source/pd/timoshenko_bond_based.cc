@@ -602,6 +602,18 @@ namespace perideal
     k.blocks.reinit_field(k.u_field, Kernel::n_components);
     k.blocks.reinit_field(k.f_field, Kernel::n_components);
     k.blocks.reinit_field(k.w_field, 1);
+    if (failure == FailureLaw::softening)
+      {
+        // Sized like the lanes before the first force evaluation (the surface correction's).
+        const std::vector<double> zero(particles.bonds().size(), 0.), one(zero.size(), 1.);
+        for (unsigned int m = 0; m < 3; ++m)
+          {
+            k.blocks.to_lanes(zero, k.history[m]);
+            k.blocks.to_lanes(one, k.factor[m]);
+          }
+        k.blocks.to_lanes(zero, k.dissipated);
+        k.dissipated_reported = 0.;
+      }
     if (context.surface_correction)
       {
         ParticleVector force;
@@ -615,19 +627,6 @@ namespace perideal
         apply_energy_surface_correction<dim>(particles, field_layout(), modulus, energy);
       }
     set_bond_coefficients(particles, true);
-    if (failure == FailureLaw::softening)
-      {
-        for (unsigned int m = 0; m < 3; ++m)
-          {
-            k.history[m].resize_fast(k.lane_coefficient.size());
-            k.factor[m].resize_fast(k.lane_coefficient.size());
-            std::fill(k.history[m].begin(), k.history[m].end(), 0.);
-            std::fill(k.factor[m].begin(), k.factor[m].end(), 1.);
-          }
-        k.dissipated.resize_fast(k.lane_coefficient.size());
-        std::fill(k.dissipated.begin(), k.dissipated.end(), 0.);
-        k.dissipated_reported = 0.;
-      }
   }
 
   template <int dim>

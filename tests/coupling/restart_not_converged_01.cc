@@ -129,6 +129,11 @@ main(int argc, char **argv)
   Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
   mpi_initlog();
   const bool root = Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0;
+  // The directory listing below must not see files of an earlier run of the test.
+  if (root)
+    for (const char *directory : {"full", "stopped"})
+      std::filesystem::remove_all(directory);
+  MPI_Barrier(MPI_COMM_WORLD);
 
   // The reference: enough iterations from the start.
   const Outcome full = run(plate("", "full"), "full.prm", false);
