@@ -280,8 +280,9 @@ namespace perideal
 
     /**
      * @brief The rows of the strain operator of bond @p b of owned particle @p i, handed to
-     * @p emit(weight, entries) in the order: stretch, shear strains (dim - 1, if C_theta != 0),
-     * bending rotations (if C_B != 0); weights without the bond's share of the rank.
+     * @p emit(weight, entries, mode) with the mode 0 (stretch), 1 (shear strains, dim - 1 rows,
+     * if C_theta != 0) or 2 (bending rotations, if C_B != 0); weights without the bond's share
+     * of the rank.
      */
     template <typename Emit>
     void
