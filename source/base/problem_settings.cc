@@ -131,22 +131,22 @@ namespace perideal
                       Patterns::Integer(1),
                       "Write a row of statistics.csv every this many steps.");
     prm.declare_entry("Checkpoint interval",
-                      "0",
-                      Patterns::Integer(),
+                      "off",
+                      Patterns::Anything(),
                       "Write the complete state of the run to <Directory>/checkpoint every this "
-                      "many steps: time steps (explicit) or load steps (quasi-static); 0: not by "
-                      "steps. 'perideal-solid --restart FILE.prm' continues the run from it. "
+                      "many steps: time steps (explicit) or load steps (quasi-static); off: not "
+                      "by steps. 'perideal-solid --restart FILE.prm' continues the run from it. "
                       "With <Checkpoint time interval> too, a checkpoint is written when either "
-                      "is due. Never after the last step. Accepted: >= 0.");
+                      "is due. Never after the last step. Accepted: off or an integer >= 1.");
     prm.declare_entry("Checkpoint time interval",
-                      "0",
-                      Patterns::Double(),
+                      "off",
+                      Patterns::Anything(),
                       "Write the checkpoint after the first step that reaches each multiple of "
                       "this interval of simulated time: [s] of an explicit run; for quasi-static "
                       "runs the pseudo time is the load factor k/N of load step k (0 to 1), so "
-                      "0.25 writes one each quarter of the load. 0: not by time. Accepted: >= 0. "
-                      "A quasi-static run that stops without convergence writes the checkpoint of "
-                      "its last converged load step whatever the intervals.");
+                      "0.25 writes one each quarter of the load. off: not by time. Accepted: off "
+                      "or a number > 0. A quasi-static run that stops without convergence writes "
+                      "the checkpoint of its last converged load step whatever the intervals.");
     prm.declare_entry("Write HDF5", "true", Patterns::Bool(), "Particle fields as HDF5 + XDMF.");
     prm.declare_entry("Write VTU", "false", Patterns::Bool(), "Particle fields as VTU + PVD.");
     prm.declare_entry("Progress", "true", Patterns::Bool(), "Print progress and timing lines.");
@@ -204,23 +204,37 @@ namespace perideal
     base_name           = prm.get("Base name");
     output_interval     = prm.get_integer("Output interval");
     statistics_interval = prm.get_integer("Statistics interval");
-    const long interval = prm.get_integer("Checkpoint interval");
-    AssertThrow(interval >= 0,
-                ExcMessage("The parameter <Output/Checkpoint interval> is " +
-                           std::to_string(interval) +
-                           "; accepted values are 0 (no checkpoints by steps) or a number of "
-                           "steps > 0."));
-    checkpoint_interval      = interval;
-    checkpoint_time_interval = prm.get_double("Checkpoint time interval");
-    AssertThrow(checkpoint_time_interval >= 0. && std::isfinite(checkpoint_time_interval),
-                ExcMessage("The parameter <Output/Checkpoint time interval> is " +
-                           ParameterUtilities::format_number(checkpoint_time_interval) +
-                           "; accepted values are 0 (no checkpoints by time) or an interval > 0 "
-                           "of simulated time [s] (explicit) or of the load factor "
-                           "(quasi-static)."));
-    write_hdf5    = prm.get_bool("Write HDF5");
-    write_vtu     = prm.get_bool("Write VTU");
-    show_progress = prm.get_bool("Progress");
+    // "off" or a positive interval: 0 and negative values are refused, so that no value reads
+    // as "off" by accident.
+    const auto interval_entry = [&prm](const std::string &entry, const bool integer) {
+      const std::string text = Utilities::trim(prm.get(entry));
+      if (text == "off")
+        return 0.;
+      std::size_t end   = 0;
+      double      value = 0.;
+      try
+        {
+          value = std::stod(text, &end);
+        }
+      catch (const std::exception &)
+        {
+          end = 0;
+        }
+      AssertThrow(end > 0 && end == text.size() && std::isfinite(value) && value > 0. &&
+                    (!integer || (value == std::floor(value) && value < 4e9)),
+                  ExcMessage("The parameter <Output/" + entry + "> is '" + text +
+                             "'; accepted values are off (the default) or " +
+                             (integer ? std::string("a number of steps >= 1.") :
+                                        std::string("an interval > 0 of simulated time [s] "
+                                                    "(explicit) or of the load factor "
+                                                    "(quasi-static)."))));
+      return value;
+    };
+    checkpoint_interval = static_cast<unsigned int>(interval_entry("Checkpoint interval", true));
+    checkpoint_time_interval = interval_entry("Checkpoint time interval", false);
+    write_hdf5               = prm.get_bool("Write HDF5");
+    write_vtu                = prm.get_bool("Write VTU");
+    show_progress            = prm.get_bool("Progress");
     probe_points.clear();
     for (const auto &item : Utilities::split_string_list(prm.get("Probe points"), ';'))
       if (!item.empty())

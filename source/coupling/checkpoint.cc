@@ -30,19 +30,21 @@ namespace perideal
     // Where the sections of a checkpoint start, from the sizes in its header.
     struct FileLayout
     {
-      std::uint64_t sums, particles, bonds, fe, state, end, size;
+      std::uint64_t sums, particles, bonds, histories, fe, state, end, size;
 
       FileLayout(const std::uint64_t header_bytes,
                  const std::uint64_t n_ranks,
                  const std::uint64_t particle_bytes,
                  const std::uint64_t n_broken,
+                 const std::uint64_t history_bytes,
                  const std::uint64_t fe_bytes,
                  const std::uint64_t state_bytes)
       {
         sums      = mark_size + sizeof(std::uint64_t) + header_bytes;
         particles = sums + n_ranks * 2 * sizeof(double);
         bonds     = particles + particle_bytes;
-        fe        = bonds + n_broken * 2 * sizeof(std::uint64_t);
+        histories = bonds + n_broken * 2 * sizeof(std::uint64_t);
+        fe        = histories + history_bytes;
         state     = fe + fe_bytes;
         end       = state + state_bytes;
         size      = end + mark_size;
@@ -150,6 +152,14 @@ namespace perideal
       return out.str();
     }
 
+    // The number of values per bond of the material model's bond histories (0 without one).
+    template <int dim>
+    unsigned int
+    history_values(CoupledState<dim> &state)
+    {
+      return state.pd.has_body() ? state.pd.material().n_bond_history_values() : 0;
+    }
+
     // Whether an owned cell carries FE unknowns (FE_Q, not FE_Nothing).
     template <int dim>
     bool
@@ -216,6 +226,7 @@ namespace perideal
         << "particle fields = " << parts.particle_vectors.size() << " x " << state.n_components()
         << " + 1\n"
         << "FE fields = " << parts.fe_vectors.size() << '\n'
+        << "bond history values = " << history_values(state) << '\n'
         << "solver = " << run_description << '\n';
     return out.str();
   }
@@ -267,6 +278,9 @@ namespace perideal
     kept.work           = *parts.work;
     kept.dissipated     = *parts.dissipated;
     kept.intact         = state.pd.particles().bonds().intact;
+    kept.history        = history_values(state) > 0 ?
+                            state.pd.material().bond_history(state.pd.particles()) :
+                            std::vector<double>();
     kept.postprocessors = postprocessors.save_state(state);
     kept.position       = position;
     kept.valid          = true;
@@ -288,6 +302,8 @@ namespace perideal
     BondList &bonds   = state.pd.particles().bonds();
     bonds.intact      = kept.intact;
     ++bonds.revision;
+    if (history_values(state) > 0)
+      state.pd.material().set_bond_history(state.pd.particles(), kept.history);
     write(state, kept.postprocessors, kept.position);
     return kept.position;
   }
@@ -338,6 +354,33 @@ namespace perideal
               }
           }
 
+    // The bond histories of the same bonds, each once, as records (p, q, values) of the bonds
+    // whose values are not all 0 (the bonds that have been loaded).
+    const unsigned int  n_values = history_values(state);
+    const std::uint64_t history_record =
+      2 * sizeof(std::uint64_t) + std::uint64_t(n_values) * sizeof(double);
+    std::vector<char> history_data;
+    if (n_values > 0)
+      {
+        const std::vector<double> values = state.pd.material().bond_history(ps);
+        for (unsigned int i = 0; i < n_owned; ++i)
+          for (unsigned int b = bonds.row_start[i]; b < bonds.row_start[i + 1]; ++b)
+            {
+              const std::uint64_t p = ps.invariant_index(i),
+                                  q = ps.invariant_index(bonds.neighbor[b]);
+              const double *begin   = &values[std::size_t(b) * n_values];
+              if ((ps.neighbor_is_owned(b) || p < q) &&
+                  std::any_of(begin, begin + n_values, [](const double v) { return v != 0.; }))
+                {
+                  const std::uint64_t key[2] = {std::min(p, q), std::max(p, q)};
+                  const char         *k      = reinterpret_cast<const char *>(key);
+                  const char         *v      = reinterpret_cast<const char *>(begin);
+                  history_data.insert(history_data.end(), k, k + sizeof(key));
+                  history_data.insert(history_data.end(), v, v + n_values * sizeof(double));
+                }
+            }
+      }
+
     // The FE records: the cell's id and its dof values of every FE vector (ghosted copies, so
     // that the dofs other ranks own are current; the state's vectors are left as they are).
     std::vector<char> fe_data;
@@ -375,14 +418,18 @@ namespace perideal
       Utilities::MPI::broadcast(comm, std::uint64_t(saved_state.size()), 0);
     const std::uint64_t n_broken = Utilities::MPI::sum<std::uint64_t>(broken.size() / 2, comm);
     const std::uint64_t fe_bytes = Utilities::MPI::sum<std::uint64_t>(fe_data.size(), comm);
-    const unsigned int  n_ranks  = Utilities::MPI::n_mpi_processes(comm);
-    const unsigned int  rank     = Utilities::MPI::this_mpi_process(comm);
-    std::ostringstream  header;
+    const std::uint64_t n_histories =
+      Utilities::MPI::sum<std::uint64_t>(history_data.size(), comm) /
+      (n_values > 0 ? history_record : 1);
+    const unsigned int n_ranks = Utilities::MPI::n_mpi_processes(comm);
+    const unsigned int rank    = Utilities::MPI::this_mpi_process(comm);
+    std::ostringstream header;
     header << fingerprint(state) << "ranks = " << n_ranks << '\n'
            << "step = " << position.step << '\n'
            << "time = " << exact_number(position.time) << '\n'
            << "next output = " << position.next_output << '\n'
            << "broken bonds = " << n_broken << '\n'
+           << "bond histories = " << n_histories << '\n'
            << "FE record bytes = " << fe_bytes << '\n'
            << "state bytes = " << state_bytes << '\n';
     const std::string   header_text  = header.str();
@@ -391,6 +438,7 @@ namespace perideal
                             n_ranks,
                             ps.n_global() * width * sizeof(double),
                             n_broken,
+                            n_histories * history_record,
                             fe_bytes,
                             state_bytes);
 
@@ -429,6 +477,9 @@ namespace perideal
       out.write(layout.bonds + sum_before(broken.size(), comm) * sizeof(std::uint64_t),
                 broken.data(),
                 broken.size() * sizeof(std::uint64_t));
+      out.write(layout.histories + sum_before(history_data.size(), comm),
+                history_data.data(),
+                history_data.size());
       out.write(layout.fe + sum_before(fe_data.size(), comm), fe_data.data(), fe_data.size());
       ierr = MPI_File_sync(out.handle);
       AssertThrowMPI(ierr);
@@ -505,12 +556,17 @@ namespace perideal
     const unsigned int  width       = parts.particle_vectors.size() * nc + 1;
     const unsigned int  saved_ranks = number("ranks");
     const std::uint64_t n_broken    = number("broken bonds");
+    const std::uint64_t n_histories = number("bond histories");
     const std::uint64_t fe_bytes    = number("FE record bytes");
     const std::uint64_t state_bytes = number("state bytes");
-    const FileLayout    layout(header_bytes,
+    const unsigned int  n_values    = history_values(state);
+    const std::uint64_t history_record =
+      2 * sizeof(std::uint64_t) + std::uint64_t(n_values) * sizeof(double);
+    const FileLayout layout(header_bytes,
                             saved_ranks,
                             ps.n_global() * width * sizeof(double),
                             n_broken,
+                            n_histories * history_record,
                             fe_bytes,
                             state_bytes);
     AssertThrow(std::uint64_t(size) == layout.size,
@@ -586,6 +642,42 @@ namespace perideal
                            " broken bonds, of which " +
                            std::to_string(std::llround(Utilities::MPI::sum(matched, comm))) +
                            " join particles of this run. Nothing was written."));
+
+    // The bond histories: every rank reads them all and takes those of the bonds it lists.
+    if (n_values > 0)
+      {
+        std::vector<char> history_data(n_histories * history_record);
+        in.read(layout.histories, history_data.data(), history_data.size());
+        std::map<std::array<std::uint64_t, 2>, const char *> records;
+        for (std::uint64_t r = 0; r < n_histories; ++r)
+          {
+            std::array<std::uint64_t, 2> key;
+            std::memcpy(key.data(), &history_data[r * history_record], sizeof(key));
+            records[key] = &history_data[r * history_record + sizeof(key)];
+          }
+        std::vector<double> values(std::size_t(bonds.size()) * n_values, 0.);
+        double              found = 0.;
+        for (unsigned int i = 0; i < n_owned; ++i)
+          for (unsigned int b = bonds.row_start[i]; b < bonds.row_start[i + 1]; ++b)
+            {
+              const std::uint64_t p = ps.invariant_index(i),
+                                  q = ps.invariant_index(bonds.neighbor[b]);
+              const auto record     = records.find({{std::min(p, q), std::max(p, q)}});
+              if (record != records.end())
+                {
+                  std::memcpy(&values[std::size_t(b) * n_values],
+                              record->second,
+                              n_values * sizeof(double));
+                  found += ps.bond_share(b);
+                }
+            }
+        AssertThrow(std::llround(Utilities::MPI::sum(found, comm)) == std::int64_t(n_histories),
+                    ExcMessage(name + " is from another problem: " + std::to_string(n_histories) +
+                               " bond histories, of which " +
+                               std::to_string(std::llround(Utilities::MPI::sum(found, comm))) +
+                               " belong to bonds of this run. Nothing was written."));
+        state.pd.material().set_bond_history(ps, values);
+      }
 
     // The FE records: every rank reads them all and takes those of its cells.
     const auto &fe = state.fe;

@@ -10,7 +10,6 @@
 #include <perideal/coupling/postprocessors/probes.h>
 #include <perideal/coupling/postprocessors/reactions.h>
 #include <perideal/coupling/postprocessors/section_integrals.h>
-#include <perideal/pd/timoshenko_bond_based.h>
 
 #include <algorithm>
 #include <array>
@@ -386,18 +385,6 @@ namespace perideal
   void
   CoupledProblem<dim>::run()
   {
-    // Checkpoints store the broken bonds, not the histories of softening bonds: refuse rather
-    // than restart from a state without them.
-    if (pd.has_body())
-      if (const auto *model = dynamic_cast<const TimoshenkoBondBased<dim> *>(&pd.material()))
-        AssertThrow(model->failure_law() != TimoshenkoBondBased<dim>::FailureLaw::softening ||
-                      (settings.checkpoint_interval == 0 &&
-                       settings.checkpoint_time_interval == 0. && !restart),
-                    ExcMessage("Checkpoints do not yet hold the histories of softening bonds: "
-                               "with <Material/timoshenko bond based/Failure law> = softening, "
-                               "set <Output/Checkpoint interval> and <Output/Checkpoint time "
-                               "interval> to 0 and run without --restart (or use Failure law = "
-                               "brittle)."));
     Checkpoint<dim> checkpoint(settings, model_lines, restart, stop_step);
     solver->run(*state, *postprocessors, checkpoint);
   }

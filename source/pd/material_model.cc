@@ -122,6 +122,28 @@ namespace perideal
   }
 
   template <int dim>
+  unsigned int
+  MaterialModel<dim>::n_bond_history_values() const
+  {
+    return 0;
+  }
+
+  template <int dim>
+  std::vector<double>
+  MaterialModel<dim>::bond_history(const ParticleSystem<dim> &) const
+  {
+    return {};
+  }
+
+  template <int dim>
+  void
+  MaterialModel<dim>::set_bond_history(const ParticleSystem<dim> &,
+                                       const std::vector<double> &values)
+  {
+    AssertThrow(values.empty(), dealii::ExcMessage("This material model keeps no bond histories."));
+  }
+
+  template <int dim>
   std::vector<double>
   MaterialModel<dim>::inertia_densities(const double density) const
   {

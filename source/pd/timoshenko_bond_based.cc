@@ -239,9 +239,13 @@ namespace perideal
           g2 += y.gamma[d] * y.gamma[d];
         for (unsigned int d = 0; d < n_rot; ++d)
           b2 += y.kappa[d] * y.kappa[d];
-        const Vector present[3] = {stdx::abs(y.s) * p.inverse_limit[0],
-                                   stdx::sqrt(g2) * p.inverse_limit[1],
-                                   stdx::sqrt(b2) * p.inverse_limit[2]};
+        // Lanes without force (empty, broken) keep their histories: a checkpoint restores those
+        // of bonds only, and damage_changed() reports the growth of bonds only.
+        Vector present[3] = {stdx::abs(y.s) * p.inverse_limit[0],
+                             stdx::sqrt(g2) * p.inverse_limit[1],
+                             stdx::sqrt(b2) * p.inverse_limit[2]};
+        for (auto &x : present)
+          stdx::where(k == 0., x) = 0.;
         // U_0 per mode: p.C_N |xi| s_0^2, 12 p.C_theta gamma_0^2 / |xi|, p.C_B kappa_0^2 / |xi|.
         const double U0[3] = {p.inverse_limit[0] > 0. ?
                                 p.C_N * bond.length / (p.inverse_limit[0] * p.inverse_limit[0]) :
@@ -764,6 +768,65 @@ namespace perideal
   {
     return failure == FailureLaw::softening &&
            Utilities::MPI::max(kernel->largest_growth, communicator) > 1e-3;
+  }
+
+  template <int dim>
+  unsigned int
+  TimoshenkoBondBased<dim>::n_bond_history_values() const
+  {
+    return failure == FailureLaw::softening ? 4 : 0;
+  }
+
+  template <int dim>
+  std::vector<double>
+  TimoshenkoBondBased<dim>::bond_history(const ParticleSystem<dim> &particles) const
+  {
+    if (failure != FailureLaw::softening)
+      return {};
+    const typename BondBlocks<dim>::Array *lanes[4] = {&kernel->history[0],
+                                                       &kernel->history[1],
+                                                       &kernel->history[2],
+                                                       &kernel->dissipated};
+    std::vector<double> per_bond(particles.bonds().size()), values(4 * per_bond.size());
+    for (unsigned int v = 0; v < 4; ++v)
+      {
+        kernel->blocks.from_lanes(*lanes[v], per_bond);
+        for (std::size_t b = 0; b < per_bond.size(); ++b)
+          values[4 * b + v] = per_bond[b];
+      }
+    return values;
+  }
+
+  template <int dim>
+  void
+  TimoshenkoBondBased<dim>::set_bond_history(const ParticleSystem<dim> &particles,
+                                             const std::vector<double> &values)
+  {
+    const std::size_t n_bonds = particles.bonds().size();
+    AssertThrow(values.size() == n_bond_history_values() * n_bonds,
+                ExcMessage("set_bond_history(): " + std::to_string(values.size()) + " values for " +
+                           std::to_string(n_bonds) + " bonds."));
+    if (failure != FailureLaw::softening)
+      return;
+    std::vector<double> per_bond(n_bonds), mu(n_bonds);
+    for (unsigned int m = 0; m < 3; ++m)
+      {
+        for (std::size_t b = 0; b < n_bonds; ++b)
+          {
+            per_bond[b] = values[4 * b + m];
+            mu[b]       = Timoshenko::softening_factor(per_bond[b], softening);
+          }
+        kernel->blocks.to_lanes(per_bond, kernel->history[m]);
+        kernel->blocks.to_lanes(mu, kernel->factor[m]);
+      }
+    double total = 0.;
+    for (std::size_t b = 0; b < n_bonds; ++b)
+      {
+        per_bond[b] = values[4 * b + 3];
+        total += particles.bond_share(b) * per_bond[b];
+      }
+    kernel->blocks.to_lanes(per_bond, kernel->dissipated);
+    kernel->dissipated_reported = total;
   }
 
   template <int dim>

@@ -1,8 +1,9 @@
 // ---------------------------------------------------------------------
 // Bad input of checkpoint and restart: each case stops with a message naming the entry or the
 // file, and a refused restart leaves the results of the run it would continue as they were
-// (statistics.csv unchanged). Cases: <Output/Checkpoint interval> < 0 and <Output/Checkpoint
-// time interval> < 0 (when the file is read);
+// (statistics.csv unchanged). Cases: <Output/Checkpoint interval> <= 0 or not an integer and
+// <Output/Checkpoint time interval> <= 0 or not a number (when the file is read; "off" is the
+// default);
 // a restart without a checkpoint; a restart with the checkpoint of another problem (another
 // material model; another horizon, so other bonds); a truncated checkpoint; a file that is not a
 // checkpoint. The good checkpoint is then accepted.
@@ -88,7 +89,11 @@ main(int argc, char **argv)
   const bool root = Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0;
 
   run(plate + "  set Checkpoint interval = -1\n", "negative_interval", 0, false);
+  run(plate + "  set Checkpoint interval = 0\n", "zero_interval", 0, false);
+  run(plate + "  set Checkpoint interval = 2.5\n", "fractional_interval", 0, false);
   run(plate + "  set Checkpoint time interval = -1e-7\n", "negative_time_interval", 0, false);
+  run(plate + "  set Checkpoint time interval = 0\n", "zero_time_interval", 0, false);
+  run(plate + "  set Checkpoint time interval = never\n", "word_time_interval", 0, false);
 
   run(plate, "no_checkpoint", 0, true);
   deallog << "  output directory created: " << std::filesystem::exists("no_checkpoint")

@@ -375,16 +375,6 @@ end
                               regions,
                               {"pull_left", "pull_right"},
                               false);
-    // Softening bonds with checkpoints (their histories are not stored yet).
-    std::string softening = base("Failure law", "softening", "");
-    softening.replace(softening.find("  set Progress            = false\n"),
-                      std::string("  set Progress            = false\n").size(),
-                      "  set Progress            = false\n  set Checkpoint interval = 5\n");
-    pd_tests::check_bad_input("softening with checkpoints",
-                              softening,
-                              regions,
-                              {"pull_left", "pull_right"},
-                              true);
     // A rotation condition on the displacement field of PMB.
     std::string pmb = base("Poisson's ratio", "0.2", "bond based");
     pmb.replace(pmb.find("set Components = x\n    set Function = -5"),

@@ -153,6 +153,7 @@ namespace perideal
       std::vector<typename CoupledState<dim>::FEVector> fe_vectors;
       double                                            work = 0., dissipated = 0.;
       std::vector<std::uint8_t>                         intact;
+      std::vector<double>                               history;
       std::string                                       postprocessors;
       RunPosition                                       position;
       bool                                              valid = false;

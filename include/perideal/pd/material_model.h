@@ -225,6 +225,30 @@ namespace perideal
     damage_changed() const;
 
     /**
+     * @brief The number of values per bond of the model's bond histories, the state of its bonds
+     * beyond intact and broken that a checkpoint must keep (the softening histories of a
+     * damage law and what they dissipated); 0, the default, for models without one.
+     */
+    virtual unsigned int
+    n_bond_history_values() const;
+
+    /**
+     * @brief The bond histories, n_bond_history_values() per bond of the bond list, in its
+     * order (owned rows, ghost bonds included): value v of bond b at
+     * `b * n_bond_history_values() + v`.
+     */
+    virtual std::vector<double>
+    bond_history(const ParticleSystem<dim> &particles) const;
+
+    /**
+     * @brief Restore the bond histories of @p particles' bonds from values laid out as
+     * bond_history() gives them, and everything the model derives from them (a checkpoint's
+     * restart, after initialize()).
+     */
+    virtual void
+    set_bond_history(const ParticleSystem<dim> &particles, const std::vector<double> &values);
+
+    /**
      * @brief The inertia per unit volume of each component of field_layout() for the mass
      * density @p density [kg/m^3]: @p density for translations and scalars; for a rotation the
      * model's rotational inertia per unit volume [kg/m] (what multiplies the angular

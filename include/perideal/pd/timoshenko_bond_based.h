@@ -218,6 +218,18 @@ namespace perideal
     bool
     damage_changed() const override;
 
+    /// Softening: 4 (the histories of the three modes and the energy the bond dissipated).
+    unsigned int
+    n_bond_history_values() const override;
+
+    std::vector<double>
+    bond_history(const ParticleSystem<dim> &particles) const override;
+
+    /// Also the factors (from the histories) and the energy reported as dissipated so far.
+    void
+    set_bond_history(const ParticleSystem<dim> &particles,
+                     const std::vector<double> &values) override;
+
     /// rho for translations, J = j rho dx^2 for rotations.
     std::vector<double>
     inertia_densities(const double density) const override;
