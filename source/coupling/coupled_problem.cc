@@ -342,6 +342,7 @@ namespace perideal
     regions.layout         = layout;
     regions.blending       = [this](const Point<dim> &x) { return blending(x); };
     regions.blending_entry = "<Coupling/Blending function> = <" + blending_expression + ">";
+    regions.log            = &log;
     method->initialize(regions);
 
     state = std::make_unique<CoupledState<dim>>(comm, log, settings, layout, pd, fe, *method);
