@@ -274,9 +274,9 @@ namespace perideal
 
   template <int dim>
   RunPosition
-  Checkpoint<dim>::write_kept(CoupledState<dim> &state)
+  Checkpoint<dim>::restore_kept(CoupledState<dim> &state) const
   {
-    Assert(kept.valid, ExcMessage("write_kept() without keep()."));
+    Assert(kept.valid, ExcMessage("restore_kept() without keep()."));
     auto parts = state.stored_parts();
     for (unsigned int k = 0; k < parts.particle_vectors.size(); ++k)
       *parts.particle_vectors[k] = kept.particle_vectors[k];
@@ -288,6 +288,14 @@ namespace perideal
     BondList &bonds   = state.pd.particles().bonds();
     bonds.intact      = kept.intact;
     ++bonds.revision;
+    return kept.position;
+  }
+
+  template <int dim>
+  RunPosition
+  Checkpoint<dim>::write_kept(CoupledState<dim> &state)
+  {
+    restore_kept(state);
     write(state, kept.postprocessors, kept.position);
     return kept.position;
   }
