@@ -288,9 +288,9 @@ namespace perideal
 
   template <int dim>
   RunPosition
-  Checkpoint<dim>::write_kept(CoupledState<dim> &state)
+  Checkpoint<dim>::restore_kept(CoupledState<dim> &state) const
   {
-    Assert(kept.valid, ExcMessage("write_kept() without keep()."));
+    Assert(kept.valid, ExcMessage("restore_kept() without keep()."));
     auto parts = state.stored_parts();
     for (unsigned int k = 0; k < parts.particle_vectors.size(); ++k)
       *parts.particle_vectors[k] = kept.particle_vectors[k];
@@ -304,6 +304,14 @@ namespace perideal
     ++bonds.revision;
     if (history_values(state) > 0)
       state.pd.material().set_bond_history(state.pd.particles(), kept.history);
+    return kept.position;
+  }
+
+  template <int dim>
+  RunPosition
+  Checkpoint<dim>::write_kept(CoupledState<dim> &state)
+  {
+    restore_kept(state);
     write(state, kept.postprocessors, kept.position);
     return kept.position;
   }

@@ -7,6 +7,7 @@
 #include <perideal/coupling/postprocessors/energy_statistics.h>
 #include <perideal/coupling/postprocessors/exact_error.h>
 #include <perideal/coupling/postprocessors/field_output.h>
+#include <perideal/coupling/postprocessors/fracture_statistics.h>
 #include <perideal/coupling/postprocessors/probes.h>
 #include <perideal/coupling/postprocessors/reactions.h>
 #include <perideal/coupling/postprocessors/section_integrals.h>
@@ -58,6 +59,7 @@ namespace perideal
                                           const std::vector<std::string> &fe_condition_names)
   {
     ProblemSettings<dim>::declare_parameters(prm);
+    QuasiStaticControl::declare_parameters(prm);
     ParticleRegion<dim>::declare_parameters(prm, region_names, condition_names);
     FERegion<dim>::declare_parameters(prm, fe_condition_names);
     prm.enter_subsection("Coupling");
@@ -94,6 +96,12 @@ namespace perideal
   CoupledProblem<dim>::parse_parameters(ParameterHandler &prm)
   {
     settings.parse_parameters(prm);
+    control.parse_parameters(prm);
+    AssertThrow(control.method == LoadControl::load_steps ||
+                  settings.solver_type == SolverType::static_linear,
+                ExcMessage("<Solver/Control/Method> = sequentially linear needs <Solver/Type> = "
+                           "static: it scales the linear solution of each event, which only the "
+                           "linearized static solve gives."));
     pd.parse_parameters(prm);
     fe.parse_parameters(prm, pd.planar_assumption(), pd.discretization().thickness);
     AssertThrow(pd.has_body() || fe.has_mesh(),
@@ -342,6 +350,7 @@ namespace perideal
     regions.layout         = layout;
     regions.blending       = [this](const Point<dim> &x) { return blending(x); };
     regions.blending_entry = "<Coupling/Blending function> = <" + blending_expression + ">";
+    regions.log            = &log;
     method->initialize(regions);
 
     state = std::make_unique<CoupledState<dim>>(comm, log, settings, layout, pd, fe, *method);
@@ -351,13 +360,14 @@ namespace perideal
       log << fe_summary << std::endl;
     if (is_root && state->is_coupled())
       log << "Coupling: " << method_name << ", " << coupling_summary << std::endl;
-    solver = create_solver<dim>(settings.solver_type);
+    solver = create_solver<dim>(settings.solver_type, control);
     solver->setup(*state);
 
     std::vector<std::unique_ptr<Postprocessor<dim>>> list;
     list.push_back(std::make_unique<EnergyStatistics<dim>>());
     list.push_back(std::make_unique<DisplacementStatistics<dim>>());
     list.push_back(std::make_unique<Reactions<dim>>());
+    list.push_back(std::make_unique<FractureStatistics<dim>>(control));
     list.push_back(std::make_unique<SectionIntegrals<dim>>());
     if (exact_displacement)
       list.push_back(std::make_unique<ExactError<dim>>(exact_displacement, exact_tolerance));

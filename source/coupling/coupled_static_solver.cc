@@ -304,6 +304,18 @@ namespace perideal
                                   const std::string        &conditions)
   {
     assemble(material, conditions);
+    return solve_assembled(material, f_fe, f_pd, U, u, conditions);
+  }
+
+  template <int dim>
+  unsigned int
+  CoupledStaticSolver<dim>::solve_assembled(const MaterialModel<dim> &material,
+                                            const FEVector           &f_fe,
+                                            const ParticleVector     &f_pd,
+                                            FEVector                 &U,
+                                            ParticleVector           &u,
+                                            const std::string        &conditions)
+  {
     const std::size_t n_local    = prescribed.size();
     const std::size_t n_fe_owned = fe_owned.n_elements();
     const auto       &volume     = particles->volumes();

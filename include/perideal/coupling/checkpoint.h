@@ -129,6 +129,13 @@ namespace perideal
     RunPosition
     write_kept(CoupledState<dim> &state);
 
+    /**
+     * @brief Put the state of the last keep() back into @p state (which loses what it held),
+     * without writing; return its position. For a load step that is cut (LoadStepping).
+     */
+    RunPosition
+    restore_kept(CoupledState<dim> &state) const;
+
   private:
     /// Write the checkpoint of @p position (to the temporary name, then renamed), with the
     /// postprocessors' state @p postprocessor_state (Postprocessors::save_state()).

@@ -12,6 +12,7 @@
 #include <perideal/coupling/coupled_state.h>
 #include <perideal/coupling/coupling_method.h>
 #include <perideal/coupling/postprocessors/postprocessor.h>
+#include <perideal/coupling/solvers/quasi_static_control.h>
 #include <perideal/coupling/solvers/solver.h>
 #include <perideal/fem/fe_region.h>
 #include <perideal/pd/particle_region.h>
@@ -128,6 +129,8 @@ namespace perideal
     bool          is_root;
 
     ProblemSettings<dim> settings;
+    /// <Solver/Control>: how a quasi-static run advances its load, and its load point.
+    QuasiStaticControl control;
     /// The unknowns of a point (the particles' and the FE region's).
     FieldLayout                                  layout;
     ParticleRegion<dim>                          pd;

@@ -93,6 +93,18 @@ namespace perideal
           const std::string        &conditions);
 
     /**
+     * @brief solve() with the K of the last assemble(): for repeated solves of one stiffness
+     * with other loads and prescribed values (the alternating solves of SchwarzCoupling).
+     */
+    unsigned int
+    solve_assembled(const MaterialModel<dim> &material,
+                    const FEVector           &f_fe,
+                    const ParticleVector     &f_pd,
+                    FEVector                 &U,
+                    ParticleVector           &u,
+                    const std::string        &conditions);
+
+    /**
      * @brief The forces of the state (@p U, @p u) with the linearization of the last solve:
      * @p fe_residual = (K z - F) restricted to the FE dofs (on prescribed dofs the force the
      * supports exert, as FERegion::reactions() expects), @p pd_force the particles' internal force

@@ -16,6 +16,7 @@
 #include <perideal/pd/static_solver.h>
 
 #include <functional>
+#include <ostream>
 #include <string>
 #include <vector>
 
@@ -29,7 +30,8 @@ namespace perideal
   template <int dim>
   struct CoupledRegions
   {
-    const FERegion<dim> *fe        = nullptr;
+    /// The FE region (a method may prescribe interior dofs, FERegion::set_interior_values()).
+    FERegion<dim>       *fe        = nullptr;
     ParticleSystem<dim> *particles = nullptr;
     MaterialModel<dim>  *material  = nullptr;
     /// The particles' mass density [kg/m^3].
@@ -40,6 +42,8 @@ namespace perideal
     std::function<double(const dealii::Point<dim> &)> blending;
     /// The entry that gives it, "<Coupling/Blending function> = <...>", for messages.
     std::string blending_entry;
+    /// The run's log (written on rank 0 only), for a method's convergence history.
+    std::ostream *log = nullptr;
   };
 
   /**

@@ -15,8 +15,9 @@ namespace perideal
   using namespace dealii;
 
   template <int dim>
-  LoadStepping<dim>::LoadStepping(const SolverType type)
+  LoadStepping<dim>::LoadStepping(const SolverType type, const QuasiStaticControl &control)
     : type(type)
+    , control(control)
   {
     Assert(type != SolverType::explicit_dynamics, ExcInternalError());
   }
@@ -135,31 +136,83 @@ namespace perideal
 
   template <int dim>
   void
+  LoadStepping<dim>::conditions_at_end_time(CoupledState<dim> &state)
+  {
+    const auto &settings = state.settings;
+    auto       &ps       = state.pd.particles();
+    ps.reinit_vector(target, state.n_components());
+    ps.reinit_vector(full_load, state.n_components());
+    state.fe.initialize_vector(fe_target);
+    state.fe.initialize_vector(fe_full_load);
+    state.pd.boundary_conditions().prescribe_displacement(settings.end_time, target);
+    state.pd.boundary_conditions().add_loads(settings.end_time, full_load);
+    state.fe.prescribe(settings.end_time, fe_target, state.V);
+    state.fe.assemble_load(settings.end_time, fe_full_load);
+  }
+
+  template <int dim>
+  void
+  LoadStepping<dim>::apply_load_factor(CoupledState<dim> &state, const double factor) const
+  {
+    auto       &U    = state.U;
+    auto       &u    = state.u;
+    const auto &mask = state.fe.prescribed_mask();
+    state.f_ext.equ(factor, fe_full_load);
+    state.external_force.equ(factor, full_load);
+    for (unsigned int k = 0; k < U.locally_owned_size(); ++k)
+      if (mask[k])
+        U.local_element(k) = factor * fe_target.local_element(k);
+    for (unsigned int k = 0; k < u.locally_owned_size(); ++k)
+      if (prescribed.local_element(k) != 0.)
+        u.local_element(k) = factor * target.local_element(k);
+  }
+
+  template <int dim>
+  double
+  LoadStepping<dim>::equilibrium_state(CoupledState<dim> &state) const
+  {
+    const double pd_energy = state.method.equilibrium_forces(state.U,
+                                                             state.u,
+                                                             state.f_ext,
+                                                             state.external_force,
+                                                             state.residual,
+                                                             state.internal_force);
+
+    // The loads that do work: the applied ones, and on prescribed components the support
+    // forces (the FE residual K z - F there; minus the internal force on particles).
+    const auto &mask = state.fe.prescribed_mask();
+    for (unsigned int k = 0; k < state.U.locally_owned_size(); ++k)
+      state.fe_load.local_element(k) =
+        state.f_ext.local_element(k) + (mask[k] ? state.residual.local_element(k) : 0.);
+    state.accumulate_work();
+    state.fe_support = state.residual;
+    return pd_energy;
+  }
+
+  template <int dim>
+  void
   LoadStepping<dim>::run(CoupledState<dim>   &state,
                          Postprocessors<dim> &postprocessors,
                          Checkpoint<dim>     &checkpoint)
   {
-    using FEVector                = typename CoupledState<dim>::FEVector;
-    const auto        &settings   = state.settings;
-    auto              &fe         = state.fe;
-    auto              &pd         = state.pd;
-    auto              &ps         = pd.particles();
-    const auto        &conditions = pd.boundary_conditions();
-    const bool         relax      = (type == SolverType::adaptive_dynamic_relaxation);
-    const unsigned int n_steps    = settings.load_steps;
+    const auto        &settings = state.settings;
+    auto              &pd       = state.pd;
+    auto              &ps       = pd.particles();
+    const bool         relax    = (type == SolverType::adaptive_dynamic_relaxation);
+    const unsigned int n_steps  = settings.load_steps;
     auto              &U = state.U, &u = state.u;
 
     // The conditions at t = End time, scaled by the load factor.
-    ParticleVector target, full_load;
-    ps.reinit_vector(target, state.n_components());
-    ps.reinit_vector(full_load, state.n_components());
-    FEVector fe_target, fe_full_load;
-    fe.initialize_vector(fe_target);
-    fe.initialize_vector(fe_full_load);
-    conditions.prescribe_displacement(settings.end_time, target);
-    conditions.add_loads(settings.end_time, full_load);
-    fe.prescribe(settings.end_time, fe_target, state.V);
-    fe.assemble_load(settings.end_time, fe_full_load);
+    conditions_at_end_time(state);
+
+    // Cutting steps: the increment is not stored in checkpoints.
+    const bool cutting = control.cut_threshold > 0;
+    AssertThrow(!cutting || (!checkpoint.restarting() && settings.checkpoint_interval == 0 &&
+                             settings.checkpoint_time_interval == 0.),
+                ExcMessage("Load steps cut by <Solver/Control/Cut above broken bonds> write no "
+                           "checkpoints yet (the current increment is not stored): set <Output/"
+                           "Checkpoint interval> and <Output/Checkpoint time interval> to 0 and "
+                           "run without --restart, or set <Cut above broken bonds> to 0."));
 
     // What a restart must keep: the solver and its load steps (not its tolerance, iterations or
     // linear solver, which a restart after a step that did not converge may change).
@@ -177,27 +230,25 @@ namespace perideal
         state.start_work();
         postprocessors.execute(state, data);
       }
-    const auto &mask = fe.prescribed_mask();
-    for (unsigned int step = start.step + 1; step <= n_steps; ++step)
+    // Without cutting, step k applies k/N; with cutting the load factor advances by increment.
+    const double nominal   = 1. / n_steps;
+    double       increment = nominal, reached = start.time;
+    unsigned int cuts = 0;
+    for (unsigned int step = start.step + 1; cutting ? reached < 1. : step <= n_steps; ++step)
       {
         // The state after the last converged step, for a checkpoint if this one fails.
-        checkpoint.keep(state, postprocessors, {step - 1, double(step - 1) / n_steps, step});
-        const double factor = double(step) / n_steps;
-        state.f_ext.equ(factor, fe_full_load);
-        state.external_force.equ(factor, full_load);
+        checkpoint.keep(state, postprocessors, {step - 1, reached, step});
+        const double factor = cutting ? std::min(1., reached + increment) : double(step) / n_steps;
+        const auto   broken_at_start = n_broken_bonds(ps);
 
         unsigned int passes = 0, iterations = 0;
+        bool         failed = false;
         try
           {
             for (;; ++passes)
               {
                 const auto broken_before = n_broken_bonds(ps);
-                for (unsigned int k = 0; k < U.locally_owned_size(); ++k)
-                  if (mask[k])
-                    U.local_element(k) = factor * fe_target.local_element(k);
-                for (unsigned int k = 0; k < u.locally_owned_size(); ++k)
-                  if (prescribed.local_element(k) != 0.)
-                    u.local_element(k) = factor * target.local_element(k);
+                apply_load_factor(state, factor);
                 iterations +=
                   state.method.solve_equilibrium(state.f_ext, state.external_force, U, u);
                 // The model's own forces and energy density at the solution (breaks bonds).
@@ -217,29 +268,40 @@ namespace perideal
           }
         catch (const ExcNotConverged &failure)
           {
-            stop_without_convergence(state, postprocessors, checkpoint, step, failure);
+            if (!cutting || cuts == control.max_cuts)
+              stop_without_convergence(state, postprocessors, checkpoint, step, factor, failure);
+            failed = true;
           }
-        const double pd_energy = state.method.equilibrium_forces(U,
-                                                                 u,
-                                                                 state.f_ext,
-                                                                 state.external_force,
-                                                                 state.residual,
-                                                                 state.internal_force);
-
-        // The loads that do work: the applied ones, and on prescribed components the support
-        // forces (the FE residual K z - F there; minus the internal force on particles).
-        for (unsigned int k = 0; k < U.locally_owned_size(); ++k)
-          state.fe_load.local_element(k) =
-            state.f_ext.local_element(k) + (mask[k] ? state.residual.local_element(k) : 0.);
-        state.accumulate_work();
+        const auto broken_in_step = n_broken_bonds(ps) - broken_at_start;
+        if (cutting && (failed || broken_in_step > control.cut_threshold) &&
+            cuts < control.max_cuts)
+          {
+            // Undo the step and solve it again with half the increment.
+            checkpoint.restore_kept(state);
+            if (state.is_root)
+              state.log << "Load step " << step << " (load factor " << factor << "): "
+                        << (failed ? std::string("no convergence") :
+                                     std::to_string(broken_in_step) + " bonds broke")
+                        << ", cut to an increment of " << increment / 2. << std::endl;
+            increment /= 2.;
+            ++cuts;
+            --step;
+            continue;
+          }
+        cuts                   = 0;
+        const double pd_energy = equilibrium_state(state);
 
         // Solves and broken bonds per step always (they are the same on every rank count);
         // iteration counts only with progress output.
         const auto broken = n_broken_bonds(ps);
         if (state.is_root)
           {
-            state.log << "Load step " << step << "/" << n_steps << ": " << passes + 1
-                      << " solve(s)";
+            state.log << "Load step " << step;
+            if (cutting)
+              state.log << " (load factor " << factor << ")";
+            else
+              state.log << "/" << n_steps;
+            state.log << ": " << passes + 1 << " solve(s)";
             if (pd.has_body())
               state.log << ", " << broken << " broken bonds";
             if (settings.show_progress)
@@ -248,28 +310,29 @@ namespace perideal
           }
         data.step         = step;
         data.time         = factor;
-        data.final_row    = (step == n_steps);
+        data.final_row    = cutting ? factor >= 1. : (step == n_steps);
         data.write_fields = data.final_row;
         data.output_index = step;
         data.iterations   = iterations;
         data.pd_energy    = pd_energy;
-        state.fe_support  = state.residual;
         postprocessors.execute(state, data);
         if (checkpoint.after_step(state, postprocessors, {step, factor, step + 1}))
           return;
+        reached = factor;
+        if (cutting && 2 * broken_in_step <= control.cut_threshold)
+          increment = std::min(nominal, 2. * increment);
       }
   }
 
   template <int dim>
-  void
-  LoadStepping<dim>::stop_without_convergence(CoupledState<dim>     &state,
-                                              Postprocessors<dim>   &postprocessors,
-                                              Checkpoint<dim>       &checkpoint,
-                                              const unsigned int     step,
-                                              const ExcNotConverged &failure) const
+  std::string
+  LoadStepping<dim>::write_last_iterate(CoupledState<dim>   &state,
+                                        Postprocessors<dim> &postprocessors,
+                                        const unsigned int   step,
+                                        const double         factor,
+                                        const std::string   &what) const
   {
     const auto        &settings  = state.settings;
-    const unsigned int n_steps   = settings.load_steps;
     const std::string &directory = settings.output_directory;
     auto              &ps        = state.pd.particles();
 
@@ -284,7 +347,7 @@ namespace perideal
     StepData data;
     data.quasi_static  = true;
     data.step          = step;
-    data.time          = double(step) / n_steps;
+    data.time          = factor;
     data.write_fields  = true;
     data.output_index  = step;
     data.not_converged = true;
@@ -302,7 +365,7 @@ namespace perideal
     const auto broken = n_broken_bonds(ps);
     if (state.is_root)
       {
-        state.log << "Load step " << step << "/" << n_steps << " did not converge";
+        state.log << what << " did not converge";
         if (state.pd.has_body())
           state.log << " (" << broken << " broken bonds at its last iterate)";
         state.log << "; its last iterate: "
@@ -311,6 +374,38 @@ namespace perideal
                                       file_list + " (output index " + std::to_string(step) + ")")
                   << std::endl;
       }
+    return files.empty() ? std::string("no field files") : file_list;
+  }
+
+  template <int dim>
+  std::string
+  LoadStepping<dim>::failure_text(const ExcNotConverged &failure)
+  {
+    std::ostringstream message;
+    failure.print_info(message);
+    std::string text = message.str();
+    text.erase(0, text.find_first_not_of(" \n"));
+    while (!text.empty() && (text.back() == '\n' || text.back() == ' '))
+      text.pop_back();
+    return text;
+  }
+
+  template <int dim>
+  void
+  LoadStepping<dim>::stop_without_convergence(CoupledState<dim>     &state,
+                                              Postprocessors<dim>   &postprocessors,
+                                              Checkpoint<dim>       &checkpoint,
+                                              const unsigned int     step,
+                                              const double           factor,
+                                              const ExcNotConverged &failure) const
+  {
+    const unsigned int n_steps = state.settings.load_steps;
+    const bool         cutting = control.cut_threshold > 0;
+    const std::string  name    = "Load step " + std::to_string(step) +
+                             (cutting ? " (load factor " + std::to_string(factor) + ", after " +
+                                          std::to_string(control.max_cuts) + " cuts)" :
+                                        "/" + std::to_string(n_steps));
+    const std::string file_list = write_last_iterate(state, postprocessors, step, factor, name);
 
     // The checkpoint of the last converged load step (the state goes back to it).
     const RunPosition converged = checkpoint.write_kept(state);
@@ -318,29 +413,26 @@ namespace perideal
     // How to continue, in the log and in the message of the error.
     const bool        relax = (type == SolverType::adaptive_dynamic_relaxation);
     const std::string how =
-      "To continue from it, change " +
-      std::string(relax ? "<Solver/Maximum iterations>, <Solver/Tolerance> or <Solver/Density "
-                          "safety factor>" :
-                          "<Solver/Maximum iterations>, <Solver/Tolerance> or <Solver/Linear "
-                          "solver>") +
-      " in the parameter file and run 'perideal-solid --restart FILE.prm'; the problem, "
-      "<Solver/Type> and <Solver/Load steps> must stay as they are (other load steps need a new "
-      "run).";
+      cutting ?
+        std::string("To continue, change <Solver/Control/Maximum step cuts>, <Solver/Maximum "
+                    "iterations> or <Solver/Tolerance> and run again (cut load steps do not "
+                    "restart from checkpoints).") :
+        "To continue from it, change " +
+          std::string(relax ? "<Solver/Maximum iterations>, <Solver/Tolerance> or <Solver/Density "
+                              "safety factor>" :
+                              "<Solver/Maximum iterations>, <Solver/Tolerance> or <Solver/Linear "
+                              "solver>") +
+          " in the parameter file and run 'perideal-solid --restart FILE.prm'; the problem, "
+          "<Solver/Type> and <Solver/Load steps> must stay as they are (other load steps need a new "
+          "run).";
     if (state.is_root)
       state.log << "Load step " << converged.step << " is the last converged one. " << how
                 << std::endl;
 
-    std::ostringstream message;
-    failure.print_info(message);
-    std::string text = message.str();
-    text.erase(0, text.find_first_not_of(" \n"));
-    while (!text.empty() && (text.back() == '\n' || text.back() == ' '))
-      text.pop_back();
     AssertThrow(false,
                 ExcNotConverged(
-                  text + "\nLoad step " + std::to_string(step) + "/" + std::to_string(n_steps) +
-                  " did not converge. Its last iterate is written for inspection (" +
-                  (files.empty() ? std::string("no field files") : file_list) +
+                  failure_text(failure) + "\n" + name +
+                  " did not converge. Its last iterate is written for inspection (" + file_list +
                   "; statistics.csv ends at load step " + std::to_string(converged.step) +
                   "), and the checkpoint of the last converged load step " +
                   std::to_string(converged.step) + " to " + checkpoint.filename() + ". " + how));

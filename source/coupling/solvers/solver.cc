@@ -3,21 +3,24 @@
 // ---------------------------------------------------------------------
 #include <perideal/coupling/solvers/explicit_dynamics.h>
 #include <perideal/coupling/solvers/load_stepping.h>
+#include <perideal/coupling/solvers/sequentially_linear.h>
 #include <perideal/coupling/solvers/solver.h>
 
 namespace perideal
 {
   template <int dim>
   std::unique_ptr<Solver<dim>>
-  create_solver(const SolverType type)
+  create_solver(const SolverType type, const QuasiStaticControl &control)
   {
     if (type == SolverType::explicit_dynamics)
       return std::make_unique<ExplicitDynamics<dim>>();
-    return std::make_unique<LoadStepping<dim>>(type);
+    if (control.method == LoadControl::sequentially_linear)
+      return std::make_unique<SequentiallyLinear<dim>>(control);
+    return std::make_unique<LoadStepping<dim>>(type, control);
   }
 
   template std::unique_ptr<Solver<2>>
-  create_solver<2>(const SolverType);
+  create_solver<2>(const SolverType, const QuasiStaticControl &);
   template std::unique_ptr<Solver<3>>
-  create_solver<3>(const SolverType);
+  create_solver<3>(const SolverType, const QuasiStaticControl &);
 } // namespace perideal

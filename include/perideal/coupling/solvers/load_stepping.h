@@ -4,6 +4,7 @@
 #ifndef perideal_coupling_solvers_load_stepping_h
 #define perideal_coupling_solvers_load_stepping_h
 
+#include <perideal/coupling/solvers/quasi_static_control.h>
 #include <perideal/coupling/solvers/solver.h>
 
 namespace perideal
@@ -15,6 +16,14 @@ namespace perideal
    * solve of the model linearized about the reference configuration, or adaptive dynamic
    * relaxation with the model's own forces), bonds break at the converged state, and the step
    * is solved again while bonds break (breaking_settled()).
+   *
+   * With <Solver/Control/Cut above broken bonds> = T > 0 the increment adapts: a step that
+   * breaks more than T bonds, or whose solve does not converge, is undone (Checkpoint::
+   * restore_kept()) and solved again with half the increment, at most <Maximum step cuts> times in
+   * a row (then a step that breaks too many is kept, one that does not converge stops the run as
+   * below); after a step that breaks at most T/2 bonds the increment doubles, up to 1/<Load
+   * steps>. The load factor is then the time column of the statistics (rows numbered by step),
+   * and checkpoints are refused (the increment is not stored).
    *
    * Refused before any work: velocity conditions (a quasi-static solve applies displacements),
    * no displacement condition at all, and for the static solve a translation that no
@@ -33,8 +42,8 @@ namespace perideal
   class LoadStepping : public Solver<dim>
   {
   public:
-    /// @p type is static_linear or adaptive_dynamic_relaxation.
-    explicit LoadStepping(const SolverType type);
+    /// @p type is static_linear or adaptive_dynamic_relaxation; @p control is <Solver/Control>.
+    LoadStepping(const SolverType type, const QuasiStaticControl &control);
 
     void
     setup(CoupledState<dim> &state) override;
@@ -44,9 +53,54 @@ namespace perideal
         Postprocessors<dim> &postprocessors,
         Checkpoint<dim>     &checkpoint) override;
 
+  protected:
+    /**
+     * @brief The conditions at <Time stepping/End time> (load factor 1): the prescribed values
+     * of the particles and FE dofs and the loads, kept for apply_load_factor().
+     */
+    void
+    conditions_at_end_time(CoupledState<dim> &state);
+
+    /**
+     * @brief Load factor @p factor: the loads (CoupledState::f_ext, external_force) and the
+     * prescribed values (owned entries of U and u) @p factor times those at End time.
+     */
+    void
+    apply_load_factor(CoupledState<dim> &state, const double factor) const;
+
+    /**
+     * @brief After the equilibrium of a step: the method's forces (CouplingMethod::
+     * equilibrium_forces(): reactions, CoupledState::fe_support), the work of the loads; returns
+     * the particles' strain energy. Collective.
+     */
+    double
+    equilibrium_state(CoupledState<dim> &state) const;
+
+    /**
+     * @brief The solve of @p what (step @p step, load factor @p factor) did not converge: write
+     * its last iterate for inspection (FieldOutput's files *_not_converged, no statistics row),
+     * log it and return the files written. Collective.
+     */
+    std::string
+    write_last_iterate(CoupledState<dim>   &state,
+                       Postprocessors<dim> &postprocessors,
+                       const unsigned int   step,
+                       const double         factor,
+                       const std::string   &what) const;
+
+    /// The message of @p failure without surrounding blanks.
+    static std::string
+    failure_text(const ExcNotConverged &failure);
+
+    SolverType         type;
+    QuasiStaticControl control;
+    /// 1 on the prescribed components of owned free particles.
+    ParticleVector prescribed;
+
   private:
     /**
-     * @brief Load step @p step did not converge (@p failure): write its last iterate and the
+     * @brief Load step @p step (load factor @p factor) did not converge (@p failure): write its
+     * last iterate and the
      * checkpoint of the last converged step, then throw ExcNotConverged with @p failure's
      * message and how to continue. Collective.
      */
@@ -55,11 +109,12 @@ namespace perideal
                              Postprocessors<dim>   &postprocessors,
                              Checkpoint<dim>       &checkpoint,
                              const unsigned int     step,
+                             const double           factor,
                              const ExcNotConverged &failure) const;
 
-    SolverType type;
-    /// 1 on the prescribed components of owned free particles.
-    ParticleVector prescribed;
+    /// The prescribed values and the loads at End time (particles, FE dofs).
+    ParticleVector                       target, full_load;
+    typename CoupledState<dim>::FEVector fe_target, fe_full_load;
   };
 } // namespace perideal
 

@@ -8,6 +8,7 @@
 #include <perideal/coupling/checkpoint.h>
 #include <perideal/coupling/coupled_state.h>
 #include <perideal/coupling/postprocessors/postprocessor.h>
+#include <perideal/coupling/solvers/quasi_static_control.h>
 
 #include <memory>
 
@@ -45,10 +46,11 @@ namespace perideal
         Checkpoint<dim>     &checkpoint) = 0;
   };
 
-  /// The solver of <Solver/Type> = @p type.
+  /// The solver of <Solver/Type> = @p type and, for quasi-static runs, <Solver/Control> =
+  /// @p control.
   template <int dim>
   std::unique_ptr<Solver<dim>>
-  create_solver(const SolverType type);
+  create_solver(const SolverType type, const QuasiStaticControl &control);
 } // namespace perideal
 
 #endif

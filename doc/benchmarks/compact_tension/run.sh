@@ -1,0 +1,45 @@
+#!/usr/bin/env bash
+# Compact tension to complete separation (sequentially linear control): the all-PD run of
+# full_pd.prm and the blended coupled run of coupled.prm, then the all-PD run at other lattice
+# spacings and horizons (the convergence of the peak load ratio), the LEFM comparison and the
+# plots load.png and crack.png. Results go to results/ next to this script.
+# usage: bash doc/benchmarks/compact_tension/run.sh [BUILD_DIR]   (default: build)
+set -euo pipefail
+here="$(cd "$(dirname "$0")" && pwd)"
+build="$(cd "${1:-build}" && pwd)"
+solver="$build/bin/perideal-solid"
+export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1
+cd "$here"
+rm -rf results
+mkdir -p results
+
+# variant SOURCE NAME SED-EXPRESSIONS...: SOURCE.prm with its output directory set to
+# results/NAME and the given edits, written to results/NAME/run.prm.
+variant() {
+  local source=$1 name=$2
+  shift 2
+  mkdir -p "results/$name"
+  sed -e "s|set Directory  = results/.*|set Directory  = results/$name|" "$@" "$source.prm" \
+    > "results/$name/run.prm"
+}
+variant full_pd full_pd
+variant coupled coupled
+# Other lattice spacings: the pin columns are the boxes [0, dx] in x.
+variant full_pd dx_2mm -e "s|Lattice spacing = 1e-3|Lattice spacing = 2e-3|" \
+  -e "s|Upper corner = 1e-3,|Upper corner = 2e-3,|"
+variant full_pd dx_0.5mm -e "s|Lattice spacing = 1e-3|Lattice spacing = 0.5e-3|" \
+  -e "s|Upper corner = 1e-3,|Upper corner = 0.5e-3,|"
+variant full_pd m_4 -e "s|Horizon factor  = 3.015|Horizon factor  = 4.015|"
+variant full_pd m_2 -e "s|Horizon factor  = 3.015|Horizon factor  = 2.015|"
+
+for name in full_pd coupled dx_2mm dx_0.5mm m_4 m_2; do
+  echo "== $name"
+  start=$(date +%s)
+  mpirun -np 2 "$solver" "results/$name/run.prm" | grep -E '^(Particles|Coupling|Critical|Sequentially)'
+  echo "   $(( $(date +%s) - start )) s"
+done
+echo "== convergence with dx (delta = 3.015 dx) and with m = delta/dx (dx = 1 mm)"
+/usr/bin/python3 postprocess.py results/dx_2mm results/full_pd results/dx_0.5mm
+/usr/bin/python3 postprocess.py results/m_2 results/full_pd results/m_4
+echo "== all-PD and coupled"
+/usr/bin/python3 postprocess.py results/full_pd results/coupled --plot compact_tension
