@@ -4,6 +4,7 @@
 #include <deal.II/base/mpi.h>
 #include <deal.II/fe/component_mask.h>
 #include <deal.II/lac/dynamic_sparsity_pattern.h>
+#include <deal.II/lac/sparsity_tools.h>
 #include <deal.II/lac/solver_cg.h>
 #include <deal.II/lac/solver_control.h>
 #include <deal.II/lac/trilinos_index_access.h>
@@ -15,7 +16,6 @@
 #include <algorithm>
 #include <cmath>
 
-#include <EpetraExt_Transpose_RowMatrix.h>
 
 namespace perideal
 {
@@ -45,22 +45,49 @@ namespace perideal
         }
     }
 
-    /// @p result = @p A^T diag(@p w) @p B with A transposed explicitly and a product without
-    /// transposition: deal.II's transposed product (EpetraExt's Multiply with A transposed)
-    /// corrupts the heap on two ranks for the coupled torsion of
-    /// tests/coupling/torsion_edge_crack_02.
+    /// @p result = @p A^T diag(@p w) @p A, with rows and columns partitioned as @p owned (A's
+    /// columns): every local row r of A adds w_r a_r a_r^T, rows of other ranks sent by
+    /// compress(). Trilinos' transposed products (EpetraExt's Multiply with A transposed, with or
+    /// without an explicit transpose) corrupt the heap on two ranks for some partitions (the
+    /// coupled torsion of tests/coupling/torsion_edge_crack_02, the PD part of overlapping
+    /// Schwarz), so the product is summed here.
     void
-    transposed_product(const SparseMatrix &A,
-                       const SparseMatrix &B,
-                       const SolverVector &w,
-                       SparseMatrix       &result)
+    weighted_gram(const SparseMatrix &A,
+                  const SolverVector &w,
+                  const IndexSet     &owned,
+                  const MPI_Comm      comm,
+                  SparseMatrix       &result)
     {
-      EpetraExt::RowMatrix_Transpose transposer;
-      SparseMatrix                   transpose;
-      // The transform's result is an Epetra_CrsMatrix it owns; reinit() copies it.
-      transpose.reinit(dynamic_cast<const Epetra_CrsMatrix &>(
-        transposer(const_cast<Epetra_CrsMatrix &>(A.trilinos_matrix()))));
-      transpose.mmult(result, B, w);
+      std::vector<types::global_dof_index> touched;
+      for_each_local_row(A, [&](const auto, const auto &columns, const double *) {
+        touched.insert(touched.end(), columns.begin(), columns.end());
+      });
+      std::sort(touched.begin(), touched.end());
+      touched.erase(std::unique(touched.begin(), touched.end()), touched.end());
+      IndexSet relevant(owned);
+      relevant.add_indices(touched.begin(), touched.end());
+      relevant.compress();
+
+      DynamicSparsityPattern dsp(owned.size(), owned.size(), relevant);
+      for_each_local_row(A, [&](const auto, const auto &columns, const double *) {
+        for (const auto column : columns)
+          dsp.add_entries(column, columns.begin(), columns.end());
+      });
+      SparsityTools::distribute_sparsity_pattern(dsp, owned, comm, relevant);
+      result.reinit(owned, owned, dsp, comm);
+
+      std::vector<double> row_values;
+      for_each_local_row(A, [&](const auto row, const auto &columns, const double *values) {
+        const double weight = w[row];
+        row_values.resize(columns.size());
+        for (std::size_t k = 0; k < columns.size(); ++k)
+          {
+            for (std::size_t l = 0; l < columns.size(); ++l)
+              row_values[l] = weight * values[k] * values[l];
+            result.add(columns[k], columns.size(), columns.data(), row_values.data(), false);
+          }
+      });
+      result.compress(VectorOperation::add);
     }
   } // namespace
 
@@ -225,27 +252,12 @@ namespace perideal
     const std::size_t n_local = prescribed.size();
 
     // The PD part (G T_f)^T diag(w) (G T_f) of the linearization about the reference state.
-    // Without FE unknowns it is formed as T_f^T (G^T diag(w) G) T_f: the first form then
-    // overflows a heap buffer inside deal.II's Trilinos product (ML) on two ranks, the second
-    // overflows it with FE unknowns (3D linear-strain test); both found with AddressSanitizer.
-    // With FE unknowns (G T_f)^T is formed explicitly (transposed_product()).
     LinearizedModel linearized;
     material.linearize(*particles, linearized);
     StaticSolver<dim>::extension_matrix(*particles, linearized, G, weights);
-    SparseMatrix pd_part;
-    if (fe->n_dofs() > 0)
-      {
-        SparseMatrix GT;
-        G.mmult(GT, T_free);
-        transposed_product(GT, GT, weights, pd_part);
-      }
-    else
-      {
-        SparseMatrix K_pd, KT;
-        G.Tmmult(K_pd, G, weights);
-        K_pd.mmult(KT, T_free);
-        T_free.Tmmult(pd_part, KT);
-      }
+    SparseMatrix pd_part, GT;
+    G.mmult(GT, T_free);
+    weighted_gram(GT, weights, z_owned, comm, pd_part);
 
     // K = E_f^T K_FE E_f + (G T_f)^T diag(w) (G T_f) + s on the prescribed diagonal, summed
     // row by row (both parts have the rows of z).
@@ -285,6 +297,7 @@ namespace perideal
           n_p += 1.;
         }
     system_matrix.compress(VectorOperation::add);
+    linear_system.clear();
     AssertThrow(Utilities::MPI::sum(n_p, comm) > 0.,
                 ExcMessage("The coupled static system is singular: no displacement is prescribed "
                            "(boundary conditions: " +
@@ -358,7 +371,7 @@ namespace perideal
         }
     }
 
-    const unsigned int iterations = StaticSolver<dim>::solve_linear_system(
+    const unsigned int iterations = linear_system.solve(
       system_matrix,
       rhs,
       z,

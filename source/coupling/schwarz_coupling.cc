@@ -97,11 +97,6 @@ namespace perideal
   SchwarzCoupling<dim>::initialize(const CoupledRegions<dim> &coupled_regions)
   {
     regions = coupled_regions;
-    // Open (issue #16): on two ranks the assembly of the PD part's stiffness corrupts the heap
-    // inside Trilinos' matrix product; refuse rather than crash.
-    AssertThrow(Utilities::MPI::n_mpi_processes(regions.particles->get_communicator()) == 1,
-                ExcMessage("<Coupling/Method> = overlapping schwarz runs on one MPI rank only for "
-                           "now; run with 1 rank, or use <Coupling/Method> = blended."));
     AssertThrow(regions.layout == regions.fe->field_layout(),
                 ExcMessage("<Coupling/Method> = overlapping schwarz needs the same unknowns on "
                            "both sides; the particles have " +

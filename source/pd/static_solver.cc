@@ -206,7 +206,8 @@ namespace perideal
       G.Tmmult(system_matrix, G, weights);
     }
 
-    const unsigned int iterations = solve_linear_system(
+    LinearSystem       linear_system;
+    const unsigned int iterations = linear_system.solve(
       system_matrix,
       rhs,
       solution,
@@ -232,8 +233,16 @@ namespace perideal
   }
 
   template <int dim>
+  void
+  StaticSolver<dim>::LinearSystem::clear()
+  {
+    direct.reset();
+    amg.reset();
+  }
+
+  template <int dim>
   unsigned int
-  StaticSolver<dim>::solve_linear_system(
+  StaticSolver<dim>::LinearSystem::solve(
     const SparseMatrix                                                       &K,
     const SolverVector                                                       &b,
     SolverVector                                                             &x,
@@ -251,15 +260,22 @@ namespace perideal
       {
         if (settings.linear_solver == LinearSolverType::direct)
           {
-            TrilinosWrappers::SolverDirect solver(control);
-            solver.solve(K, x, b);
+            if (!direct)
+              {
+                direct = std::make_unique<TrilinosWrappers::SolverDirect>(direct_control);
+                direct->initialize(K);
+              }
+            direct->solve(x, b);
           }
         else
           {
-            TrilinosWrappers::PreconditionAMG amg;
-            amg.initialize(K, amg_data());
+            if (!amg)
+              {
+                amg = std::make_unique<TrilinosWrappers::PreconditionAMG>();
+                amg->initialize(K, amg_data());
+              }
             SolverCG<SolverVector> cg(control);
-            cg.solve(K, x, b, amg);
+            cg.solve(K, x, b, *amg);
             iterations = control.last_step();
           }
       }

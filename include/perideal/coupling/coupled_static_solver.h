@@ -34,9 +34,10 @@ namespace perideal
    *
    *   K = E^T K_FE E + (G T)^T diag(w) (G T),   F = E^T f_FE + T^T (V f_PD),
    *
-   * where E takes z to the FE dofs and V f_PD are the particle loads [N]. K is built with
-   * Trilinos matrix products (TrilinosWrappers::SparseMatrix::mmult, Tmmult) and one row-wise
-   * sum. Prescribed components (FE displacement conditions; PD displacement conditions on free
+   * where E takes z to the FE dofs and V f_PD are the particle loads [N]. E^T K_FE E and G T
+   * are Trilinos matrix products (TrilinosWrappers::SparseMatrix::mmult, Tmmult); (G T)^T diag(w)
+   * (G T) is summed row by row of G T (Trilinos' transposed products corrupt the heap on two
+   * ranks for some partitions). Prescribed components (FE displacement conditions; PD displacement conditions on free
    * particles) are eliminated symmetrically as in StaticSolver: their columns are dropped (E and
    * T are multiplied by a 0/1 diagonal mask), the known values move to the right-hand side
    * (F_f - K_fc g), and their rows read s z_c = s g_c with s the mean diagonal entry of the free
@@ -191,6 +192,9 @@ namespace perideal
     double       prescribed_scale = 1.;
     SparseMatrix T, T_free, fe_part, G, system_matrix;
     SolverVector weights;
+    /// The factorization or preconditioner of system_matrix, built by the first solve after
+    /// assemble().
+    typename StaticSolver<dim>::LinearSystem linear_system;
   };
 } // namespace perideal
 

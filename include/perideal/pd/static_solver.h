@@ -4,7 +4,9 @@
 #ifndef perideal_pd_static_solver_h
 #define perideal_pd_static_solver_h
 
+#include <deal.II/lac/solver_control.h>
 #include <deal.II/lac/trilinos_precondition.h>
+#include <deal.II/lac/trilinos_solver.h>
 
 #include <perideal/base/linear_algebra.h>
 #include <perideal/base/problem_settings.h>
@@ -12,6 +14,7 @@
 #include <perideal/pd/particle_system.h>
 
 #include <functional>
+#include <memory>
 #include <string>
 
 namespace perideal
@@ -87,23 +90,43 @@ namespace perideal
                      SolverVector              &weights);
 
     /**
-     * @brief Solve the symmetric positive definite system @p K x = @p b of a static solve as
-     * @p settings say: KLU, or CG preconditioned by ML AMG set up with @p amg_data() (the
-     * near-null space of the unknowns). @p what names the solve in the messages and @p advice
-     * ends them. Throws, naming the <Solver> entries, if CG does not converge, the solver fails,
-     * or the solution is not finite or leaves a residual above 1e3 times the tolerance (a
-     * singular system). For b = 0, x is left as it is. Returns the number of CG iterations (0
-     * for the direct solver).
+     * @brief The solves of one symmetric positive definite system K x = b of a static solve for
+     * any number of right-hand sides, as the <Solver> settings say: KLU, or CG preconditioned by
+     * ML AMG. The factorization or the AMG hierarchy is built by the first solve() and kept for
+     * the next ones until clear() (the alternating solves of overlapping Schwarz, one stiffness
+     * per load step).
      */
-    static unsigned int
-    solve_linear_system(
-      const SparseMatrix                                                               &K,
-      const SolverVector                                                               &b,
-      SolverVector                                                                     &x,
-      const Settings                                                                   &settings,
-      const std::function<dealii::TrilinosWrappers::PreconditionAMG::AdditionalData()> &amg_data,
-      const std::string                                                                &what,
-      const std::string                                                                &advice);
+    class LinearSystem
+    {
+    public:
+      /// Forget the factorization or preconditioner: the next solve() builds it for its K.
+      void
+      clear();
+
+      /**
+       * @brief Solve @p K x = @p b (@p K the matrix of every solve since clear()) with
+       * @p amg_data() the AMG set-up (the near-null space of the unknowns). @p what names the
+       * solve in the messages and @p advice ends them. Throws, naming the <Solver> entries, if
+       * CG does not converge, the solver fails, or the solution is not finite or leaves a
+       * residual above 1e3 times the tolerance (a singular system). For b = 0, x is left as it
+       * is. Returns the number of CG iterations (0 for the direct solver).
+       */
+      unsigned int
+      solve(const SparseMatrix                                                         &K,
+            const SolverVector                                                         &b,
+            SolverVector                                                               &x,
+            const Settings                                                             &settings,
+            const std::function<dealii::TrilinosWrappers::PreconditionAMG::AdditionalData()>
+                              &amg_data,
+            const std::string &what,
+            const std::string &advice);
+
+    private:
+      /// The direct solver keeps a reference to its control.
+      dealii::SolverControl                                      direct_control;
+      std::unique_ptr<dealii::TrilinosWrappers::SolverDirect>    direct;
+      std::unique_ptr<dealii::TrilinosWrappers::PreconditionAMG> amg;
+    };
 
     /**
      * @brief The matrix of the last solve (prescribed rows eliminated).
