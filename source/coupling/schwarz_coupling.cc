@@ -69,13 +69,11 @@ namespace perideal
   void
   SchwarzCoupling<dim>::check_solver(const SolverType type) const
   {
-    AssertThrow(type == SolverType::static_linear,
-                ExcMessage("<Coupling/Method> = overlapping schwarz alternates static solves of "
-                           "the FE and PD parts: <Solver/Type> = " +
-                           std::string(type == SolverType::explicit_dynamics ?
-                                         "explicit" :
-                                         "adaptive dynamic relaxation") +
-                           " is not supported; accepted values: static."));
+    AssertThrow(type != SolverType::explicit_dynamics,
+                ExcMessage("<Coupling/Method> = overlapping schwarz alternates equilibrium solves "
+                           "of the FE and PD parts: <Solver/Type> = explicit is not supported; "
+                           "accepted values: static, adaptive dynamic relaxation (or use "
+                           "<Coupling/Method> = blended for explicit dynamics)."));
   }
 
   template <int dim>
@@ -484,6 +482,69 @@ namespace perideal
     fe_solver->assemble(*regions.material, conditions);
     pd_solver = std::make_unique<CoupledStaticSolver<dim>>(settings.linear);
     pd_solver->reinit(*no_fe, *regions.particles, pd_transfer, pd_prescribed);
+    pd_relaxation.reset();
+    if (settings.type != SolverType::adaptive_dynamic_relaxation)
+      return;
+
+    // Adaptive dynamic relaxation of the PD part with the model's own forces (the FE part is
+    // linear and keeps its static solve); its fictitious density is the Gershgorin bound of the
+    // linearized PD stiffness.
+    for (ParticleVector *vector : {&z, &z_prescribed, &z_force})
+      pd_solver->reinit_unknowns(*vector);
+    regions.particles->reinit_vector(nodal_force, nc);
+    regions.particles->reinit_vector(particle_state, nc);
+    const auto clear_prescribed = [this](ParticleVector &v) {
+      for (std::size_t k = 0; k < v.locally_owned_size(); ++k)
+        if (pd_solver->is_prescribed(k))
+          v.local_element(k) = 0.;
+    };
+    pd_relaxation_operations.clear_prescribed       = clear_prescribed;
+    pd_relaxation_operations.prescribe_displacement = [this](ParticleVector &zz) {
+      for (std::size_t k = 0; k < zz.locally_owned_size(); ++k)
+        if (pd_solver->is_prescribed(k))
+          zz.local_element(k) = z_prescribed.local_element(k);
+    };
+    pd_relaxation_operations.residual = [this, clear_prescribed](ParticleVector &zz,
+                                                                 ParticleVector &zforce) {
+      pd_solver->from_unknowns(zz, no_U, particle_state);
+      particle_nodal_forces(particle_state, *current_pd_load, nullptr);
+      pd_solver->to_unknowns(no_fe_load, nodal_force, zforce);
+      clear_prescribed(zforce);
+    };
+    pd_solver->assemble(*regions.material, conditions);
+    std::vector<double> bound;
+    pd_solver->row_bounds(bound);
+    ParticleVector density;
+    pd_solver->reinit_unknowns(density);
+    AdaptiveDynamicRelaxation::fictitious_density(bound, settings.relaxation_safety, density);
+    pd_relaxation = std::make_unique<AdaptiveDynamicRelaxation>(pd_relaxation_operations,
+                                                                density,
+                                                                settings.relaxation,
+                                                                comm);
+  }
+
+  template <int dim>
+  double
+  SchwarzCoupling<dim>::particle_nodal_forces(const ParticleVector &u,
+                                              const ParticleVector &f_pd,
+                                              std::vector<double>  *energy)
+  {
+    // No bond breaks here: bonds break between solves, at the converged state (the load
+    // stepping).
+    auto &particles = *regions.particles;
+    regions.material->compute_forces(
+      particles, u, force, energy, std::numeric_limits<double>::infinity());
+    const auto        &volume = particles.volumes();
+    const unsigned int nc     = regions.layout.n_components();
+    double             pd_energy = 0.;
+    for (unsigned int i = 0; i < particles.n_owned(); ++i)
+      {
+        for (unsigned int k = i * nc; k < (i + 1) * nc; ++k)
+          nodal_force.local_element(k) = (force.local_element(k) + f_pd.local_element(k)) * volume[i];
+        if (energy != nullptr && pd_only[i])
+          pd_energy += (*energy)[i] * volume[i];
+      }
+    return Utilities::MPI::sum(pd_energy, particles.get_communicator());
   }
 
   template <int dim>
@@ -501,8 +562,10 @@ namespace perideal
                                           ParticleVector       &u)
   {
     const MPI_Comm comm = regions.particles->get_communicator();
-    // Bonds may have broken since the last solve: the PD stiffness once per solve.
-    pd_solver->assemble(*regions.material, conditions);
+    // Bonds may have broken since the last solve: the PD stiffness once per solve (the
+    // relaxation works with the model's forces).
+    if (!pd_relaxation)
+      pd_solver->assemble(*regions.material, conditions);
     const auto dot = [comm](const std::vector<double> &v, const std::vector<double> &w) {
       double sum = 0.;
       for (std::size_t k = 0; k < v.size(); ++k)
@@ -518,7 +581,7 @@ namespace perideal
           U.local_element(interface_dofs[j]) = interface_values[j];
         fe_solver->solve_assembled(*regions.material, f_fe, no_particle_load, U, no_u, conditions);
         interpolate_to_particles(U, u);
-        pd_solver->solve_assembled(*regions.material, no_fe_load, f_pd, no_U, u, conditions);
+        solve_pd_part(f_pd, u);
         fit(u, fitted_values);
         residual.resize(fitted_values.size());
         for (std::size_t j = 0; j < residual.size(); ++j)
@@ -574,6 +637,29 @@ namespace perideal
   }
 
   template <int dim>
+  void
+  SchwarzCoupling<dim>::solve_pd_part(const ParticleVector &f_pd, ParticleVector &u)
+  {
+    if (!pd_relaxation)
+      {
+        pd_solver->solve_assembled(*regions.material, no_fe_load, f_pd, no_U, u, conditions);
+        return;
+      }
+    // ||F_ext|| over the free unknowns: the particle loads [N].
+    const auto        &volume = regions.particles->volumes();
+    const unsigned int nc     = regions.layout.n_components();
+    for (std::size_t k = 0; k < nodal_force.locally_owned_size(); ++k)
+      nodal_force.local_element(k) = f_pd.local_element(k) * volume[k / nc];
+    pd_solver->to_unknowns(no_fe_load, nodal_force, z_force);
+    pd_relaxation_operations.clear_prescribed(z_force);
+    pd_solver->to_unknowns(no_U, u, z);
+    z_prescribed    = z;
+    current_pd_load = &f_pd;
+    pd_relaxation->solve(z, z_force.l2_norm());
+    pd_solver->from_unknowns(z, no_U, u);
+  }
+
+  template <int dim>
   double
   SchwarzCoupling<dim>::equilibrium_forces(const FEVector       &U,
                                            const ParticleVector &u,
@@ -586,20 +672,13 @@ namespace perideal
     // The interface dofs are held by the PD field, not by supports: no reaction, no work.
     for (const unsigned int k : interface_dofs)
       fe_residual.local_element(k) = 0.;
-    pd_solver->forces(no_U, u, no_fe_load, f_pd, no_fe_residual, pd_force);
     // The PD part's energy: the particles where only PD is solved (the model's own energy).
-    auto &particles = *regions.particles;
-    regions.material->compute_forces(particles,
-                                     u,
-                                     force,
-                                     &energy_density,
-                                     std::numeric_limits<double>::infinity());
-    const auto &volume = particles.volumes();
-    double      energy = 0.;
-    for (unsigned int i = 0; i < pd_only.size(); ++i)
-      if (pd_only[i])
-        energy += energy_density[i] * volume[i];
-    return Utilities::MPI::sum(energy, particles.get_communicator());
+    const double energy = particle_nodal_forces(u, f_pd, &energy_density);
+    if (pd_relaxation)
+      pd_force = force;
+    else
+      pd_solver->forces(no_U, u, no_fe_load, f_pd, no_fe_residual, pd_force);
+    return energy;
   }
 
   template class SchwarzCoupling<2>;
@@ -610,4 +689,5 @@ PERIDEAL_REGISTER_COUPLING_METHOD(perideal::SchwarzCoupling,
                                   "overlapping schwarz",
                                   "alternating (multiplicative) Schwarz: the FE part (beta < 1) "
                                   "and the PD part (beta > 0, its volume constraint from the FE "
-                                  "field) solved in turn to a tolerance; static only.")
+                                  "field) solved in turn to a tolerance; static and adaptive "
+                                  "dynamic relaxation (of the PD part).")

@@ -10,6 +10,9 @@
 // moment is not isotropic; for the antiplane model the surface-corrected bond constants vary
 // near the edge of the particle region), so those errors are the PD models' own and are
 // printed, not checked against round-off.
+// With <Solver/Type> = adaptive dynamic relaxation (the PD part relaxed with the model's forces,
+// Solver/Tolerance = 1e-11, Schwarz tolerance 1e-9) the uniform strain of PMB and the uniform
+// slope of the antiplane field come out exact to the relaxation's accuracy (below 1e-7).
 // ---------------------------------------------------------------------
 #include <deal.II/base/mpi.h>
 
@@ -71,13 +74,14 @@ subsection Coupling
   set Blending function  = min(1, max(0, min(min((x - 0.03) / 0.01, (0.07 - x) / 0.01), min((y - 0.03) / 0.01, (0.07 - y) / 0.01))))
   set Exact displacement = EXACT_FIELD
   subsection overlapping schwarz
-    set Tolerance          = 1e-12
+    set Tolerance          = SCHWARZ_TOLERANCE
     set Maximum iterations = 500
     set Relaxation         = aitken
   end
 end
 subsection Solver
-  set Type          = static
+  set Type          = SOLVER_TYPE
+  set Tolerance     = 1e-11
   set Linear solver = direct
 end
 subsection Output
@@ -115,7 +119,8 @@ end
         const Model       &model,
         const std::string &field,
         const std::string &body_force,
-        const bool         exact_expected)
+        const bool         exact_expected,
+        const bool         relax = false)
   {
     const std::string log =
       coupling_tests::run("schwarz_patch.prm",
@@ -125,7 +130,12 @@ end
                                                       {"FE_PHYSICS", model.physics},
                                                       {"FE_ENTRIES", model.fe_entries},
                                                       {"EXACT_FIELD", field},
-                                                      {"BODY_FORCE", body_force}}));
+                                                      {"BODY_FORCE", body_force},
+                                                     {"SOLVER_TYPE",
+                                                      relax ? "adaptive dynamic relaxation" :
+                                                              "static"},
+                                                     {"SCHWARZ_TOLERANCE",
+                                                      relax ? "1e-9" : "1e-12"}}));
     const auto error =
       coupling_tests::numbers_of(log,
                                  "Displacement error (largest, relative to the largest exact "
@@ -134,8 +144,9 @@ end
     std::cout << std::setw(26) << std::left << model.name << std::setw(16) << name << std::setw(4)
               << std::right << iterations[0] << " iterations; ";
     const double largest = std::max(error[0], error[1]);
+    const double bound   = relax ? 1e-7 : 1e-10;
     if (exact_expected)
-      std::cout << "error (FE, PD) < 1e-10: " << (largest < 1e-10 ? "yes" : "no (FAILED)");
+      std::cout << "error (FE, PD) < " << bound << ": " << (largest < bound ? "yes" : "no (FAILED)");
     else
       std::cout << std::scientific << std::setprecision(2) << "error FE " << error[0] << ", PD "
                 << error[1] << std::defaultfloat;
@@ -172,5 +183,8 @@ main(int argc, char **argv)
   patch("constant", antiplane, "1e-5", "0", true);
   patch("uniform slope", antiplane, "1e-4*x - 2e-4*y", "0", true);
   patch("linear slope", antiplane, "1e-3*(x^2 + y^2)", "-4e-3*26e9", false);
+  // The PD part relaxed instead of solved.
+  patch("uniform strain, relaxed", pmb, "1e-4*x + 2e-5*y; 3e-5*x - 5e-5*y", "0; 0", true, true);
+  patch("uniform slope, relaxed", antiplane, "1e-4*x - 2e-4*y", "0", true, true);
   return 0;
 }

@@ -7,8 +7,8 @@
 //     as the overlap widens, so the counts fall with W; every run stays exact (error < 1e-8).
 //  2. Bad input, each stopped with a message naming the entry: a ramp narrower than the horizon,
 //     a ramp that leaves the FE nodes prescribed by the PD field next to the PD volume
-//     constraint (narrower than a horizon plus an FE cell), explicit dynamics and adaptive
-//     dynamic relaxation (<Solver/Type>), a relaxation factor outside (0, 1], and a Schwarz
+//     constraint (narrower than a horizon plus an FE cell), explicit dynamics (<Solver/Type>),
+//     a relaxation factor outside (0, 1], and a Schwarz
 //     iteration stopped by <Maximum iterations> (its residual history, the state written).
 // ---------------------------------------------------------------------
 #include <deal.II/base/mpi.h>
@@ -173,7 +173,6 @@ main(int argc, char **argv)
   bad_input("ramp narrower than a horizon plus an FE cell",
             {{"RAMP_W", "0.005"}, {"CELL_COUNT", "20"}});
   bad_input("explicit dynamics", {{"SOLVER_TYPE", "explicit"}});
-  bad_input("adaptive dynamic relaxation", {{"SOLVER_TYPE", "adaptive dynamic relaxation"}});
   bad_input("relaxation factor above 1", {{"RELAX_KIND", "fixed factor"}, {"RELAX_FACTOR", "1.5"}});
   if (Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0)
     std::filesystem::remove_all("results_schwarz");

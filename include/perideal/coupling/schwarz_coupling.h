@@ -7,6 +7,7 @@
 #include <perideal/coupling/coupled_static_solver.h>
 #include <perideal/coupling/coupling_method.h>
 #include <perideal/coupling/transfer_operator.h>
+#include <perideal/pd/adaptive_dynamic_relaxation.h>
 
 #include <memory>
 #include <string>
@@ -34,11 +35,14 @@ namespace perideal
    *   constraint layer from the FE field, PD solve, G(x) the fit of the PD field; r = G(x) - x,
    *   x <- x + omega r with omega = 1, a fixed factor, or Aitken's dynamic factor; converged when
    *   |r| <= <Tolerance> |G(x)|. Both solves are the library's static solve
-   *   (CoupledStaticSolver) of one region alone, the PD stiffness assembled once per load step.
+   *   (CoupledStaticSolver) of one region alone, the PD stiffness assembled (and factorized)
+   *   once per load step. With <Solver/Type> = adaptive dynamic relaxation the PD part is
+   *   relaxed with the model's own forces instead (warm-started from the last iteration), the
+   *   FE part, linear, keeps its static solve.
    *
    * The strain energy counts the FE part on {beta < 1} (1/2 U^T K U with the FE weight) and the
    * particles with beta = 1 (sum_i W_i V_i), so every point of the body once. Solver/Type =
-   * static only. See doc/theory/coupling.md, "Overlapping Schwarz".
+   * static or adaptive dynamic relaxation. See doc/theory/coupling.md, "Overlapping Schwarz".
    */
   template <int dim>
   class SchwarzCoupling : public CouplingMethod<dim>
@@ -59,7 +63,7 @@ namespace perideal
     declare_parameters(dealii::ParameterHandler &prm);
     void
     parse_parameters(dealii::ParameterHandler &prm) override;
-    /// Static only: explicit dynamics and adaptive dynamic relaxation are refused.
+    /// Static and adaptive dynamic relaxation: explicit dynamics is refused.
     void
     check_solver(const SolverType type) const override;
     double
@@ -116,6 +120,17 @@ namespace perideal
     /// The fit of the particle field @p u (ghosts current) at the owned interface dofs.
     void
     fit(const ParticleVector &u, std::vector<double> &values);
+    /// The PD subproblem for the volume constraint in @p u: the static solve of the assembled
+    /// stiffness, or the relaxation.
+    void
+    solve_pd_part(const ParticleVector &f_pd, ParticleVector &u);
+    /// The model's force density of @p u into force, (force + @p f_pd) V into nodal_force;
+    /// with @p energy (the energy densities), returns sum_i W_i V_i over the particles with
+    /// beta = 1.
+    double
+    particle_nodal_forces(const ParticleVector &u,
+                          const ParticleVector &f_pd,
+                          std::vector<double>  *energy);
 
     double       tolerance         = 1e-10;
     unsigned int max_iterations    = 100;
@@ -152,6 +167,12 @@ namespace perideal
     /// P U at every particle of an FE cell (work space of interpolate_to_particles()).
     mutable ParticleVector layer_values;
     std::vector<double>    residual, previous_residual, fitted_values, energy_density;
+    /// Adaptive dynamic relaxation of the PD part (<Solver/Type> = adaptive dynamic
+    /// relaxation) on the unknowns z of pd_solver, and its work space.
+    std::unique_ptr<AdaptiveDynamicRelaxation> pd_relaxation;
+    AdaptiveDynamicRelaxation::Operations      pd_relaxation_operations;
+    ParticleVector        z, z_prescribed, z_force, nodal_force, particle_state;
+    const ParticleVector *current_pd_load = nullptr;
   };
 } // namespace perideal
 
