@@ -90,11 +90,14 @@ PATCH_CASES = [
      dict(ANTIPLANE, EXACT="1e-3*(x^2 + y^2)", BODY_FORCE="-4e-3*26e9"), False),
     ("PMB 3D uniform strain", "patch_3d", dict(EXACT=UNIFORM_3D), True),
 ]
-PATCH_W = {"patch_2d": dict(W="0.01", LO="0.03", HI="0.07"), "patch_3d": dict(W="0.005")}
+PATCH_W = {"patch_2d": dict(W="0.01", LO="0.03", HI="0.07", RELAXATION="aitken"),
+           "patch_3d": dict(W="0.005")}
 # Overlap sweep: PMB uniform strain in 2D, beta = 1 on [40, 60]^2 mm, ramps of width W [mm]
 # outside it (beta > 0 on (40 mm - W, 60 mm + W)^2). Below 8 mm Schwarz refuses the set-up (an
 # interface dof's nearest particle in the volume constraint).
 SWEEP_W = [8, 10, 12, 16, 20]
+SWEEP_METHODS = [("blended", "aitken"), ("overlapping schwarz", "aitken"),
+                 ("overlapping schwarz", "none")]
 
 # Cracked plates (cracked_plate_*.prm.in): lattice, plate, crack centre, beta = 1 core and
 # beta > 0 support of the coupled runs (boxes in x and y; through the thickness in 3D).
@@ -151,7 +154,9 @@ def need(regex, text, what, log):
 
 def patch_run(solver, work, name, template, fields, method, geometry):
     W = geometry["W"]
-    tag = re.sub(r"[^a-z0-9]+", "_", f"{name} {SHORT[method]} {W}".lower())
+    relaxation = geometry.get("RELAXATION", "aitken")
+    label = SHORT[method] + ("" if relaxation == "aitken" else "_" + relaxation)
+    tag = re.sub(r"[^a-z0-9]+", "_", f"{name} {label} {W}".lower())
     directory = os.path.join(work, tag)
     os.makedirs(directory, exist_ok=True)
     prm = os.path.join(directory, "run.prm")
@@ -164,7 +169,7 @@ def patch_run(solver, work, name, template, fields, method, geometry):
                error_fe=float(e.group(1)), error_pd=float(e.group(2)),
                ghost=float(g.group(1)), ghost_rel=float(g.group(2)),
                particles=int(need(RE_PARTICLES, out, "Particles", log).group(1)),
-               iterations=None)
+               iterations=None, relaxation=relaxation if method != "blended" else None)
     if method == "overlapping schwarz":
         row["iterations"] = int(need(RE_SCHWARZ, out, "Overlapping Schwarz", log).group(1))
     return row
@@ -283,20 +288,28 @@ def patch_table(rows):
     return "\n".join(lines)
 
 
+def sweep_key(r):
+    return r["method"] if r["relaxation"] in (None, "aitken") else r["method"] + " none"
+
+
 def sweep_table(rows):
-    by = {(r["W"], r["method"]): r for r in rows}
+    by = {(r["W"], sweep_key(r)): r for r in rows}
     lines = ["| W [mm] | particles | (W − δ − h) / δ | blended: error FE / particles | blended: ghost force "
              "(relative) | blended: time [s] | Schwarz: error FE / particles | Schwarz: iterations "
-             "| Schwarz: time [s] |",
-             "|---|---|---|---|---|---|---|---|---|"]
+             "| Schwarz: time [s] | Schwarz without relaxation: error FE / particles | iterations "
+             "| time [s] |",
+             "|---|---|---|---|---|---|---|---|---|---|---|---|"]
     delta, h = 3.015e-3, 4e-3
     for W in sorted({r["W"] for r in rows}):
         b, s = by[(W, "blended")], by[(W, "overlapping schwarz")]
+        n = by[(W, "overlapping schwarz none")]
         lines.append(
             f"| {W * 1e3:g} | {b['particles']} | {(W - delta - h) / delta:.2f} "
             f"| {fmt(b['error_fe'])} / {fmt(b['error_pd'])} | {fmt(b['ghost_rel'])} "
             f"| {b['wall']:.1f} | {fmt(s['error_fe'])} / {fmt(s['error_pd'])} "
-            f"| {s['iterations']} | {s['wall']:.1f} |")
+            f"| {s['iterations']} | {s['wall']:.1f} "
+            f"| {fmt(n['error_fe'])} / {fmt(n['error_pd'])} | {n['iterations']} "
+            f"| {n['wall']:.1f} |")
     return "\n".join(lines)
 
 
@@ -345,10 +358,14 @@ def plots(patch_rows, sweep_rows, plate_rows):
         written.append(fname)
 
     Ws = sorted({r["W"] for r in sweep_rows})
-    sb = {(r["W"], r["method"]): r for r in sweep_rows}
+    sb = {(r["W"], sweep_key(r)): r for r in sweep_rows}
     fig, (a1, a2) = plt.subplots(1, 2, figsize=(10, 4))
     a1.plot([w * 1e3 for w in Ws], [sb[(w, "overlapping schwarz")]["iterations"] for w in Ws],
-            "o-", label="Schwarz iterations (Aitken, tol 1e-12)")
+            "o-", label="Schwarz, Aitken")
+    a1.plot([w * 1e3 for w in Ws],
+            [sb[(w, "overlapping schwarz none")]["iterations"] for w in Ws], "^-",
+            label="Schwarz, no relaxation")
+    a1.set_title("iterations to |G(x) - x| <= 1e-12 |G(x)|", fontsize=9)
     a1.set_xlabel("ramp width W [mm]")
     a1.set_ylabel("iterations")
     a1.grid(alpha=0.3)
@@ -474,10 +491,10 @@ def main():
     sweep_rows = []
     for W in SWEEP_W:
         geometry = dict(W=f"{W * 1e-3:g}", LO=f"{0.04 - W * 1e-3:g}", HI=f"{0.06 + W * 1e-3:g}")
-        for method in METHODS:
+        for method, relaxation in SWEEP_METHODS:
             sweep_rows.append(patch_run(solver, work, "sweep PMB 2D uniform strain", "patch_2d",
                                         dict(PMB, EXACT=UNIFORM, BODY_FORCE="0; 0"), method,
-                                        geometry))
+                                        dict(geometry, RELAXATION=relaxation)))
     print("== cracked plates")
     plate_rows = []
     for plate in PLATES:
