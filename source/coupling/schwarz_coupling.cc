@@ -468,6 +468,7 @@ namespace perideal
     for (ParticleVector *vector : {&no_u, &no_particle_load, &no_particle_force})
       no_particles->reinit_vector(*vector, nc);
     regions.particles->reinit_vector(force, nc);
+    regions.particles->reinit_vector(nodal_force, nc);
 
     // The PD part holds its conditions and the volume constraint.
     ParticleVector pd_prescribed(particle_prescribed);
@@ -489,9 +490,8 @@ namespace perideal
     // Adaptive dynamic relaxation of the PD part with the model's own forces (the FE part is
     // linear and keeps its static solve); its fictitious density is the Gershgorin bound of the
     // linearized PD stiffness.
-    for (ParticleVector *vector : {&z, &z_prescribed, &z_force})
+    for (ParticleVector *vector : {&z, &z_prescribed, &z_force, &z_work})
       pd_solver->reinit_unknowns(*vector);
-    regions.particles->reinit_vector(nodal_force, nc);
     regions.particles->reinit_vector(particle_state, nc);
     const auto clear_prescribed = [this](ParticleVector &v) {
       for (std::size_t k = 0; k < v.locally_owned_size(); ++k)
@@ -572,6 +572,7 @@ namespace perideal
         sum += v[k] * w[k];
       return Utilities::MPI::sum(sum, comm);
     };
+    pd_force_scale = 0.;
     std::vector<double> history;
     double              omega = relaxation == Relaxation::none ? 1. : relaxation_factor;
     for (unsigned int iteration = 1; iteration <= max_iterations; ++iteration)
@@ -655,7 +656,15 @@ namespace perideal
     pd_solver->to_unknowns(no_U, u, z);
     z_prescribed    = z;
     current_pd_load = &f_pd;
-    pd_relaxation->solve(z, z_force.l2_norm());
+    // The tolerance is relative to the forces of the load step, the initial residual of its
+    // first relaxation: the later ones start close to equilibrium, and relative to their own
+    // initial residual would ask for round-off.
+    if (pd_force_scale == 0.)
+      {
+        pd_relaxation_operations.residual(z, z_work);
+        pd_force_scale = z_work.l2_norm();
+      }
+    pd_relaxation->solve(z, std::max(z_force.l2_norm(), pd_force_scale));
     pd_solver->from_unknowns(z, no_U, u);
   }
 

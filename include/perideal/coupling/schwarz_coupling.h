@@ -171,8 +171,10 @@ namespace perideal
     /// relaxation) on the unknowns z of pd_solver, and its work space.
     std::unique_ptr<AdaptiveDynamicRelaxation> pd_relaxation;
     AdaptiveDynamicRelaxation::Operations      pd_relaxation_operations;
-    ParticleVector        z, z_prescribed, z_force, nodal_force, particle_state;
+    ParticleVector        z, z_prescribed, z_force, z_work, nodal_force, particle_state;
     const ParticleVector *current_pd_load = nullptr;
+    /// ||F|| the relaxations of one load step are measured against (solve_pd_part()).
+    double pd_force_scale = 0.;
   };
 } // namespace perideal
 
