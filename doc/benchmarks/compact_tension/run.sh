@@ -24,22 +24,26 @@ variant() {
 }
 variant full_pd full_pd
 variant coupled coupled
-# Other lattice spacings: the pin columns are the boxes [0, dx] in x.
+# Other lattice spacings: the pin columns are the boxes [0, dx] in x, the anchors the boxes
+# [0, dx] x -/+[18 mm, 18 mm + dx] (one particle each).
 variant full_pd dx_2mm -e "s|Lattice spacing = 1e-3|Lattice spacing = 2e-3|" \
-  -e "s|Upper corner = 1e-3,|Upper corner = 2e-3,|"
+  -e "s|Upper corner = 1e-3,|Upper corner = 2e-3,|" -e "s|0\.019$|0.020|"
 variant full_pd dx_0.5mm -e "s|Lattice spacing = 1e-3|Lattice spacing = 0.5e-3|" \
-  -e "s|Upper corner = 1e-3,|Upper corner = 0.5e-3,|"
+  -e "s|Upper corner = 1e-3,|Upper corner = 0.5e-3,|" -e "s|0\.019$|0.0185|"
 variant full_pd m_4 -e "s|Horizon factor  = 3.015|Horizon factor  = 4.015|"
 variant full_pd m_2 -e "s|Horizon factor  = 3.015|Horizon factor  = 2.015|"
 
-for name in full_pd coupled dx_2mm dx_0.5mm m_4 m_2; do
+# The finest run (dx = 0.5 mm) last, as it takes longest; CT_RUNS="..." runs a subset.
+for name in ${CT_RUNS:-full_pd coupled dx_2mm m_2 m_4 dx_0.5mm}; do
   echo "== $name"
   start=$(date +%s)
   mpirun -np 2 "$solver" "results/$name/run.prm" | grep -E '^(Particles|Coupling|Critical|Sequentially)'
   echo "   $(( $(date +%s) - start )) s"
 done
+# The runs that finished (statistics.csv written), in the order given.
+finished() { for name in "$@"; do [ -f "results/$name/statistics.csv" ] && echo "results/$name"; done; }
 echo "== convergence with dx (delta = 3.015 dx) and with m = delta/dx (dx = 1 mm)"
-/usr/bin/python3 postprocess.py results/dx_2mm results/full_pd results/dx_0.5mm
-/usr/bin/python3 postprocess.py results/m_2 results/full_pd results/m_4
+/usr/bin/python3 postprocess.py $(finished dx_2mm full_pd dx_0.5mm)
+/usr/bin/python3 postprocess.py $(finished m_2 full_pd m_4)
 echo "== all-PD and coupled"
 /usr/bin/python3 postprocess.py results/full_pd results/coupled --plot compact_tension
