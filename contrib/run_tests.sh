@@ -9,6 +9,8 @@ if [ "$(id -u)" -eq 0 ]; then
 fi
 command -v numdiff >/dev/null || { echo "numdiff is missing: the tests cannot compare output" >&2; exit 1; }
 python3 "$top/contrib/check_dependencies.py" "$top"
+# The ccache settings of build.sh for the test programs ctest compiles too.
+export CCACHE_BASEDIR=${CCACHE_BASEDIR:-$top} CCACHE_NOHASHDIR=${CCACHE_NOHASHDIR:-1}
 "$top/contrib/build.sh"
 build=${PERIDEAL_BUILD_DIR:-$top/build}
 cd "$build"
