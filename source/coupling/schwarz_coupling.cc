@@ -532,15 +532,19 @@ namespace perideal
     // No bond breaks here: bonds break between solves, at the converged state (the load
     // stepping).
     auto &particles = *regions.particles;
-    regions.material->compute_forces(
-      particles, u, force, energy, std::numeric_limits<double>::infinity());
-    const auto        &volume = particles.volumes();
-    const unsigned int nc     = regions.layout.n_components();
+    regions.material->compute_forces(particles,
+                                     u,
+                                     force,
+                                     energy,
+                                     std::numeric_limits<double>::infinity());
+    const auto        &volume    = particles.volumes();
+    const unsigned int nc        = regions.layout.n_components();
     double             pd_energy = 0.;
     for (unsigned int i = 0; i < particles.n_owned(); ++i)
       {
         for (unsigned int k = i * nc; k < (i + 1) * nc; ++k)
-          nodal_force.local_element(k) = (force.local_element(k) + f_pd.local_element(k)) * volume[i];
+          nodal_force.local_element(k) =
+            (force.local_element(k) + f_pd.local_element(k)) * volume[i];
         if (energy != nullptr && pd_only[i])
           pd_energy += (*energy)[i] * volume[i];
       }

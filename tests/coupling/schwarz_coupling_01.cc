@@ -122,22 +122,18 @@ end
         const bool         exact_expected,
         const bool         relax = false)
   {
-    const std::string log =
-      coupling_tests::run("schwarz_patch.prm",
-                          coupling_tests::substitute(base,
-                                                     {{"MODEL_NAME", model.name},
-                                                      {"MODEL_ENTRIES", model.entries},
-                                                      {"FE_PHYSICS", model.physics},
-                                                      {"FE_ENTRIES", model.fe_entries},
-                                                      {"EXACT_FIELD", field},
-                                                      {"BODY_FORCE", body_force},
-                                                     {"SOLVER_TYPE",
-                                                      relax ? "adaptive dynamic relaxation" :
-                                                              "static"},
-                                                     {"SOLVER_TOLERANCE",
-                                                      relax ? "1e-10" : "1e-8"},
-                                                     {"SCHWARZ_TOLERANCE",
-                                                      relax ? "1e-8" : "1e-12"}}));
+    const std::string log = coupling_tests::run(
+      "schwarz_patch.prm",
+      coupling_tests::substitute(base,
+                                 {{"MODEL_NAME", model.name},
+                                  {"MODEL_ENTRIES", model.entries},
+                                  {"FE_PHYSICS", model.physics},
+                                  {"FE_ENTRIES", model.fe_entries},
+                                  {"EXACT_FIELD", field},
+                                  {"BODY_FORCE", body_force},
+                                  {"SOLVER_TYPE", relax ? "adaptive dynamic relaxation" : "static"},
+                                  {"SOLVER_TOLERANCE", relax ? "1e-10" : "1e-8"},
+                                  {"SCHWARZ_TOLERANCE", relax ? "1e-8" : "1e-12"}}));
     const auto error =
       coupling_tests::numbers_of(log,
                                  "Displacement error (largest, relative to the largest exact "
@@ -148,7 +144,8 @@ end
     const double largest = std::max(error[0], error[1]);
     const double bound   = relax ? 1e-6 : 1e-10;
     if (exact_expected)
-      std::cout << "error (FE, PD) < " << bound << ": " << (largest < bound ? "yes" : "no (FAILED)");
+      std::cout << "error (FE, PD) < " << bound << ": "
+                << (largest < bound ? "yes" : "no (FAILED)");
     else
       std::cout << std::scientific << std::setprecision(2) << "error FE " << error[0] << ", PD "
                 << error[1] << std::defaultfloat;

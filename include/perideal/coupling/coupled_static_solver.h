@@ -37,11 +37,11 @@ namespace perideal
    * where E takes z to the FE dofs and V f_PD are the particle loads [N]. E^T K_FE E and G T
    * are Trilinos matrix products (TrilinosWrappers::SparseMatrix::mmult, Tmmult); (G T)^T diag(w)
    * (G T) is summed row by row of G T (Trilinos' transposed products corrupt the heap on two
-   * ranks for some partitions). Prescribed components (FE displacement conditions; PD displacement conditions on free
-   * particles) are eliminated symmetrically as in StaticSolver: their columns are dropped (E and
-   * T are multiplied by a 0/1 diagonal mask), the known values move to the right-hand side
-   * (F_f - K_fc g), and their rows read s z_c = s g_c with s the mean diagonal entry of the free
-   * rows.
+   * ranks for some partitions). Prescribed components (FE displacement conditions; PD displacement
+   * conditions on free particles) are eliminated symmetrically as in StaticSolver: their columns
+   * are dropped (E and T are multiplied by a 0/1 diagonal mask), the known values move to the
+   * right-hand side (F_f - K_fc g), and their rows read s z_c = s g_c with s the mean diagonal
+   * entry of the free rows.
    *
    * Numbering of z: contiguous per rank, the rank's owned FE dofs (in their order), then the
    * components of its owned free particles.

@@ -112,14 +112,14 @@ namespace perideal
        * is. Returns the number of CG iterations (0 for the direct solver).
        */
       unsigned int
-      solve(const SparseMatrix                                                         &K,
-            const SolverVector                                                         &b,
-            SolverVector                                                               &x,
-            const Settings                                                             &settings,
-            const std::function<dealii::TrilinosWrappers::PreconditionAMG::AdditionalData()>
-                              &amg_data,
-            const std::string &what,
-            const std::string &advice);
+      solve(
+        const SparseMatrix                                                               &K,
+        const SolverVector                                                               &b,
+        SolverVector                                                                     &x,
+        const Settings                                                                   &settings,
+        const std::function<dealii::TrilinosWrappers::PreconditionAMG::AdditionalData()> &amg_data,
+        const std::string                                                                &what,
+        const std::string                                                                &advice);
 
     private:
       /// The direct solver keeps a reference to its control.
