@@ -168,41 +168,23 @@ namespace perideal
     regions.particles->reinit_vector(particle_state, nc);
     regions.fe->initialize_vector(fe_work);
     regions.fe->initialize_vector(fe_state);
-    const auto clear_prescribed = [this](ParticleVector &v) {
-      for (std::size_t k = 0; k < v.locally_owned_size(); ++k)
-        if (static_solver->is_prescribed(k))
-          v.local_element(k) = 0.;
-    };
-    relaxation_operations.clear_prescribed       = clear_prescribed;
-    relaxation_operations.prescribe_displacement = [this](ParticleVector &zz) {
-      for (std::size_t k = 0; k < zz.locally_owned_size(); ++k)
-        if (static_solver->is_prescribed(k))
-          zz.local_element(k) = z_prescribed.local_element(k);
-    };
-    relaxation_operations.residual = [this, clear_prescribed](ParticleVector &zz,
-                                                              ParticleVector &force) {
-      static_solver->from_unknowns(zz, fe_state, particle_state);
-      model_forces(fe_state,
-                   particle_state,
-                   *current_fe_load,
-                   *current_pd_load,
-                   fe_work,
-                   pd_work,
-                   false);
-      fe_work *= -1.;
-      static_solver->to_unknowns(fe_work, nodal_force, force);
-      clear_prescribed(force);
-    };
     static_solver->assemble(*regions.material, conditions);
-    std::vector<double> bound;
-    static_solver->row_bounds(bound);
-    ParticleVector density;
-    static_solver->reinit_unknowns(density);
-    AdaptiveDynamicRelaxation::fictitious_density(bound, settings.relaxation_safety, density);
-    relaxation = std::make_unique<AdaptiveDynamicRelaxation>(relaxation_operations,
-                                                             density,
-                                                             settings.relaxation,
-                                                             regions.particles->get_communicator());
+    relaxation = static_solver->relaxation(
+      [this](ParticleVector &zz, ParticleVector &force) {
+        static_solver->from_unknowns(zz, fe_state, particle_state);
+        model_forces(fe_state,
+                     particle_state,
+                     *current_fe_load,
+                     *current_pd_load,
+                     fe_work,
+                     pd_work,
+                     false);
+        fe_work *= -1.;
+        static_solver->to_unknowns(fe_work, nodal_force, force);
+      },
+      z_prescribed,
+      settings.relaxation,
+      settings.relaxation_safety);
   }
 
   template <int dim>
@@ -228,7 +210,7 @@ namespace perideal
     for (std::size_t k = 0; k < nodal_force.locally_owned_size(); ++k)
       nodal_force.local_element(k) = f_pd.local_element(k) * volume[k / nc];
     static_solver->to_unknowns(f_fe, nodal_force, z_force);
-    relaxation_operations.clear_prescribed(z_force);
+    static_solver->clear_prescribed(z_force);
     static_solver->to_unknowns(U, u, z);
     z_prescribed      = z;
     current_fe_load   = &f_fe;

@@ -493,34 +493,16 @@ namespace perideal
     for (ParticleVector *vector : {&z, &z_prescribed, &z_force, &z_work})
       pd_solver->reinit_unknowns(*vector);
     regions.particles->reinit_vector(particle_state, nc);
-    const auto clear_prescribed = [this](ParticleVector &v) {
-      for (std::size_t k = 0; k < v.locally_owned_size(); ++k)
-        if (pd_solver->is_prescribed(k))
-          v.local_element(k) = 0.;
-    };
-    pd_relaxation_operations.clear_prescribed       = clear_prescribed;
-    pd_relaxation_operations.prescribe_displacement = [this](ParticleVector &zz) {
-      for (std::size_t k = 0; k < zz.locally_owned_size(); ++k)
-        if (pd_solver->is_prescribed(k))
-          zz.local_element(k) = z_prescribed.local_element(k);
-    };
-    pd_relaxation_operations.residual = [this, clear_prescribed](ParticleVector &zz,
-                                                                 ParticleVector &zforce) {
+    pd_residual = [this](ParticleVector &zz, ParticleVector &zforce) {
       pd_solver->from_unknowns(zz, no_U, particle_state);
       particle_nodal_forces(particle_state, *current_pd_load, nullptr);
       pd_solver->to_unknowns(no_fe_load, nodal_force, zforce);
-      clear_prescribed(zforce);
     };
     pd_solver->assemble(*regions.material, conditions);
-    std::vector<double> bound;
-    pd_solver->row_bounds(bound);
-    ParticleVector density;
-    pd_solver->reinit_unknowns(density);
-    AdaptiveDynamicRelaxation::fictitious_density(bound, settings.relaxation_safety, density);
-    pd_relaxation = std::make_unique<AdaptiveDynamicRelaxation>(pd_relaxation_operations,
-                                                                density,
-                                                                settings.relaxation,
-                                                                comm);
+    pd_relaxation = pd_solver->relaxation(pd_residual,
+                                          z_prescribed,
+                                          settings.relaxation,
+                                          settings.relaxation_safety);
   }
 
   template <int dim>
@@ -656,7 +638,7 @@ namespace perideal
     for (std::size_t k = 0; k < nodal_force.locally_owned_size(); ++k)
       nodal_force.local_element(k) = f_pd.local_element(k) * volume[k / nc];
     pd_solver->to_unknowns(no_fe_load, nodal_force, z_force);
-    pd_relaxation_operations.clear_prescribed(z_force);
+    pd_solver->clear_prescribed(z_force);
     pd_solver->to_unknowns(no_U, u, z);
     z_prescribed    = z;
     current_pd_load = &f_pd;
@@ -665,7 +647,8 @@ namespace perideal
     // initial residual would ask for round-off.
     if (pd_force_scale == 0.)
       {
-        pd_relaxation_operations.residual(z, z_work);
+        pd_residual(z, z_work);
+        pd_solver->clear_prescribed(z_work);
         pd_force_scale = z_work.l2_norm();
       }
     pd_relaxation->solve(z, std::max(z_force.l2_norm(), pd_force_scale));

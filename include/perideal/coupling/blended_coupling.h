@@ -101,7 +101,6 @@ namespace perideal
     std::string                                conditions;
     std::unique_ptr<CoupledStaticSolver<dim>>  static_solver;
     std::unique_ptr<AdaptiveDynamicRelaxation> relaxation;
-    AdaptiveDynamicRelaxation::Operations      relaxation_operations;
     // Adaptive dynamic relaxation: the unknowns, the prescribed values, a force in z, the loads
     // of the current solve, the state the unknowns stand for and work space.
     ParticleVector        z, z_prescribed, z_force, nodal_force, pd_work, particle_state;

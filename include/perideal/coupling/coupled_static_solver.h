@@ -7,10 +7,13 @@
 #include <perideal/base/linear_algebra.h>
 #include <perideal/coupling/transfer_operator.h>
 #include <perideal/fem/fe_region.h>
+#include <perideal/pd/adaptive_dynamic_relaxation.h>
 #include <perideal/pd/material_model.h>
 #include <perideal/pd/particle_system.h>
 #include <perideal/pd/static_solver.h>
 
+#include <functional>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -150,12 +153,21 @@ namespace perideal
     bool
     is_prescribed(const std::size_t k) const;
 
-    /**
-     * @brief The Gershgorin bound sum_j |K_ij| of every owned row of the assembled K (the
-     * stiffness bound of adaptive dynamic relaxation), one value per owned unknown.
-     */
+    /// Set the prescribed owned components of @p v (laid out like z) to zero.
     void
-    row_bounds(std::vector<double> &bound) const;
+    clear_prescribed(ParticleVector &v) const;
+
+    /**
+     * @brief Adaptive dynamic relaxation of the unknowns z with the force @p residual(z, force)
+     * computes (its prescribed components cleared here), the prescribed components of z held at
+     * those of @p prescribed_values (which must outlive the relaxation), and the fictitious
+     * density from the Gershgorin bounds sum_j |K_ij| of the assembled K times @p safety.
+     */
+    std::unique_ptr<AdaptiveDynamicRelaxation>
+    relaxation(const std::function<void(ParticleVector &, ParticleVector &)> &residual,
+               const ParticleVector                                          &prescribed_values,
+               const AdaptiveDynamicRelaxation::Settings                     &settings,
+               const double                                                   safety) const;
 
     /// Number of unknowns z (all ranks).
     dealii::types::global_dof_index

@@ -170,7 +170,8 @@ namespace perideal
     /// Adaptive dynamic relaxation of the PD part (<Solver/Type> = adaptive dynamic
     /// relaxation) on the unknowns z of pd_solver, and its work space.
     std::unique_ptr<AdaptiveDynamicRelaxation> pd_relaxation;
-    AdaptiveDynamicRelaxation::Operations      pd_relaxation_operations;
+    /// The unbalanced force on the PD part's unknowns (prescribed components not cleared).
+    std::function<void(ParticleVector &, ParticleVector &)> pd_residual;
     ParticleVector        z, z_prescribed, z_force, z_work, nodal_force, particle_state;
     const ParticleVector *current_pd_load = nullptr;
     /// ||F|| the relaxations of one load step are measured against (solve_pd_part()).
