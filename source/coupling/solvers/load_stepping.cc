@@ -157,14 +157,21 @@ namespace perideal
     auto       &U    = state.U;
     auto       &u    = state.u;
     const auto &mask = state.fe.prescribed_mask();
-    state.f_ext.equ(factor, fe_full_load);
-    state.external_force.equ(factor, full_load);
+    scale_loads(state, factor);
     for (unsigned int k = 0; k < U.locally_owned_size(); ++k)
       if (mask[k])
         U.local_element(k) = factor * fe_target.local_element(k);
     for (unsigned int k = 0; k < u.locally_owned_size(); ++k)
       if (prescribed.local_element(k) != 0.)
         u.local_element(k) = factor * target.local_element(k);
+  }
+
+  template <int dim>
+  void
+  LoadStepping<dim>::scale_loads(CoupledState<dim> &state, const double factor) const
+  {
+    state.f_ext.equ(factor, fe_full_load);
+    state.external_force.equ(factor, full_load);
   }
 
   template <int dim>

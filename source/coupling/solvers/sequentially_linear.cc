@@ -174,7 +174,8 @@ namespace perideal
         state.u *= factor;
         state.U.update_ghost_values();
         state.u.update_ghost_values();
-        this->apply_load_factor(state, factor);
+        // The prescribed values are scaled with the solution; the loads follow.
+        this->scale_loads(state, factor);
         pd.material().compute_forces(ps,
                                      state.u,
                                      state.internal_force,

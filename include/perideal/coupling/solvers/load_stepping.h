@@ -69,6 +69,16 @@ namespace perideal
     apply_load_factor(CoupledState<dim> &state, const double factor) const;
 
     /**
+     * @brief The loads of apply_load_factor() alone: for a solution scaled as a whole (a linear
+     * solve at load factor 1 times @p factor), whose prescribed values are scaled with it,
+     * including those a coupling method sets itself (FERegion::set_interior_values(): the FE
+     * dofs of overlapping Schwarz that the PD field prescribes), which the End-time values
+     * do not hold.
+     */
+    void
+    scale_loads(CoupledState<dim> &state, const double factor) const;
+
+    /**
      * @brief After the equilibrium of a step: the method's forces (CouplingMethod::
      * equilibrium_forces(): reactions, CoupledState::fe_support), the work of the loads; returns
      * the particles' strain energy. Collective.
