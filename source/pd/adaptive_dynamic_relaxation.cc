@@ -22,8 +22,8 @@ namespace perideal
     : operations(operations)
     , lambda(density)
     , settings(settings)
-    , communicator(comm)
     , round_off_force(1e-12 * settings.length_scale * density.l2_norm())
+    , communicator(comm)
   {}
 
   void
