@@ -242,6 +242,15 @@ namespace perideal
     prm.leave_subsection();
   }
 
+  template <int dim>
+  double
+  ProblemSettings<dim>::solution_accuracy() const
+  {
+    return solver_type == SolverType::static_linear && linear_solver == LinearSolverType::direct ?
+             1e-10 :
+             100. * tolerance;
+  }
+
   template struct ProblemSettings<2>;
   template struct ProblemSettings<3>;
 } // namespace perideal

@@ -129,13 +129,18 @@ namespace perideal
   }
 
   void
-  print_without_round_off(std::ostream &out, const std::vector<double> &values)
+  print_without_round_off(std::ostream              &out,
+                          const std::vector<double> &values,
+                          const double               accuracy)
   {
     double norm = 0.;
     for (const double value : values)
       norm += value * value;
-    norm = std::sqrt(norm);
+    const double below = std::max(1e-10 * std::sqrt(norm), accuracy);
     for (unsigned int k = 0; k < values.size(); ++k)
-      out << (k > 0 ? " " : "") << (std::abs(values[k]) < 1e-10 * norm ? 0. : values[k]);
+      out << (k > 0 ? " " : "")
+          << (std::abs(values[k]) < below ? 0. :
+              accuracy > 0.               ? accuracy * std::round(values[k] / accuracy) :
+                                            values[k]);
   }
 } // namespace perideal

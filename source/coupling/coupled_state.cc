@@ -238,6 +238,13 @@ namespace perideal
   }
 
   template <int dim>
+  double
+  CoupledState<dim>::solution_accuracy() const
+  {
+    return std::max(settings.solution_accuracy(), method.solution_accuracy());
+  }
+
+  template <int dim>
   void
   CoupledState<dim>::log_residual(const std::string &what,
                                   const double       local_largest,

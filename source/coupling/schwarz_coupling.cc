@@ -541,6 +541,13 @@ namespace perideal
   }
 
   template <int dim>
+  double
+  SchwarzCoupling<dim>::solution_accuracy() const
+  {
+    return 100. * tolerance;
+  }
+
+  template <int dim>
   unsigned int
   SchwarzCoupling<dim>::solve_equilibrium(const FEVector       &f_fe,
                                           const ParticleVector &f_pd,

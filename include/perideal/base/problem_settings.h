@@ -76,6 +76,18 @@ namespace perideal
     void
     parse_parameters(dealii::ParameterHandler &prm);
 
+    /**
+     * @brief The accuracy of a quasi-static solution relative to its largest force: round-off
+     * (1e-10) for a direct static solve; else 100 <Solver/Tolerance>, the residual an iterative
+     * solve or a relaxation leaves (its tolerance times its force scale, a norm over every
+     * unknown, which exceeds the largest load or reaction by up to the square root of the
+     * number of loaded unknowns). Printed summaries show forces and relative energy errors
+     * to this accuracy, so that they read the same on every machine: where a relaxation stops
+     * depends on the summation order, i.e. on the SIMD width of the force kernels.
+     */
+    double
+    solution_accuracy() const;
+
     // <Solver>
     SolverType       solver_type           = SolverType::explicit_dynamics;
     unsigned int     load_steps            = 1;

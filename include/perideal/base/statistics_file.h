@@ -96,12 +96,16 @@ namespace perideal
   };
   /**
    * @brief Print @p values separated by spaces (with the stream's format), the components
-   * below 1e-10 of their Euclidean norm as 0: in printed summaries, a component that vanishes
-   * by symmetry is then 0 on every number of ranks and build, not a round-off value that
-   * changes with the summation order.
+   * below 1e-10 of their Euclidean norm, or below @p accuracy (absolute), as 0, the others
+   * as the nearest multiple of @p accuracy (if given): in printed
+   * summaries, a component that vanishes by symmetry is then 0 on every number of ranks, build
+   * and machine, not a round-off value, or a solver's residual, that changes with the summation
+   * order.
    */
   void
-  print_without_round_off(std::ostream &out, const std::vector<double> &values);
+  print_without_round_off(std::ostream              &out,
+                          const std::vector<double> &values,
+                          const double               accuracy = 0.);
 } // namespace perideal
 
 #endif

@@ -128,6 +128,15 @@ namespace perideal
     fe_force_scale() const;
 
     /**
+     * @brief The accuracy of a quasi-static solution relative to its largest force, the
+     * solver's and the coupling method's (ProblemSettings::solution_accuracy(),
+     * CouplingMethod::solution_accuracy()): printed summaries show forces and energy errors to
+     * it.
+     */
+    double
+    solution_accuracy() const;
+
+    /**
      * @brief Print "@p what: R N ..., relative to the FE internal-force scale: R / S" with R, S
      * the largest of @p local_largest and @p local_scale over the ranks (root only; R below
      * 1e-12 S is round-off and printed as 0; without FE unknowns only R).

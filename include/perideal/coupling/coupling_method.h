@@ -190,6 +190,17 @@ namespace perideal
     n_unknowns() const = 0;
 
     /**
+     * @brief The accuracy of the method's equilibrium relative to the largest force, beyond
+     * the solver's (ProblemSettings::solution_accuracy()): 0 for a method solved in one system;
+     * an iteration between the parts stops at its own tolerance.
+     */
+    virtual double
+    solution_accuracy() const
+    {
+      return 0.;
+    }
+
+    /**
      * @brief The equilibrium of the FE load @p f_fe (FERegion::assemble_load()) and the particle
      * force density @p f_pd [N/m^3]. On entry @p U and @p u hold the prescribed values and the
      * initial guess (owned entries); on exit the solution with ghost values, slaved particles

@@ -94,6 +94,9 @@ namespace perideal
                            const std::string              &conditions) override;
     dealii::types::global_dof_index
     n_unknowns() const override;
+    /// 100 <Tolerance> (as ProblemSettings::solution_accuracy() for an iterative solve).
+    double
+    solution_accuracy() const override;
     /// The Schwarz iteration of one load step; returns the number of Schwarz iterations.
     unsigned int
     solve_equilibrium(const FEVector       &f_fe,

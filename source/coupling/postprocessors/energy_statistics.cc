@@ -66,7 +66,14 @@ namespace perideal
               log << "Energy error: not defined (the twist of torsion is a prestrain, not a "
                      "load whose work is tracked; check T psi = 2E of the section integrals)\n";
             else
-              log << "Energy error: " << energy_error << " J (relative " << relative_error << ")\n";
+              {
+                // To the solution's accuracy (multiples of it, relative to the energy).
+                const double accuracy = state.solution_accuracy();
+                const double unit     = accuracy * std::max(std::abs(work), strain);
+                log << "Energy error: "
+                    << (unit > 0. ? unit * std::round(energy_error / unit) : energy_error)
+                    << " J (relative " << accuracy * std::round(relative_error / accuracy) << ")\n";
+              }
           }
       }
     else

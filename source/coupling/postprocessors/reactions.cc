@@ -55,6 +55,9 @@ namespace perideal
     // forces), the applied loads against the reactions of the value conditions.
     std::vector<double> applied(nc, 0.), balanced(nc, 0.);
     double              imbalance = 0., balance = 0.;
+    // Forces below the solution's accuracy (CoupledState::solution_accuracy()) print as 0.
+    const double accuracy = state.solution_accuracy();
+    double       floor    = 0.;
     if (data.quasi_static)
       {
         const auto &ps     = state.pd.particles();
@@ -98,6 +101,7 @@ namespace perideal
         const double scale = state.fe_force_scale();
         imbalance          = norm(balanced, nullptr);
         balance            = largest > 1e-10 * scale ? imbalance / largest : 0.;
+        floor              = accuracy * largest;
         for (unsigned int c = 0; c < nc; ++c)
           if (layout.kind(c) != ComponentKind::rotation)
             statistics.add_value("applied_load_" + layout.name(c), applied[c]);
@@ -116,7 +120,7 @@ namespace perideal
         for (const unsigned int c : pd_conditions.reaction_components(k))
           n_rotations += (layout.kind(c) == ComponentKind::rotation);
         log << "Reaction " << pd_names[k] << ": ";
-        print_without_round_off(log, pd_reactions[k]);
+        print_without_round_off(log, pd_reactions[k], floor);
         log << (n_rotations == 0                      ? " N\n" :
                 n_rotations == pd_reactions[k].size() ? " N m\n" :
                                                         " N (N m for rotations)\n");
@@ -125,7 +129,7 @@ namespace perideal
       if (fe_conditions[k].type != Quantity::load)
         {
           log << "Reaction " << fe_conditions[k].name << ": ";
-          print_without_round_off(log, fe_reactions[k]);
+          print_without_round_off(log, fe_reactions[k], floor);
           log << " N\n";
         }
     if (data.quasi_static)
@@ -135,10 +139,16 @@ namespace perideal
           if (layout.kind(c) != ComponentKind::rotation)
             applied_forces.push_back(applied[c]);
         log << "Applied load: ";
-        print_without_round_off(log, applied_forces);
-        log << " N\n"
-            << "Force balance: |applied + reactions| = " << imbalance
-            << " N, relative to the largest force: " << balance << "\n";
+        print_without_round_off(log, applied_forces, floor);
+        log << " N\n";
+        if (imbalance <= floor)
+          log << "Force balance: |applied + reactions| below the accuracy of the solution, "
+              << accuracy << " of the largest force\n";
+        else // to the accuracy, as the reactions
+          log << "Force balance: |applied + reactions| = "
+              << (floor > 0. ? floor * std::round(imbalance / floor) : imbalance)
+              << " N, relative to the largest force: "
+              << (floor > 0. ? accuracy * std::round(balance / accuracy) : balance) << "\n";
       }
     log << std::flush;
     log.flags(flags);
