@@ -28,9 +28,9 @@ namespace perideal
    * - FE subproblem: the FE energy weight is 1 where beta < 1 (0 where beta = 1, so cells
    *   entirely in the PD-only zone carry no unknowns); every dof of a cell with a vertex at
    *   beta = 1 (not held by an FE condition) is prescribed (FERegion::set_interior_values()), so
-   *   the free dofs see the unweighted FE operator only. Its value is a linear least-squares fit
-   *   of the particle values of the particle nearest to its support point and that particle's
-   *   family (exact for linear fields).
+   *   the free dofs see the unweighted FE operator only. Its value is a quadratic
+   *   least-squares fit of the particle values of the particle nearest to its support point
+   *   and that particle's family (exact for quadratic fields).
    * - Iteration on the interface values x (the prescribed FE dofs): FE solve with x, the
    *   constraint layer from the FE field, PD solve, G(x) the fit of the PD field; r = G(x) - x,
    *   x <- x + omega r with omega = 1, a fixed factor, or Aitken's dynamic factor; converged when
