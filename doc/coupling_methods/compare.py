@@ -420,9 +420,14 @@ def machine():
 
 
 def git_revision():
+    """HEAD, marked when tracked files differ from it (the solver may not be HEAD's)."""
     try:
-        return subprocess.run(["git", "-C", ROOT, "rev-parse", "--short", "HEAD"],
-                              stdout=subprocess.PIPE, text=True, check=True).stdout.strip()
+        def git(*args):
+            return subprocess.run(["git", "-C", ROOT, *args], stdout=subprocess.PIPE, text=True,
+                                  check=True).stdout.strip()
+        head = git("rev-parse", "--short", "HEAD")
+        return head + (" with uncommitted changes" if git("status", "--porcelain",
+                                                           "--untracked-files=no") else "")
     except (OSError, subprocess.CalledProcessError):
         return "unknown"
 
