@@ -1,7 +1,11 @@
 // Quasi-static bad input stops with a message: adaptive dynamic relaxation that does not converge
 // within <Solver/Maximum iterations> lists its residual history; a static or relaxation run
 // without any displacement condition (rigid-body modes free, singular system) and one with a
-// velocity condition are refused.
+// velocity condition are refused. The entries of <Solver/Control> (the fracture control) are
+// checked before any solve: sequentially linear without a load point, with a load point that
+// names no displacement condition or a load component the field does not have, with adaptive
+// dynamic relaxation, or without bonds that break; a separation load fraction, a step-cut
+// threshold or a number of step cuts outside its range.
 #include <deal.II/base/parameter_handler.h>
 
 #include <perideal/coupling/coupled_problem.h>
@@ -96,6 +100,28 @@ main(int argc, char **argv)
   check("static with a free translation",
         "subsection Boundary conditions\n subsection hold\n set Components = y\n set Function "
         "= 0\n end\nend\nsubsection Solver\n set Type = static\nend\n");
+  const std::string sequentially_linear =
+    "subsection Material\n set Damage model = critical stretch\n subsection critical stretch\n"
+    " set Critical stretch = 1e-3\n end\nend\nsubsection Solver\n set Type = static\n"
+    " subsection Control\n set Method = sequentially linear\n";
+  check("sequentially linear without a load point", sequentially_linear + " end\nend\n");
+  check("load point that names no condition",
+        sequentially_linear + " set Load point = nowhere\n end\nend\n");
+  check("load component the field does not have",
+        sequentially_linear + " set Load point = pull\n set Load component = z\n end\nend\n");
+  check("sequentially linear with relaxation",
+        sequentially_linear +
+          " set Load point = pull\n end\n set Type = adaptive dynamic relaxation\nend\n");
+  check("sequentially linear without bonds that break",
+        sequentially_linear + " set Load point = pull\n end\nend\n"
+                              "subsection Material\n set Damage model = none\nend\n");
+  check("separation load fraction above 1",
+        sequentially_linear + " set Load point = pull\n set Separation load fraction = 1.5\n"
+                              " end\nend\n");
+  check("negative step-cut threshold",
+        "subsection Solver\n subsection Control\n set Cut above broken bonds = -1\n end\nend\n");
+  check("too many step cuts",
+        "subsection Solver\n subsection Control\n set Maximum step cuts = 60\n end\nend\n");
   check("velocity condition in a quasi-static run",
         "subsection Boundary conditions\n subsection pull\n set Type = velocity\n end\nend\n"
         "subsection Solver\n set Type = static\nend\n");
