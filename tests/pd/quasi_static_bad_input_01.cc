@@ -1,5 +1,6 @@
 // Quasi-static bad input stops with a message: adaptive dynamic relaxation that does not converge
-// within <Solver/Maximum iterations> lists its residual history; a static or relaxation run
+// within <Solver/Maximum iterations> lists its residual history, with step cutting after the
+// allowed cuts; a static or relaxation run
 // without any displacement condition (rigid-body modes free, singular system) and one with a
 // velocity condition are refused. The entries of <Solver/Control> (the fracture control) are
 // checked before any solve: sequentially linear without a load point, with a load point that
@@ -89,6 +90,9 @@ main(int argc, char **argv)
   Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
   mpi_initlog();
   check("relaxation without convergence", "");
+  check("relaxation without convergence after the allowed step cuts",
+        "subsection Solver\n subsection Control\n set Cut above broken bonds = 1\n"
+        " set Maximum step cuts = 2\n end\nend\n");
   const std::string traction_only =
     "subsection Boundary conditions\n subsection pull\n set Type = traction\n set Components = "
     "x, y\n set Function = 0; 1e6\n set Layer thickness = 4e-3\n end\n subsection hold\n set "
