@@ -30,9 +30,17 @@ def entry(text, name):
     return values[-1].strip()
 
 
+def expand(path):
+    """The text of a parameter file with its 'include FILE' lines replaced by the files (paths
+    relative to the working directory, as perideal-solid reads them)."""
+    with open(path) as f:
+        text = f.read()
+    return re.sub(r"^\s*include\s+(\S+)\s*$", lambda m: expand(m.group(1)), text,
+                  flags=re.MULTILINE)
+
+
 def read(directory):
-    with open(f"{directory}/run.prm") as f:
-        prm = f.read()
+    prm = expand(f"{directory}/run.prm")
     with open(f"{directory}/statistics.csv") as f:
         rows = list(csv.DictReader(f))
     dx = float(entry(prm, "Lattice spacing"))

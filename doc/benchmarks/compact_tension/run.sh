@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # Compact tension to complete separation (sequentially linear control): the all-PD run of
-# full_pd.prm and the blended coupled run of coupled.prm, then the all-PD run at other lattice
+# full_pd.prm, the blended coupled run of coupled.prm and the overlapping-Schwarz run of
+# schwarz.prm, then the all-PD run at other lattice
 # spacings and horizons (the convergence of the peak load ratio), the LEFM comparison and the
 # plots load.png and crack.png. Results go to results/ next to this script.
 # usage: bash doc/benchmarks/compact_tension/run.sh [BUILD_DIR]   (default: build)
@@ -24,6 +25,7 @@ variant() {
 }
 variant full_pd full_pd
 variant coupled coupled
+variant schwarz schwarz
 # Other lattice spacings: the pin columns are the boxes [0, dx] in x, the anchors the boxes
 # [0, dx] x -/+[18 mm, 18 mm + dx] (one particle each).
 variant full_pd dx_2mm -e "s|Lattice spacing = 1e-3|Lattice spacing = 2e-3|" \
@@ -34,7 +36,7 @@ variant full_pd m_4 -e "s|Horizon factor  = 3.015|Horizon factor  = 4.015|"
 variant full_pd m_2 -e "s|Horizon factor  = 3.015|Horizon factor  = 2.015|"
 
 # The finest run (dx = 0.5 mm) last, as it takes longest; CT_RUNS="..." runs a subset.
-for name in ${CT_RUNS:-full_pd coupled dx_2mm m_2 m_4 dx_0.5mm}; do
+for name in ${CT_RUNS:-full_pd coupled schwarz dx_2mm m_2 m_4 dx_0.5mm}; do
   echo "== $name"
   start=$(date +%s)
   mpirun -np 2 "$solver" "results/$name/run.prm" | grep -E '^(Particles|Coupling|Critical|Sequentially)'
@@ -45,5 +47,5 @@ finished() { for name in "$@"; do [ -f "results/$name/statistics.csv" ] && echo 
 echo "== convergence with dx (delta = 3.015 dx) and with m = delta/dx (dx = 1 mm)"
 /usr/bin/python3 postprocess.py $(finished dx_2mm full_pd dx_0.5mm)
 /usr/bin/python3 postprocess.py $(finished m_2 full_pd m_4)
-echo "== all-PD and coupled"
-/usr/bin/python3 postprocess.py results/full_pd results/coupled --plot compact_tension
+echo "== all-PD and coupled (blended, overlapping Schwarz)"
+/usr/bin/python3 postprocess.py $(finished full_pd coupled schwarz) --plot compact_tension
