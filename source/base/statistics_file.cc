@@ -139,8 +139,6 @@ namespace perideal
     const double below = std::max(1e-10 * std::sqrt(norm), accuracy);
     for (unsigned int k = 0; k < values.size(); ++k)
       out << (k > 0 ? " " : "")
-          << (std::abs(values[k]) < below ? 0. :
-              accuracy > 0.               ? accuracy * std::round(values[k] / accuracy) :
-                                            values[k]);
+          << (std::abs(values[k]) < below ? 0. : to_accuracy(values[k], accuracy));
   }
 } // namespace perideal

@@ -3,6 +3,7 @@
 
 #include <deal.II/base/mpi.h>
 
+#include <cmath>
 #include <fstream>
 #include <map>
 #include <ostream>
@@ -94,6 +95,17 @@ namespace perideal
 
     std::ofstream file;
   };
+  /**
+   * @brief @p value as the nearest multiple of @p unit (unchanged for @p unit <= 0): a printed
+   * number to the accuracy of the solution, free of the round-off or solver residual that
+   * changes with the summation order.
+   */
+  inline double
+  to_accuracy(const double value, const double unit)
+  {
+    return unit > 0. ? unit * std::round(value / unit) : value;
+  }
+
   /**
    * @brief Print @p values separated by spaces (with the stream's format), the components
    * below 1e-10 of their Euclidean norm, or below @p accuracy (absolute), as 0, the others

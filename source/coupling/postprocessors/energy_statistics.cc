@@ -70,9 +70,8 @@ namespace perideal
                 // To the solution's accuracy (multiples of it, relative to the energy).
                 const double accuracy = state.solution_accuracy();
                 const double unit     = accuracy * std::max(std::abs(work), strain);
-                log << "Energy error: "
-                    << (unit > 0. ? unit * std::round(energy_error / unit) : energy_error)
-                    << " J (relative " << accuracy * std::round(relative_error / accuracy) << ")\n";
+                log << "Energy error: " << to_accuracy(energy_error, unit) << " J (relative "
+                    << to_accuracy(relative_error, accuracy) << ")\n";
               }
           }
       }

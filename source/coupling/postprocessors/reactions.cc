@@ -145,10 +145,8 @@ namespace perideal
           log << "Force balance: |applied + reactions| below the accuracy of the solution, "
               << accuracy << " of the largest force\n";
         else // to the accuracy, as the reactions
-          log << "Force balance: |applied + reactions| = "
-              << (floor > 0. ? floor * std::round(imbalance / floor) : imbalance)
-              << " N, relative to the largest force: "
-              << (floor > 0. ? accuracy * std::round(balance / accuracy) : balance) << "\n";
+          log << "Force balance: |applied + reactions| = " << to_accuracy(imbalance, floor)
+              << " N, relative to the largest force: " << to_accuracy(balance, accuracy) << "\n";
       }
     log << std::flush;
     log.flags(flags);
