@@ -3,13 +3,11 @@
 // ---------------------------------------------------------------------
 #include <deal.II/base/mpi.h>
 #include <deal.II/fe/mapping_q1.h>
-#include <deal.II/lac/full_matrix.h>
 
 #include <perideal/base/parameter_utilities.h>
 #include <perideal/coupling/schwarz_coupling.h>
 
 #include <algorithm>
-#include <array>
 #include <cmath>
 #include <cstdint>
 #include <iomanip>
@@ -166,15 +164,10 @@ namespace perideal
   void
   SchwarzCoupling<dim>::setup_interface()
   {
-    auto              &fe          = *regions.fe;
-    const auto        &dof_handler = fe.get_dof_handler();
-    const IndexSet    &owned       = dof_handler.locally_owned_dofs();
-    const auto        &held        = fe.prescribed_mask();
-    const auto        &particles   = *regions.particles;
-    const MPI_Comm     comm        = particles.get_communicator();
-    const double       delta       = particles.settings().horizon;
-    const unsigned int n_owned     = particles.n_owned();
-    const auto        &x           = particles.positions();
+    auto           &fe          = *regions.fe;
+    const auto     &dof_handler = fe.get_dof_handler();
+    const IndexSet &owned       = dof_handler.locally_owned_dofs();
+    const auto     &held        = fe.prescribed_mask();
 
     // The interface: every dof of a cell with a vertex at beta = 1 (owned and ghost cells, so
     // that each owner sees all of its dofs), unless an FE condition holds it.
@@ -198,203 +191,18 @@ namespace perideal
                 cell_fe.system_to_component_index(k).first,
                 mapping.transform_unit_to_real_cell(cell, cell_fe.unit_support_point(k))};
         }
-    std::vector<types::global_dof_index> interface_global;
-    std::vector<double>                  packed;
+    std::vector<types::global_dof_index>          interface_global;
+    std::vector<typename InterfaceFit<dim>::Node> nodes;
     interface_dofs.clear();
     for (const auto &[dof, point] : interface)
       {
         interface_global.push_back(dof);
         interface_dofs.push_back(owned.index_within_set(dof));
-        packed.push_back(dof);
-        packed.push_back(point.first);
-        for (unsigned int d = 0; d < dim; ++d)
-          packed.push_back(point.second[d]);
+        nodes.push_back({dof, point.first, point.second});
       }
     fe.set_interior_values(interface_global, std::vector<double>(interface_global.size(), 0.));
     interface_values.assign(interface_dofs.size(), 0.);
-
-    // Each interface dof's value is fitted by the rank that owns the particle nearest to its
-    // support point (ties: the smaller invariant index), from that particle and its family,
-    // which are owned or ghosts there.
-    std::vector<double> all;
-    for (const auto &part : Utilities::MPI::all_gather(comm, packed))
-      all.insert(all.end(), part.begin(), part.end());
-    const unsigned int stride   = 2 + dim;
-    const std::size_t  n_points = all.size() / stride;
-    const auto         point_of = [&](const std::size_t p) {
-      Point<dim> y;
-      for (unsigned int d = 0; d < dim; ++d)
-        y[d] = all[p * stride + 2 + d];
-      return y;
-    };
-    using Key         = std::array<long, dim>;
-    const auto key_of = [delta](const Point<dim> &y) {
-      Key key;
-      for (unsigned int d = 0; d < dim; ++d)
-        key[d] = static_cast<long>(std::floor(y[d] / delta));
-      return key;
-    };
-    std::map<Key, std::vector<unsigned int>> bins;
-    for (unsigned int i = 0; i < n_owned; ++i)
-      bins[key_of(x[i])].push_back(i);
-    const double              none = std::numeric_limits<double>::max();
-    std::vector<double>       distance(n_points, none), rank_index(n_points, none);
-    std::vector<unsigned int> nearest(n_points, numbers::invalid_unsigned_int);
-    for (std::size_t p = 0; p < n_points; ++p)
-      {
-        const Point<dim> y   = point_of(p);
-        const Key        key = key_of(y);
-        Key              k   = key;
-        for (unsigned int d = 0; d < dim; ++d)
-          k[d] = key[d] - 1;
-        while (true)
-          {
-            const auto found = bins.find(k);
-            if (found != bins.end())
-              for (const unsigned int i : found->second)
-                {
-                  const double r = y.distance(x[i]);
-                  const auto   n = static_cast<double>(particles.invariant_index(i));
-                  if (r < distance[p] || (r == distance[p] && n < rank_index[p]))
-                    {
-                      distance[p]   = r;
-                      rank_index[p] = n;
-                      nearest[p]    = i;
-                    }
-                }
-            unsigned int d = 0;
-            while (d < dim && ++k[d] > key[d] + 1)
-              {
-                k[d] = key[d] - 1;
-                ++d;
-              }
-            if (d == dim)
-              break;
-          }
-      }
-    std::vector<double> shortest(n_points), chosen(n_points);
-    Utilities::MPI::min(distance, comm, shortest);
-    for (std::size_t p = 0; p < n_points; ++p)
-      if (distance[p] != shortest[p])
-        rank_index[p] = none;
-    Utilities::MPI::min(rank_index, comm, chosen);
-    std::uint64_t n_far = 0;
-    for (std::size_t p = 0; p < n_points; ++p)
-      n_far += (shortest[p] > delta);
-    AssertThrow(n_far == 0,
-                ExcMessage(std::to_string(n_far) +
-                           " FE dofs of cells that reach beta = 1 have no particle within a "
-                           "horizon: the PD part (<Discretization/Body> where beta > 0) must "
-                           "cover every FE cell that reaches beta = 1 (" +
-                           regions.blending_entry + ")."));
-
-    // The families of the chosen particles (all bonds of the reference configuration).
-    std::map<unsigned int, std::vector<unsigned int>> family;
-    for (std::size_t p = 0; p < n_points; ++p)
-      if (nearest[p] != numbers::invalid_unsigned_int && rank_index[p] == chosen[p])
-        family[nearest[p]];
-    const auto &bonds = particles.bonds();
-    for (unsigned int i = 0; i < n_owned; ++i)
-      for (unsigned int b = bonds.row_start[i]; b < bonds.row_start[i + 1]; ++b)
-        {
-          const unsigned int j = bonds.neighbor[b];
-          if (const auto found = family.find(i); found != family.end())
-            found->second.push_back(j);
-          if (const auto found = family.find(j); found != family.end())
-            found->second.push_back(i);
-        }
-
-    // Quadratic least squares over the family: u(y + r) = sum_m c_m a_m(r / delta), a the
-    // monomials of degree <= 2 (1, r_d, r_d r_e for d <= e), so the value at y is
-    // c_0 = sum_k w_k u_k with w_k = (M^-1 a(r_k))_0, M = sum_k a(r_k) a(r_k)^T, r_k = x_k - y.
-    // Exact for quadratic fields; a linear fit is exact for linear fields only and, evaluated
-    // at y, biased by the field's curvature times the family's second moment (of order
-    // u'' delta^2), which in a bending arm changed the coupled stiffness by percent. A family
-    // with fewer than twice as many members as monomials (a corner of the body with a small
-    // horizon) gets the linear fit (n_linear monomials), which it determines well.
-    constexpr unsigned int n_quadratic = 1 + dim + dim * (dim + 1) / 2, n_linear = 1 + dim;
-    fit_dofs.clear();
-    fit_components.clear();
-    fit_start.assign(1, 0);
-    fit_particles.clear();
-    fit_weights.clear();
-    IndexSet           ghosts(dof_handler.n_dofs());
-    std::uint64_t      n_in_layer = 0;
-    FullMatrix<double> M;
-    Vector<double>     a(n_quadratic);
-    for (std::size_t p = 0; p < n_points; ++p)
-      if (nearest[p] != numbers::invalid_unsigned_int && rank_index[p] == chosen[p])
-        {
-          const unsigned int i = nearest[p];
-          n_in_layer += constrained[i];
-          std::vector<unsigned int> members = family[i];
-          members.push_back(i);
-          const unsigned int n_basis  = members.size() >= 2 * n_quadratic ? n_quadratic : n_linear;
-          const Point<dim>   y        = point_of(p);
-          const auto         vector_a = [&](const unsigned int k) {
-            const Tensor<1, dim> r = (x[k] - y) / delta;
-            unsigned int         m = 0;
-            a(m++)                 = 1.;
-            for (unsigned int d = 0; d < dim; ++d)
-              a(m++) = r[d];
-            for (unsigned int d = 0; d < dim; ++d)
-              for (unsigned int e = d; e < dim; ++e)
-                a(m++) = r[d] * r[e];
-          };
-          M.reinit(n_basis, n_basis);
-          for (const unsigned int k : members)
-            {
-              vector_a(k);
-              for (unsigned int m = 0; m < n_basis; ++m)
-                for (unsigned int n = 0; n < n_basis; ++n)
-                  M(m, n) += a(m) * a(n);
-            }
-          M.gauss_jordan();
-          for (const unsigned int k : members)
-            {
-              vector_a(k);
-              double w = 0.;
-              for (unsigned int m = 0; m < n_basis; ++m)
-                w += M(0, m) * a(m);
-              fit_particles.push_back(k);
-              fit_weights.push_back(w);
-            }
-          const auto dof = static_cast<types::global_dof_index>(all[p * stride]);
-          fit_dofs.push_back(dof);
-          fit_components.push_back(static_cast<unsigned int>(all[p * stride + 1]));
-          fit_start.push_back(fit_particles.size());
-          if (!owned.is_element(dof))
-            ghosts.add_index(dof);
-        }
-    n_in_layer = Utilities::MPI::sum(n_in_layer, comm);
-    AssertThrow(n_in_layer == 0,
-                ExcMessage(regions.blending_entry + ": " + std::to_string(n_in_layer) +
-                           " FE dofs prescribed by the PD field (the nodes of cells that reach "
-                           "beta = 1) lie nearest to particles of the PD volume constraint "
-                           "(within a horizon of beta = 0), so the two parts would exchange no "
-                           "information there. Widen the overlap 0 < beta < 1 to more than a "
-                           "horizon plus an FE cell."));
-    ghosts.compress();
-    fitted.reinit(owned, ghosts, comm);
-  }
-
-  template <int dim>
-  void
-  SchwarzCoupling<dim>::fit(const ParticleVector &u, std::vector<double> &values)
-  {
-    const unsigned int nc = regions.layout.n_components();
-    fitted                = 0.;
-    for (std::size_t k = 0; k < fit_dofs.size(); ++k)
-      {
-        double value = 0.;
-        for (unsigned int m = fit_start[k]; m < fit_start[k + 1]; ++m)
-          value += fit_weights[m] * u.local_element(fit_particles[m] * nc + fit_components[k]);
-        fitted(fit_dofs[k]) = value;
-      }
-    fitted.compress(VectorOperation::add);
-    values.resize(interface_dofs.size());
-    for (std::size_t j = 0; j < interface_dofs.size(); ++j)
-      values[j] = fitted.local_element(interface_dofs[j]);
+    interface_fit.reinit(*regions.particles, constrained, nodes, owned, regions.blending_entry);
   }
 
   template <int dim>
@@ -588,7 +396,7 @@ namespace perideal
         fe_solver->solve_assembled(*regions.material, f_fe, no_particle_load, U, no_u, conditions);
         interpolate_to_particles(U, u);
         solve_pd_part(f_pd, u);
-        fit(u, fitted_values);
+        interface_fit.evaluate(u, regions.layout.n_components(), interface_dofs, fitted_values);
         residual.resize(fitted_values.size());
         for (std::size_t j = 0; j < residual.size(); ++j)
           residual[j] = fitted_values[j] - interface_values[j];

@@ -6,6 +6,7 @@
 
 #include <perideal/coupling/coupled_static_solver.h>
 #include <perideal/coupling/coupling_method.h>
+#include <perideal/coupling/interface_fit.h>
 #include <perideal/coupling/transfer_operator.h>
 #include <perideal/pd/adaptive_dynamic_relaxation.h>
 
@@ -117,12 +118,9 @@ namespace perideal
     /// Classify the particles (free or volume constraint), checking the overlap width.
     void
     classify_particles();
-    /// Find the interface dofs, prescribe them in the FE region and build the fit.
+    /// Find the interface dofs, prescribe them in the FE region and build their fit.
     void
     setup_interface();
-    /// The fit of the particle field @p u (ghosts current) at the owned interface dofs.
-    void
-    fit(const ParticleVector &u, std::vector<double> &values);
     /// The PD subproblem for the volume constraint in @p u: the static solve of the assembled
     /// stiffness, or the relaxation.
     void
@@ -152,13 +150,8 @@ namespace perideal
     /// The owned interface dofs (local indices) and their current values x.
     std::vector<unsigned int> interface_dofs;
     std::vector<double>       interface_values;
-    /// The fits this rank computes: the dof (global), its component and its particles' weights
-    /// (local particle indices, owned or ghost) in fit_particles/fit_weights[fit_start[k]..).
-    std::vector<dealii::types::global_dof_index> fit_dofs;
-    std::vector<unsigned int>                    fit_components, fit_start, fit_particles;
-    std::vector<double>                          fit_weights;
-    /// The fitted values, owned like the FE dofs with the fits of other ranks' dofs as ghosts.
-    FEVector fitted;
+    /// The fit of the interface values from the particle field.
+    InterfaceFit<dim> interface_fit;
 
     // The empty counterparts of the two regions and the one-region static solves.
     std::unique_ptr<FERegion<dim>>            no_fe;
