@@ -305,10 +305,15 @@ namespace perideal
     }
 
     const auto angles = numbers("Orientation");
+    rotation          = rotation_from_euler_angles(angles[0], angles[1], angles[2]);
     if (angles[0] != 0. || angles[1] != 0. || angles[2] != 0.)
-      stiffness =
-        rotate_voigt_stiffness(stiffness,
-                               rotation_from_euler_angles(angles[0], angles[1], angles[2]));
+      stiffness = rotate_voigt_stiffness(stiffness, rotation);
+  }
+
+  const Tensor<2, 3> &
+  ElasticMaterial::axes() const
+  {
+    return rotation;
   }
 
   const FullMatrix<double> &

@@ -25,7 +25,7 @@ namespace perideal
 
     /**
      * @brief The linearized stretch s = xi . eta / |xi|^2 of the lanes and the `stretch` that
-     * breaks a bond, s times the bond class's breaking factor sqrt(|c(n)| / c_mean).
+     * breaks a bond, s times the bond class's breaking factor sqrt(|c(n)| / (c_mean g(n))).
      */
     struct LinearStretch
     {
@@ -97,7 +97,7 @@ namespace perideal
   struct AnisotropicBondBased<dim>::Kernel
   {
     /// The bonds in SIMD blocks, bond_coefficient per lane and the breaking factor
-    /// sqrt(|c(n)| / c_mean) per bond class.
+    /// sqrt(|c(n)| / (c_mean g(n))) per bond class (g: the fracture energy ratios' weight).
     BondBlocks<dim>                 blocks;
     typename BondBlocks<dim>::Array lane_coefficient;
     std::vector<double>             class_break_factor;
@@ -173,8 +173,10 @@ namespace perideal
                       Patterns::Selection("discrete|continuum"),
                       "How Lambda follows from C: discrete (fitted to the lattice's neighbour "
                       "sums at an interior particle: homogeneous deformations reproduce C there "
-                      "to round-off) or continuum (the integral over the ball, seed note 004 sec. "
-                      "1.3; its lattice error is written to the log).");
+                      "to round-off; the same for the Fracture energy ratios) or continuum (the "
+                      "integrals over the ball, seed note 004 sec. 1.3; the lattice error is "
+                      "written to the log).");
+    AnisotropicFractureEnergy<dim>::declare_parameters(prm);
   }
 
   template <int dim>
@@ -185,6 +187,7 @@ namespace perideal
     calibration =
       prm.get("Calibration") == "discrete" ? Calibration::discrete : Calibration::continuum;
     symmetrize = prm.get("Cauchy relations") == "symmetrize";
+    fracture.parse_parameters(prm, section);
     if constexpr (dim == 3)
       set_target(material.tensor<3>(PlanarAssumption::three_dimensional), "elastic constants");
   }
@@ -286,6 +289,8 @@ namespace perideal
     for (const auto &xi : family.xi)
       spacing = std::min(spacing, xi.norm());
     symbol = am::scan_symbol(Lambda, family, spacing, 16);
+    fracture.calibrate(material.axes(), family, calibration == Calibration::discrete);
+    fracture_report = fracture.summary(family);
     AssertThrow(symbol.relative_minimum > -1e-10,
                 ExcMessage("The elastic constants of <" + section + "> (" + material.summary() +
                            ") give a peridynamic operator whose Fourier symbol is not positive "
@@ -312,8 +317,9 @@ namespace perideal
         Tensor<1, dim> n;
         for (unsigned int d = 0; d < dim; ++d)
           n[d] = bond_class.xi[d];
-        k.class_break_factor.push_back(std::sqrt(
-          std::abs(am::directional_modulus(Lambda, Tensor<1, dim>(n / n.norm()))) / c_mean));
+        n /= n.norm();
+        k.class_break_factor.push_back(
+          std::sqrt(std::abs(am::directional_modulus(Lambda, n)) / (c_mean * fracture.weight(n))));
       }
     if (context.surface_correction)
       {
@@ -436,6 +442,8 @@ namespace perideal
         << (context.surface_correction ? "energy method (C_aaaa per axis)" : "none");
     if (!symmetrization_report.empty())
       out << "\n  " << symmetrization_report;
+    if (!fracture_report.empty())
+      out << "\n  " << fracture_report;
     if (directions.negative_fraction > 0.)
       out << "\n  warning: the micromodulus is negative in " << 100. * directions.negative_fraction
           << " % of the directions (smallest c(n) = " << directions.minimum << " N/m^6 at n = ("

@@ -102,6 +102,13 @@ namespace perideal
     voigt_stiffness() const;
 
     /**
+     * @brief The material axes in the global ones: column a is axis a + 1 (the rotation of
+     * the Orientation entry; the identity without one).
+     */
+    const dealii::Tensor<2, 3> &
+    axes() const;
+
+    /**
      * @brief The elasticity tensor of a @p dim dimensional body under @p planar.
      */
     template <int dim>
@@ -128,6 +135,7 @@ namespace perideal
     std::string                symmetry;
     double                     E = 0., nu = 0.;
     dealii::FullMatrix<double> stiffness;
+    dealii::Tensor<2, 3>       rotation;
   };
 } // namespace perideal
 

@@ -5,6 +5,7 @@
 #define perideal_pd_anisotropic_bond_based_h
 
 #include <perideal/base/elasticity.h>
+#include <perideal/pd/anisotropic_fracture.h>
 #include <perideal/pd/anisotropic_micromodulus.h>
 #include <perideal/pd/material_model.h>
 
@@ -33,9 +34,10 @@ namespace perideal
    * <Cauchy relations> = symmetrize, replaced by its completely symmetric part.
    * Set-up checks: directions where c(n) < 0 (a warning in the summary) and the Fourier symbol
    * of the interior operator (an error if it is not positive definite).
-   * Fracture: the PMB critical stretch with the bond's own direction factor,
-   * s0(n) = sqrt(10 G0 / (pi |c(n)| delta^5)) (doc/theory/models.md); the linearized stretch
-   * breaks the bond.
+   * Fracture: the PMB critical stretch with the bond's own direction factor and the weight of
+   * the fracture energies along the material axes (AnisotropicFractureEnergy),
+   * s0(n) = sqrt(10 G0 g(n) / (pi |c(n)| delta^5)) (doc/theory/models.md); the linearized
+   * stretch breaks the bond.
    *
    * In 2D (particle volumes dx^2 h) the same model with the 5 components of a completely
    * symmetric 2D tensor: omega = 1/|xi|, lambda = c(n)/|xi|^3 (square symmetry: c(theta) = a + b
@@ -61,7 +63,8 @@ namespace perideal
     ~AnisotropicBondBased() override;
 
     /**
-     * @brief Declare the entries of ElasticMaterial, "Cauchy relations" and "Calibration".
+     * @brief Declare the entries of ElasticMaterial, "Cauchy relations", "Calibration" and
+     * "Fracture energy ratios".
      */
     static void
     declare_parameters(dealii::ParameterHandler &prm);
@@ -111,7 +114,8 @@ namespace perideal
 
     /**
      * @brief The reference critical stretch sqrt(10 G0 / (pi c_mean delta^5)), c_mean the mean
-     * of c(n) over the sphere; a bond of direction n breaks at sqrt(c_mean / |c(n)|) times it.
+     * of c(n) over the sphere; a bond of direction n breaks at sqrt(c_mean g(n) / |c(n)|) times
+     * it, g(n) the weight of the Fracture energy ratios (AnisotropicFractureEnergy).
      */
     double
     critical_stretch(const double fracture_energy) const override;
@@ -156,12 +160,15 @@ namespace perideal
       continuum
     };
 
-    ElasticMaterial                                material;
-    Calibration                                    calibration = Calibration::discrete;
-    bool                                           symmetrize  = false;
-    anisotropic_micromodulus::ComponentsOf<dim>    C{};
-    anisotropic_micromodulus::ComponentsOf<dim>    Lambda{};
-    std::string                                    symmetrization_report;
+    ElasticMaterial                             material;
+    Calibration                                 calibration = Calibration::discrete;
+    bool                                        symmetrize  = false;
+    anisotropic_micromodulus::ComponentsOf<dim> C{};
+    anisotropic_micromodulus::ComponentsOf<dim> Lambda{};
+    std::string                                 symmetrization_report;
+    /// The fracture energies along the material axes and their report.
+    AnisotropicFractureEnergy<dim>                 fracture;
+    std::string                                    fracture_report;
     double                                         lattice_error = 0., calibration_residual = 0.;
     anisotropic_micromodulus::DirectionScanOf<dim> directions;
     anisotropic_micromodulus::SymbolScanOf<dim>    symbol;
