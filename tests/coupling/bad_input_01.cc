@@ -9,7 +9,8 @@
 // physics of another field than the material model's (found when the file is read, before any
 // output: its output directory does not exist afterwards; the FE condition without a <Type>
 // takes the default, valid for the scalar field too), a malformed expression in a condition's
-// function (found when the file is read). A state-based model is
+// function (found when the file is read), an FE material shared with a particle model that has
+// no elastic constants of its own. A state-based model is
 // accepted (its energy is blended through the particles' weights). Quasi-static solves (run as
 // well): a valid file is solved statically and by adaptive dynamic relaxation; an FE velocity
 // condition, a component that no condition holds, and an exact-displacement tolerance without the
@@ -195,6 +196,9 @@ main(int argc, char **argv)
             {"PD_BLOCK",
              "  subsection hold\n    set Region = corner\n    set Components = y\n"
              "    set Function = 1e-3 * (t\n  end"}});
+  run_case("FE material shared with a model that has no elastic constants",
+           {{"FE_EXTRA",
+             "  subsection Elasticity\n    set Same material as the particles = true\n  end"}});
   run_case("valid input, state-based model", {{"MODEL", "linear peridynamic solid"}});
   run_case("relaxation solver", {{"SOLVER", "adaptive dynamic relaxation"}});
   run_case("static solver", {{"SOLVER", "static"}});

@@ -100,6 +100,14 @@ namespace perideal
   {
     prm.enter_subsection("Elasticity");
     ElasticMaterial::declare_parameters(prm);
+    prm.declare_entry("Same material as the particles",
+                      "false",
+                      Patterns::Bool(),
+                      "true: take the symmetry class, constants and orientation from the "
+                      "particles' material subsection <Material/<Model>> (the models with these "
+                      "entries: anisotropic bond based, anisotropic plane stress), so that one "
+                      "block serves both regions; the other entries here are then not read. "
+                      "false: the entries of this subsection.");
     prm.leave_subsection();
   }
 
@@ -109,8 +117,32 @@ namespace perideal
   {
     planar = planar_;
     prm.enter_subsection("Elasticity");
-    material.parse_parameters(prm, "Finite elements/Elasticity");
+    const bool shared = prm.get_bool("Same material as the particles");
+    if (!shared)
+      material.parse_parameters(prm, "Finite elements/Elasticity");
     prm.leave_subsection();
+    if (shared)
+      {
+        // The particles' subsection <Material/<Model>>, from the root (prm is in <Finite
+        // elements>).
+        prm.leave_subsection();
+        const std::string model = prm.get({"Material"}, "Model");
+        prm.enter_subsection("Material");
+        prm.enter_subsection(model);
+        // A model without the entries has no <Symmetry> (a declared one is never empty).
+        AssertThrow(!prm.get("Symmetry").empty(),
+                    ExcMessage("<Finite elements/Elasticity/Same material as the particles> = "
+                               "true, but the particles' model <Material/Model> = " +
+                               model +
+                               " has no elastic constants of its own to share; accepted: a "
+                               "model with the FE side's material entries (anisotropic bond "
+                               "based, anisotropic plane stress), or false and the constants in "
+                               "<Finite elements/Elasticity>."));
+        material.parse_parameters(prm, "Material/" + model);
+        prm.leave_subsection();
+        prm.leave_subsection();
+        prm.enter_subsection("Finite elements");
+      }
     C = material.tensor<dim>(planar);
   }
 

@@ -15,7 +15,9 @@ namespace perideal
    * @brief Small-strain linear elasticity: -div sigma = b, sigma = C : eps(u),
    * eps(u) = (grad u + grad u^T) / 2, with the displacement u [m] as unknown (translations x,
    * y(, z)) and C from <Finite elements/Elasticity> (any symmetry class, oriented; in 2D plane
-   * stress or plane strain, the problem's <Material/Planar assumption>). The stiffness is
+   * stress or plane strain, the problem's <Material/Planar assumption>), or, with <Same material
+   * as the particles> = true, from the same entries of the particles' <Material/<Model>> (one
+   * material block for both regions). The stiffness is
    * int eps(v) : C : eps(u) dx (e.g. Hughes, The Finite Element Method, 2000, eq. 2.8.17 and
    * Sect. 3.9); conditions: 'displacement' [m], 'velocity' [m/s], 'traction' [Pa] = sigma n.
    * Output: strain_ij, stress_ij [Pa], in 2D stress_zz (0 in plane stress, C_33kl eps_kl in
@@ -29,7 +31,7 @@ namespace perideal
     void
     declare_parameters(dealii::ParameterHandler &prm) const override;
 
-    /// @brief Read <Elasticity> and form C for @p planar.
+    /// @brief Read <Elasticity> (or the particles' material) and form C for @p planar.
     void
     parse_parameters(dealii::ParameterHandler &prm, const PlanarAssumption planar) override;
 
