@@ -26,8 +26,9 @@ namespace perideal
       "Critical stretch). A bond's critical energy is interpolated between the axes as "
       "g(n) = sum_a g_a (n . t_a)^2, the g_a fitted so that the ratios hold (on the lattice "
       "with the discrete calibration, in the continuum otherwise); every g_a must be positive: "
-      "in 2D 1/2 < r2/r1 < 2 for the two axes in the plane (continuum; one axis must then be "
-      "normal to the plane), in 3D 4 r_a > r1 + r2 + r3. 1, 1, 1: isotropic fracture energy.");
+      "in 2D 1/2 < r_b/r_a < 2 for the two material axes a, b in the plane (continuum; the "
+      "third axis must then be normal to the plane, its ratio is not used), in 3D "
+      "4 r_a > r1 + r2 + r3. 1, 1, 1: isotropic fracture energy.");
   }
 
   template <int dim>
@@ -73,6 +74,7 @@ namespace perideal
         for (unsigned int d = 0; d < dim; ++d)
           axes_in_body[n_found][d] = axes[d][a];
         ratio_in_body[n_found] = ratios[a];
+        axis_number[n_found]   = a + 1;
         ++n_found;
       }
     if (n_found < dim)
@@ -88,6 +90,7 @@ namespace perideal
             axes_in_body[a]    = Tensor<1, dim>();
             axes_in_body[a][a] = 1.;
             ratio_in_body[a]   = ratios[0];
+            axis_number[a]     = a + 1;
           }
       }
 
@@ -135,8 +138,11 @@ namespace perideal
                            " need the bond weights g = (" + g_list.str() +
                            ") along the material axes, and a weight that is not positive makes "
                            "bonds of that direction break without energy; accepted: " +
-                           (dim == 2 ? std::string("1/2 < r2/r1 < 2 for the two axes in the "
-                                                   "plane") :
+                           (dim == 2 ? "1/2 < r" + std::to_string(axis_number[1]) + "/r" +
+                                         std::to_string(axis_number[0]) +
+                                         " < 2 for the two material axes in the plane (" +
+                                         std::to_string(axis_number[0]) + " and " +
+                                         std::to_string(axis_number[1]) + ")" :
                                        std::string("4 r_a > r1 + r2 + r3 for every axis a")) +
                            " (the continuum bound; the lattice's is close). A stronger "
                            "contrast needs weak interfaces between regions, not a smooth bond "
@@ -185,7 +191,11 @@ namespace perideal
         << " (material axes); bond weights g =";
     for (unsigned int a = 0; a < dim; ++a)
       out << " " << g[a];
-    out << " (axes in the body); lattice G(m)/G_iso(m) at the angle from the first axis:";
+    out << " (material axes";
+    for (unsigned int a = 0; a < dim; ++a)
+      out << " " << axis_number[a];
+    out << "); lattice G(m)/G_iso(m), m at the angle from material axis " << axis_number[0]
+        << " towards " << axis_number[1] << ":";
     for (unsigned int step = 0; step <= 6; ++step)
       {
         const double   angle = step * numbers::PI / 12.;

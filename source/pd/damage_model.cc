@@ -1,6 +1,7 @@
 // ---------------------------------------------------------------------
 // PeriDeal: damage models (when bonds break) and the damage index.
 // ---------------------------------------------------------------------
+#include <perideal/base/problem_settings.h>
 #include <perideal/pd/damage_model.h>
 
 #include <cmath>
@@ -104,11 +105,14 @@ namespace perideal
     if (n_broken_bonds(particles) == broken_before && !damage_changed)
       return true;
     const unsigned int max_passes = 100;
+    // Not converged (not a plain error), so that the load stepping cuts the step if it may.
     AssertThrow(pass + 1 < max_passes,
-                ExcMessage("Load step " + std::to_string(step) +
-                           ": bonds kept breaking or softening through " +
-                           std::to_string(max_passes) +
-                           " re-solves (unstable crack growth); use more <Solver/Load steps>."));
+                ExcNotConverged("Load step " + std::to_string(step) +
+                                ": bonds kept breaking or softening through " +
+                                std::to_string(max_passes) +
+                                " re-solves (unstable crack growth); use more <Solver/Load "
+                                "steps>, or let such steps be cut (<Solver/Control/Cut above "
+                                "broken bonds>)."));
     return false;
   }
 

@@ -100,7 +100,9 @@ namespace perideal
     std::array<double, 3>                   ratios{{1., 1., 1.}};
     std::array<dealii::Tensor<1, dim>, dim> axes_in_body;
     std::array<double, dim>                 ratio_in_body{};
-    std::array<double, dim>                 g{};
+    /// The material axis (1, 2, 3) of each axis in the body.
+    std::array<unsigned int, dim> axis_number{};
+    std::array<double, dim>       g{};
   };
 } // namespace perideal
 

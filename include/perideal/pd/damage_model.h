@@ -94,8 +94,8 @@ namespace perideal
    * @brief For the re-solves of a quasi-static load step (PD or coupled): whether no bond broke
    * in re-solve @p pass of load step @p step (@p broken_before bonds were broken before it) and
    * the bonds' damage did not otherwise change (@p damage_changed:
-   * MaterialModel::damage_changed()). Throws (unstable crack growth: use more <Solver/Load steps>)
-   * after 100 re-solves.
+   * MaterialModel::damage_changed()). Throws ExcNotConverged (unstable crack growth: more
+   * <Solver/Load steps> or step cutting) after 100 re-solves.
    */
   template <int dim>
   bool
