@@ -7,6 +7,7 @@
 #include <perideal/base/parameter_utilities.h>
 #include <perideal/pd/anisotropic_plane_stress.h>
 #include <perideal/pd/bond_loop.h>
+#include <perideal/pd/surface_correction.h>
 
 #include <algorithm>
 #include <cmath>
@@ -419,20 +420,15 @@ namespace perideal
                            "constants whose operator is positive definite at every wave vector "
                            "(the set-up checks 16^2 of them)."));
 
-    // Per-bond coefficients and B_i.
-    const BondList &bonds  = particles.bonds();
-    const auto     &x      = particles.positions();
-    const auto     &volume = particles.volumes();
-    bond_pair_coefficients(particles, 1., true, k0);
-    g.assign(bonds.size(), 0.);
+    // B_i = C_3333 m_i / m (m_i the particle's own weighted volume with the surface
+    // correction).
+    const BondList     &bonds  = particles.bonds();
+    const auto         &volume = particles.volumes();
     std::vector<double> m_local(particles.n_local(), 0.);
     for (unsigned int i = 0; i < particles.n_owned(); ++i)
       for (unsigned int b = bonds.row_start[i]; b < bonds.row_start[i + 1]; ++b)
         {
           const unsigned int j = bonds.neighbor[b];
-          const Tensor<1, 2> n = (x[j] - x[i]) / bonds.length[b];
-          k0[b] *= am::directional_modulus(Lambda0, n);
-          g[b] = quadratic_form(M, n) * bonds.volume_factor[b] * volume[i] * volume[j];
           m_local[i] += bonds.length[b] * bonds.volume_factor[b] * volume[j];
           if (j < particles.n_owned())
             m_local[j] += bonds.length[b] * bonds.volume_factor[b] * volume[i];
@@ -448,12 +444,49 @@ namespace perideal
 
     Kernel &k = *kernel;
     k.blocks.reinit(particles);
-    k.blocks.to_lanes(k0, k.lane_k);
-    k.blocks.to_lanes(g, k.lane_g);
     k.blocks.reinit_field(k.u_field, 2);
     k.blocks.reinit_field(k.f_field, 2);
     for (auto *field : {&k.w_field, &k.a_field, &k.beta_A_field})
       k.blocks.reinit_field(*field, 1);
+
+    // The bond term near surfaces: the energy method on the whole model (B_i corrected), with
+    // the reduced stiffness C'_aaaa of the uniaxial test fields; its factors scale k_b.
+    if (context.surface_correction)
+      {
+        set_bond_coefficients(particles, false);
+        ParticleVector force;
+        particles.reinit_vector(force, 2);
+        const auto energy = [&](const ParticleVector &u, std::vector<double> &w) {
+          compute_forces(particles, u, force, &w, std::numeric_limits<double>::infinity());
+        };
+        const auto C_reduced = elasticity_tensor();
+        apply_energy_surface_correction<2>(particles,
+                                           field_layout(),
+                                           {{C_reduced[0][0][0][0], C_reduced[1][1][1][1]}},
+                                           energy);
+      }
+    set_bond_coefficients(particles, true);
+  }
+
+  void
+  AnisotropicPlaneStress::set_bond_coefficients(const ParticleSystem<2> &particles,
+                                                const bool               with_surface_factor)
+  {
+    const BondList &bonds  = particles.bonds();
+    const auto     &x      = particles.positions();
+    const auto     &volume = particles.volumes();
+    bond_pair_coefficients(particles, 1., with_surface_factor, k0);
+    g.assign(bonds.size(), 0.);
+    for (unsigned int i = 0; i < particles.n_owned(); ++i)
+      for (unsigned int b = bonds.row_start[i]; b < bonds.row_start[i + 1]; ++b)
+        {
+          const unsigned int j = bonds.neighbor[b];
+          const Tensor<1, 2> n = (x[j] - x[i]) / bonds.length[b];
+          k0[b] *= am::directional_modulus(Lambda0, n);
+          g[b] = quadratic_form(M, n) * bonds.volume_factor[b] * volume[i] * volume[j];
+        }
+    kernel->blocks.to_lanes(k0, kernel->lane_k);
+    kernel->blocks.to_lanes(g, kernel->lane_g);
   }
 
   void
@@ -598,7 +631,9 @@ namespace perideal
         << " calibration, interior error " << calibration_residual
         << " (continuum calibration on this lattice: " << lattice_error
         << "); Fourier symbol smallest/largest eigenvalue " << symbol_min << "; B_i "
-        << (context.surface_correction ? "per particle (C_3333 m_i / m)" : "C_3333");
+        << (context.surface_correction ?
+              "per particle (C_3333 m_i / m), bond term by the energy method (C'_aaaa per axis)" :
+              "C_3333");
     if (!symmetrization_report.empty())
       out << "\n  " << symmetrization_report;
     return out.str();

@@ -34,7 +34,9 @@ namespace perideal
    * A = C_33ab eps_ab / C_3333; they are solved on the lattice's own neighbour sums (discrete
    * calibration, exact to round-off in the interior) or over the disc (continuum). C is the 3D
    * tensor of the FE side's ElasticMaterial entries; it must satisfy Cauchy's relations (the
-   * model comes from a 3D bond-based one) and have z = 0 as a mirror plane.
+   * model comes from a 3D bond-based one) and have z = 0 as a mirror plane. Surface correction:
+   * B_i from m_i, and the bond coefficients by the energy method (apply_energy_surface_correction()
+   * with C'_aaaa); without it B_i = C_3333 and the interior kernel everywhere.
    */
   class AnisotropicPlaneStress : public MaterialModel<2>
   {
@@ -166,6 +168,12 @@ namespace perideal
     /// The kernel's data, defined in anisotropic_plane_stress.cc.
     struct Kernel;
     std::unique_ptr<Kernel> kernel;
+
+    /**
+     * @brief Set k0 (with or without the surface factor), g and the kernel's lanes.
+     */
+    void
+    set_bond_coefficients(const ParticleSystem<2> &particles, const bool with_surface_factor);
   };
 } // namespace perideal
 
