@@ -32,23 +32,32 @@ namespace am = perideal::anisotropic_micromodulus;
 
 using Entries = std::vector<std::pair<std::string, std::string>>;
 
-// The fracture-energy weight of @p ratios for the material axes of @p orientation.
+// The material axes of an isotropic material with @p orientation (ElasticMaterial::axes()).
+Tensor<2, 3>
+material_axes(const std::string &orientation)
+{
+  ParameterHandler prm;
+  perideal::ElasticMaterial::declare_parameters(prm);
+  prm.set("Young's modulus", "1e9");
+  prm.set("Poisson's ratio", "0.25");
+  prm.set("Orientation", orientation);
+  perideal::ElasticMaterial material;
+  material.parse_parameters(prm, "Material/anisotropic bond based");
+  return material.axes();
+}
+
+// The fracture-energy weight of @p ratios for the material axes of @p orientation, continuum
+// calibration.
 template <int dim>
 perideal::AnisotropicFractureEnergy<dim>
 fracture_energy(const std::string &ratios, const std::string &orientation)
 {
   ParameterHandler prm;
-  perideal::ElasticMaterial::declare_parameters(prm);
   perideal::AnisotropicFractureEnergy<dim>::declare_parameters(prm);
-  prm.set("Young's modulus", "1e9");
-  prm.set("Poisson's ratio", "0.25");
-  prm.set("Orientation", orientation);
   prm.set("Fracture energy ratios", ratios);
-  perideal::ElasticMaterial material;
-  material.parse_parameters(prm, "Material/anisotropic bond based");
   perideal::AnisotropicFractureEnergy<dim> fracture;
   fracture.parse_parameters(prm, "Material/anisotropic bond based");
-  fracture.calibrate(material.axes(), am::Family<dim>(), false);
+  fracture.calibrate(material_axes(orientation), am::Family<dim>(), false);
   return fracture;
 }
 
@@ -100,15 +109,9 @@ template <int dim>
 void
 check_continuum(const std::string &ratios, const std::string &orientation)
 {
-  const auto       fracture = fracture_energy<dim>(ratios, orientation);
-  ParameterHandler prm;
-  perideal::ElasticMaterial::declare_parameters(prm);
-  prm.set("Young's modulus", "1e9");
-  prm.set("Poisson's ratio", "0.25");
-  prm.set("Orientation", orientation);
-  perideal::ElasticMaterial material;
-  material.parse_parameters(prm, "Material");
-  const auto r = Utilities::string_to_double(Utilities::split_string_list(ratios));
+  const auto fracture = fracture_energy<dim>(ratios, orientation);
+  const auto axes     = material_axes(orientation);
+  const auto r        = Utilities::string_to_double(Utilities::split_string_list(ratios));
   deallog << dim << "D continuum, ratios " << ratios << ", Orientation " << orientation << ":";
   double error = 0.;
   for (unsigned int a = 0; a < 3; ++a)
@@ -116,7 +119,7 @@ check_continuum(const std::string &ratios, const std::string &orientation)
       Tensor<1, dim> m;
       double         normal = 0.;
       for (unsigned int d = 0; d < 3; ++d)
-        (d < dim ? m[d] : normal) = material.axes()[d][a];
+        (d < dim ? m[d] : normal) = axes[d][a];
       if (std::abs(normal) > 1e-12)
         continue;
       const double ratio = continuum_crack_energy_ratio(fracture, m);

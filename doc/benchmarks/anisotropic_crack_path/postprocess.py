@@ -64,10 +64,12 @@ import heapq
 import math
 import os
 import re
-import xml.etree.ElementTree as ET
+import sys
 
-import h5py
 import numpy as np
+
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), ".."))
+from particle_series import read_particles, read_series  # noqa: E402
 
 
 # ----------------------------------------------------------------------------- parameters
@@ -159,29 +161,6 @@ def weak_plane(alpha_deg, r_t, r_f):
 
 
 # ----------------------------------------------------------------------------- results
-
-
-def read_series(directory, base="particles"):
-    """[(time, h5 path)] from the XDMF file, in time order."""
-    tree = ET.parse(os.path.join(directory, base + ".xdmf"))
-    series = []
-    for grid in tree.iter("Grid"):
-        if grid.get("GridType") != "Uniform":
-            continue
-        time = float(grid.find("Time").get("Value"))
-        item = grid.find("Geometry").find("DataItem").text.strip()
-        series.append((time, os.path.join(directory, item.split(":")[0])))
-    series.sort()
-    return series
-
-
-def read_h5(path):
-    with h5py.File(path, "r") as f:
-        nodes = np.array(f["nodes"])[:, :2]
-        damage = np.array(f["damage"])[:, 0]
-    # The particle order depends on the MPI partition: sort by reference position.
-    order = np.lexsort((nodes[:, 1], nodes[:, 0]))
-    return nodes[order], damage[order]
 
 
 def principal_angle(points, centred):
@@ -295,8 +274,8 @@ def read_run(directory, threshold, r0, r1):
         # Isotropic PMB (a control): no material angle, plotted at alpha = 0.
         alpha, r_f, r_t = 0.0, 1.0, 1.0
     series = read_series(directory)
-    nodes0, damage0 = read_h5(series[0][1])
-    nodes, damage = read_h5(series[-1][1])
+    nodes0, damage0 = read_particles(series[0][1])
+    nodes, damage = read_particles(series[-1][1])
     assert np.allclose(nodes, nodes0), "particle sets differ between output files"
     wall = None
     if os.path.exists(os.path.join(directory, "wall_time")):

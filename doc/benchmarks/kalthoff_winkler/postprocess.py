@@ -37,40 +37,16 @@ import heapq
 import math
 import os
 import sys
-import xml.etree.ElementTree as ET
 
-import h5py
 import numpy as np
+
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), ".."))
+from particle_series import read_particles, read_series  # noqa: E402
 
 import matplotlib
 
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
-
-
-def read_series(directory, base="particles"):
-    """[(time, h5 path)] from the XDMF file, in time order."""
-    tree = ET.parse(os.path.join(directory, base + ".xdmf"))
-    series = []
-    for grid in tree.iter("Grid"):
-        if grid.get("GridType") != "Uniform":
-            continue
-        time = float(grid.find("Time").get("Value"))
-        item = grid.find("Geometry").find("DataItem").text.strip()
-        series.append((time, os.path.join(directory, item.split(":")[0])))
-    series.sort()
-    return series
-
-
-def read_h5(path):
-    with h5py.File(path, "r") as f:
-        nodes = np.array(f["nodes"])[:, :2]
-        damage = np.array(f["damage"])[:, 0]
-        disp = np.array(f["displacement"])[:, :2] if "displacement" in f else None
-    # Particle order depends on the MPI partition: sort by reference position so that every
-    # file of a run (and runs on different rank counts) share one order.
-    order = np.lexsort((nodes[:, 1], nodes[:, 0]))
-    return nodes[order], damage[order], (disp[order] if disp is not None else None)
 
 
 def lattice_spacing(nodes):
@@ -228,12 +204,12 @@ def main():
     plot_energies(stats, os.path.join(args.results, "energies.png"))
 
     series = read_series(args.results, args.base)
-    nodes0, damage0, _ = read_h5(series[0][1])
+    nodes0, damage0 = read_particles(series[0][1])
     dx = lattice_spacing(nodes0)
     history = []
     final = None
     for time, path in series:
-        nodes, damage, disp = read_h5(path)
+        nodes, damage, disp = read_particles(path, with_displacement=True)
         assert np.allclose(nodes, nodes0), "particle sets differ between output files"
         new = damage - damage0
         upper = measure_crack(nodes, new, tip, dx, args.threshold, +1.0)
