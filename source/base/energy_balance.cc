@@ -17,8 +17,10 @@ namespace perideal
                         const double       row_strain,
                         const double       work_of_loads,
                         const double       prescribed_kinetic,
-                        const double       row_dissipated)
+                        const double       row_dissipated,
+                        const double       row_conversion)
   {
+    conversion = row_conversion;
     step       = row_step;
     kinetic    = row_kinetic;
     strain     = row_strain;
@@ -40,7 +42,7 @@ namespace perideal
   double
   EnergyBalance::error() const
   {
-    return kinetic + strain + dissipated - total_work - initial_energy;
+    return kinetic + strain + dissipated - total_work - initial_energy - conversion;
   }
 
   void

@@ -11,10 +11,12 @@
 #include <perideal/coupling/postprocessors/probes.h>
 #include <perideal/coupling/postprocessors/reactions.h>
 #include <perideal/coupling/postprocessors/section_integrals.h>
+#include <perideal/pd/damage_model.h>
 
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <sstream>
 #include <unordered_map>
 
 namespace perideal
@@ -23,6 +25,15 @@ namespace perideal
 
   namespace
   {
+    // Values within round-off of 0 or 1 are 0 or 1: whether a cell carries FE unknowns and
+    // whether a particle is free must not depend on the last bit of a coordinate (it broke the
+    // mirror symmetry of the Kalthoff-Winkler case).
+    double
+    snap_to_bounds(const double b)
+    {
+      return std::abs(b) < 1e-10 ? 0. : std::abs(b - 1.) < 1e-10 ? 1. : b;
+    }
+
     // The registered FE physics that can join particles with the unknowns @p layout (the same
     // or @p layout without its rotations), separated by ', ' ("none").
     template <int dim>
@@ -70,6 +81,7 @@ namespace perideal
                       "How the FE region and the particles are joined: " +
                         Methods::documentation() + "Each method reads its own subsection.");
     Methods::declare_parameters(prm);
+    AdaptiveRegion<dim>::declare_parameters(prm);
     prm.declare_entry("Blending function",
                       "0",
                       Patterns::Anything(),
@@ -183,6 +195,7 @@ namespace perideal
       blending_expression = "1";
     beta =
       ParameterUtilities::make_function<dim>(blending_expression, 1, "Coupling/Blending function");
+    adaptive.parse_parameters(prm, pd.discretization().horizon);
     const std::string exact = prm.get("Exact displacement");
     exact_displacement.reset();
     if (!exact.empty())
@@ -198,6 +211,27 @@ namespace perideal
                            "(<Solver/Type> = static or adaptive dynamic relaxation); remove it or "
                            "change the solver type."));
     prm.leave_subsection();
+    if (adaptive.enabled())
+      {
+        const std::string entry = "<Coupling/Adaptive region/Criterion> = " +
+                                  prm.get({"Coupling", "Adaptive region"}, "Criterion");
+        AssertThrow(pd.has_body() && fe.has_mesh(),
+                    ExcMessage(entry + " converts FE cells into particles: the problem needs "
+                                       "both an FE mesh and <Discretization/Body> (the body the "
+                                       "particles may fill); set the criterion to none."));
+        AssertThrow(settings.solver_type == SolverType::explicit_dynamics,
+                    ExcMessage(entry + " works in explicit runs only: <Solver/Type> = explicit, "
+                                       "or the criterion none."));
+        AssertThrow(settings.checkpoint_interval == 0 && settings.checkpoint_time_interval == 0.,
+                    ExcMessage(entry + ": a run whose PD region grows cannot be checkpointed yet "
+                                       "(its particles and FE space are not rebuilt by a "
+                                       "restart); set <Output/Checkpoint interval> and "
+                                       "<Output/Checkpoint time interval> to off."));
+        AssertThrow(pd.material().n_bond_history_values() == 0,
+                    ExcMessage(entry + ": <Material/Model> = <" + prm.get({"Material"}, "Model") +
+                               "> keeps histories per bond, which a conversion does not carry "
+                               "over yet; use brittle bonds or the criterion none."));
+      }
   }
 
   template <int dim>
@@ -239,11 +273,8 @@ namespace perideal
   double
   CoupledProblem<dim>::blending(const Point<dim> &x) const
   {
-    // Values within round-off of 0 or 1 are 0 or 1: whether a cell carries FE unknowns and
-    // whether a particle is free must not depend on the last bit of a coordinate (it broke the
-    // mirror symmetry of the Kalthoff-Winkler case).
-    const double b = beta->value(x);
-    return std::abs(b) < 1e-10 ? 0. : std::abs(b - 1.) < 1e-10 ? 1. : b;
+    return snap_to_bounds(adaptive.enabled() ? std::max(beta->value(x), adaptive.blending(x)) :
+                                               beta->value(x));
   }
 
   template <int dim>
@@ -278,11 +309,10 @@ namespace perideal
 
   template <int dim>
   void
-  CoupledProblem<dim>::setup_particles()
+  CoupledProblem<dim>::setup_particles(const bool log_summary)
   {
     // Particles where the method's particle weight is positive and within a horizon of such
-    // points (lattice offsets up to
-    // delta + dx cover every bond).
+    // points (lattice offsets up to delta + dx cover every bond).
     const double dx = pd.discretization().spacing, delta = pd.discretization().horizon;
     const int    reach = static_cast<int>(std::ceil(delta / dx)) + 1;
     std::vector<Tensor<1, dim>> offsets;
@@ -303,36 +333,48 @@ namespace perideal
         }
     }
     // beta is evaluated once per lattice point (the offsets are lattice vectors, so x + offset
-    // is a lattice point too); the key is the point's position in half spacings.
-    struct KeyHash
-    {
-      std::size_t
-      operator()(const std::array<long, dim> &key) const
-      {
-        std::size_t h = 0;
-        for (const long k : key)
-          h = h * 1000003u ^ std::hash<long>()(k);
-        return h;
-      }
-    };
-    std::unordered_map<std::array<long, dim>, double, KeyHash> beta_at;
+    // is a lattice point too).
+    std::unordered_map<std::array<long, dim>, double, LatticeKeyHash> beta_at;
     const auto lattice_beta = [&](const Point<dim> &y) {
-      std::array<long, dim> key;
-      for (unsigned int d = 0; d < dim; ++d)
-        key[d] = std::lround(y[d] / dx * 2.);
+      const auto key   = lattice_key(y);
       const auto found = beta_at.find(key);
       if (found != beta_at.end())
         return found->second;
-      return beta_at[key] = method->particle_weight(blending(y));
+      return beta_at[key] = method->particle_weight(snap_to_bounds(beta->value(y)));
     };
+    // The disks of an adaptive region by their distance (a lattice scan at every conversion
+    // would cost more than the run), the blending function at the offsets (not the constant 0).
+    const bool file_blends  = blending_expression != "0";
     const auto in_pd_region = [&](const Point<dim> &x) {
-      for (const auto &offset : offsets)
-        if (lattice_beta(x + offset) > 0.)
-          return true;
+      if (adaptive.enabled() && adaptive.within_reach(x, delta + dx))
+        return true;
+      if (file_blends)
+        for (const auto &offset : offsets)
+          if (lattice_beta(x + offset) > 0.)
+            return true;
       return false;
     };
-    pd.setup(in_pd_region,
-             [this](const Point<dim> &x) { return method->particle_weight(blending(x)); });
+    pd.setup(
+      in_pd_region,
+      [this](const Point<dim> &x) { return method->particle_weight(blending(x)); },
+      log_summary);
+  }
+
+  template <int dim>
+  CoupledRegions<dim>
+  CoupledProblem<dim>::coupled_regions()
+  {
+    CoupledRegions<dim> regions;
+    regions.fe             = &fe;
+    regions.particles      = &pd.particles();
+    regions.material       = &pd.material();
+    regions.density        = pd.density();
+    regions.layout         = layout;
+    regions.blending       = [this](const Point<dim> &x) { return blending(x); };
+    regions.blending_entry = "<Coupling/Blending function> = <" + blending_expression + ">" +
+                             (adaptive.enabled() ? " with <Coupling/Adaptive region>" : "");
+    regions.log = &log;
+    return regions;
   }
 
   template <int dim>
@@ -342,16 +384,27 @@ namespace perideal
     fe.setup([this](const Point<dim> &x) { return method->fe_weight(blending(x)); });
     setup_particles();
     check_blending();
-    CoupledRegions<dim> regions;
-    regions.fe             = &fe;
-    regions.particles      = &pd.particles();
-    regions.material       = &pd.material();
-    regions.density        = pd.density();
-    regions.layout         = layout;
-    regions.blending       = [this](const Point<dim> &x) { return blending(x); };
-    regions.blending_entry = "<Coupling/Blending function> = <" + blending_expression + ">";
-    regions.log            = &log;
-    method->initialize(regions);
+    if (adaptive.enabled())
+      {
+        AssertThrow(std::isfinite(pd.critical_stretch()),
+                    ExcMessage("<Coupling/Adaptive region/Criterion> compares with the critical "
+                               "stretch and follows broken bonds: <Material/Damage model> = "
+                               "none has neither; choose critical stretch."));
+        for (const auto &seed : adaptive.seed_points())
+          {
+            std::ostringstream point;
+            point << seed;
+            AssertThrow(pd.in_body(seed),
+                        ExcMessage("The point " + point.str() +
+                                   " of <Coupling/Adaptive region/Initial seeds> lies outside the "
+                                   "body (<Discretization/Body>)."));
+          }
+        adaptive.check_conditions_outside(fe,
+                                          adaptive.seed_points(),
+                                          "With <Coupling/Adaptive region/Initial seeds>");
+        precrack_damage = damage_index(pd.particles());
+      }
+    method->initialize(coupled_regions());
 
     state = std::make_unique<CoupledState<dim>>(comm, log, settings, layout, pd, fe, *method);
     state->setup();
@@ -360,6 +413,13 @@ namespace perideal
       log << fe_summary << std::endl;
     if (is_root && state->is_coupled())
       log << "Coupling: " << method_name << ", " << coupling_summary << std::endl;
+    if (adaptive.enabled())
+      {
+        state->adapt_regions = [this](const unsigned int step, const double time) {
+          return convert_regions(step, time);
+        };
+        state->adaptation_interval = adaptive.check_interval();
+      }
     solver = create_solver<dim>(settings.solver_type, control);
     solver->setup(*state);
 
@@ -375,6 +435,16 @@ namespace perideal
     list.push_back(std::make_unique<FieldOutput<dim>>());
     postprocessors = std::make_unique<Postprocessors<dim>>(std::move(list));
     postprocessors->initialize(*state);
+  }
+
+  template <int dim>
+  std::array<long, dim>
+  CoupledProblem<dim>::lattice_key(const Point<dim> &x) const
+  {
+    std::array<long, dim> key;
+    for (unsigned int d = 0; d < dim; ++d)
+      key[d] = std::lround(x[d] / pd.discretization().spacing * 2.);
+    return key;
   }
 
   template <int dim>

@@ -146,6 +146,13 @@ namespace perideal
     local_work       = 0.;
     local_dissipated = 0.;
     pd.particles().bonds().newly_broken.clear();
+    carry_work();
+  }
+
+  template <int dim>
+  void
+  CoupledState<dim>::carry_work()
+  {
     previous_U             = U;
     previous_fe_load       = fe_load;
     previous_u             = u;
@@ -208,6 +215,46 @@ namespace perideal
   CoupledState<dim>::dissipated_energy() const
   {
     return Utilities::MPI::sum(local_dissipated, comm);
+  }
+
+  template <int dim>
+  typename CoupledState<dim>::KineticEnergy
+  CoupledState<dim>::kinetic_energy() const
+  {
+    const auto   &mask = fe.prescribed_mask();
+    KineticEnergy energy;
+    for (unsigned int k = 0; k < V.locally_owned_size(); ++k)
+      {
+        const double e = 0.5 * mass.local_element(k) * std::pow(V.local_element(k), 2);
+        energy.total += e;
+        if (mask[k])
+          energy.prescribed += e;
+      }
+    const unsigned int nc = n_components();
+    for (unsigned int i = 0; i < pd.particles().n_owned(); ++i)
+      for (unsigned int c = 0; c < nc; ++c)
+        {
+          const double e =
+            0.5 * particle_mass[i] * inertia_ratio[c] * std::pow(v.local_element(i * nc + c), 2);
+          if (motion[i * nc + c] != Motion::follows_fe)
+            energy.total += e;
+          if (motion[i * nc + c] == Motion::prescribed)
+            energy.prescribed += e;
+        }
+    energy.total      = Utilities::MPI::sum(energy.total, comm);
+    energy.prescribed = Utilities::MPI::sum(energy.prescribed, comm);
+    return energy;
+  }
+
+  template <int dim>
+  CoupledEnergy
+  CoupledState<dim>::strain_energy() const
+  {
+    const auto &volume          = pd.particles().volumes();
+    double      particle_energy = 0.;
+    for (unsigned int i = 0; i < pd.particles().n_owned(); ++i)
+      particle_energy += energy_density[i] * volume[i];
+    return method.strain_energy(U, Utilities::MPI::sum(particle_energy, comm));
   }
 
   template <int dim>

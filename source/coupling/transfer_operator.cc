@@ -281,8 +281,23 @@ namespace perideal
     if (owned_rows.size() > 0 && dof_handler.n_dofs() > 0)
       SparsityTools::distribute_sparsity_pattern(dsp, owned_rows, comm, touched_rows);
     P.reinit(owned_rows, dof_handler.locally_owned_dofs(), dsp, comm);
-    for (const auto &e : entries)
-      P.add(e.row, e.column, e.value);
+    // Row by row (one call per entry costs more than the point search).
+    std::sort(entries.begin(), entries.end(), [](const Entry &a, const Entry &b) {
+      return a.row < b.row || (a.row == b.row && a.column < b.column);
+    });
+    std::vector<types::global_dof_index> columns;
+    std::vector<double>                  values;
+    for (std::size_t begin = 0, end = 0; begin < entries.size(); begin = end)
+      {
+        columns.clear();
+        values.clear();
+        for (end = begin; end < entries.size() && entries[end].row == entries[begin].row; ++end)
+          {
+            columns.push_back(entries[end].column);
+            values.push_back(entries[end].value);
+          }
+        P.add(entries[begin].row, columns.size(), columns.data(), values.data());
+      }
     P.compress(VectorOperation::add);
 
     // Slaved rows sum to one (partition of unity, one cell per particle); empty rows are free.

@@ -100,13 +100,28 @@ namespace perideal
   void
   FERegion<dim>::setup(const WeightFunction &weight)
   {
-    fe_weight = has_mesh() ? weight : [](const Point<dim> &) { return 0.; };
     make_mesh();
     check_held_point();
 
     const unsigned int n_components = layout.n_components();
     fe_collection.push_back(FESystem<dim>(FE_Q<dim>(degree), n_components));
     fe_collection.push_back(FESystem<dim>(FE_Nothing<dim>(), n_components));
+    distribute(weight);
+  }
+
+  template <int dim>
+  void
+  FERegion<dim>::reweight(const WeightFunction &weight)
+  {
+    Assert(has_mesh() && fe_collection.size() == 2, ExcMessage("Call setup() first."));
+    distribute(weight);
+  }
+
+  template <int dim>
+  void
+  FERegion<dim>::distribute(const WeightFunction &weight)
+  {
+    fe_weight = has_mesh() ? weight : [](const Point<dim> &) { return 0.; };
     if (fe_weight)
       {
         // A cell carries no FE unknowns if the weight vanishes at its vertices and at its
@@ -198,6 +213,8 @@ namespace perideal
   // The members defined in this file (the class is instantiated in fe_region.cc).
 #define PERIDEAL_INSTANTIATE(dim)                                                  \
   template void FERegion<dim>::setup(const WeightFunction &);                      \
+  template void FERegion<dim>::reweight(const WeightFunction &);                   \
+  template void FERegion<dim>::distribute(const WeightFunction &);                 \
   template bool FERegion<dim>::has_hanging_nodes() const;                          \
   template void FERegion<dim>::interpolate(const Function<dim> &, Vector &) const; \
   template std::vector<std::vector<bool>> FERegion<dim>::component_masks() const;  \

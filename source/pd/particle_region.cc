@@ -166,6 +166,7 @@ namespace perideal
     regions.parse_parameters(prm);
     for (const auto &name : body_regions)
       regions.get(name, "Discretization/Body");
+    body = regions.union_of(body_regions, "Discretization/Body");
 
     prm.enter_subsection("Pre-cracks");
     pre_cracks = parse_pre_cracks<dim>(prm.get("Cracks"));
@@ -211,17 +212,16 @@ namespace perideal
   template <int dim>
   void
   ParticleRegion<dim>::setup(const std::function<bool(const Point<dim> &)>   &keep,
-                             const std::function<double(const Point<dim> &)> &energy_weight)
+                             const std::function<double(const Point<dim> &)> &energy_weight,
+                             const bool                                       log_summary)
   {
     if (has_body())
       {
-        const auto in_body = regions.union_of(body_regions, "Discretization/Body");
         particle_system.generate(settings,
                                  regions.bounding_box_of(body_regions, "Discretization/Body"),
-                                 keep ?
-                                   std::function<bool(const Point<dim> &)>(
-                                     [&](const Point<dim> &x) { return keep(x) && in_body(x); }) :
-                                   std::function<bool(const Point<dim> &)>(in_body),
+                                 keep ? std::function<bool(const Point<dim> &)>(
+                                          [&](const Point<dim> &x) { return keep(x) && body(x); }) :
+                                        body,
                                  pre_cracks,
                                  regions.union_of(no_fail_regions, "Material/No-fail regions"));
         // A coupled problem may leave the PD region empty (beta = 0 on the whole body).
@@ -251,11 +251,18 @@ namespace perideal
     stable_dt = model->stable_time_step(particle_system, rho);
 
     const auto n_bonds = particle_system.n_global_bonds();
-    if (is_root && has_body())
+    if (is_root && has_body() && log_summary)
       log << "Particles: " << particle_system.n_global() << "\n"
           << "Bonds: " << n_bonds << "\n"
           << "Material: " << model->summary() << "\n"
           << "Critical stretch: " << s_critical << std::endl;
+  }
+
+  template <int dim>
+  bool
+  ParticleRegion<dim>::in_body(const Point<dim> &x) const
+  {
+    return body && body(x);
   }
 
   template <int dim>

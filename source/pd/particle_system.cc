@@ -98,9 +98,20 @@ namespace perideal
           first_point[d][k] = std::min(first_point[d][k], first_point[d][k + 1]);
       }
 
-    parallel::distributed::Triangulation<dim> background(communicator);
-    std::vector<unsigned int>                 repetitions(n_bins.begin(), n_bins.end());
-    GridGenerator::subdivided_hyper_rectangle(background, repetitions, lower, upper);
+    // The bins as a distributed mesh, kept while the lattice box and the bins stay (a PD region
+    // that grows during a run is generated again; building p4est's forest costs more than the
+    // rest of the set-up).
+    std::vector<double> bins_key(lower.begin_raw(), lower.end_raw());
+    bins_key.insert(bins_key.end(), upper.begin_raw(), upper.end_raw());
+    bins_key.insert(bins_key.end(), n_bins.begin(), n_bins.end());
+    if (!background_bins || bins_key != background_key)
+      {
+        background_bins = std::make_unique<parallel::distributed::Triangulation<dim>>(communicator);
+        const std::vector<unsigned int> repetitions(n_bins.begin(), n_bins.end());
+        GridGenerator::subdivided_hyper_rectangle(*background_bins, repetitions, lower, upper);
+        background_key = bins_key;
+      }
+    const auto &background = *background_bins;
 
     // The lattice points of the bin of one cell, in a fixed order.
     const auto points_of_cell = [&](const typename Triangulation<dim>::active_cell_iterator &cell,

@@ -154,6 +154,87 @@ namespace coupling_tests
            "\n  end\nend\n" + torsion_material(model);
   }
 
+  /**
+   * The strip of the tests of the adaptive PD region (adaptive_region_01, its bad input): 100 x
+   * 20 mm, free, plane strain PMB at dx = 1 mm with FE elasticity of the same material on
+   * @p cells ("nx, ny") Q1 cells, the blending function @p beta, <Coupling/Adaptive region> with
+   * @p criterion (5 % of the critical stretch 0.01 for 'principal strain', checked every 5 steps)
+   * and the initial seeds @p seeds, a pulse of velocity 20 exp(-((x - 20 mm) / 6 mm)^2) m/s
+   * along x, 120 steps of 0.1 us, no HDF5 output, results in results/.
+   */
+  inline std::string
+  adaptive_strip(const std::string &cells,
+                 const std::string &beta,
+                 const std::string &criterion,
+                 const std::string &seeds)
+  {
+    return substitute(
+      R"(
+set Dimension = 2
+subsection Discretization
+  set Lattice spacing = 1e-3
+  set Horizon factor  = 3.015
+  set Thickness       = 1
+  set Body            = strip
+end
+subsection Regions
+  set Names = strip
+  subsection strip
+    set Shape        = box
+    set Lower corner = 0, 0
+    set Upper corner = 0.1, 0.02
+  end
+end
+subsection Material
+  set Model             = bond based
+  set Planar assumption = plane strain
+  set Density           = 8000
+  set Damage model      = critical stretch
+  subsection bond based
+    set Young's modulus = 191e9
+  end
+  subsection critical stretch
+    set Critical stretch = 0.01
+  end
+end
+subsection Finite elements
+  set Generator           = subdivided_hyper_rectangle
+  set Generator arguments = CELLS : 0, 0 : 0.1, 0.02 : true
+  set Density             = 8000
+  subsection Elasticity
+    set Young's modulus = 191e9
+    set Poisson's ratio = 0.25
+  end
+end
+subsection Coupling
+  set Method            = blended
+  set Blending function = BETA
+  subsection Adaptive region
+    set Criterion       = CRITERION
+    set Strain fraction = 0.05
+    set Check interval  = 5
+    set Core radius     = 0.009
+    set Ramp width      = 0.006
+    set Damage distance = 0.0045
+    set Initial seeds   = SEEDS
+  end
+end
+subsection Initial conditions
+  set Velocity = 20 * exp(-((x - 0.02) / 0.006)^2); 0
+end
+subsection Time stepping
+  set End time  = 1.2e-5
+  set Time step = 1e-7
+end
+subsection Output
+  set Directory  = results
+  set Write HDF5 = false
+  set Progress   = false
+end
+)",
+      {{"CELLS", cells}, {"BETA", beta}, {"CRITERION", criterion}, {"SEEDS", seeds}});
+  }
+
   /// "ok" if @p condition holds, "FAILED" otherwise.
   inline const char *
   ok(const bool condition)

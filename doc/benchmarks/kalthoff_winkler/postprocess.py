@@ -16,8 +16,9 @@ tip at the last output time.
 
 Crack angle (defined so that it does not depend on branches or on the damage of the notch
 faces):
-  1. "new damage" = damage(t) - damage(t = 0): the pre-cracked notch faces start with a damage
-     index of about 0.3 that is not crack growth;
+  1. "new damage" = damage(t) - the particle's damage in the first output that has it (t = 0,
+     or the output after the adaptive PD region created it): the pre-cracked notch faces start
+     with a damage index of about 0.3 that is not crack growth;
   2. crack particles: new damage > threshold (0.35), in the half plane beyond the upper notch
      (y >= y_tip, the side the experiment's crack runs to) and not behind the tip
      (x >= x_tip - 3 dx);
@@ -204,14 +205,15 @@ def main():
     plot_energies(stats, os.path.join(args.results, "energies.png"))
 
     series = read_series(args.results, args.base)
-    nodes0, damage0 = read_particles(series[0][1])
+    nodes0, _ = read_particles(series[0][1])
     dx = lattice_spacing(nodes0)
     history = []
     final = None
+    first_damage = {}  # per lattice point: its damage when it first appears
     for time, path in series:
         nodes, damage, disp = read_particles(path, with_displacement=True)
-        assert np.allclose(nodes, nodes0), "particle sets differ between output files"
-        new = damage - damage0
+        keys = map(tuple, np.round(nodes / dx * 2).astype(np.int64).tolist())
+        new = damage - np.array([first_damage.setdefault(k, d) for k, d in zip(keys, damage)])
         upper = measure_crack(nodes, new, tip, dx, args.threshold, +1.0)
         lower = measure_crack(nodes, new, lower_tip, dx, args.threshold, -1.0)
         history.append((time, upper, lower))

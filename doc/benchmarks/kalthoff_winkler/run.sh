@@ -1,15 +1,17 @@
 #!/usr/bin/env bash
 # End to end: install dependencies if missing (as root), build PeriDeal, run the Kalthoff-Winkler
 # benchmark on 2 MPI ranks, post-process (damage map, energies, crack angle) and say where the
-# results are. By default the flagship: the coupled FE + PD variant (kalthoff_coupled.prm) and
-# its all-PD reference with the same model and lattice (kalthoff_pd_pmb.prm), then the ratio of
-# their wall times and both crack angles.
+# results are. By default the flagship: the coupled FE + PD variant whose PD region follows the
+# cracks from two disks at the notch tips (kalthoff_adaptive.prm), the coupled variant with PD in
+# a band placed on the known crack path (kalthoff_coupled.prm) and their all-PD reference with
+# the same model and lattice (kalthoff_pd_pmb.prm), then the three crack angles and the ratios of
+# the wall times to the all-PD run's.
 #
 # Usage: run.sh [--dx SPACING] [--np N] [--prm FILE] [--app NAME]
 #   --dx SPACING  lattice spacing [m] instead of the 1e-3 of the parameter files (horizon =
 #                 3.015 dx; the output intervals are scaled to keep ~25 snapshots), e.g.
-#                 --dx 1e-3 (10 s on 2 cores) or --dx 5e-4 (20 s); the flagship pair runs at
-#                 2.5e-4 unless --dx or --prm is given (about 1 min; the coupled band of PD
+#                 --dx 1e-3 (10 s on 2 cores) or --dx 5e-4 (20 s); the flagship runs at
+#                 2.5e-4 unless --dx or --prm is given (a few minutes; the coupled band of PD
 #                 needs dx <= 0.5 mm, see kalthoff_coupled.prm);
 #   --np N        MPI ranks (default 2);
 #   --prm FILE    run only this parameter file of the case (e.g. kalthoff_pd.prm, the all-PD
@@ -23,7 +25,8 @@ set -euo pipefail
 here=$(cd "$(dirname "$0")" && pwd)
 top=$(cd "$here/../../.." && pwd)
 
-dx="" np=2 prms=("$here/kalthoff_coupled.prm" "$here/kalthoff_pd_pmb.prm") app=perideal-solid
+flagship=("$here/kalthoff_adaptive.prm" "$here/kalthoff_coupled.prm" "$here/kalthoff_pd_pmb.prm")
+dx="" np=2 prms=("${flagship[@]}") app=perideal-solid
 while [ $# -gt 0 ]; do
   case "$1" in
     --dx) dx=$2; shift 2 ;;
@@ -54,8 +57,8 @@ fi
 "$top/contrib/build.sh"
 build=${PERIDEAL_BUILD_DIR:-$top/build}
 
-# The flagship pair at the resolution its coupled region needs.
-if [ -z "$dx" ] && [ "${prms[0]}" = "$here/kalthoff_coupled.prm" ] && [ ${#prms[@]} -eq 2 ]; then
+# The flagship at the resolution its coupled band needs.
+if [ -z "$dx" ] && [ ${#prms[@]} -eq 3 ]; then
   dx=2.5e-4
 fi
 results_top=${PERIDEAL_RESULTS_DIR:-$top/results/kalthoff_winkler${dx:+_dx$dx}}
@@ -103,13 +106,14 @@ done
 
 echo "Summary (experiment: about 70 deg):"
 printf '  %s\n' "${summary[@]}"
-if [ ${#prms[@]} -eq 2 ]; then
+if [ ${#prms[@]} -eq 3 ]; then
   "$python" - "$results_top" <<'PY'
 import re, sys
 def wall(name):
     log = open(f"{sys.argv[1]}/{name}/run.log").read()
     return float(re.search(r"Wall time of the run: ([\d.]+)", log).group(1))
-c, p = wall("kalthoff_coupled"), wall("kalthoff_pd_pmb")
-print(f"  wall time coupled / all-PD: {c / p:.2f}")
+p = wall("kalthoff_pd_pmb")
+for name in ("kalthoff_adaptive", "kalthoff_coupled"):
+    print(f"  wall time {name} / all-PD: {wall(name) / p:.2f}")
 PY
 fi

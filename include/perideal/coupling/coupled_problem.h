@@ -8,6 +8,7 @@
 #include <deal.II/base/parameter_handler.h>
 
 #include <perideal/base/problem_settings.h>
+#include <perideal/coupling/adaptive_region.h>
 #include <perideal/coupling/checkpoint.h>
 #include <perideal/coupling/coupled_state.h>
 #include <perideal/coupling/coupling_method.h>
@@ -17,6 +18,8 @@
 #include <perideal/fem/fe_region.h>
 #include <perideal/pd/particle_region.h>
 
+#include <array>
+#include <functional>
 #include <memory>
 #include <ostream>
 #include <string>
@@ -120,9 +123,44 @@ namespace perideal
     void
     check_blending() const;
 
-    /// The particles: where the method's particle weight is positive and a horizon around.
+    /**
+     * @brief The particles: where the method's particle weight is positive and a horizon
+     * around; the summary lines in the log if @p log_summary.
+     */
     void
-    setup_particles();
+    setup_particles(const bool log_summary = true);
+
+    /// What the coupling method works on (CouplingMethod::initialize()).
+    CoupledRegions<dim>
+    coupled_regions();
+
+    /**
+     * @brief The adaptive PD region of an explicit run (CoupledState::adapt_regions) after step
+     * @p step at @p time: the criterion's seeds, if any, grow the PD region; the particles, the
+     * FE space, the coupling and the state are rebuilt and the unknowns carried over (free
+     * particles keep theirs and their broken bonds, the others take the FE field's, the FE dofs
+     * keep their values cell by cell). Returns whether the regions changed. In
+     * coupled_problem_conversion.cc.
+     */
+    bool
+    convert_regions(const unsigned int step, const double time);
+
+    /// The key of a lattice point (its coordinates in half spacings).
+    std::array<long, dim>
+    lattice_key(const dealii::Point<dim> &x) const;
+
+    /// A hash of lattice_key().
+    struct LatticeKeyHash
+    {
+      std::size_t
+      operator()(const std::array<long, dim> &key) const
+      {
+        std::size_t h = 0;
+        for (const long k : key)
+          h = h * 1000003u ^ std::hash<long>()(k);
+        return h;
+      }
+    };
 
     MPI_Comm      comm;
     std::ostream &log;
@@ -132,12 +170,17 @@ namespace perideal
     /// <Solver/Control>: how a quasi-static run advances its load, and its load point.
     QuasiStaticControl control;
     /// The unknowns of a point (the particles' and the FE region's).
-    FieldLayout                                  layout;
-    ParticleRegion<dim>                          pd;
-    FERegion<dim>                                fe;
-    std::string                                  method_name;
-    std::unique_ptr<CouplingMethod<dim>>         method;
-    std::string                                  blending_expression;
+    FieldLayout                          layout;
+    ParticleRegion<dim>                  pd;
+    FERegion<dim>                        fe;
+    std::string                          method_name;
+    std::unique_ptr<CouplingMethod<dim>> method;
+    std::string                          blending_expression;
+    /// <Coupling/Adaptive region>: where the PD region grows during an explicit run.
+    AdaptiveRegion<dim> adaptive;
+    /// The damage index of each owned particle with only the pre-cracks' bonds broken (runs
+    /// with an adaptive region).
+    std::vector<double>                          precrack_damage;
     std::unique_ptr<dealii::FunctionParser<dim>> beta;
     std::shared_ptr<dealii::FunctionParser<dim>> exact_displacement;
     double                                       exact_tolerance = 0.;

@@ -12,6 +12,7 @@
 #include <perideal/fem/fe_region.h>
 #include <perideal/pd/particle_region.h>
 
+#include <functional>
 #include <ostream>
 #include <string>
 #include <vector>
@@ -100,6 +101,13 @@ namespace perideal
     void
     accumulate_work();
 
+    /**
+     * @brief After the regions changed (a conversion of the adaptive region): make the current
+     * state the previous one of the work of the loads, keeping the sums so far.
+     */
+    void
+    carry_work();
+
     /// The work of the loads since start_work(), summed over the ranks [J].
     double
     external_work() const;
@@ -115,6 +123,27 @@ namespace perideal
     /// The energy the broken bonds released since start_work(), summed over the ranks [J].
     double
     dissipated_energy() const;
+
+    /// Kinetic energy of an explicit run, and the part of it on prescribed dofs and components.
+    struct KineticEnergy
+    {
+      double total = 0., prescribed = 0.;
+    };
+
+    /**
+     * @brief The kinetic energy of the FE dofs and of the particle components that do not
+     * follow the FE field (lumped masses of the method), summed over the ranks [J].
+     */
+    KineticEnergy
+    kinetic_energy() const;
+
+    /**
+     * @brief The strain energy of an explicit run, each part of the body counted once by the
+     * method, from the FE displacement and the particles' energy density of the last force
+     * evaluation that computed it, summed over the ranks [J].
+     */
+    CoupledEnergy
+    strain_energy() const;
 
     /// The largest particle displacement (norm of the translations) over the ranks [m].
     double
@@ -207,6 +236,18 @@ namespace perideal
     ParticleVector u, v, a, internal_force, external_force;
     /// The particles' strain-energy density (per owned particle) [J/m^3].
     std::vector<double> energy_density;
+
+    /**
+     * @brief Explicit runs with an adaptive PD region (<Coupling/Adaptive region>; empty
+     * otherwise), set by CoupledProblem: called every adaptation_interval steps after the
+     * postprocessors, with the step and the time, it grows the PD region if the criterion asks
+     * for it and carries the unknowns over; it returns whether the regions changed (then the
+     * solver renews what it derives from them: masses, forces, the previous state of the work).
+     */
+    std::function<bool(unsigned int, double)> adapt_regions;
+    unsigned int                              adaptation_interval = 0;
+    /// The change of kinetic plus strain energy at the conversions so far (summed) [J].
+    double conversion_energy = 0.;
 
   private:
     // The state at the previous accumulate_work() and the work done so far on this rank.

@@ -130,6 +130,15 @@ namespace perideal
     setup(const WeightFunction &weight = WeightFunction());
 
     /**
+     * @brief After setup(): the FE space, sparsity, stiffness and mass for the new weight
+     * @p weight on the same mesh (an adaptive PD region that grew: cells where it vanishes lose
+     * their unknowns). The cells keep their shape functions, so the caller carries dof values
+     * over cell by cell (get_dof_values() before, set_dof_values() after).
+     */
+    void
+    reweight(const WeightFunction &weight);
+
+    /**
      * @brief Prescribe the dofs @p dofs (global indices, the same list on every rank; each
      * rank uses the ones it owns) to @p values, like the dofs of a 'displacement' ('value')
      * condition: prescribe() sets them (at every time), prescribed_mask() holds them and
@@ -308,6 +317,10 @@ namespace perideal
      */
     void
     make_mesh();
+
+    /// The FE space, sparsity, conditions and matrices for the weight @p weight.
+    void
+    distribute(const WeightFunction &weight);
     /**
      * @brief Declare the entries of the boundary conditions @p names; @p prm is in
      * <Finite elements/Boundary conditions>.

@@ -63,11 +63,18 @@ namespace perideal
      * @brief Generate the particles and bonds, initialize the model, find the stable time step.
      * Particles fill the lattice points of the body that also satisfy @p keep (if given; a
      * coupled problem keeps only the PD region); @p energy_weight (if given) weights each
-     * particle's energy (ParticleSystem::set_energy_weights()).
+     * particle's energy (ParticleSystem::set_energy_weights()). Writes the summary lines
+     * (particles, bonds, material, critical stretch) to the log if @p log_summary. May be called
+     * again (a PD region that grew): everything is rebuilt, the bonds intact but pre-cracks.
      */
     void
     setup(const std::function<bool(const dealii::Point<dim> &)>   &keep          = {},
-          const std::function<double(const dealii::Point<dim> &)> &energy_weight = {});
+          const std::function<double(const dealii::Point<dim> &)> &energy_weight = {},
+          const bool                                               log_summary   = true);
+
+    /// Whether a point lies in the body (<Discretization/Body>; after parse_parameters()).
+    bool
+    in_body(const dealii::Point<dim> &x) const;
 
     /// Whether <Discretization/Body> names regions (otherwise there are no particles).
     bool
@@ -129,12 +136,14 @@ namespace perideal
     PlanarAssumption                       planar             = PlanarAssumption::three_dimensional;
     RegionCollection<dim>                  regions;
     std::vector<std::string>               body_regions;
-    std::vector<std::string>               no_fail_regions;
-    std::vector<PreCrack<dim>>             pre_cracks;
-    std::unique_ptr<MaterialModel<dim>>    model;
-    std::unique_ptr<DamageModel<dim>>      damage;
-    double                                 rho = 0.;
-    BoundaryConditions<dim>                conditions;
+    /// The union of the body regions (empty without a body).
+    std::function<bool(const dealii::Point<dim> &)> body;
+    std::vector<std::string>                        no_fail_regions;
+    std::vector<PreCrack<dim>>                      pre_cracks;
+    std::unique_ptr<MaterialModel<dim>>             model;
+    std::unique_ptr<DamageModel<dim>>               damage;
+    double                                          rho = 0.;
+    BoundaryConditions<dim>                         conditions;
 
     // What setup() computes.
     ParticleSystem<dim> particle_system;

@@ -7,6 +7,7 @@
 #include <deal.II/base/bounding_box.h>
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/point.h>
+#include <deal.II/distributed/tria.h>
 
 #include <perideal/base/linear_algebra.h>
 #include <perideal/pd/pre_crack.h>
@@ -233,10 +234,14 @@ namespace perideal
     }
 
   private:
-    MPI_Comm                                                           communicator;
-    Settings                                                           parameters;
-    unsigned int                                                       n_owned_particles  = 0;
-    dealii::types::global_dof_index                                    n_global_particles = 0;
+    MPI_Comm                        communicator;
+    Settings                        parameters;
+    unsigned int                    n_owned_particles  = 0;
+    dealii::types::global_dof_index n_global_particles = 0;
+    /// The background bins (one cell per bin, at least a bond long) and the box and bin counts
+    /// they were made for.
+    std::unique_ptr<dealii::parallel::distributed::Triangulation<dim>> background_bins;
+    std::vector<double>                                                background_key;
     std::vector<dealii::Point<dim>>                                    reference_positions;
     std::vector<double>                                                flat_coordinates;
     std::vector<double>                                                particle_volumes;

@@ -19,10 +19,7 @@ namespace perideal
   {
     if (!data.write_statistics)
       return;
-    using Motion            = typename CoupledState<dim>::Motion;
-    const auto        &ps   = state.pd.particles();
-    const unsigned int nc   = state.n_components();
-    const double       work = state.external_work();
+    const double work = state.external_work();
     // The energy of the broken bonds, for runs that can break them.
     const bool    breaks     = state.pd.has_body() && std::isfinite(state.pd.critical_stretch());
     const double  dissipated = state.dissipated_energy();
@@ -79,50 +76,34 @@ namespace perideal
       {
         // Kinetic energy of the FE dofs and the components that do not follow the FE field;
         // that of prescribed dofs and components separately (EnergyBalance counts it as work).
-        const auto &mask    = state.fe.prescribed_mask();
-        double      kinetic = 0., prescribed_kinetic = 0., particle_energy = 0.;
-        for (unsigned int k = 0; k < state.V.locally_owned_size(); ++k)
-          {
-            const double e =
-              0.5 * state.mass.local_element(k) * std::pow(state.V.local_element(k), 2);
-            kinetic += e;
-            if (mask[k])
-              prescribed_kinetic += e;
-          }
-        const auto &volume = ps.volumes();
-        for (unsigned int i = 0; i < ps.n_owned(); ++i)
-          {
-            for (unsigned int c = 0; c < nc; ++c)
-              {
-                const double e = 0.5 * state.particle_mass[i] * state.inertia_ratio[c] *
-                                 std::pow(state.v.local_element(i * nc + c), 2);
-                if (state.motion[i * nc + c] != Motion::follows_fe)
-                  kinetic += e;
-                if (state.motion[i * nc + c] == Motion::prescribed)
-                  prescribed_kinetic += e;
-              }
-            particle_energy += state.energy_density[i] * volume[i];
-          }
-        kinetic            = Utilities::MPI::sum(kinetic, state.comm);
-        prescribed_kinetic = Utilities::MPI::sum(prescribed_kinetic, state.comm);
-        const CoupledEnergy energy =
-          state.method.strain_energy(state.U, Utilities::MPI::sum(particle_energy, state.comm));
-        const double strain = energy.fe + energy.particles;
-        balance.record(data.step, kinetic, strain, work, prescribed_kinetic, dissipated);
+        const auto          kinetic = state.kinetic_energy();
+        const CoupledEnergy energy  = state.strain_energy();
+        const double        strain  = energy.fe + energy.particles;
+        balance.record(data.step,
+                       kinetic.total,
+                       strain,
+                       work,
+                       kinetic.prescribed,
+                       dissipated,
+                       state.conversion_energy);
         balance.check_stable(data.time, state.stable_dt);
-        statistics.add_value("kinetic_energy", kinetic);
+        statistics.add_value("kinetic_energy", kinetic.total);
         statistics.add_value("strain_energy", strain);
         statistics.add_value("external_work", balance.work());
         if (breaks)
           statistics.add_value("dissipated_energy", dissipated);
+        if (state.adapt_regions)
+          statistics.add_value("conversion_energy", state.conversion_energy);
         statistics.add_value("energy_error", balance.error());
         if (state.is_root && data.final_row)
           {
-            log << "Kinetic energy: " << kinetic << " J\n"
+            log << "Kinetic energy: " << kinetic.total << " J\n"
                 << "Strain energy: " << strain << " J\n"
                 << "External work: " << balance.work() << " J\n";
             if (breaks)
               log << "Dissipated energy: " << dissipated << " J\n";
+            if (state.adapt_regions)
+              log << "Energy change of the conversions: " << state.conversion_energy << " J\n";
             log << "Energy error: " << balance.error() << " J\n";
           }
       }

@@ -19,6 +19,26 @@ namespace perideal
   void
   ExplicitDynamics<dim>::setup(CoupledState<dim> &state)
   {
+    derive_from_regions(state);
+    const auto &ps  = state.pd.particles();
+    state.time_step = ParameterUtilities::choose_time_step(state.settings.time_step,
+                                                           state.settings.safety_factor,
+                                                           state.stable_dt);
+    if (state.is_root)
+      {
+        state.log << "Stable time step:";
+        if (state.fe.n_dofs() > 0)
+          state.log << " FE " << fe_dt << " s" << (ps.n_global() > 0 ? "," : "");
+        if (ps.n_global() > 0)
+          state.log << " PD " << pd_dt << " s";
+        state.log << std::endl;
+      }
+  }
+
+  template <int dim>
+  void
+  ExplicitDynamics<dim>::derive_from_regions(CoupledState<dim> &state)
+  {
     using Motion          = typename CoupledState<dim>::Motion;
     const unsigned int nc = state.n_components();
     auto              &ps = state.pd.particles();
@@ -35,22 +55,46 @@ namespace perideal
         acceleration_factor[k] =
           volume[k / nc] / (state.particle_mass[k / nc] * state.inertia_ratio[k % nc]);
 
-    // The time step: the smaller of the two regions' stable steps.
-    const double fe_dt = state.fe.stable_time_step(&state.mass);
-    const double pd_dt = state.pd.stable_time_step();
-    state.stable_dt    = std::min(fe_dt, pd_dt);
-    state.time_step    = ParameterUtilities::choose_time_step(state.settings.time_step,
-                                                           state.settings.safety_factor,
-                                                           state.stable_dt);
+    // The stable step: the smaller of the two regions'.
+    fe_dt           = state.fe.stable_time_step(&state.mass);
+    pd_dt           = state.pd.stable_time_step();
+    state.stable_dt = std::min(fe_dt, pd_dt);
+  }
+
+  template <int dim>
+  void
+  ExplicitDynamics<dim>::adapt_regions(CoupledState<dim> &state,
+                                       const unsigned int step,
+                                       const double       time)
+  {
+    // The energies before (the energy density is current: a check step computes it).
+    const auto   kinetic_before = state.kinetic_energy();
+    const auto   strain_before  = state.strain_energy();
+    const double before         = kinetic_before.total + strain_before.fe + strain_before.particles;
+    if (!state.adapt_regions(step, time))
+      return;
+    derive_from_regions(state);
+    AssertThrow(state.time_step <= state.stable_dt,
+                ExcMessage("The conversion at t = " + ParameterUtilities::format_number(time) +
+                           " s lowered the stable time step to " +
+                           ParameterUtilities::format_number(state.stable_dt) +
+                           " s, below the step of the run, " +
+                           ParameterUtilities::format_number(state.time_step) +
+                           " s: lower <Time stepping/Safety factor> (or <Time step>)."));
+    compute_acceleration(state, time, true);
+    if (state.settings.damping > 0.)
+      add_damping(state);
+    state.carry_work();
+    const auto   kinetic = state.kinetic_energy();
+    const auto   strain  = state.strain_energy();
+    const double after   = kinetic.total + strain.fe + strain.particles;
+    state.conversion_energy += after - before;
     if (state.is_root)
-      {
-        state.log << "Stable time step:";
-        if (state.fe.n_dofs() > 0)
-          state.log << " FE " << fe_dt << " s" << (ps.n_global() > 0 ? "," : "");
-        if (ps.n_global() > 0)
-          state.log << " PD " << pd_dt << " s";
-        state.log << std::endl;
-      }
+      state.log << "  energy before " << before << " J (kinetic " << kinetic_before.total
+                << ", strain " << strain_before.fe + strain_before.particles << "), after " << after
+                << " J (kinetic " << kinetic.total << ", strain " << strain.fe + strain.particles
+                << "), change " << after - before << " J, relative "
+                << (before != 0. ? (after - before) / before : 0.) << std::endl;
   }
 
   template <int dim>
@@ -240,7 +284,11 @@ namespace perideal
         data.write_statistics = (step % settings.statistics_interval == 0 || data.final_row);
         data.write_fields =
           data.final_row || (settings.output_interval > 0 && step % settings.output_interval == 0);
-        compute_acceleration(state, time + dt, data.write_statistics || data.write_fields);
+        const bool check_regions =
+          state.adapt_regions && !data.final_row && step % state.adaptation_interval == 0;
+        compute_acceleration(state,
+                             time + dt,
+                             data.write_statistics || data.write_fields || check_regions);
         if (settings.damping > 0.)
           add_damping(state);
         V.add(0.5 * dt, A);
@@ -254,6 +302,8 @@ namespace perideal
         if (data.write_statistics)
           state.fe_support.equ(-1., state.residual);
         postprocessors.execute(state, data);
+        if (check_regions)
+          adapt_regions(state, step, data.time);
         progress.update(step, data.time);
         if (checkpoint.after_step(state, postprocessors, {step, data.time, output_index}))
           return;

@@ -24,6 +24,12 @@ namespace perideal
    * acceleration works on contiguous arrays: per particle component the factor from force
    * density to acceleration is V_i / m_i where the component moves by its acceleration and 0
    * where it follows the FE field or is prescribed, so the pass has no branches.
+   *
+   * With an adaptive PD region (CoupledState::adapt_regions), every check step computes the
+   * energies, lets the region grow and, if it did, renews the masses and factors (the step stays;
+   * a conversion that lowers the stable step below it stops the run), the forces and the previous
+   * state of the work, and logs the change of kinetic plus strain energy, which the energy
+   * balance carries as its own term.
    */
   template <int dim>
   class ExplicitDynamics : public Solver<dim>
@@ -38,6 +44,21 @@ namespace perideal
         Checkpoint<dim>     &checkpoint) override;
 
   private:
+    /**
+     * @brief What the step derives from the regions: the masses of the method, the factors from
+     * force density to acceleration and the stable step (CoupledState::stable_dt).
+     */
+    void
+    derive_from_regions(CoupledState<dim> &state);
+
+    /**
+     * @brief After step @p step at @p time: let the adaptive region grow
+     * (CoupledState::adapt_regions) and, if it did, renew what the step derives from the
+     * regions and log the energy change.
+     */
+    void
+    adapt_regions(CoupledState<dim> &state, const unsigned int step, const double time);
+
     /**
      * @brief Forces and accelerations of both regions at @p time (the method's P U into the
      * particles that follow the FE field first); the particles' energy density only if @p
@@ -64,6 +85,8 @@ namespace perideal
     std::vector<double> acceleration_factor;
     /// The particles' nodal forces V_i f_i that the method's P^T carries to the FE dofs.
     ParticleVector nodal_force;
+    /// The stable steps of the FE region and of the particles [s].
+    double fe_dt = 0., pd_dt = 0.;
   };
 } // namespace perideal
 

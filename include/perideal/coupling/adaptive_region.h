@@ -1,0 +1,138 @@
+// ---------------------------------------------------------------------
+// PeriDeal: the PD region follows the crack (where FE cells become particles during a run).
+// ---------------------------------------------------------------------
+#ifndef perideal_coupling_adaptive_region_h
+#define perideal_coupling_adaptive_region_h
+
+#include <deal.II/base/parameter_handler.h>
+#include <deal.II/base/point.h>
+
+#include <perideal/coupling/coupled_state.h>
+
+#include <array>
+#include <functional>
+#include <map>
+#include <string>
+#include <vector>
+
+namespace perideal
+{
+  /**
+   * @brief <Coupling/Adaptive region>: where the PD region of a blended explicit run grows
+   * during the run, so that it need not be placed on the crack path beforehand.
+   *
+   * The grown part of the PD region is a union of disks (balls in 3D) around *seeds*: beta(x)
+   * is the larger of the file's <Coupling/Blending function> and
+   * max_s clamp((R + w - |x - s|) / w, 0, 1), with R the <Core radius> (beta = 1 inside, the
+   * buffer ahead of a crack tip) and w the <Ramp width> of the overlap. Every <Check interval>
+   * steps the criterion proposes seeds (collective, the same on every rank):
+   * - principal strain: the centre of each FE cell with unknowns whose largest principal strain
+   *   at the centre (the slope |grad w| of a scalar field) exceeds <Strain fraction> times the
+   *   critical stretch of the particles' damage model;
+   * - damage: each particle whose damage from the bonds broken during the run (its damage
+   *   index less that of the pre-cracks) is >= <Damage threshold> and that lies within <Damage
+   *   distance> of the edge of the PD-only zone (a point of the body at that distance or half of
+   *   it, in 16 directions in 2D and 26 in 3D, has beta < 1).
+   * Cell centres where beta is already 1 are not proposed (a damaged particle far enough inside
+   * the PD-only zone is not near its edge); the proposals are thinned to one per R/2 (in
+   * the lexicographic order of their coordinates, so that the seeds do not depend on the number
+   * of ranks). The zone only grows. CoupledProblem carries the state over (its conversion).
+   */
+  template <int dim>
+  class AdaptiveRegion
+  {
+  public:
+    /// What may propose seeds.
+    enum class Criterion
+    {
+      none,
+      principal_strain,
+      damage,
+      principal_strain_and_damage
+    };
+
+    /// Declare the subsection <Coupling/Adaptive region> (entered by the caller's caller).
+    static void
+    declare_parameters(dealii::ParameterHandler &prm);
+
+    /**
+     * @brief Read and check the subsection (inside <Coupling>); the ramp must be at least
+     * @p horizon wide.
+     */
+    void
+    parse_parameters(dealii::ParameterHandler &prm, const double horizon);
+
+    /// Whether the region grows during the run (<Criterion> is not none).
+    bool
+    enabled() const;
+
+    /// <Check interval> [steps].
+    unsigned int
+    check_interval() const;
+
+    /// beta of the seeds at @p x (0 without seeds).
+    double
+    blending(const dealii::Point<dim> &x) const;
+
+    /**
+     * @brief The seeds the criterion proposes in @p state, whose overlap is @p beta and whose
+     * body is @p in_body; @p precrack_damage is the damage index of each owned particle with
+     * only the pre-cracks' bonds broken (collective; the same list on every rank, empty if
+     * none).
+     */
+    std::vector<dealii::Point<dim>>
+    propose_seeds(const CoupledState<dim>                                 &state,
+                  const std::function<double(const dealii::Point<dim> &)> &beta,
+                  const std::function<bool(const dealii::Point<dim> &)>   &in_body,
+                  const std::vector<double>                               &precrack_damage) const;
+
+    /**
+     * @brief Whether @p x lies within @p reach of the support of the seeds' beta (closer than
+     * R + w + @p reach to a seed; @p reach at most twice the horizon).
+     */
+    bool
+    within_reach(const dealii::Point<dim> &x, const double reach) const;
+
+    /// Add @p seeds to the region (beta grows).
+    void
+    add_seeds(const std::vector<dealii::Point<dim>> &seeds);
+
+    /// The seeds so far.
+    const std::vector<dealii::Point<dim>> &
+    seed_points() const;
+
+    /**
+     * @brief Stop, naming the condition and <Core radius>, if the disks of @p new_seeds would
+     * give beta > 0 at a vertex of a face of an FE boundary condition (the conditions act on the
+     * FE field only: a face in the PD zone would lose its condition). @p when starts the
+     * message. Collective; call before anything changes.
+     */
+    void
+    check_conditions_outside(const FERegion<dim>                   &fe,
+                             const std::vector<dealii::Point<dim>> &new_seeds,
+                             const std::string                     &when) const;
+
+    /// Core radius R and ramp width w [m].
+    double core_radius = 0., ramp_width = 0.;
+
+  private:
+    /// The key of the bin of @p x in the search grid of the seeds.
+    std::array<long, dim>
+    bin_of(const dealii::Point<dim> &x) const;
+
+    Criterion    criterion       = Criterion::none;
+    unsigned int interval        = 10;
+    double       strain_fraction = 0.5, damage_threshold = 0.5, damage_distance = 0.;
+    std::vector<dealii::Point<dim>> seeds;
+    /// The nearest seed's distance to @p x, or the largest double if none lies within a bin.
+    double
+    nearest_seed(const dealii::Point<dim> &x) const;
+
+    /// The width of the bins of the seeds: R + w + 2 delta (a seed's weight and a bond beyond).
+    double bin_width = 0.;
+    /// Seeds by bin of width bin_width.
+    std::map<std::array<long, dim>, std::vector<unsigned int>> bins;
+  };
+} // namespace perideal
+
+#endif
