@@ -239,9 +239,16 @@ namespace perideal
 
   template <int dim>
   double
+  AdaptiveRegion<dim>::disk_blending(const double distance) const
+  {
+    return std::clamp((core_radius + ramp_width - distance) / ramp_width, 0., 1.);
+  }
+
+  template <int dim>
+  double
   AdaptiveRegion<dim>::blending(const Point<dim> &x) const
   {
-    return std::clamp((core_radius + ramp_width - nearest_seed(x)) / ramp_width, 0., 1.);
+    return disk_blending(nearest_seed(x));
   }
 
   template <int dim>
@@ -364,8 +371,8 @@ namespace perideal
     const auto beta = [&](const Point<dim> &x) {
       double b = 0.;
       for (const auto &s : new_seeds)
-        b = std::max(b, (core_radius + ramp_width - x.distance(s)) / ramp_width);
-      return std::min(b, 1.);
+        b = std::max(b, disk_blending(x.distance(s)));
+      return b;
     };
     // Per condition: a point of one of its faces where beta > 0 (this rank's first).
     const auto         &conditions = fe.conditions();

@@ -112,10 +112,13 @@ namespace perideal
                              const std::vector<dealii::Point<dim>> &new_seeds,
                              const std::string                     &when) const;
 
+  private:
+    /// beta of a disk at distance @p distance from its seed.
+    double
+    disk_blending(const double distance) const;
+
     /// Core radius R and ramp width w [m].
     double core_radius = 0., ramp_width = 0.;
-
-  private:
     /// The key of the bin of @p x in the search grid of the seeds.
     std::array<long, dim>
     bin_of(const dealii::Point<dim> &x) const;
