@@ -16,17 +16,13 @@
 #include <map>
 #include <sstream>
 #include <string>
+#include <type_traits>
 #include <vector>
 
 #include <tests.h>
 
 namespace coupling_tests
 {
-  /**
-   * Declare and read the parameters of the 2D coupled problem in @p file and hand them to
-   * @p problem, as perideal-solid does: a first pass reads the names of the regions and of the
-   * particle and FE boundary conditions, which decide the subsections.
-   */
   /**
    * @p text with every occurrence of each key of @p values replaced by its value.
    */
@@ -51,36 +47,47 @@ namespace coupling_tests
     MPI_Barrier(MPI_COMM_WORLD);
   }
 
-  inline void
-  parse(perideal::CoupledProblem<2> &problem, const std::string &file)
+  /**
+   * Declare and read the parameters of the coupled problem in @p file and hand them to
+   * @p problem, as perideal-solid does: a first pass reads the names of the regions and of the
+   * particle and FE boundary conditions, which decide the subsections.
+   */
+  template <int dim>
+  void
+  parse(perideal::CoupledProblem<dim> &problem, const std::string &file)
   {
     dealii::ParameterHandler first;
     first.declare_entry("Dimension", "2", dealii::Patterns::Integer(2, 3), "");
-    perideal::RegionCollection<2>::declare_names(first);
-    perideal::BoundaryConditions<2>::declare_names(first);
-    perideal::FERegion<2>::declare_names(first);
+    perideal::RegionCollection<dim>::declare_names(first);
+    perideal::BoundaryConditions<dim>::declare_names(first);
+    perideal::FERegion<dim>::declare_names(first);
     perideal::ParameterUtilities::parse_partially(first, file);
     dealii::ParameterHandler prm;
-    perideal::CoupledProblem<2>::declare_parameters(
+    perideal::CoupledProblem<dim>::declare_parameters(
       prm,
-      perideal::RegionCollection<2>::parse_names(first),
-      perideal::BoundaryConditions<2>::parse_names(first),
-      perideal::FERegion<2>::parse_names(first));
+      perideal::RegionCollection<dim>::parse_names(first),
+      perideal::BoundaryConditions<dim>::parse_names(first),
+      perideal::FERegion<dim>::parse_names(first));
     perideal::ParameterUtilities::parse_file(prm, file);
     problem.parse_parameters(prm);
   }
+  /// What run() hands the problem to after the run (a non-deduced context: run<3>(...) with a
+  /// generic lambda).
+  template <int dim>
+  using Inspect =
+    typename std::common_type<std::function<void(const perideal::CoupledProblem<dim> &)>>::type;
+
   /**
-   * Write @p text to @p file, run the 2D coupled problem it describes and return its log;
-   * @p inspect sees the problem after the run.
+   * Write @p text to @p file, run the coupled problem of dimension @p dim it describes and return
+   * its log; @p inspect sees the problem after the run.
    */
-  inline std::string
-  run(const std::string                                              &file,
-      const std::string                                              &text,
-      const std::function<void(const perideal::CoupledProblem<2> &)> &inspect = {})
+  template <int dim = 2>
+  std::string
+  run(const std::string &file, const std::string &text, const Inspect<dim> &inspect = {})
   {
     write_file(file, text);
-    std::ostringstream          log;
-    perideal::CoupledProblem<2> problem(MPI_COMM_WORLD, log);
+    std::ostringstream            log;
+    perideal::CoupledProblem<dim> problem(MPI_COMM_WORLD, log);
     parse(problem, file);
     problem.setup();
     problem.run();
@@ -155,24 +162,28 @@ namespace coupling_tests
   }
 
   /**
-   * The strip of the tests of the adaptive PD region (adaptive_region_01, its bad input): 100 x
-   * 20 mm, free, plane strain PMB at dx = 1 mm with FE elasticity of the same material on
-   * @p cells ("nx, ny") Q1 cells, the blending function @p beta, <Coupling/Adaptive region> with
-   * @p criterion (5 % of the critical stretch 0.01 for 'principal strain', checked every 5 steps)
-   * and the initial seeds @p seeds, a pulse of velocity 20 exp(-((x - 20 mm) / 6 mm)^2) m/s
-   * along x, 120 steps of 0.1 us, no HDF5 output, results in results/.
+   * The strip of the tests of the adaptive PD region (adaptive_region_01, _02, the bad input):
+   * 100 x 20 mm (2D, plane strain) or 100 x 20 x 10 mm (@p dim = 3), free, PMB at dx = 1 mm (2D)
+   * or 2 mm (3D) with FE elasticity of the same material on @p cells ("nx, ny[, nz]") Q1 cells,
+   * the blending function @p beta, <Coupling/Adaptive region> with @p criterion (5 % of the
+   * critical stretch 0.01 for 'principal strain', checked every 5 steps; core radius 9 mm, ramp
+   * 6 mm in 2D and 7 mm in 3D, at least a horizon) and the initial seeds @p seeds, a pulse of
+   * velocity 20 exp(-((x - 20 mm) / 6 mm)^2) m/s along x, 120 steps of 0.1 us, no HDF5 output,
+   * results in results/.
    */
   inline std::string
   adaptive_strip(const std::string &cells,
                  const std::string &beta,
                  const std::string &criterion,
-                 const std::string &seeds)
+                 const std::string &seeds,
+                 const unsigned int dim = 2)
   {
+    const bool three = dim == 3;
     return substitute(
       R"(
-set Dimension = 2
+set Dimension = DIM
 subsection Discretization
-  set Lattice spacing = 1e-3
+  set Lattice spacing = SPACING
   set Horizon factor  = 3.015
   set Thickness       = 1
   set Body            = strip
@@ -181,8 +192,8 @@ subsection Regions
   set Names = strip
   subsection strip
     set Shape        = box
-    set Lower corner = 0, 0
-    set Upper corner = 0.1, 0.02
+    set Lower corner = LOWER
+    set Upper corner = UPPER
   end
 end
 subsection Material
@@ -199,7 +210,7 @@ subsection Material
 end
 subsection Finite elements
   set Generator           = subdivided_hyper_rectangle
-  set Generator arguments = CELLS : 0, 0 : 0.1, 0.02 : true
+  set Generator arguments = CELLS : LOWER : UPPER : true
   set Density             = 8000
   subsection Elasticity
     set Young's modulus = 191e9
@@ -214,13 +225,13 @@ subsection Coupling
     set Strain fraction = 0.05
     set Check interval  = 5
     set Core radius     = 0.009
-    set Ramp width      = 0.006
+    set Ramp width      = RAMP
     set Damage distance = 0.0045
     set Initial seeds   = SEEDS
   end
 end
 subsection Initial conditions
-  set Velocity = 20 * exp(-((x - 0.02) / 0.006)^2); 0
+  set Velocity = 20 * exp(-((x - 0.02) / 0.006)^2); 0ZERO
 end
 subsection Time stepping
   set End time  = 1.2e-5
@@ -232,7 +243,26 @@ subsection Output
   set Progress   = false
 end
 )",
-      {{"CELLS", cells}, {"BETA", beta}, {"CRITERION", criterion}, {"SEEDS", seeds}});
+      {{"DIM", std::to_string(dim)},
+       {"SPACING", three ? "2e-3" : "1e-3"},
+       {"LOWER", three ? "0, 0, 0" : "0, 0"},
+       {"UPPER", three ? "0.1, 0.02, 0.01" : "0.1, 0.02"},
+       {"RAMP", three ? "0.007" : "0.006"},
+       {"ZERO", three ? "; 0" : ""},
+       {"CELLS", cells},
+       {"BETA", beta},
+       {"CRITERION", criterion},
+       {"SEEDS", seeds}});
+  }
+
+  /// The number of occurrences of @p text in @p log.
+  inline unsigned int
+  count_lines(const std::string &log, const std::string &text)
+  {
+    unsigned int n = 0;
+    for (auto at = log.find(text); at != std::string::npos; at = log.find(text, at + 1))
+      ++n;
+    return n;
   }
 
   /// "ok" if @p condition holds, "FAILED" otherwise.

@@ -10,7 +10,11 @@ RESULTS_DIR/statistics.csv, and writes into RESULTS_DIR:
   energies.png        kinetic, strain, external work, kinetic + strain, the energy of the
                       broken bonds (dissipated) and the balance with and without it;
   crack_angle.png     crack angle and crack length against time;
-  crack_angle.csv     the same numbers (time, angle, chord angle, length, tip x, tip y).
+  crack_angle.csv     the same numbers (time, angle, chord angle, length, tip x, tip y);
+  specimen.png        coupled variants (RESULTS_DIR/solution.xdmf, the FE field): the whole
+                      specimen at four output times, the FE von Mises stress where FE remains,
+                      the particles' damage on top and the outline of the FE part, so that the
+                      PD zone is seen growing (adaptive variant) or fixed (band).
 The LAST line printed is "crack angle [deg]: <value>" for the crack grown from the upper notch
 tip at the last output time.
 
@@ -39,6 +43,7 @@ import math
 import os
 import sys
 
+import h5py
 import numpy as np
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), ".."))
@@ -48,6 +53,8 @@ import matplotlib
 
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
+from matplotlib.collections import LineCollection, PolyCollection  # noqa: E402
+from matplotlib.colors import Normalize  # noqa: E402
 
 
 def lattice_spacing(nodes):
@@ -191,6 +198,68 @@ def plot_damage(nodes, damage, disp, time, cracks, out):
     plt.close(fig)
 
 
+def read_fe(path):
+    """(nodes, cells, von Mises stress per node) of one FE output file (the cells with FE
+    unknowns; the cells that became PD only are not in it)."""
+    with h5py.File(path, "r") as f:
+        return (np.array(f["nodes"])[:, :2], np.array(f["cells"]).astype(np.int64),
+                np.array(f["von_mises_stress"])[:, 0])
+
+
+def fe_outline(nodes, cells):
+    """The edges [(node, node)] that belong to one cell only: the outline of the FE part (the
+    specimen's boundary and the edge of the PD-only zone). Nodes are matched by position: each
+    MPI rank writes its own copy of the nodes on the partition boundary (so the notches, slits
+    whose two faces have nodes at the same positions, are not drawn)."""
+    _, index = np.unique(np.round(nodes / (1e-6 * np.ptp(nodes))).astype(np.int64), axis=0,
+                         return_inverse=True)
+    count = {}
+    for cell in cells:
+        for a, b in zip(cell, np.roll(cell, -1)):
+            key = (min(index[a], index[b]), max(index[a], index[b]))
+            count[key] = count.get(key, (a, b, 0))[:2] + (count.get(key, (0, 0, 0))[2] + 1,)
+    return [(a, b) for a, b, n in count.values() if n == 1]
+
+
+def plot_specimen(directory, series, base, out, n_panels=4):
+    """The whole specimen at n_panels output times from the first with a grown PD zone to the
+    last: von Mises stress of the FE field where FE unknowns remain, the damage of the particles
+    on top (white: undamaged; their extent is the PD zone, PD only or blended) and the outline
+    of the FE part (black; inside the particles it is the edge of the PD-only zone)."""
+    fe_series = read_series(directory, "solution")
+    picks = np.unique(np.linspace(0, len(series) - 1, n_panels).round().astype(int))
+    fe_picks = [read_fe(fe_series[k][1]) for k in picks]
+    limit = max(np.percentile(v, 99) for _, _, v in fe_picks)
+    fig, axes = plt.subplots(1, len(picks), figsize=(2.6 * len(picks) + 2.2, 5.4), sharey=True,
+                             layout="constrained")
+    for ax, k, (fe_nodes, cells, mises) in zip(np.atleast_1d(axes), picks, fe_picks):
+        time, path = series[k]
+        nodes, damage = read_particles(path)
+        polygons = PolyCollection(fe_nodes[cells] * 1e3, array=mises[cells].mean(axis=1),
+                                  cmap="viridis", norm=Normalize(0.0, limit), edgecolors="none")
+        ax.add_collection(polygons)
+        dx = lattice_spacing(nodes)
+        ax.scatter(nodes[:, 0] * 1e3, nodes[:, 1] * 1e3, c=damage, cmap="hot_r", vmin=0.0,
+                   vmax=1.0, s=(72.0 * dx * 1e3 * 6.2 / 200.0) ** 2, marker="s", linewidths=0)
+        edges = fe_outline(fe_nodes, cells)
+        ax.add_collection(LineCollection(fe_nodes[np.array(edges)] * 1e3, colors="k",
+                                         linewidths=0.4))
+        ax.set_xlim(fe_nodes[:, 0].min() * 1e3, fe_nodes[:, 0].max() * 1e3)
+        ax.set_ylim(fe_nodes[:, 1].min() * 1e3, fe_nodes[:, 1].max() * 1e3)
+        ax.set_aspect("equal")
+        ax.set_title("t = %.0f us, %d particles" % (time * 1e6, len(nodes)), fontsize=8)
+        ax.set_xlabel("x [mm]")
+    np.atleast_1d(axes)[0].set_ylabel("y [mm]")
+    fig.colorbar(plt.cm.ScalarMappable(Normalize(0.0, limit * 1e-6), "viridis"),
+                 ax=axes, shrink=0.6, label="FE von Mises stress [MPa]")
+    fig.colorbar(plt.cm.ScalarMappable(Normalize(0.0, 1.0), "hot_r"), ax=axes, shrink=0.6,
+                 label="particle damage index")
+    fig.suptitle("Whole specimen: FE field where FE remains, particles (the PD zone) with "
+                 "their damage,\noutline of the FE part (black)", fontsize=8)
+    fig.savefig(out, dpi=150)
+    plt.close(fig)
+
+
 def main():
     parser = argparse.ArgumentParser(description=__doc__.split("\n")[0])
     parser.add_argument("results", help="directory with particles.xdmf and statistics.csv")
@@ -250,6 +319,8 @@ def main():
 
     time, nodes, damage, disp, upper, lower = final
     plot_damage(nodes, damage, disp, time, [upper, lower], os.path.join(args.results, "damage_final.png"))
+    if os.path.exists(os.path.join(args.results, "solution.xdmf")):
+        plot_specimen(args.results, series, args.base, os.path.join(args.results, "specimen.png"))
 
     print("results: %s (t_end = %.3g us, dx = %.3g mm, %d output times)"
           % (args.results, time * 1e6, dx * 1e3, len(series)))

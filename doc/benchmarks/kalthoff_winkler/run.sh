@@ -5,7 +5,7 @@
 # cracks from two disks at the notch tips (kalthoff_adaptive.prm), the coupled variant with PD in
 # a band placed on the known crack path (kalthoff_coupled.prm) and their all-PD reference with
 # the same model and lattice (kalthoff_pd_pmb.prm), then the three crack angles and the ratios of
-# the wall times to the all-PD run's.
+# the wall times and of the peak memories to the all-PD run's.
 #
 # Usage: run.sh [--dx SPACING] [--np N] [--prm FILE] [--app NAME]
 #   --dx SPACING  lattice spacing [m] instead of the 1e-3 of the parameter files (horizon =
@@ -109,11 +109,12 @@ printf '  %s\n' "${summary[@]}"
 if [ ${#prms[@]} -eq 3 ]; then
   "$python" - "$results_top" <<'PY'
 import re, sys
-def wall(name):
+def measure(name, what):
     log = open(f"{sys.argv[1]}/{name}/run.log").read()
-    return float(re.search(r"Wall time of the run: ([\d.]+)", log).group(1))
-p = wall("kalthoff_pd_pmb")
-for name in ("kalthoff_adaptive", "kalthoff_coupled"):
-    print(f"  wall time {name} / all-PD: {wall(name) / p:.2f}")
+    return float(re.search(what + r": ([\d.e+]+)", log).group(1))
+for what, label in (("Wall time of the run", "wall time"), ("Peak memory", "peak memory")):
+    p = measure("kalthoff_pd_pmb", what)
+    for name in ("kalthoff_adaptive", "kalthoff_coupled"):
+        print(f"  {label} {name} / all-PD: {measure(name, what) / p:.2f}")
 PY
 fi

@@ -1,6 +1,9 @@
 // ---------------------------------------------------------------------
 // PeriDeal: explicit dynamics (velocity Verlet) of the coupled system.
 // ---------------------------------------------------------------------
+#include <deal.II/base/mpi.h>
+#include <deal.II/base/utilities.h>
+
 #include <perideal/base/parameter_utilities.h>
 #include <perideal/base/progress_reporter.h>
 #include <perideal/coupling/solvers/explicit_dynamics.h>
@@ -311,12 +314,21 @@ namespace perideal
     const double seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start_time).count();
     const std::uint64_t n_bonds = state.pd.particles().n_global_bonds();
-    if (state.is_root && settings.show_progress)
+    if (!settings.show_progress)
+      return;
+    // The peak resident memory of the processes (VmHWM), summed over the ranks.
+    Utilities::System::MemoryStats memory;
+    Utilities::System::get_memory_stats(memory);
+    const double megabytes =
+      Utilities::MPI::sum(static_cast<double>(memory.VmHWM), state.comm) / 1024.;
+    if (state.is_root)
       {
         state.log << "Wall time of the time loop: " << seconds << " s" << std::endl;
         if (n_bonds > 0)
           state.log << "bond updates per second: "
                     << double(n_bonds) * (n_steps - start.step) / seconds << std::endl;
+        state.log << "Peak memory: " << megabytes << " MB (resident, summed over the ranks)"
+                  << std::endl;
       }
   }
 
