@@ -89,6 +89,15 @@ namespace perideal
                       "Criterion 'damage': a damaged particle closer than this to the edge of the "
                       "PD-only zone (beta < 1) flags its position [m]; > 0 and smaller than <Core "
                       "radius>.");
+    prm.declare_entry("Lead distance",
+                      "0",
+                      Patterns::Double(),
+                      "Criterion 'damage': the new disk is centred this far beyond the flagged "
+                      "particle, away from the centre of the nearest disk (the way the crack "
+                      "runs), so that the PD zone leads the crack tip and fewer conversions are "
+                      "needed; 0 centres it on the particle [m]. In [0, <Core radius> - <Damage "
+                      "distance>] (the particle then lies at least <Damage distance> inside the "
+                      "new PD-only zone). A centre outside the body falls back to the particle.");
     prm.declare_entry("Core radius",
                       "0",
                       Patterns::Double(),
@@ -139,6 +148,7 @@ namespace perideal
     core_radius     = prm.get_double("Core radius");
     damage_distance = prm.get_double("Damage distance");
     ramp_width      = prm.get_double("Ramp width");
+    lead_distance   = prm.get_double("Lead distance");
     if (enabled())
       {
         if (!(core_radius > 0.))
@@ -150,10 +160,14 @@ namespace perideal
             !(damage_distance > 0. && damage_distance < core_radius))
           refuse("Damage distance",
                  "> 0 and smaller than <Core radius> = " + prm.get("Core radius") + " m");
+        if (!(lead_distance >= 0. && lead_distance <= core_radius - damage_distance))
+          refuse("Lead distance",
+                 "in [0, <Core radius> - <Damage distance>] = [0, " +
+                   ParameterUtilities::format_number(core_radius - damage_distance) + "] m");
       }
     bin_width = core_radius + ramp_width + 2. * horizon;
     seeds.clear();
-    bins.clear();
+    grid.clear();
     std::vector<Point<dim>> initial;
     for (const auto &item : Utilities::split_string_list(prm.get("Initial seeds"), ';'))
       if (!item.empty())
@@ -201,33 +215,74 @@ namespace perideal
   void
   AdaptiveRegion<dim>::add_seeds(const std::vector<Point<dim>> &new_seeds)
   {
-    for (const auto &s : new_seeds)
+    seeds.insert(seeds.end(), new_seeds.begin(), new_seeds.end());
+    // The grid of bins that holds the seeds, one bin of margin around them.
+    if (seeds.empty())
+      return;
+    std::array<long, dim> upper = bin_of(seeds.front());
+    grid_lower                  = upper;
+    for (const auto &s : seeds)
       {
-        bins[bin_of(s)].push_back(seeds.size());
-        seeds.push_back(s);
+        const auto key = bin_of(s);
+        for (unsigned int d = 0; d < dim; ++d)
+          {
+            grid_lower[d] = std::min(grid_lower[d], key[d] - 1);
+            upper[d]      = std::max(upper[d], key[d] + 1);
+          }
+      }
+    std::size_t n_bins = 1;
+    for (unsigned int d = 0; d < dim; ++d)
+      {
+        grid_size[d] = upper[d] - grid_lower[d] + 1;
+        n_bins *= grid_size[d];
+      }
+    grid.assign(n_bins, {});
+    for (unsigned int s = 0; s < seeds.size(); ++s)
+      {
+        const auto  key   = bin_of(seeds[s]);
+        std::size_t index = 0;
+        for (unsigned int d = dim; d-- > 0;)
+          index = index * grid_size[d] + (key[d] - grid_lower[d]);
+        grid[index].push_back(s);
       }
   }
 
   template <int dim>
   double
-  AdaptiveRegion<dim>::nearest_seed(const Point<dim> &x) const
+  AdaptiveRegion<dim>::nearest_seed(const Point<dim> &x, unsigned int *index) const
   {
-    // Every seed within a bin width of x lies in the 3^dim bins around x's.
+    // Every seed within a bin width of x lies in the 3^dim bins around x's; outside the grid
+    // (a bin of margin around the seeds' bins) there is none.
     double nearest = std::numeric_limits<double>::max();
     if (seeds.empty())
       return nearest;
-    const auto           centre = bin_of(x);
+    auto centre = bin_of(x);
+    for (unsigned int d = 0; d < dim; ++d)
+      {
+        centre[d] -= grid_lower[d];
+        if (centre[d] < 0 || centre[d] >= grid_size[d])
+          return nearest;
+      }
     std::array<int, dim> k;
     k.fill(-1);
     while (true)
       {
-        std::array<long, dim> key;
-        for (unsigned int d = 0; d < dim; ++d)
-          key[d] = centre[d] + k[d];
-        const auto found = bins.find(key);
-        if (found != bins.end())
-          for (const unsigned int s : found->second)
-            nearest = std::min(nearest, x.distance(seeds[s]));
+        std::size_t bin    = 0;
+        bool        inside = true;
+        for (unsigned int d = dim; d-- > 0;)
+          {
+            const long j = centre[d] + k[d];
+            inside       = inside && j >= 0 && j < grid_size[d];
+            bin          = bin * grid_size[d] + j;
+          }
+        if (inside)
+          for (const unsigned int s : grid[bin])
+            if (const double distance = x.distance(seeds[s]); distance < nearest)
+              {
+                nearest = distance;
+                if (index != nullptr)
+                  *index = s;
+              }
         unsigned int d = 0;
         while (d < dim && ++k[d] > 1)
           k[d++] = -1;
@@ -323,15 +378,30 @@ namespace perideal
         for (unsigned int i = 0; i < ps.n_owned(); ++i)
           if (damage[i] - precrack_damage[i] >= damage_threshold)
             {
+              // (beta first: the body test may be a point search in a mesh.)
               bool near_edge = false;
               for (const double r : {0.5 * damage_distance, damage_distance})
                 for (const auto &n : directions)
                   {
                     const Point<dim> y = x[i] + r * n;
-                    near_edge          = near_edge || (in_body(y) && beta(y) < 1.);
+                    near_edge          = near_edge || (beta(y) < 1. && in_body(y));
                   }
-              if (near_edge)
-                flag(x[i]);
+              if (!near_edge)
+                continue;
+              // Ahead of the particle, away from the nearest disk's centre.
+              unsigned int nearest = 0;
+              Point<dim>   centre  = x[i];
+              if (lead_distance > 0. &&
+                  nearest_seed(x[i], &nearest) < std::numeric_limits<double>::max())
+                {
+                  const Tensor<1, dim> away = x[i] - seeds[nearest];
+                  const double         norm = away.norm();
+                  if (norm > 0.)
+                    centre += (lead_distance / norm) * away;
+                  if (!in_body(centre))
+                    centre = x[i];
+                }
+              flag(centre);
             }
       }
 

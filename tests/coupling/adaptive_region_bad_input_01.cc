@@ -3,9 +3,10 @@
 // adaptive_region_01: a valid file is accepted; each bad case stops with a message naming the
 // entry and the accepted values, when the file is read or at the set-up (before any output): a
 // check interval of zero, thresholds outside their ranges, a ramp narrower than a horizon, a
-// damage distance not inside the core, initial seeds outside the body or without a criterion, a
-// quasi-static solver, checkpoints, no damage model, no FE mesh, an initial disk that reaches an
-// FE boundary condition. A PD zone that would reach an FE boundary condition during the run
+// damage distance not inside the core, a lead distance beyond the core less the damage
+// distance, initial seeds outside the body or without a criterion, a quasi-static solver,
+// checkpoints, no damage model, no FE mesh, an initial disk that reaches an FE boundary
+// condition. A PD zone that would reach an FE boundary condition during the run
 // stops the run at that check, before anything is converted: the statistics end with the row of
 // the step before the check's conversion, the log with the message.
 // ---------------------------------------------------------------------
@@ -82,6 +83,9 @@ main(int argc, char **argv)
   run_case("ramp narrower than a horizon", adaptive("    set Ramp width = 0.002\n"));
   run_case("damage distance outside the core",
            adaptive("    set Criterion = damage\n    set Damage distance = 0.009\n"));
+  run_case("lead distance beyond the core less the damage distance",
+           adaptive("    set Criterion = damage\n    set Damage distance = 0.0045\n"
+                    "    set Lead distance = 0.005\n"));
   run_case("initial seed outside the body", "", "0.06, 0.01; 0.2, 0.01");
   run_case("initial seeds without a criterion", adaptive("    set Criterion = none\n"));
   run_case("static solver", "subsection Solver\n  set Type = static\nend\n");

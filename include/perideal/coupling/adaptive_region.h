@@ -11,7 +11,6 @@
 
 #include <array>
 #include <functional>
-#include <map>
 #include <string>
 #include <vector>
 
@@ -32,7 +31,8 @@ namespace perideal
    * - damage: each particle whose damage from the bonds broken during the run (its damage
    *   index less that of the pre-cracks) is >= <Damage threshold> and that lies within <Damage
    *   distance> of the edge of the PD-only zone (a point of the body at that distance or half of
-   *   it, in 16 directions in 2D and 26 in 3D, has beta < 1).
+   *   it, in 16 directions in 2D and 26 in 3D, has beta < 1); the seed lies <Lead distance>
+   *   beyond the particle, away from the nearest seed (the way the crack runs).
    * Cell centres where beta is already 1 are not proposed (a damaged particle far enough inside
    * the PD-only zone is not near its edge); the proposals are thinned to one per R/2 (in
    * the lexicographic order of their coordinates, so that the seeds do not depend on the number
@@ -126,15 +126,20 @@ namespace perideal
     Criterion    criterion       = Criterion::none;
     unsigned int interval        = 10;
     double       strain_fraction = 0.5, damage_threshold = 0.5, damage_distance = 0.;
+    /// <Lead distance> [m].
+    double                          lead_distance = 0.;
     std::vector<dealii::Point<dim>> seeds;
-    /// The nearest seed's distance to @p x, or the largest double if none lies within a bin.
+    /// The nearest seed's distance to @p x, or the largest double if none lies within a bin;
+    /// its index in @p index if given (unchanged if none).
     double
-    nearest_seed(const dealii::Point<dim> &x) const;
+    nearest_seed(const dealii::Point<dim> &x, unsigned int *index = nullptr) const;
 
     /// The width of the bins of the seeds: R + w + 2 delta (a seed's weight and a bond beyond).
     double bin_width = 0.;
-    /// Seeds by bin of width bin_width.
-    std::map<std::array<long, dim>, std::vector<unsigned int>> bins;
+    /// Seeds by bin of width bin_width in the grid of bins from grid_lower (a bin of margin
+    /// around every seed's), grid_size bins per axis, the first axis fastest.
+    std::vector<std::vector<unsigned int>> grid;
+    std::array<long, dim>                  grid_lower{}, grid_size{};
   };
 } // namespace perideal
 
