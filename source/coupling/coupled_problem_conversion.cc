@@ -83,13 +83,17 @@ namespace perideal
     setup_particles(false);
     ParticleVector u_new, v_new;
     {
+      // Only the particles without values of their own need the old FE field.
+      const auto       &y = ps.positions();
+      std::vector<bool> without_values(ps.n_owned());
+      for (unsigned int i = 0; i < ps.n_owned(); ++i)
+        without_values[i] = free_values.count(lattice_key(y[i])) == 0;
       TransferOperator<dim> before;
-      before.reinit(fe, ps, layout);
+      before.reinit(fe, ps, layout, without_values);
       ps.reinit_vector(u_new, nc);
       ps.reinit_vector(v_new, nc);
       before.interpolate(U_before, u_new);
       before.interpolate(V_before, v_new);
-      const auto &y = ps.positions();
       for (unsigned int i = 0; i < ps.n_owned(); ++i)
         if (!before.is_slaved(i))
           {

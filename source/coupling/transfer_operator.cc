@@ -14,6 +14,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <optional>
 
 namespace perideal
@@ -124,8 +125,11 @@ namespace perideal
   void
   TransferOperator<dim>::reinit(const FERegion<dim>       &fe,
                                 const ParticleSystem<dim> &particles,
-                                const FieldLayout         &layout)
+                                const FieldLayout         &layout,
+                                const std::vector<bool>   &located_particles)
   {
+    Assert(located_particles.empty() || located_particles.size() == particles.n_owned(),
+           ExcDimensionMismatch(located_particles.size(), particles.n_owned()));
     const MPI_Comm comm        = particles.get_communicator();
     const auto    &tria        = fe.get_triangulation();
     const auto    &dof_handler = fe.get_dof_handler();
@@ -153,8 +157,17 @@ namespace perideal
         const GridTools::Cache<dim> cache(tria, mapping);
         const auto                  local_boxes  = owned_cell_boxes(tria);
         const auto                  global_boxes = Utilities::MPI::all_gather(comm, local_boxes);
-        std::vector<Point<dim>>     points(x.begin(), x.begin() + n_owned);
-        const auto                  located =
+        // A particle not to be located is placed beyond every rank's boxes: the search sends
+        // it nowhere, and it stays free.
+        std::vector<Point<dim>> points(x.begin(), x.begin() + n_owned);
+        Point<dim>              nowhere;
+        for (unsigned int d = 0; d < dim; ++d)
+          nowhere[d] = std::numeric_limits<double>::max();
+        if (!located_particles.empty())
+          for (unsigned int i = 0; i < n_owned; ++i)
+            if (!located_particles[i])
+              points[i] = nowhere;
+        const auto located =
           GridTools::internal::distributed_compute_point_locations(cache,
                                                                    points,
                                                                    global_boxes,
@@ -170,7 +183,7 @@ namespace perideal
             found[std::get<1>(component)] = true;
           std::vector<Point<dim>> lost;
           for (unsigned int i = 0; i < n_owned; ++i)
-            if (!found[i])
+            if (!found[i] && (located_particles.empty() || located_particles[i]))
               lost.push_back(x[i]);
           const auto n_lost = Utilities::MPI::sum<types::global_dof_index>(lost.size(), comm);
           if (n_lost > 0)

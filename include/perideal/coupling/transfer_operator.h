@@ -43,12 +43,14 @@ namespace perideal
      * unknowns @p layout per particle and the FE region's per node. The two must name the same
      * components, except rotations the particles add to FE translations (throws otherwise,
      * naming both). Without FE unknowns P is empty but its rows still have the particles'
-     * layout.
+     * layout. With @p located (one entry per owned particle), only the particles it marks are
+     * located in the mesh; the others are free (empty rows), wherever they lie.
      */
     void
     reinit(const FERegion<dim>       &fe,
            const ParticleSystem<dim> &particles,
-           const FieldLayout         &layout);
+           const FieldLayout         &layout,
+           const std::vector<bool>   &located = {});
 
     /**
      * @brief Overwrite the slaved particles' entries of @p u_particles (owned; call
