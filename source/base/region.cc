@@ -2,6 +2,8 @@
 // PeriDeal: named geometric regions read from a parameter file.
 // ---------------------------------------------------------------------
 #include <deal.II/base/exceptions.h>
+#include <deal.II/boost_adaptors/bounding_box.h>
+#include <deal.II/boost_adaptors/point.h>
 #include <deal.II/grid/grid_in.h>
 #include <deal.II/grid/grid_tools.h>
 
@@ -9,6 +11,7 @@
 #include <perideal/base/region.h>
 
 #include <filesystem>
+#include <iterator>
 
 namespace perideal
 {
@@ -152,6 +155,22 @@ namespace perideal
           }
         case Shape::mesh:
           {
+            // No cell's bounding box near p: outside at once (deal.II's search would try every
+            // cell before it gives up, e.g. for each lattice point in a hole of the mesh).
+            Point<dim> low = p, high = p;
+            for (unsigned int d = 0; d < dim; ++d)
+              {
+                low[d] -= tolerance;
+                high[d] += tolerance;
+              }
+            std::vector<
+              std::pair<BoundingBox<dim>, typename Triangulation<dim>::active_cell_iterator>>
+              near;
+            mesh_cache->get_cell_bounding_boxes_rtree().query(
+              boost::geometry::index::intersects(BoundingBox<dim>(std::make_pair(low, high))),
+              std::back_inserter(near));
+            if (near.empty())
+              return false;
             const auto found = GridTools::find_active_cell_around_point(*mesh_cache, p);
             return found.first.state() == IteratorState::valid &&
                    found.first->material_id() == material_id;
