@@ -8,6 +8,7 @@
 #include <perideal/base/parameter_utilities.h>
 #include <perideal/base/region.h>
 #include <perideal/coupling/coupled_problem.h>
+#include <perideal/pd/damage_model.h>
 
 #include <cmath>
 #include <fstream>
@@ -253,6 +254,22 @@ end
        {"BETA", beta},
        {"CRITERION", criterion},
        {"SEEDS", seeds}});
+  }
+
+  /// Rank 0: the reference position and damage index of every particle of @p problem (x, y,
+  /// damage per particle; 2D), other ranks: empty. Collective.
+  inline std::vector<double>
+  gather_damage(const perideal::CoupledProblem<2> &problem)
+  {
+    const auto         &ps     = problem.particles();
+    const auto          damage = perideal::damage_index(ps);
+    std::vector<double> local, all;
+    for (unsigned int i = 0; i < ps.n_owned(); ++i)
+      for (const double value : {ps.positions()[i][0], ps.positions()[i][1], damage[i]})
+        local.push_back(value);
+    for (const auto &part : dealii::Utilities::MPI::gather(MPI_COMM_WORLD, local))
+      all.insert(all.end(), part.begin(), part.end());
+    return all;
   }
 
   /// The number of occurrences of @p text in @p log.
