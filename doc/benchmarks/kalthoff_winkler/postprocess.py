@@ -20,9 +20,11 @@ tip at the last output time.
 
 Crack angle (defined so that it does not depend on branches or on the damage of the notch
 faces):
-  1. "new damage" = damage(t) - the particle's damage in the first output that has it (t = 0,
-     or the output after the adaptive PD region created it): the pre-cracked notch faces start
-     with a damage index of about 0.3 that is not crack growth;
+  1. "new damage" = damage(t), less, within a horizon of the notches, the particle's damage in
+     the first output that has it (t = 0, or the output after the adaptive PD region created
+     it): the pre-cracked notch faces start with a damage index of about 0.3 that is not crack
+     growth (elsewhere a particle the adaptive region created may be cracked by the next
+     output, so its first damage is not subtracted);
   2. crack particles: new damage > threshold (0.35), in the half plane beyond the upper notch
      (y >= y_tip, the side the experiment's crack runs to) and not behind the tip
      (x >= x_tip - 3 dx);
@@ -260,6 +262,34 @@ def plot_specimen(directory, series, base, out, n_panels=4):
     plt.close(fig)
 
 
+def crack_history(results, tip, threshold, base="particles"):
+    """The cracks of every output time of a run: (series, dx, history, final) with history
+    [(time, upper, lower)] (measure_crack's dicts or None; the lower crack grows from the notch
+    tip mirrored at y = 0) and final = (time, nodes, damage, displacement, upper, lower) of the
+    last output."""
+    lower_tip = np.array([tip[0], -tip[1]])
+    series = read_series(results, base)
+    nodes0, _ = read_particles(series[0][1])
+    dx = lattice_spacing(nodes0)
+    history = []
+    final = None
+    first_damage = {}  # per lattice point near a notch: its damage when it first appears
+    reach = 3.015 * dx + dx  # the pre-cracks damage particles within a horizon of the notches
+    for time, path in series:
+        nodes, damage, disp = read_particles(path, with_displacement=True)
+        near_notch = ((np.abs(np.abs(nodes[:, 1]) - tip[1]) <= reach)
+                      & (nodes[:, 0] <= tip[0] + reach))
+        keys = map(tuple, np.round(nodes[near_notch] / dx * 2).astype(np.int64).tolist())
+        new = damage.copy()
+        new[near_notch] -= np.array([first_damage.setdefault(k, d)
+                                     for k, d in zip(keys, damage[near_notch])])
+        upper = measure_crack(nodes, new, tip, dx, threshold, +1.0)
+        lower = measure_crack(nodes, new, lower_tip, dx, threshold, -1.0)
+        history.append((time, upper, lower))
+        final = (time, nodes, damage, disp, upper, lower)
+    return series, dx, history, final
+
+
 def main():
     parser = argparse.ArgumentParser(description=__doc__.split("\n")[0])
     parser.add_argument("results", help="directory with particles.xdmf and statistics.csv")
@@ -268,25 +298,11 @@ def main():
     parser.add_argument("--base", default="particles", help="base name of the particle files")
     args = parser.parse_args()
     tip = np.array([float(v) for v in args.notch_tip.split(",")])
-    lower_tip = np.array([tip[0], -tip[1]])
 
     stats = read_statistics(args.results)
     plot_energies(stats, os.path.join(args.results, "energies.png"))
 
-    series = read_series(args.results, args.base)
-    nodes0, _ = read_particles(series[0][1])
-    dx = lattice_spacing(nodes0)
-    history = []
-    final = None
-    first_damage = {}  # per lattice point: its damage when it first appears
-    for time, path in series:
-        nodes, damage, disp = read_particles(path, with_displacement=True)
-        keys = map(tuple, np.round(nodes / dx * 2).astype(np.int64).tolist())
-        new = damage - np.array([first_damage.setdefault(k, d) for k, d in zip(keys, damage)])
-        upper = measure_crack(nodes, new, tip, dx, args.threshold, +1.0)
-        lower = measure_crack(nodes, new, lower_tip, dx, args.threshold, -1.0)
-        history.append((time, upper, lower))
-        final = (time, nodes, damage, disp, upper, lower)
+    series, dx, history, final = crack_history(args.results, tip, args.threshold, args.base)
 
     with open(os.path.join(args.results, "crack_angle.csv"), "w") as f:
         f.write("time,angle_upper,chord_upper,length_upper,tip_x_upper,tip_y_upper,"
