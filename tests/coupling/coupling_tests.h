@@ -272,6 +272,22 @@ end
     return all;
   }
 
+  /// The crack particles of a Kalthoff-Winkler run on the side @p side (+1: y > 0) of the
+  /// gathered particles @p points (gather_damage()): damage index >= 0.35, beyond the notch
+  /// tips (x = 50 mm) by more than @p horizon (the pre-cracks damage particles within a horizon
+  /// of their tips).
+  inline std::vector<dealii::Point<2>>
+  kalthoff_crack_particles(const std::vector<double> &points,
+                           const double               side,
+                           const double               horizon)
+  {
+    std::vector<dealii::Point<2>> result;
+    for (std::size_t k = 0; k + 3 <= points.size(); k += 3)
+      if (points[k + 2] >= 0.35 && points[k] > 0.05 + horizon && side * points[k + 1] > 0.)
+        result.emplace_back(points[k], points[k + 1]);
+    return result;
+  }
+
   /// The number of occurrences of @p text in @p log.
   inline unsigned int
   count_lines(const std::string &log, const std::string &text)

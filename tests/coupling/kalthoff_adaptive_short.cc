@@ -36,26 +36,20 @@ namespace
     unsigned int n_particles = 0;
   };
 
-  /// The crack grown from the notch tip @p tip on the side @p side (+1: y > 0) of the gathered
-  /// particles @p points (x, y, damage per particle).
+  /// The crack of the particles @p cracks (kalthoff_crack_particles()) grown from the notch
+  /// tip @p tip on the side @p side (+1: y > 0).
   Crack
-  measure_crack(const std::vector<double> &points,
-                const Point<2>            &tip,
-                const double               side,
-                const double               horizon)
+  measure_crack(const std::vector<Point<2>> &cracks, const Point<2> &tip, const double side)
   {
-    Crack          crack;
-    Tensor<2, 2>   scatter;
-    Tensor<1, 2>   sum;
-    constexpr auto threshold = 0.35;
-    for (std::size_t k = 0; k + 3 <= points.size(); k += 3)
+    Crack        crack;
+    Tensor<2, 2> scatter;
+    Tensor<1, 2> sum;
+    for (const auto &p : cracks)
       {
         // Offsets mirrored to the upper crack's side.
         Tensor<1, 2> offset;
-        offset[0] = points[k] - tip[0];
-        offset[1] = side * (points[k + 1] - tip[1]);
-        if (points[k + 2] < threshold || offset[0] <= horizon || side * points[k + 1] <= 0.)
-          continue;
+        offset[0] = p[0] - tip[0];
+        offset[1] = side * (p[1] - tip[1]);
         scatter += outer_product(offset, offset);
         sum += offset;
         crack.reach = std::max(crack.reach, offset.norm());
@@ -120,7 +114,10 @@ main(int argc, char **argv)
             << coupling_tests::ok(std::abs(change) < 0.01 * work) << std::endl;
   for (const double side : {1., -1.})
     {
-      const Crack crack = measure_crack(points, Point<2>(0.05, side * 0.025), side, horizon);
+      const Crack crack =
+        measure_crack(coupling_tests::kalthoff_crack_particles(points, side, horizon),
+                      Point<2>(0.05, side * 0.025),
+                      side);
       std::cout << (side > 0. ? "upper" : "lower") << " crack: " << crack.n_particles
                 << " particles, angle " << std::fixed << std::setprecision(1) << crack.angle
                 << " deg, reach " << crack.reach * 1e3 << " mm" << std::defaultfloat

@@ -35,17 +35,6 @@ namespace
 {
   constexpr double dx = 1e-3, horizon = 3.015 * dx;
 
-  /// The crack particles (x, y) on the side @p side (+1: y > 0) of the gathered particles.
-  std::vector<Point<2>>
-  crack(const std::vector<double> &points, const double side)
-  {
-    std::vector<Point<2>> result;
-    for (std::size_t k = 0; k + 3 <= points.size(); k += 3)
-      if (points[k + 2] >= 0.35 && points[k] > 0.05 + horizon && side * points[k + 1] > 0.)
-        result.emplace_back(points[k], points[k + 1]);
-    return result;
-  }
-
   /// The largest distance from a point of one set to the nearest point of the other.
   double
   hausdorff(const std::vector<Point<2>> &a, const std::vector<Point<2>> &b)
@@ -116,7 +105,8 @@ main(int argc, char **argv)
             << " particles at the end; all-PD: " << all_pd.size() / 3 << " particles" << std::endl;
   for (const double side : {1., -1.})
     {
-      const auto   a = crack(adaptive, side), b = crack(all_pd, side);
+      const auto a          = coupling_tests::kalthoff_crack_particles(adaptive, side, horizon),
+                 b          = coupling_tests::kalthoff_crack_particles(all_pd, side, horizon);
       const double distance = hausdorff(a, b) / horizon;
       std::cout << (side > 0. ? "upper" : "lower") << " cracks: " << a.size() << " / " << b.size()
                 << " particles (adaptive / all-PD), largest distance " << distance << " horizons"
