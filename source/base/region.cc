@@ -11,7 +11,6 @@
 #include <perideal/base/region.h>
 
 #include <filesystem>
-#include <iterator>
 
 namespace perideal
 {
@@ -163,13 +162,9 @@ namespace perideal
                 low[d] -= tolerance;
                 high[d] += tolerance;
               }
-            std::vector<
-              std::pair<BoundingBox<dim>, typename Triangulation<dim>::active_cell_iterator>>
-              near;
-            mesh_cache->get_cell_bounding_boxes_rtree().query(
-              boost::geometry::index::intersects(BoundingBox<dim>(std::make_pair(low, high))),
-              std::back_inserter(near));
-            if (near.empty())
+            const auto &tree = mesh_cache->get_cell_bounding_boxes_rtree();
+            if (tree.qbegin(boost::geometry::index::intersects(
+                  BoundingBox<dim>(std::make_pair(low, high)))) == tree.qend())
               return false;
             const auto found = GridTools::find_active_cell_around_point(*mesh_cache, p);
             return found.first.state() == IteratorState::valid &&
