@@ -124,8 +124,9 @@ namespace perideal
                       "0",
                       Patterns::Integer(0),
                       "Explicit: write the particle and FE fields every this many steps (0: first "
-                      "and last step only); quasi-static runs write them after the last load "
-                      "step.");
+                      "and last step only); quasi-static runs: every this many load steps and "
+                      "after the last (0: the last only; events of 'sequentially linear': the "
+                      "last only).");
     prm.declare_entry("Statistics interval",
                       "10",
                       Patterns::Integer(1),
@@ -154,7 +155,8 @@ namespace perideal
                       "",
                       Patterns::Anything(),
                       "Points (coordinates separated by ',', points by ';') whose nearest "
-                      "particle's displacement the final summary prints, in micrometres (um). "
+                      "particle's field the statistics columns probe<k>_<component> (k = 1, 2, "
+                      "...; SI units) and the final summary (micrometres, microradians) report. "
                       "Each point needs a particle within one lattice spacing (coupled runs: in "
                       "the PD region or its overlap). Empty: none.");
     prm.leave_subsection();

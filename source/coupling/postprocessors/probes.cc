@@ -76,9 +76,11 @@ namespace perideal
 
   template <int dim>
   void
-  Probes<dim>::execute(const CoupledState<dim> &state, const StepData &data, StatisticsFile &)
+  Probes<dim>::execute(const CoupledState<dim> &state,
+                       const StepData          &data,
+                       StatisticsFile          &statistics)
   {
-    if (!data.final_row || probe_particles.empty())
+    if (!(data.final_row || data.write_statistics) || probe_particles.empty())
       return;
     const auto         &points = state.settings.probe_points;
     const unsigned int  nc     = state.n_components();
@@ -88,15 +90,21 @@ namespace perideal
         for (unsigned int c = 0; c < nc; ++c)
           values[p * nc + c] = state.u.local_element(probe_local_index[p] * nc + c);
     Utilities::MPI::sum(values, state.comm, values);
-    if (!state.is_root)
-      return;
-    // Translations and scalars in micrometres, rotations in microradians.
     const FieldLayout &layout = state.layout;
-    const std::string  label  = layout.n_components(ComponentKind::translation) == nc ?
-                                  "displacement [um]" :
-                                  "field (" + layout.names() + ") [um, urad]";
-    std::ostream      &log    = state.log;
-    const auto         flags  = log.flags();
+    // Every statistics row: the values in SI units (m, rad).
+    if (data.write_statistics)
+      for (unsigned int p = 0; p < points.size(); ++p)
+        for (unsigned int c = 0; c < nc; ++c)
+          statistics.add_value("probe" + std::to_string(p + 1) + "_" + layout.name(c),
+                               values[p * nc + c]);
+    if (!data.final_row || !state.is_root)
+      return;
+    // The summary: translations and scalars in micrometres, rotations in microradians.
+    const std::string label = layout.n_components(ComponentKind::translation) == nc ?
+                                "displacement [um]" :
+                                "field (" + layout.names() + ") [um, urad]";
+    std::ostream     &log   = state.log;
+    const auto        flags = log.flags();
     for (unsigned int p = 0; p < points.size(); ++p)
       {
         log << std::defaultfloat << "Probe " << p + 1 << " (" << points[p] << "): particle at ("

@@ -59,7 +59,16 @@ namespace perideal
     const bool        relax       = (type == SolverType::adaptive_dynamic_relaxation);
     const std::string solver_name = relax ? "adaptive dynamic relaxation" : "static";
 
+    AssertThrow(control.history != LoadHistory::time || state.settings.end_time > 0.,
+                ExcMessage("<Solver/Control/Load history> = time evaluates the conditions at t = "
+                           "load factor x <Time stepping/End time>, which is 0: set End time > 0 "
+                           "(the t at which the last load step ends)."));
     state.pd.particles().reinit_vector(prescribed, nc);
+    // The conditions at one time (conditions_at()).
+    state.pd.particles().reinit_vector(target, nc);
+    state.pd.particles().reinit_vector(full_load, nc);
+    fe.initialize_vector(fe_target);
+    fe.initialize_vector(fe_full_load);
     // The FE dofs held: those of value conditions and a held point (FEPhysics::held_point()).
     std::vector<double> constrained(nc, 0.);
     const auto         &held = fe.prescribed_mask();
@@ -92,13 +101,15 @@ namespace perideal
     const std::string conditions_named =
       " (boundary conditions: " + (condition_list.empty() ? std::string("none") : condition_list) +
       ")";
+    // Rotations of micropolar models are no rigid mode by themselves: a uniform rotation with
+    // the translations at rest strains the bonds (seed 003: the bond's shear strain).
     double n_constrained = 0.;
     for (unsigned int c = 0; c < nc; ++c)
       {
         constrained[c] = Utilities::MPI::sum(constrained[c], state.comm);
         n_constrained += constrained[c];
         const std::string &name = state.layout.name(c);
-        AssertThrow(constrained[c] > 0. || relax,
+        AssertThrow(constrained[c] > 0. || relax || state.layout.kind(c) == ComponentKind::rotation,
                     ExcMessage("No displacement condition prescribes the " + name +
                                " component anywhere" + conditions_named +
                                ", so a rigid translation in " + name +
@@ -136,34 +147,35 @@ namespace perideal
 
   template <int dim>
   void
-  LoadStepping<dim>::conditions_at_end_time(CoupledState<dim> &state)
+  LoadStepping<dim>::conditions_at(CoupledState<dim> &state, const double time)
   {
-    const auto &settings = state.settings;
-    auto       &ps       = state.pd.particles();
-    ps.reinit_vector(target, state.n_components());
-    ps.reinit_vector(full_load, state.n_components());
-    state.fe.initialize_vector(fe_target);
-    state.fe.initialize_vector(fe_full_load);
-    state.pd.boundary_conditions().prescribe_displacement(settings.end_time, target);
-    state.pd.boundary_conditions().add_loads(settings.end_time, full_load);
-    state.fe.prescribe(settings.end_time, fe_target, state.V);
-    state.fe.assemble_load(settings.end_time, fe_full_load);
+    full_load = 0.;
+    state.pd.boundary_conditions().prescribe_displacement(time, target);
+    state.pd.boundary_conditions().add_loads(time, full_load);
+    state.fe.prescribe(time, fe_target, state.V);
+    state.fe.assemble_load(time, fe_full_load);
   }
 
   template <int dim>
   void
-  LoadStepping<dim>::apply_load_factor(CoupledState<dim> &state, const double factor) const
+  LoadStepping<dim>::apply_load_factor(CoupledState<dim> &state, const double factor)
   {
+    double scale = factor;
+    if (control.history == LoadHistory::time)
+      {
+        conditions_at(state, factor * state.settings.end_time);
+        scale = 1.;
+      }
     auto       &U    = state.U;
     auto       &u    = state.u;
     const auto &mask = state.fe.prescribed_mask();
-    scale_loads(state, factor);
+    scale_loads(state, scale);
     for (unsigned int k = 0; k < U.locally_owned_size(); ++k)
       if (mask[k])
-        U.local_element(k) = factor * fe_target.local_element(k);
+        U.local_element(k) = scale * fe_target.local_element(k);
     for (unsigned int k = 0; k < u.locally_owned_size(); ++k)
       if (prescribed.local_element(k) != 0.)
-        u.local_element(k) = factor * target.local_element(k);
+        u.local_element(k) = scale * target.local_element(k);
   }
 
   template <int dim>
@@ -209,8 +221,9 @@ namespace perideal
     const unsigned int n_steps  = settings.load_steps;
     auto              &U = state.U, &u = state.u;
 
-    // The conditions at t = End time, scaled by the load factor.
-    conditions_at_end_time(state);
+    // The conditions at t = End time, scaled by the load factor (a time history evaluates them
+    // at each load factor).
+    conditions_at(state, settings.end_time);
 
     // Cutting steps: the increment is not stored in checkpoints.
     const bool cutting = control.cut_threshold > 0;
@@ -224,7 +237,8 @@ namespace perideal
     // What a restart must keep: the solver and its load steps (not its tolerance, iterations or
     // linear solver, which a restart after a step that did not converge may change).
     checkpoint.set_run(std::string(relax ? "adaptive dynamic relaxation" : "static") + ", " +
-                         std::to_string(n_steps) + " load steps",
+                         std::to_string(n_steps) + " load steps" +
+                         (control.history == LoadHistory::time ? ", time history" : ""),
                        n_steps);
     StepData data;
     data.quasi_static     = true;
@@ -315,10 +329,11 @@ namespace perideal
               state.log << ", " << iterations << (relax ? " relaxation" : " CG") << " iterations";
             state.log << std::endl;
           }
-        data.step         = step;
-        data.time         = factor;
-        data.final_row    = cutting ? factor >= 1. : (step == n_steps);
-        data.write_fields = data.final_row;
+        data.step      = step;
+        data.time      = factor;
+        data.final_row = cutting ? factor >= 1. : (step == n_steps);
+        data.write_fields =
+          data.final_row || (settings.output_interval > 0 && step % settings.output_interval == 0);
         data.output_index = step;
         data.iterations   = iterations;
         data.pd_energy    = pd_energy;

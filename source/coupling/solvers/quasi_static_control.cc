@@ -25,6 +25,16 @@ namespace perideal
       "fall (snap-back), so unstable crack growth shows as a falling load. The run ends when the "
       "body separates (<Separation load fraction>), a free particle loses its last bond, the "
       "load factor would exceed 1, or after <Maximum events>.");
+    prm.declare_entry(
+      "Load history",
+      "proportional",
+      Patterns::Selection("proportional|time"),
+      "Load steps: how the conditions follow the load factor lambda in [0, 1]. 'proportional': "
+      "the displacements and loads of the condition functions at t = <Time stepping/End time>, "
+      "times lambda (every load grows in proportion). 'time': the functions evaluated at t = "
+      "lambda x End time, unscaled, so that any load path can be written as a function of t, "
+      "e.g. a force applied and then held while a displacement grows. 'sequentially linear' "
+      "accepts 'proportional' only.");
     prm.declare_entry("Load point",
                       "",
                       Patterns::Anything(),
@@ -81,10 +91,11 @@ namespace perideal
   {
     prm.enter_subsection("Solver");
     prm.enter_subsection("Control");
-    method         = prm.get("Method") == "sequentially linear" ? LoadControl::sequentially_linear :
-                                                                  LoadControl::load_steps;
-    load_point     = prm.get("Load point");
-    load_component = prm.get("Load component");
+    method     = prm.get("Method") == "sequentially linear" ? LoadControl::sequentially_linear :
+                                                              LoadControl::load_steps;
+    history    = prm.get("Load history") == "time" ? LoadHistory::time : LoadHistory::proportional;
+    load_point = prm.get("Load point");
+    load_component      = prm.get("Load component");
     event_tolerance     = prm.get_double("Event tolerance");
     separation_fraction = prm.get_double("Separation load fraction");
     const long events   = prm.get_integer("Maximum events");
@@ -112,6 +123,10 @@ namespace perideal
                            std::to_string(cuts) + "; accepted: [0, 50]."));
     cut_threshold = static_cast<unsigned int>(cut);
     max_cuts      = static_cast<unsigned int>(cuts);
+    AssertThrow(method != LoadControl::sequentially_linear || history == LoadHistory::proportional,
+                ExcMessage("<Solver/Control/Method> = sequentially linear scales one linear "
+                           "solution, so it needs <Solver/Control/Load history> = proportional "
+                           "(given: time); for a load path of t use <Method> = load steps."));
     AssertThrow(method != LoadControl::sequentially_linear || !load_point.empty(),
                 ExcMessage("<Solver/Control/Method> = sequentially linear needs a <Solver/Control/"
                            "Load point>: the displacement condition whose load decides when the "

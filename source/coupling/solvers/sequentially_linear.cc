@@ -133,7 +133,7 @@ namespace perideal
     auto        &ps       = pd.particles();
     const double infinity = std::numeric_limits<double>::infinity();
     const auto   number   = [](const double x) { return ParameterUtilities::format_number(x); };
-    this->conditions_at_end_time(state);
+    this->conditions_at(state, settings.end_time);
 
     StepData data;
     data.quasi_static     = true;

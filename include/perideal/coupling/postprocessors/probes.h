@@ -13,9 +13,10 @@
 namespace perideal
 {
   /**
-   * @brief <Output/Probe points>: the final summary prints the field of the particle nearest to
-   * each point, translations and scalars in micrometres, rotations in microradians (the values
-   * application tests compare must lie above numdiff's absolute tolerance).
+   * @brief <Output/Probe points>: the field of the particle nearest to each point, in the
+   * statistics columns probe<k>_<component> (k from 1, SI units) of every row, and in the final
+   * summary in micrometres and microradians (the values application tests compare must lie
+   * above numdiff's absolute tolerance).
    *
    * The particle is chosen once (initialize()): the nearest, ties going to the
    * lexicographically smallest position, so the choice does not depend on the partition; a

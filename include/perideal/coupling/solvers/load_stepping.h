@@ -55,18 +55,20 @@ namespace perideal
 
   protected:
     /**
-     * @brief The conditions at <Time stepping/End time> (load factor 1): the prescribed values
-     * of the particles and FE dofs and the loads, kept for apply_load_factor().
+     * @brief The conditions at time @p time: the prescribed values of the particles and FE dofs
+     * and the loads, kept for apply_load_factor().
      */
     void
-    conditions_at_end_time(CoupledState<dim> &state);
+    conditions_at(CoupledState<dim> &state, const double time);
 
     /**
      * @brief Load factor @p factor: the loads (CoupledState::f_ext, external_force) and the
-     * prescribed values (owned entries of U and u) @p factor times those at End time.
+     * prescribed values (owned entries of U and u). Proportional history: @p factor times those
+     * at End time (conditions_at() End time once before); time history: those at @p factor x
+     * End time.
      */
     void
-    apply_load_factor(CoupledState<dim> &state, const double factor) const;
+    apply_load_factor(CoupledState<dim> &state, const double factor);
 
     /**
      * @brief The loads of apply_load_factor() alone: for a solution scaled as a whole (a linear

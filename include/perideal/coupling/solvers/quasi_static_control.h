@@ -20,6 +20,15 @@ namespace perideal
     sequentially_linear
   };
 
+  /// <Solver/Control/Load history>: how the conditions depend on the load factor.
+  enum class LoadHistory
+  {
+    /// The conditions at <Time stepping/End time>, scaled by the load factor.
+    proportional,
+    /// The conditions evaluated at t = load factor x End time, unscaled (any load path).
+    time
+  };
+
   /**
    * @brief The entries of <Solver/Control>: the control of a quasi-static run, the load point
    * whose load and displacement the statistics report (and whose load decides when the body has
@@ -37,7 +46,8 @@ namespace perideal
     void
     parse_parameters(dealii::ParameterHandler &prm);
 
-    LoadControl method = LoadControl::load_steps;
+    LoadControl method  = LoadControl::load_steps;
+    LoadHistory history = LoadHistory::proportional;
     /// The displacement condition (particle or FE) whose reaction is the load; empty: none.
     std::string load_point;
     /// The component (layout name) of the load and the load-point displacement.
