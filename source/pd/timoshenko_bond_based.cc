@@ -276,7 +276,10 @@ namespace perideal
             if (stdx::none_of(present[m] > old))
               continue;
             const Vector grown = stdx::max(old, present[m]);
-            *p.largest_growth  = std::max(*p.largest_growth, stdx::hmax(grown - old));
+            // Growth that changes the factor: beyond the limit (1) only.
+            const Vector one = 1.;
+            *p.largest_growth =
+              std::max(*p.largest_growth, stdx::hmax(stdx::max(grown, one) - stdx::max(old, one)));
             released += U0[m] * (D(grown) - D(old));
             grown.copy_to(p.history[m] + q, stdx::element_aligned);
             Vector mu = 1.;
@@ -383,6 +386,12 @@ namespace perideal
                       Patterns::Double(),
                       "k > 0 of the softening law: force C x0 exp(-k (x - x0)/x0) beyond the "
                       "limit x0; the limits are the brittle ones times sqrt(k / (k + 2)).");
+    prm.declare_entry("Softening tolerance",
+                      "1e-3",
+                      Patterns::Double(),
+                      "Softening, quasi-static runs: a load step is solved again (with the secant "
+                      "stiffness of the histories reached) while a history beyond its limit grows "
+                      "by more than this fraction of the limit in one solve; accepted: (0, 0.1].");
   }
 
   template <int dim>
@@ -420,6 +429,11 @@ namespace perideal
                 ExcMessage("<" + section + "Softening parameter> = " +
                            ParameterUtilities::format_number(softening) +
                            " must be > 0 (the limits scale by sqrt(k / (k + 2)))."));
+    softening_tolerance = prm.get_double("Softening tolerance");
+    AssertThrow(softening_tolerance > 0. && softening_tolerance <= 0.1,
+                ExcMessage("<" + section + "Softening tolerance> = " +
+                           ParameterUtilities::format_number(softening_tolerance) +
+                           "; accepted: (0, 0.1] (a fraction of the limit)."));
   }
 
   template <int dim>
@@ -767,7 +781,7 @@ namespace perideal
   TimoshenkoBondBased<dim>::damage_changed() const
   {
     return failure == FailureLaw::softening &&
-           Utilities::MPI::max(kernel->largest_growth, communicator) > 1e-3;
+           Utilities::MPI::max(kernel->largest_growth, communicator) > softening_tolerance;
   }
 
   template <int dim>

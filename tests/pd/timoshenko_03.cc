@@ -360,6 +360,11 @@ end
                               regions,
                               {"pull_left", "pull_right"},
                               false);
+    pd_tests::check_bad_input("softening tolerance 0.5",
+                              base("Softening tolerance", "0.5", ""),
+                              regions,
+                              {"pull_left", "pull_right"},
+                              false);
     pd_tests::check_bad_input("rotational inertia factor -1",
                               base("Rotational inertia factor", "-1", ""),
                               regions,

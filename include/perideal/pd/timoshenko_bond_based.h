@@ -214,7 +214,8 @@ namespace perideal
     double
     released_energy(ParticleSystem<dim> &particles, const ParticleVector &u) override;
 
-    /// Softening: whether a history grew by more than 1e-3 of its limit in the last commit.
+    /// Softening: whether a history beyond its limit (a factor below one) grew by more than
+    /// <Softening tolerance> of the limit in the last commit.
     bool
     damage_changed() const override;
 
@@ -271,10 +272,12 @@ namespace perideal
     failure_law() const;
 
   private:
-    double                  youngs_modulus = 0., poisson_ratio = 0., bending_ratio = 0.;
-    double                  inertia_factor = 1. / 12., softening = 10.;
-    Timoshenko::Calibration calibration = Timoshenko::Calibration::lattice;
-    FailureLaw              failure     = FailureLaw::brittle;
+    double youngs_modulus = 0., poisson_ratio = 0., bending_ratio = 0.;
+    double inertia_factor = 1. / 12., softening = 10.;
+    /// Softening: damage_changed() while a history beyond its limit grows by more than this.
+    double                  softening_tolerance = 1e-3;
+    Timoshenko::Calibration calibration         = Timoshenko::Calibration::lattice;
+    FailureLaw              failure             = FailureLaw::brittle;
     ModelContext            context;
     double                  spacing      = 0.;
     MPI_Comm                communicator = MPI_COMM_WORLD;
