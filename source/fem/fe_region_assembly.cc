@@ -154,9 +154,21 @@ namespace perideal
     const unsigned int                   n = fe.n_dofs_per_cell();
     dealii::Vector<double>               cell_rhs(n);
     std::vector<types::global_dof_index> dofs(n);
+    // Without a volume load only the cells with a loaded boundary face contribute (explicit runs
+    // assemble the load every step).
+    const bool volume_load = body_force || physics_model->has_cell_load();
+    const auto loaded      = [this](const auto &cell) {
+      for (const unsigned int f : cell->face_indices())
+        if (cell->face(f)->at_boundary())
+          for (const auto &c : condition_list)
+            if (c.type == Quantity::load && c.boundary_ids.count(cell->face(f)->boundary_id()) > 0)
+              return true;
+      return false;
+    };
     f = 0.;
     for (const auto &cell : dof_handler.active_cell_iterators())
-      if (cell->is_locally_owned() && cell->active_fe_index() == 0)
+      if (cell->is_locally_owned() && cell->active_fe_index() == 0 &&
+          (volume_load || (cell->at_boundary() && loaded(cell))))
         {
           fe_values.reinit(cell);
           assemble_cell_load(cell, time, fe_values, fe_face_values, cell_rhs);
