@@ -10,10 +10,13 @@
 #include <perideal/coupling/coupled_problem.h>
 #include <perideal/pd/damage_model.h>
 
+#include <algorithm>
 #include <cmath>
+#include <filesystem>
 #include <fstream>
 #include <functional>
 #include <iostream>
+#include <limits>
 #include <map>
 #include <sstream>
 #include <string>
@@ -286,6 +289,41 @@ end
       if (points[k + 2] >= 0.35 && points[k] > 0.05 + horizon && side * points[k + 1] > 0.)
         result.emplace_back(points[k], points[k + 1]);
     return result;
+  }
+
+  /// The distance from @p point to the nearest of @p points (max double if there is none).
+  inline double
+  nearest_distance(const dealii::Point<2> &point, const std::vector<dealii::Point<2>> &points)
+  {
+    double nearest = std::numeric_limits<double>::max();
+    for (const auto &q : points)
+      nearest = std::min(nearest, point.distance(q));
+    return nearest;
+  }
+
+  /// The largest distance from a point of one set to the nearest point of the other (the
+  /// symmetric Hausdorff distance).
+  inline double
+  hausdorff(const std::vector<dealii::Point<2>> &a, const std::vector<dealii::Point<2>> &b)
+  {
+    double largest = 0.;
+    for (const auto &p : a)
+      largest = std::max(largest, nearest_distance(p, b));
+    for (const auto &p : b)
+      largest = std::max(largest, nearest_distance(p, a));
+    return largest;
+  }
+
+  /// Link the repository's 'doc' and 'meshes' into the working directory, for parameter files
+  /// that name their includes and meshes relative to the top directory. Collective.
+  inline void
+  link_top_directories()
+  {
+    if (dealii::Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0)
+      for (const std::string directory : {"doc", "meshes"})
+        if (!std::filesystem::exists(directory))
+          std::filesystem::create_directory_symlink(SOURCE_DIR "/../../" + directory, directory);
+    MPI_Barrier(MPI_COMM_WORLD);
   }
 
   /// The number of occurrences of @p text in @p log.

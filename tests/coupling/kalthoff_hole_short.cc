@@ -22,10 +22,8 @@
 
 #include <algorithm>
 #include <cmath>
-#include <filesystem>
 #include <iomanip>
 #include <iostream>
-#include <limits>
 #include <string>
 #include <vector>
 
@@ -34,24 +32,6 @@ using namespace dealii;
 namespace
 {
   constexpr double dx = 1e-3, horizon = 3.015 * dx;
-
-  /// The largest distance from a point of one set to the nearest point of the other.
-  double
-  hausdorff(const std::vector<Point<2>> &a, const std::vector<Point<2>> &b)
-  {
-    const auto one_way = [](const std::vector<Point<2>> &from, const std::vector<Point<2>> &to) {
-      double largest = 0.;
-      for (const auto &p : from)
-        {
-          double nearest = std::numeric_limits<double>::max();
-          for (const auto &q : to)
-            nearest = std::min(nearest, p.distance(q));
-          largest = std::max(largest, nearest);
-        }
-      return largest;
-    };
-    return std::max(one_way(a, b), one_way(b, a));
-  }
 
   /// Whether a point of @p cracks lies within 5 mm of the hole (70-82 x 44-56 mm).
   bool
@@ -69,11 +49,7 @@ main(int argc, char **argv)
   Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
   if (Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) != 0)
     std::cout.setstate(std::ios::failbit);
-  if (Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0)
-    for (const std::string directory : {"doc", "meshes"})
-      if (!std::filesystem::exists(directory))
-        std::filesystem::create_directory_symlink(SOURCE_DIR "/../../" + directory, directory);
-  MPI_Barrier(MPI_COMM_WORLD);
+  coupling_tests::link_top_directories();
 
   const std::string   overrides = "subsection Discretization\n"
                                   "  set Lattice spacing = 1e-3\n"
@@ -107,7 +83,7 @@ main(int argc, char **argv)
     {
       const auto a          = coupling_tests::kalthoff_crack_particles(adaptive, side, horizon),
                  b          = coupling_tests::kalthoff_crack_particles(all_pd, side, horizon);
-      const double distance = hausdorff(a, b) / horizon;
+      const double distance = coupling_tests::hausdorff(a, b) / horizon;
       std::cout << (side > 0. ? "upper" : "lower") << " cracks: " << a.size() << " / " << b.size()
                 << " particles (adaptive / all-PD), largest distance " << distance << " horizons"
                 << std::endl;

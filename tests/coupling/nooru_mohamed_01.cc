@@ -20,10 +20,8 @@
 
 #include <algorithm>
 #include <cmath>
-#include <filesystem>
 #include <iomanip>
 #include <iostream>
-#include <limits>
 #include <string>
 #include <vector>
 
@@ -32,24 +30,6 @@ using namespace dealii;
 namespace
 {
   constexpr double dx = 2e-3, horizon = 3 * dx;
-
-  /// The largest distance from a point of one set to the nearest point of the other.
-  double
-  hausdorff(const std::vector<Point<2>> &a, const std::vector<Point<2>> &b)
-  {
-    const auto one_way = [](const std::vector<Point<2>> &from, const std::vector<Point<2>> &to) {
-      double largest = 0.;
-      for (const auto &p : from)
-        {
-          double nearest = std::numeric_limits<double>::max();
-          for (const auto &q : to)
-            nearest = std::min(nearest, p.distance(q));
-          largest = std::max(largest, nearest);
-        }
-      return largest;
-    };
-    return std::max(one_way(a, b), one_way(b, a));
-  }
 
   struct Result
   {
@@ -92,14 +72,9 @@ namespace
     std::vector<Point<2>> turned;
     for (const auto &p : r.cracks)
       turned.push_back(Point<2>(2. * centre[0] - p[0], 2. * centre[1] - p[1]));
-    const auto nearest = [&](const Point<2> &tip) {
-      double d = std::numeric_limits<double>::max();
-      for (const auto &p : r.cracks)
-        d = std::min(d, tip.distance(p));
-      return d;
-    };
-    const double left = nearest(Point<2>(0.025, 0.1)), right = nearest(Point<2>(0.175, 0.1));
-    const double symmetry = hausdorff(r.cracks, turned);
+    const double left     = coupling_tests::nearest_distance(Point<2>(0.025, 0.1), r.cracks);
+    const double right    = coupling_tests::nearest_distance(Point<2>(0.175, 0.1), r.cracks);
+    const double symmetry = coupling_tests::hausdorff(r.cracks, turned);
     std::cout << name << ": " << r.cracks.size() << " crack particles; peak normal force "
               << r.peak / 1e3 << " kN" << std::endl;
     std::cout << "  cracks at both notch tips (nearest " << 1e3 * left << ", " << 1e3 * right
@@ -117,18 +92,14 @@ main(int argc, char **argv)
   Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
   if (Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) != 0)
     std::cout.setstate(std::ios::failbit);
-  if (Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0)
-    for (const std::string directory : {"doc", "meshes"})
-      if (!std::filesystem::exists(directory))
-        std::filesystem::create_directory_symlink(SOURCE_DIR "/../../" + directory, directory);
-  MPI_Barrier(MPI_COMM_WORLD);
+  coupling_tests::link_top_directories();
 
   std::cout << std::setprecision(3);
   const Result all_pd = run("full_pd"), coupled = run("coupled");
   check("all-PD", all_pd);
   check("coupled", coupled);
   const double ratio    = coupled.peak / all_pd.peak,
-               distance = hausdorff(coupled.cracks, all_pd.cracks);
+               distance = coupling_tests::hausdorff(coupled.cracks, all_pd.cracks);
   std::cout << "coupled / all-PD peak " << ratio
             << " (within 1 %): " << coupling_tests::ok(std::abs(ratio - 1.) < 0.01)
             << "; crack sets " << 1e3 * distance
