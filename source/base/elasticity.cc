@@ -310,6 +310,15 @@ namespace perideal
       stiffness = rotate_voigt_stiffness(stiffness, rotation);
   }
 
+  ElasticMaterial
+  ElasticMaterial::rotated(const Tensor<2, 3> &extra) const
+  {
+    ElasticMaterial result = *this;
+    result.rotation        = extra * rotation;
+    result.stiffness       = rotate_voigt_stiffness(stiffness, extra);
+    return result;
+  }
+
   const Tensor<2, 3> &
   ElasticMaterial::axes() const
   {

@@ -25,7 +25,7 @@ namespace perideal
 
     /**
      * @brief The linearized stretch s = xi . eta / |xi|^2 of the lanes and the `stretch` that
-     * breaks a bond, s times the bond class's breaking factor sqrt(|c(n)| / (c_mean g(n))).
+     * breaks a bond, s times the bond's breaking factor sqrt(|c_b| / (c_mean g_b)).
      */
     struct LinearStretch
     {
@@ -36,31 +36,31 @@ namespace perideal
      * @brief The pair law of the linearized bond (StretchPairLaw's side, its own strain): pair
      * force k s n on the particle side (-k s n on the neighbour), k = c(n) G beta V_i V_j per lane,
      * and, if @p with_energy, the pair energy k s^2 |xi| / 4 at both ends; if @p breaks, a bond
-     * breaks where s times its class's factor exceeds the reference critical stretch.
+     * breaks where s times its factor (per lane) exceeds the reference critical stretch.
      */
     template <int dim, bool with_energy, bool breaks>
     struct LinearizedPairLaw : StretchPairLaw<dim>
     {
       static constexpr unsigned int n_outputs    = dim + (with_energy ? 1 : 0);
       static constexpr bool         breaks_bonds = breaks;
-      /// k per lane.
+      /// k and the breaking factor per lane.
       const double *coefficient;
-      /// The bond classes of the blocks (the loop hands their elements) and their factors.
-      const typename BondBlocks<dim>::BondClass *classes;
-      const double                              *break_factor;
+      const double *break_factor;
 
       /// The linearized stretch (hides StretchPairLaw's deformed bond).
       LinearStretch
       strain(const typename BondBlocks<dim>::BondClass &bond,
+             const std::size_t                          first_lane,
              const bond_simd::Vector                   *u_a,
              const bond_simd::Vector                   *u_b) const
       {
-        bond_simd::Vector e = 0.;
+        using namespace bond_simd;
+        Vector e = 0.;
         for (unsigned int d = 0; d < dim; ++d)
           e += bond.xi[d] * (u_b[d] - u_a[d]);
-        const bond_simd::Vector s = e * (bond.inverse_length * bond.inverse_length);
+        const Vector s = e * (bond.inverse_length * bond.inverse_length);
         if constexpr (breaks)
-          return {s, s * break_factor[&bond - classes]};
+          return {s, s * Vector(break_factor + first_lane, stdx::element_aligned)};
         else
           return {s, s};
       }
@@ -96,11 +96,10 @@ namespace perideal
   template <int dim>
   struct AnisotropicBondBased<dim>::Kernel
   {
-    /// The bonds in SIMD blocks, bond_coefficient per lane and the breaking factor
-    /// sqrt(|c(n)| / (c_mean g(n))) per bond class (g: the fracture energy ratios' weight).
+    /// The bonds in SIMD blocks, bond_coefficient and the breaking factor
+    /// sqrt(|c_b| / (c_mean g_b)) per lane (g_b: the weight of the fracture energies).
     BondBlocks<dim>                 blocks;
-    typename BondBlocks<dim>::Array lane_coefficient;
-    std::vector<double>             class_break_factor;
+    typename BondBlocks<dim>::Array lane_coefficient, lane_break_factor;
     /// Kernel-order work fields: displacement, force, energy density.
     typename BondBlocks<dim>::Array u_field, f_field, w_field;
 
@@ -122,13 +121,12 @@ namespace perideal
         }
       if constexpr (with_energy)
         out[dim] = blocks.component(w_field, 0);
-      for_each_bond_block<dim>(
-        blocks,
-        u,
-        out,
-        Law{{}, lane_coefficient.data(), blocks.classes().data(), class_break_factor.data()},
-        bonds,
-        critical_stretch);
+      for_each_bond_block<dim>(blocks,
+                               u,
+                               out,
+                               Law{{}, lane_coefficient.data(), lane_break_factor.data()},
+                               bonds,
+                               critical_stretch);
     }
 
     /**
@@ -177,6 +175,7 @@ namespace perideal
                       "integrals over the ball, seed note 004 sec. 1.3; the lattice error is "
                       "written to the log).");
     AnisotropicFractureEnergy<dim>::declare_parameters(prm);
+    Grains<dim>::declare_parameters(prm);
   }
 
   template <int dim>
@@ -188,6 +187,7 @@ namespace perideal
       prm.get("Calibration") == "discrete" ? Calibration::discrete : Calibration::continuum;
     symmetrize = prm.get("Cauchy relations") == "symmetrize";
     fracture.parse_parameters(prm, section);
+    grains.parse_parameters(prm, section);
     if constexpr (dim == 3)
       set_target(material.tensor<3>(PlanarAssumption::three_dimensional), "elastic constants");
   }
@@ -304,23 +304,33 @@ namespace perideal
                 ExcMessage("The elastic constants of <" + section +
                            "> give a micromodulus whose mean over the directions is not "
                            "positive; accepted: a positive definite operator."));
+    set_up_grains(particles, family, spacing);
 
     Kernel &k = *kernel;
     k.blocks.reinit(particles);
     k.blocks.reinit_field(k.u_field, dim);
     k.blocks.reinit_field(k.f_field, dim);
     k.blocks.reinit_field(k.w_field, 1);
-    const double c_mean = am::mean_directional_modulus<dim>(Lambda);
-    k.class_break_factor.clear();
-    for (const auto &bond_class : k.blocks.classes())
-      {
-        Tensor<1, dim> n;
-        for (unsigned int d = 0; d < dim; ++d)
-          n[d] = bond_class.xi[d];
-        n /= n.norm();
-        k.class_break_factor.push_back(
-          std::sqrt(std::abs(am::directional_modulus(Lambda, n)) / (c_mean * fracture.weight(n))));
-      }
+    {
+      // The breaking factor per bond: the direction factor and fracture weight of its grain,
+      // the means of its two grains' across a grain boundary (times the boundary's ratio).
+      const double        c_mean = am::mean_directional_modulus<dim>(Lambda);
+      const BondList     &bonds  = particles.bonds();
+      const auto         &x      = particles.positions();
+      std::vector<double> factor(bonds.size());
+      for (unsigned int i = 0; i < particles.n_owned(); ++i)
+        for (unsigned int b = bonds.row_start[i]; b < bonds.row_start[i + 1]; ++b)
+          {
+            const unsigned int   gi = particle_grain[i], gj = particle_grain[bonds.neighbor[b]];
+            const Tensor<1, dim> n((x[bonds.neighbor[b]] - x[i]) / bonds.length[b]);
+            const double         weight = gi == gj ?
+                                            grain_fracture[gi].weight(n) :
+                                            0.5 * grains.boundary_ratio() *
+                                      (grain_fracture[gi].weight(n) + grain_fracture[gj].weight(n));
+            factor[b] = std::sqrt(std::abs(bond_modulus(gi, gj, n)) / (c_mean * weight));
+          }
+      k.blocks.to_lanes(factor, k.lane_break_factor);
+    }
     if (context.surface_correction)
       {
         ParticleVector force;
@@ -349,9 +359,59 @@ namespace perideal
     for (unsigned int i = 0; i < particles.n_owned(); ++i)
       for (unsigned int b = bonds.row_start[i]; b < bonds.row_start[i + 1]; ++b)
         bond_coefficient[b] *=
-          am::directional_modulus(Lambda,
-                                  Tensor<1, dim>((x[bonds.neighbor[b]] - x[i]) / bonds.length[b]));
+          bond_modulus(particle_grain[i],
+                       particle_grain[bonds.neighbor[b]],
+                       Tensor<1, dim>((x[bonds.neighbor[b]] - x[i]) / bonds.length[b]));
     kernel->blocks.to_lanes(bond_coefficient, kernel->lane_coefficient);
+  }
+
+  template <int dim>
+  double
+  AnisotropicBondBased<dim>::bond_modulus(const unsigned int    g,
+                                          const unsigned int    h,
+                                          const Tensor<1, dim> &n) const
+  {
+    const double c = am::directional_modulus(grain_Lambda[g], n);
+    return g == h ? c : 0.5 * (c + am::directional_modulus(grain_Lambda[h], n));
+  }
+
+  template <int dim>
+  void
+  AnisotropicBondBased<dim>::set_up_grains(const ParticleSystem<dim> &particles,
+                                           const am::Family<dim>     &family,
+                                           const double               spacing)
+  {
+    const FullMatrix<double> M =
+      calibration == Calibration::discrete ?
+        am::lattice_moment_matrix(family) :
+        am::continuum_moment_matrix<dim>(context.horizon, context.thickness);
+    grain_Lambda.clear();
+    grain_fracture.clear();
+    for (unsigned int g = 0; g < grains.size(); ++g)
+      {
+        const ElasticMaterial   grain = material.rotated(grains.rotation(g));
+        SymmetricTensor<4, dim> C_grain;
+        if constexpr (dim == 2)
+          C_grain = grain.tensor<2>(context.planar);
+        else
+          C_grain = grain.tensor<3>(PlanarAssumption::three_dimensional);
+        // Rotations keep the complete symmetry: this is C rotated (or its symmetrized part).
+        grain_Lambda.push_back(am::solve(M, am::completely_symmetric_part(C_grain)));
+        if (grains.size() > 1)
+          AssertThrow(am::scan_symbol(grain_Lambda[g], family, spacing, 16).relative_minimum >
+                        -1e-10,
+                      ExcMessage("Grain " + std::to_string(g) + " of <" + section +
+                                 "/Grains file> gives a peridynamic operator whose Fourier "
+                                 "symbol is not positive definite on this lattice; accepted: "
+                                 "constants and orientations whose operator is positive "
+                                 "definite at every wave vector."));
+        grain_fracture.push_back(fracture);
+        grain_fracture[g].calibrate(grain.axes(), family, calibration == Calibration::discrete);
+      }
+    const auto &x = particles.positions();
+    particle_grain.resize(particles.n_local());
+    for (unsigned int i = 0; i < particles.n_local(); ++i)
+      particle_grain[i] = grains.grain_of(x[i]);
   }
 
   template <int dim>
@@ -444,6 +504,8 @@ namespace perideal
       out << "\n  " << symmetrization_report;
     if (!fracture_report.empty())
       out << "\n  " << fracture_report;
+    if (const std::string polycrystal = grains.summary(); !polycrystal.empty())
+      out << "\n  " << polycrystal;
     if (directions.negative_fraction > 0.)
       out << "\n  warning: the micromodulus is negative in " << 100. * directions.negative_fraction
           << " % of the directions (smallest c(n) = " << directions.minimum << " N/m^6 at n = ("

@@ -53,8 +53,9 @@ namespace perideal
 
       PlaneStressStretch
       strain(const BondBlocks<2>::BondClass &bond,
-             const bond_simd::Vector        *u_a,
-             const bond_simd::Vector        *u_b) const
+             const std::size_t /*first_lane*/,
+             const bond_simd::Vector *u_a,
+             const bond_simd::Vector *u_b) const
       {
         return linear_stretch(bond, u_a, u_b);
       }
@@ -102,8 +103,9 @@ namespace perideal
 
       PlaneStressStretch
       strain(const BondBlocks<2>::BondClass &bond,
-             const bond_simd::Vector        *u_a,
-             const bond_simd::Vector        *u_b) const
+             const std::size_t /*first_lane*/,
+             const bond_simd::Vector *u_a,
+             const bond_simd::Vector *u_b) const
       {
         return linear_stretch(bond, u_a, u_b);
       }

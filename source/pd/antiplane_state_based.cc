@@ -88,11 +88,12 @@ namespace perideal
       /// (s_a + s_b) . n / |xi| (the dim unknowns from first_state).
       StateBondStrain
       strain(const typename BondBlocks<dim>::BondClass &bond,
+             const std::size_t                          first_lane,
              const bond_simd::Vector                   *u_a,
              const bond_simd::Vector                   *u_b) const
       {
         StateBondStrain y;
-        static_cast<BondSlope &>(y) = Slope::strain(bond, u_a, u_b);
+        static_cast<BondSlope &>(y) = Slope::strain(bond, first_lane, u_a, u_b);
         y.state                     = 0.;
         for (unsigned int d = 0; d < dim; ++d)
           y.state += (u_a[first_state + d] + u_b[first_state + d]) * bond.xi[d];

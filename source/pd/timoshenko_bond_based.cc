@@ -97,8 +97,9 @@ namespace perideal
 
       BondStrain<dim>
       strain(const typename BondBlocks<dim>::BondClass &bond,
-             const Vector                              *u_a,
-             const Vector                              *u_b) const
+             const std::size_t /*first_lane*/,
+             const Vector *u_a,
+             const Vector *u_b) const
       {
         BondStrain<dim> y;
         const double    il = bond.inverse_length;

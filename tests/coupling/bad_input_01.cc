@@ -10,7 +10,7 @@
 // output: its output directory does not exist afterwards; the FE condition without a <Type>
 // takes the default, valid for the scalar field too), a malformed expression in a condition's
 // function (found when the file is read), an FE material shared with a particle model that has
-// no elastic constants of its own. A state-based model is
+// no elastic constants of its own or that is a polycrystal (grains). A state-based model is
 // accepted (its energy is blended through the particles' weights). Quasi-static solves (run as
 // well): a valid file is solved statically and by adaptive dynamic relaxation; an FE velocity
 // condition, a component that no condition holds, and an exact-displacement tolerance without the
@@ -67,6 +67,11 @@ subsection Material
     set Young's modulus = 200e9
     set Poisson's ratio = 0.3
   end
+  subsection anisotropic bond based
+    set Young's modulus = 200e9
+    set Poisson's ratio = 0.25
+    set Grains file     = GRAINS_FILE
+  end
 end
 subsection Boundary conditions
   set Names = PD_CONDITIONS
@@ -112,6 +117,7 @@ end
   {
     std::map<std::string, std::string> values = {{"PLATE_X", "0.1"},
                                                  {"MODEL", "bond based"},
+                                                 {"GRAINS_FILE", ""},
                                                  {"PD_CONDITIONS", ""},
                                                  {"PD_BLOCK", ""},
                                                  {"FE_CONDITIONS", "left"},
@@ -198,6 +204,12 @@ main(int argc, char **argv)
              "    set Function = 1e-3 * (t\n  end"}});
   run_case("FE material shared with a model that has no elastic constants",
            {{"FE_EXTRA",
+             "  subsection Elasticity\n    set Same material as the particles = true\n  end"}});
+  coupling_tests::write_file("grains.txt", "0.002 0.002 0\n0.004 0.002 30\n");
+  run_case("FE material shared with a polycrystal",
+           {{"MODEL", "anisotropic bond based"},
+            {"GRAINS_FILE", "grains.txt"},
+            {"FE_EXTRA",
              "  subsection Elasticity\n    set Same material as the particles = true\n  end"}});
   run_case("valid input, state-based model", {{"MODEL", "linear peridynamic solid"}});
   run_case("relaxation solver", {{"SOLVER", "adaptive dynamic relaxation"}});

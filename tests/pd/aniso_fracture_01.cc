@@ -9,7 +9,11 @@
 //    axis 1 (Orientation 90) has the ratio r2/r1, and along axis 1 (r1 = 1) that of equal
 //    ratios (to 1e-3: the jump grows in steps of 0.05 %, so a bond breaks with up to 0.1 % more
 //    than its critical energy; the mean excess is nearly the same for every bond);
-// 4. bad input: ratios outside the accepted range, a ratio that is not positive, unequal ratios
+// 4. grain boundaries (Grains): cleaving along the boundary between two grains of the same
+//    orientation with <Grain boundary fracture energy ratio> = 0.5 costs half of cleaving one
+//    grain, and along the boundary between grains of orientation 0 and 90 (ratio 1) the mean
+//    of the two grains' energies (to 1e-3, as in 3.);
+// 5. bad input: ratios outside the accepted range, a ratio that is not positive, unequal ratios
 //    with no material axis normal to a 2D body.
 #include <deal.II/base/numbers.h>
 #include <deal.II/base/parameter_handler.h>
@@ -23,6 +27,7 @@
 #include "../tests.h"
 #include "pd_tests.h"
 
+#include <fstream>
 #include <functional>
 #include <iomanip>
 #include <limits>
@@ -132,23 +137,25 @@ check_continuum(const std::string &ratios, const std::string &orientation)
 // A 2D isotropic plate in plane strain (nu = 1/4: the 2D Cauchy relation holds) with the
 // fracture-energy entries.
 std::unique_ptr<perideal::AnisotropicBondBased<2>>
-plate_model(const std::string &ratios, const std::string &orientation)
+plate_model(const std::string &ratios, const std::string &orientation, const Entries &extra)
 {
-  auto model = std::make_unique<perideal::AnisotropicBondBased<2>>();
-  pd_tests::parse_model(*model,
-                        {{"Young's modulus", "1e9"},
-                         {"Poisson's ratio", "0.25"},
-                         {"Orientation", orientation},
-                         {"Fracture energy ratios", ratios}});
+  auto    model   = std::make_unique<perideal::AnisotropicBondBased<2>>();
+  Entries entries = {{"Young's modulus", "1e9"},
+                     {"Poisson's ratio", "0.25"},
+                     {"Orientation", orientation},
+                     {"Fracture energy ratios", ratios}};
+  entries.insert(entries.end(), extra.begin(), extra.end());
+  pd_tests::parse_model(*model, entries);
   return model;
 }
 
 // Part 2 and 3: cleave a 40 dx x 20 dx plate along y = 10 dx by a rigid jump of the upper half,
 // increased in steps of 0.05 %, and return the energy the broken bonds took with them per unit
 // crack area, counted at the particles of the 20 middle columns (both ends of every bond there
-// have complete families, so the count is that of an infinite crack).
+// have complete families, so the count is that of an infinite crack); @p extra: more entries
+// of the model (grains).
 double
-cleave(const std::string &ratios, const std::string &orientation)
+cleave(const std::string &ratios, const std::string &orientation, const Entries &extra = {})
 {
   const double                          dx = 1e-3, thickness = 1e-3, G0 = 100.;
   perideal::ParticleSystem<2>           ps(MPI_COMM_WORLD);
@@ -158,11 +165,11 @@ cleave(const std::string &ratios, const std::string &orientation)
   s.thickness      = thickness;
   s.partial_volume = perideal::PartialVolume::geometric;
   pd_tests::generate_box<2>(ps, s, Point<2>(), Point<2>(40 * dx, 20 * dx));
-  auto model = plate_model(ratios, orientation);
+  auto model = plate_model(ratios, orientation, extra);
   model->initialize(
     ps,
     pd_tests::model_context(s.horizon, thickness, perideal::PlanarAssumption::plane_strain, false));
-  if (orientation == "0, 0, 0")
+  if (orientation == "0, 0, 0" && extra.empty())
     {
       // Part 2: the discrete calibration on the family the model fitted.
       const auto                             family   = am::interior_family(ps);
@@ -240,6 +247,28 @@ main(int argc, char **argv)
           << "; axis 1 against isotropic " << along_1 / equal << " (r1 = 1) "
           << pd_tests::ok(std::abs(along_1 / equal - 1.) < 1e-3) << std::setprecision(6)
           << std::endl;
+
+  // Part 4: the grains meet at y = 10 dx, the cleaving plane (seeds 5 dx below and above it).
+  const auto grains =
+    [](const std::string &name, const std::string &phi_1, const std::string &phi_2) {
+      if (Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0)
+        std::ofstream(name) << "0.02 0.005 " << phi_1 << "\n0.02 0.015 " << phi_2 << "\n";
+      MPI_Barrier(MPI_COMM_WORLD);
+    };
+  grains("same.txt", "0", "0");
+  grains("crossed.txt", "0", "90");
+  const double weak =
+    cleave("1, 1.6, 1",
+           "0, 0, 0",
+           {{"Grains file", "same.txt"}, {"Grain boundary fracture energy ratio", "0.5"}});
+  const double mixed = cleave("1, 1.6, 1", "0, 0, 0", {{"Grains file", "crossed.txt"}});
+  deallog << "cleaving along a grain boundary, G / G0: same orientations, ratio 0.5: "
+          << std::setprecision(4) << weak << " (half of one grain's " << along_2 << ": "
+          << weak / along_2 << ") " << pd_tests::ok(std::abs(weak / along_2 / 0.5 - 1.) < 1e-3)
+          << "; orientations 0 and 90, ratio 1: " << mixed << " (the grains' mean "
+          << 0.5 * (along_2 + along_1) << ") "
+          << pd_tests::ok(std::abs(mixed / (0.5 * (along_2 + along_1)) - 1.) < 1e-3)
+          << std::setprecision(6) << std::endl;
 
   check_bad_ratios("2D, r2/r1 = 2.5", [] { fracture_energy<2>("1, 2.5, 1", "0, 0, 0"); });
   check_bad_ratios("3D, 1, 1, 4", [] { fracture_energy<3>("1, 1, 4", "0, 0, 0"); });

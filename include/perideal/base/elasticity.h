@@ -109,6 +109,13 @@ namespace perideal
     axes() const;
 
     /**
+     * @brief The same material with its axes rotated by @p rotation about the global axes
+     * (axes() becomes @p rotation times axes()); a grain of a polycrystal.
+     */
+    ElasticMaterial
+    rotated(const dealii::Tensor<2, 3> &rotation) const;
+
+    /**
      * @brief The elasticity tensor of a @p dim dimensional body under @p planar.
      */
     template <int dim>

@@ -7,6 +7,7 @@
 #include <perideal/base/elasticity.h>
 #include <perideal/pd/anisotropic_fracture.h>
 #include <perideal/pd/anisotropic_micromodulus.h>
+#include <perideal/pd/grains.h>
 #include <perideal/pd/material_model.h>
 
 #include <memory>
@@ -38,6 +39,10 @@ namespace perideal
    * the fracture energies along the material axes (AnisotropicFractureEnergy),
    * s0(n) = sqrt(10 G0 g(n) / (pi |c(n)| delta^5)) (doc/theory/models.md); the linearized
    * stretch breaks the bond.
+   * A polycrystal (Grains): every grain has the material rotated by its orientation, Lambda
+   * and the fracture weights calibrated for it; a bond inside a grain has the grain's c(n) and
+   * g(n), a bond between two grains the means of theirs and its critical energy times
+   * <Grain boundary fracture energy ratio>.
    *
    * In 2D (particle volumes dx^2 h) the same model with the 5 components of a completely
    * symmetric 2D tensor: omega = 1/|xi|, lambda = c(n)/|xi|^3 (square symmetry: c(theta) = a + b
@@ -173,6 +178,12 @@ namespace perideal
     anisotropic_micromodulus::DirectionScanOf<dim> directions;
     anisotropic_micromodulus::SymbolScanOf<dim>    symbol;
     ModelContext                                   context;
+    /// The grains (one without a Grains file), their Lambda and fracture weights, and the
+    /// grain of every local particle (owned and ghosts).
+    Grains<dim>                                              grains;
+    std::vector<anisotropic_micromodulus::ComponentsOf<dim>> grain_Lambda;
+    std::vector<AnisotropicFractureEnergy<dim>>              grain_fracture;
+    std::vector<unsigned int>                                particle_grain;
     /// k_b = c(n_b) G beta V_i V_j per bond.
     std::vector<double> bond_coefficient;
     /// The force kernel's data (bonds in SIMD blocks, per-lane k_b, per-class breaking
@@ -185,6 +196,23 @@ namespace perideal
      */
     void
     set_bond_coefficients(const ParticleSystem<dim> &particles, const bool with_surface_factor);
+
+    /**
+     * @brief Lambda and the fracture weights of every grain (the material rotated by the
+     * grain's orientation, calibrated like Lambda over @p family, its Fourier symbol checked
+     * at the lattice @p spacing), and the grain of every local particle.
+     */
+    void
+    set_up_grains(const ParticleSystem<dim>                   &particles,
+                  const anisotropic_micromodulus::Family<dim> &family,
+                  const double                                 spacing);
+
+    /**
+     * @brief The direction factor c(n) of a bond between grains @p g and @p h: grain g's
+     * c(n) if g = h, the mean of the two grains' otherwise.
+     */
+    double
+    bond_modulus(const unsigned int g, const unsigned int h, const dealii::Tensor<1, dim> &n) const;
 
     /**
      * @brief Set C, the completely symmetric tensor the model reproduces, from @p C_input:

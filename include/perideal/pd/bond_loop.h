@@ -42,7 +42,8 @@ namespace perideal
    *    @p outputs it accumulates into (force components, energy, dilatation, ...);
    *  - `static constexpr bool breaks_bonds`;
    *  - `side(a)`: what it reads once per group on the particle side (any type);
-   *  - `strain(bond_class, u_a, u_b)`: its per-lane measures of the deformed bond (any type; with a
+   *  - `strain(bond_class, first_lane, u_a, u_b)`: its per-lane measures of the deformed bond
+   *    (any type; per-lane arrays are read at first_lane = lanes.first_lane; with a
    *    bond_simd::Vector member `stretch` if it breaks bonds: intact breakable lanes whose
    *    stretch exceeds @p critical_stretch are broken in the lanes and in @p bonds,
    *    BondBlocks::break_lanes(), before the pair is evaluated);
@@ -105,7 +106,7 @@ namespace perideal
             Vector u_b[n_components];
             for (unsigned int c = 0; c < n_components; ++c)
               u_b[c].copy_from(u[c] + lanes.neighbour, stdx::element_aligned);
-            const auto strain = law.strain(bond_class, u_a, u_b);
+            const auto strain = law.strain(bond_class, lanes.first_lane, u_a, u_b);
             lanes.active      = intact_lanes(state + lanes.first_lane);
             if constexpr (PairLaw::breaks_bonds)
               if (stdx::any_of(lanes.active && (strain.stretch > critical_stretch)))
@@ -225,8 +226,9 @@ namespace perideal
     /// The deformed bond of the lanes (relative position, rho, stretch).
     DeformedBond<dim>
     strain(const typename BondBlocks<dim>::BondClass &bond,
-           const bond_simd::Vector                   *u_a,
-           const bond_simd::Vector                   *u_b) const
+           const std::size_t /*first_lane*/,
+           const bond_simd::Vector *u_a,
+           const bond_simd::Vector *u_b) const
     {
       return deformed_bond<dim>(bond, u_a, u_b);
     }
@@ -271,8 +273,9 @@ namespace perideal
     /// The slope of the lanes and its magnitude (what breaks a bond).
     BondSlope
     strain(const typename BondBlocks<dim>::BondClass &bond,
-           const bond_simd::Vector                   *w_a,
-           const bond_simd::Vector                   *w_b) const
+           const std::size_t /*first_lane*/,
+           const bond_simd::Vector *w_a,
+           const bond_simd::Vector *w_b) const
     {
       const bond_simd::Vector r = (w_b[0] - w_a[0]) * bond.inverse_length;
       return {r, std::experimental::abs(r)};
@@ -319,8 +322,9 @@ namespace perideal
     /// The twisted slope of the lanes and its magnitude.
     BondSlope
     strain(const typename BondBlocks<dim>::BondClass &bond,
-           const bond_simd::Vector                   *u_a,
-           const bond_simd::Vector                   *u_b) const
+           const std::size_t /*first_lane*/,
+           const bond_simd::Vector *u_a,
+           const bond_simd::Vector *u_b) const
     {
       const bond_simd::Vector r =
         (u_b[0] - u_a[0] + u_a[1] * bond.xi[1] - u_a[2] * bond.xi[0]) * bond.inverse_length;

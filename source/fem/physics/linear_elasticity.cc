@@ -138,6 +138,15 @@ namespace perideal
                                "model with the FE side's material entries (anisotropic bond "
                                "based, anisotropic plane stress), or false and the constants in "
                                "<Finite elements/Elasticity>."));
+        // A polycrystal's grains (anisotropic bond based) are a particle feature: the FE
+        // region needs the homogenized constants, which are not the crystal's.
+        AssertThrow(model != "anisotropic bond based" || prm.get("Grains file").empty(),
+                    ExcMessage("<Finite elements/Elasticity/Same material as the particles> = "
+                               "true, but <Material/" +
+                               model +
+                               "/Grains file> makes the particles a polycrystal, whose "
+                               "homogenized stiffness is not the crystal's; accepted: false and "
+                               "the homogenized constants in <Finite elements/Elasticity>."));
         material.parse_parameters(prm, "Material/" + model);
         prm.leave_subsection();
         prm.leave_subsection();
