@@ -314,10 +314,11 @@ namespace perideal
     {
       // The breaking factor per bond: the direction factor and fracture weight of its grain,
       // the means of its two grains' across a grain boundary (times the boundary's ratio).
-      const double        c_mean = am::mean_directional_modulus<dim>(Lambda);
-      const BondList     &bonds  = particles.bonds();
-      const auto         &x      = particles.positions();
-      std::vector<double> factor(bonds.size());
+      const double         c_mean = am::mean_directional_modulus<dim>(Lambda);
+      const BondList      &bonds  = particles.bonds();
+      const auto          &x      = particles.positions();
+      std::vector<double> &factor = bond_break_factor;
+      factor.resize(bonds.size());
       for (unsigned int i = 0; i < particles.n_owned(); ++i)
         for (unsigned int b = bonds.row_start[i]; b < bonds.row_start[i + 1]; ++b)
           {
@@ -456,6 +457,13 @@ namespace perideal
     else
       return std::sqrt(10. * fracture_energy /
                        (numbers::PI * c_mean * std::pow(context.horizon, 5)));
+  }
+
+  template <int dim>
+  std::vector<double>
+  AnisotropicBondBased<dim>::breaking_factors(const ParticleSystem<dim> &) const
+  {
+    return bond_break_factor;
   }
 
   template <int dim>

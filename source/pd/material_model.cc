@@ -179,6 +179,13 @@ namespace perideal
   }
 
   template <int dim>
+  std::vector<double>
+  MaterialModel<dim>::breaking_factors(const ParticleSystem<dim> &particles) const
+  {
+    return std::vector<double>(particles.bonds().size(), 1.);
+  }
+
+  template <int dim>
   std::vector<std::string>
   MaterialModel<dim>::integral_names() const
   {

@@ -126,6 +126,12 @@ namespace perideal
     critical_stretch(const double fracture_energy) const override;
 
     /**
+     * @brief sqrt(|c_b| / (c_mean g_b)) per bond (the kernel's lanes hold the same).
+     */
+    std::vector<double>
+    breaking_factors(const ParticleSystem<dim> &particles) const override;
+
+    /**
      * @brief The material, the calibration and its errors, the Cauchy symmetrization and the
      * stability warnings.
      */
@@ -184,8 +190,8 @@ namespace perideal
     std::vector<anisotropic_micromodulus::ComponentsOf<dim>> grain_Lambda;
     std::vector<AnisotropicFractureEnergy<dim>>              grain_fracture;
     std::vector<unsigned int>                                particle_grain;
-    /// k_b = c(n_b) G beta V_i V_j per bond.
-    std::vector<double> bond_coefficient;
+    /// k_b = c(n_b) G beta V_i V_j and the breaking factor per bond.
+    std::vector<double> bond_coefficient, bond_break_factor;
     /// The force kernel's data (bonds in SIMD blocks, per-lane k_b, per-class breaking
     /// factors): defined in anisotropic_bond_based.cc, compiled with the kernel options.
     struct Kernel;

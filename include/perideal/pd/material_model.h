@@ -337,6 +337,16 @@ namespace perideal
     critical_stretch(const double fracture_energy) const = 0;
 
     /**
+     * @brief The factor of every bond of @p particles (bond-list order, owned rows) by which its
+     * stretch is multiplied before the comparison with the critical stretch (the reference
+     * value of critical_stretch()): 1 for every bond by default; the anisotropic bond-based
+     * model's factors of direction, fracture energies and grains. The sequentially linear
+     * control breaks bonds by it.
+     */
+    virtual std::vector<double>
+    breaking_factors(const ParticleSystem<dim> &particles) const;
+
+    /**
      * @brief How far, in horizons, the force on a particle depends on the field: 1 for
      * bond-based models (the default), 2 for state-based ones, whose force uses the neighbours'
      * states over their own families. Fictitious layers must be that deep

@@ -3,6 +3,7 @@
 // ---------------------------------------------------------------------
 #include <perideal/base/parameter_utilities.h>
 #include <perideal/coupling/solvers/sequentially_linear.h>
+#include <perideal/pd/anisotropic_bond_based.h>
 #include <perideal/pd/bond_based.h>
 #include <perideal/pd/damage_model.h>
 #include <perideal/pd/linear_peridynamic_solid.h>
@@ -31,11 +32,13 @@ namespace perideal
                                     "breaks."));
     const auto &material = state.pd.material();
     AssertThrow(dynamic_cast<const BondBased<dim> *>(&material) != nullptr ||
-                  dynamic_cast<const LinearPeridynamicSolid<dim> *>(&material) != nullptr,
+                  dynamic_cast<const LinearPeridynamicSolid<dim> *>(&material) != nullptr ||
+                  dynamic_cast<const AnisotropicBondBased<dim> *>(&material) != nullptr,
                 ExcMessage(method +
                            " breaks bonds by the linearized stretch of a displacement field "
-                           "against one critical stretch; <Material/Model> accepted: bond based, "
-                           "linear peridynamic solid."));
+                           "(times each bond's breaking factor) against the critical stretch; "
+                           "<Material/Model> accepted: bond based, linear peridynamic solid, "
+                           "anisotropic bond based."));
     AssertThrow(std::isfinite(state.pd.critical_stretch()),
                 ExcMessage(method + " needs bonds that break: <Material/Damage model> = none; use "
                                     "'critical stretch'."));
@@ -55,6 +58,7 @@ namespace perideal
     const auto        &u        = state.u;
     const unsigned int nc       = state.n_components();
     const double       s0       = state.pd.critical_stretch();
+    const auto         scale    = state.pd.material().breaking_factors(ps);
     const double       infinity = std::numeric_limits<double>::infinity();
     double             smallest = infinity;
     for (unsigned int i = 0; i < ps.n_owned(); ++i)
@@ -68,7 +72,7 @@ namespace perideal
               for (unsigned int d = 0; d < dim; ++d)
                 extension +=
                   (x[j][d] - x[i][d]) * (u.local_element(j * nc + d) - u.local_element(i * nc + d));
-              const double stretch = extension / (bonds.length[b] * bonds.length[b]);
+              const double stretch = scale[b] * extension / (bonds.length[b] * bonds.length[b]);
               if (stretch > 0.)
                 factor = s0 / stretch;
             }
