@@ -262,6 +262,21 @@ namespace pd_tests
         dealii::deallog << name << ": " << perideal_tests::exception_text(exc) << std::endl;
       }
   }
+
+  // Run @p set_up, which must throw: print "label: " and the message, or that it was accepted.
+  inline void
+  check_refused(const std::string &label, const std::function<void()> &set_up)
+  {
+    try
+      {
+        set_up();
+        dealii::deallog << label << ": accepted (wrong)" << std::endl;
+      }
+    catch (const dealii::ExceptionBase &exc)
+      {
+        dealii::deallog << label << ": " << perideal_tests::exception_text(exc) << std::endl;
+      }
+  }
 } // namespace pd_tests
 
 #endif

@@ -182,15 +182,7 @@ check_bicrystal()
 void
 check_bad(const std::string &label, const Entries &entries)
 {
-  try
-    {
-      auto model = nacl(entries);
-      deallog << label << ": accepted (wrong)" << std::endl;
-    }
-  catch (const ExceptionBase &exc)
-    {
-      deallog << label << ": " << perideal_tests::exception_text(exc) << std::endl;
-    }
+  pd_tests::check_refused(label, [&] { nacl(entries); });
 }
 
 int
