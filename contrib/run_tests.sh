@@ -1,6 +1,13 @@
 #!/usr/bin/env bash
 # The test command of the README: install dependencies (as root), build, run the ctest suite.
+# The tests labelled "long" (tests/CMakeLists.txt, perideal_label_long_tests) are left out;
+# `--long` runs only them, `--all` everything. Other arguments go to ctest.
 set -euo pipefail
+selection=(-LE long)
+case "${1:-}" in
+  --long) selection=(-L long); shift ;;
+  --all) selection=(); shift ;;
+esac
 top=$(cd "$(dirname "$0")/.." && pwd)
 if [ "$(id -u)" -eq 0 ]; then
   "$top/contrib/install_dependencies.sh"
@@ -14,4 +21,4 @@ export CCACHE_BASEDIR=${CCACHE_BASEDIR:-$top} CCACHE_NOHASHDIR=${CCACHE_NOHASHDI
 "$top/contrib/build.sh"
 build=${PERIDEAL_BUILD_DIR:-$top/build}
 cd "$build"
-ctest -j "$(nproc)" --output-on-failure "$@"
+ctest -j "$(nproc)" --output-on-failure ${selection[@]+"${selection[@]}"} "$@"
