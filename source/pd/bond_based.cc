@@ -168,11 +168,24 @@ namespace perideal
         const auto energy = [&](const ParticleVector &u, std::vector<double> &w) {
           compute_forces(particles, u, force, &w, std::numeric_limits<double>::infinity());
         };
-        const auto              C = elasticity_tensor();
-        std::array<double, dim> modulus;
-        for (unsigned int a = 0; a < dim; ++a)
-          modulus[a] = C[a][a][a][a];
-        apply_energy_surface_correction<dim>(particles, this->field_layout(), modulus, energy);
+        if (context.stiffness_fit)
+          {
+            // Per end and unit beta V_i V_j, c |xi| (n.e.n)^2 / 4 under a homogeneous strain.
+            const double micromodulus = c;
+            const auto   law = [micromodulus](const double l, double &axial, double &shear) {
+              axial = 0.5 * micromodulus * l;
+              shear = 0.;
+            };
+            fit_report = apply_stiffness_fit<dim>(particles, law, elasticity_tensor()[0][0][0][0]);
+          }
+        else
+          {
+            const auto              C = elasticity_tensor();
+            std::array<double, dim> modulus;
+            for (unsigned int a = 0; a < dim; ++a)
+              modulus[a] = C[a][a][a][a];
+            apply_energy_surface_correction<dim>(particles, this->field_layout(), modulus, energy);
+          }
       }
     set_bond_coefficients(particles, true);
   }
@@ -260,12 +273,21 @@ namespace perideal
   }
 
   template <int dim>
+  bool
+  BondBased<dim>::has_stiffness_fit() const
+  {
+    return true;
+  }
+
+  template <int dim>
   std::string
   BondBased<dim>::summary() const
   {
     std::ostringstream out;
     out << "bond based (PMB): E = " << youngs_modulus << " Pa, implied Poisson ratio "
         << implied_poisson_ratio() << ", micromodulus c = " << c << " N/m^6";
+    if (context.surface_correction && context.stiffness_fit)
+      out << "; " << fit_report.summary();
     return out.str();
   }
 

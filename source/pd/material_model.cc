@@ -209,6 +209,13 @@ namespace perideal
   }
 
   template <int dim>
+  bool
+  MaterialModel<dim>::has_stiffness_fit() const
+  {
+    return false;
+  }
+
+  template <int dim>
   unsigned int
   MaterialModel<dim>::force_reach() const
   {

@@ -84,6 +84,17 @@ namespace perideal
                         Patterns::Bool(),
                         "Correct the stiffness near free surfaces: energy method for 'bond "
                         "based', discrete weighted volume for 'linear peridynamic solid'.");
+      prm.declare_entry("Surface correction method",
+                        "energy",
+                        Patterns::Selection("energy|stiffness fit"),
+                        "With 'Surface correction = true', for 'bond based' and 'timoshenko bond "
+                        "based': 'energy' (each particle's moduli C_aaaa along the axes, one "
+                        "factor per particle and axis) or 'stiffness fit' (the bond factors "
+                        "closest to 1 that give every particle the interior's whole elasticity "
+                        "tensor, D_12 and the shear moduli too; bounded to [0.2, 5], least "
+                        "squares at corners; a linear solve at set-up). The other models have "
+                        "their own method and accept 'energy' only. See doc/theory/models.md, "
+                        "'Surface correction: the stiffness fit'.");
       prm.declare_entry("Body",
                         "",
                         Patterns::Anything(),
@@ -161,6 +172,7 @@ namespace perideal
                                  partial == "book" ? PartialVolume::book :
                                                      PartialVolume::geometric);
     surface_correction        = prm.get_bool("Surface correction");
+    stiffness_fit             = prm.get("Surface correction method") == "stiffness fit";
     prm.leave_subsection();
 
     regions.parse_parameters(prm);
@@ -186,6 +198,12 @@ namespace perideal
           model->parse_parameters(prm);
           prm.leave_subsection();
           model->resolve_regions(regions);
+          AssertThrow(!(surface_correction && stiffness_fit) || model->has_stiffness_fit(),
+                      ExcMessage("<Discretization/Surface correction method> = stiffness fit is "
+                                 "available for <Material/Model> = bond based or timoshenko "
+                                 "bond based, not '" +
+                                 model_name +
+                                 "'; accepted for it: energy (the model's own method)."));
         }
       no_fail_regions = ParameterUtilities::split_names(prm.get("No-fail regions"));
       for (const auto &name : no_fail_regions)
@@ -243,6 +261,7 @@ namespace perideal
     context.thickness          = settings.thickness;
     context.planar             = planar;
     context.surface_correction = surface_correction;
+    context.stiffness_fit      = stiffness_fit;
     model->initialize(particle_system, context);
     s_critical = damage->critical_stretch(*model);
 

@@ -511,9 +511,23 @@ namespace perideal
         const auto energy = [&](const ParticleVector &u, std::vector<double> &w) {
           compute_forces(particles, u, force, &w, std::numeric_limits<double>::infinity());
         };
-        std::array<double, dim> modulus;
-        modulus.fill(D[0]);
-        apply_energy_surface_correction<dim>(particles, field_layout(), modulus, energy);
+        if (context.stiffness_fit)
+          {
+            // Per end and unit beta V_i V_j, w / 2 = [C_N |xi| (n.e.n)^2 / 2 + 6 C_theta
+            // (|e.n|^2 - (n.e.n)^2) / |xi|] / 2 under a homogeneous strain, theta its rotation.
+            const double C_N = bond_stiffness.normal, C_theta = bond_stiffness.shear;
+            const auto   law = [C_N, C_theta](const double l, double &axial, double &shear) {
+              axial = 0.5 * (C_N * l - 12. * C_theta / l);
+              shear = 6. * C_theta / l;
+            };
+            fit_report = apply_stiffness_fit<dim>(particles, law, D[0]);
+          }
+        else
+          {
+            std::array<double, dim> modulus;
+            modulus.fill(D[0]);
+            apply_energy_surface_correction<dim>(particles, field_layout(), modulus, energy);
+          }
       }
     set_bond_coefficients(particles, true);
   }
@@ -888,6 +902,13 @@ namespace perideal
   }
 
   template <int dim>
+  bool
+  TimoshenkoBondBased<dim>::has_stiffness_fit() const
+  {
+    return true;
+  }
+
+  template <int dim>
   std::string
   TimoshenkoBondBased<dim>::summary() const
   {
@@ -904,6 +925,8 @@ namespace perideal
         << ", D_66/mu = " << lattice_moduli[2] / mu << "; J = " << inertia_factor
         << " rho dx^2; failure " << (failure == FailureLaw::brittle ? "brittle" : "softening, k = ")
         << (failure == FailureLaw::brittle ? std::string() : std::to_string(softening));
+    if (context.surface_correction && context.stiffness_fit)
+      out << "; " << fit_report.summary();
     return out.str();
   }
 

@@ -96,4 +96,8 @@ main(int argc, char **argv)
   check("FE boundary condition without a mesh",
         "subsection Finite elements\n subsection Boundary conditions\n set Names = clamp\n "
         "end\nend\n");
+  check("stiffness fit for a model without it",
+        "subsection Discretization\n set Surface correction method = stiffness fit\nend\n"
+        "subsection Material\n set Model = linear peridynamic solid\n subsection linear "
+        "peridynamic solid\n set Young's modulus = 200e9\n end\nend\n");
 }

@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # End to end: install dependencies (as root), build PeriDeal, run the plate of seed 003 sec. 3.1
-# with the Timoshenko-bond model for nu = 0.1 ... 0.3 with both calibrations and with the classical
+# with the Timoshenko-bond model for nu = 0.1 ... 0.3 (lattice calibration with the stiffness fit
+# and with the energy method of surface correction, continuum calibration) and with the classical
 # bond-based model (nu = 1/3), compare the interior displacements with plane-stress elasticity
 # and plot the effective Poisson ratio against the target (nu_eff.png) and u_y across the plate
 # (u_y.png). usage: run.sh   (PERIDEAL_BUILD_DIR, PERIDEAL_RESULTS_DIR override the defaults)
@@ -17,19 +18,27 @@ results=${PERIDEAL_RESULTS_DIR:-$top/results/timoshenko_plate}
 mkdir -p "$results"
 cd "$results"
 strain=$(awk 'BEGIN {print 2e8 / 1.92e11}')
-case_run() { # name model nu calibration hold
-  sed -e "s|MODEL|$2|" -e "s|CALIBRATION|$4|" -e "s|HOLD|$5|" -e "s|NU|$3|g" \
+case_run() { # name model nu calibration surface-correction-method hold
+  sed -e "s|MODEL|$2|" -e "s|CALIBRATION|$4|" -e "s|METHOD|$5|" -e "s|HOLD|$6|" -e "s|NU|$3|g" \
       -e "s|DIRECTORY|$1|" "$here/timoshenko_plate.prm" > "$1.prm"
   mpirun -np 2 "$build/bin/perideal-solid" "$1.prm" > "$1.log"
   echo "$1: done"
 }
+# The Timoshenko series: lattice calibration with the stiffness fit (the recommended set-up) and
+# with the energy method, continuum calibration with the stiffness fit.
 for nu in 0.1 0.15 0.2 0.25 0.3; do
-  for calibration in lattice continuum; do
-    case_run "${calibration}_$nu" "timoshenko bond based" "$nu" "$calibration" \
+  for series in "lattice fit" "lattice energy" "continuum fit"; do
+    set -- $series
+    method=$([ "$2" = fit ] && echo "stiffness fit" || echo energy)
+    case_run "${1}_${2}_$nu" "timoshenko bond based" "$nu" "$1" "$method" \
       "$strain * x; -$nu * $strain * y; 0"
   done
 done
-case_run pmb "bond based" 0.333333333333333 lattice "$strain * x; -0.333333333333333 * $strain * y"
+for method in fit energy; do
+  case_run "pmb_$method" "bond based" 0.333333333333333 lattice \
+    "$([ "$method" = fit ] && echo "stiffness fit" || echo energy)" \
+    "$strain * x; -0.333333333333333 * $strain * y"
+done
 "${PYTHON:-/usr/bin/python3}" "$here/postprocess.py" "$results"
 echo
 echo "Results in $results: one directory per case (particles.xdmf opens in ParaView), *.png plots."

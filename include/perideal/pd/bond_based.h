@@ -5,6 +5,7 @@
 #define perideal_pd_bond_based_h
 
 #include <perideal/pd/material_model.h>
+#include <perideal/pd/stiffness_fit.h>
 
 #include <memory>
 
@@ -91,6 +92,9 @@ namespace perideal
     std::string
     summary() const override;
 
+    bool
+    has_stiffness_fit() const override;
+
     /**
      * @brief The micromodulus c [N/m^6].
      */
@@ -109,6 +113,8 @@ namespace perideal
     double       c = 0.;
     /// c G beta V_i V_j per bond (the pair force per unit stretch).
     std::vector<double> bond_coefficient;
+    /// What the stiffness fit achieved (<Discretization/Surface correction method>).
+    StiffnessFitReport fit_report;
     /// The force kernel's data (bonds in SIMD blocks, kernel-order fields): defined in
     /// bond_based.cc only, the one translation unit of the model compiled with the kernel
     /// options (source/pd/CMakeLists.txt).

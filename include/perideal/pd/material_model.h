@@ -32,6 +32,9 @@ namespace perideal
     PlanarAssumption planar = PlanarAssumption::three_dimensional;
     /// Whether to apply the model's surface correction.
     bool surface_correction = true;
+    /// With it, the stiffness fit (apply_stiffness_fit()) instead of the energy method, for a
+    /// model that has_stiffness_fit().
+    bool stiffness_fit = false;
   };
 
   /**
@@ -345,6 +348,15 @@ namespace perideal
      */
     virtual std::vector<double>
     breaking_factors(const ParticleSystem<dim> &particles) const;
+
+    /**
+     * @brief Whether the model offers the stiffness fit as its surface correction
+     * (<Discretization/Surface correction method> = stiffness fit): false by default; the
+     * bond-based models whose bond energy is axial and transverse terms ('bond based',
+     * 'timoshenko bond based').
+     */
+    virtual bool
+    has_stiffness_fit() const;
 
     /**
      * @brief How far, in horizons, the force on a particle depends on the field: 1 for

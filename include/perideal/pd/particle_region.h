@@ -133,6 +133,7 @@ namespace perideal
     typename ParticleSystem<dim>::Settings settings;
     double                                 horizon_factor     = 0.;
     bool                                   surface_correction = true;
+    bool                                   stiffness_fit      = false;
     PlanarAssumption                       planar             = PlanarAssumption::three_dimensional;
     RegionCollection<dim>                  regions;
     std::vector<std::string>               body_regions;

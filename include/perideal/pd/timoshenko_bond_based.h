@@ -7,6 +7,7 @@
 #include <deal.II/base/tensor.h>
 
 #include <perideal/pd/material_model.h>
+#include <perideal/pd/stiffness_fit.h>
 
 #include <memory>
 
@@ -263,6 +264,9 @@ namespace perideal
     std::string
     summary() const override;
 
+    bool
+    has_stiffness_fit() const override;
+
     /// The bond stiffnesses in use.
     const Timoshenko::Stiffness &
     stiffness() const;
@@ -286,6 +290,8 @@ namespace perideal
     std::array<double, 3> lattice_moduli{};
     /// G beta V_i V_j per bond.
     std::vector<double> bond_coefficient;
+    /// What the stiffness fit achieved (<Discretization/Surface correction method>).
+    StiffnessFitReport fit_report;
     /// The kernel's data: defined in timoshenko_bond_based.cc only (kernel options).
     struct Kernel;
     std::unique_ptr<Kernel> kernel;

@@ -1,0 +1,323 @@
+// ---------------------------------------------------------------------
+// PeriDeal: the stiffness fit, a surface correction that restores each particle's whole
+// elasticity tensor.
+// ---------------------------------------------------------------------
+#include <deal.II/base/exceptions.h>
+#include <deal.II/base/mpi.h>
+#include <deal.II/lac/diagonal_matrix.h>
+#include <deal.II/lac/solver_cg.h>
+#include <deal.II/lac/solver_control.h>
+
+#include <perideal/pd/stiffness_fit.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <limits>
+#include <sstream>
+
+namespace perideal
+{
+  using namespace dealii;
+
+  std::string
+  StiffnessFitReport::summary() const
+  {
+    std::ostringstream out;
+    out << "stiffness fit: deviation of the particles' tensors from the interior's, largest "
+        << largest_before << " -> " << largest_after << ", rms " << rms_before << " -> "
+        << rms_after << "; bond factors " << smallest_factor << " ... " << largest_factor << " ("
+        << held << " bonds at a bound), times " << interior_scale
+        << " (the target's C_1111 over the lattice's)";
+    return out.str();
+  }
+
+  namespace
+  {
+    /// The bounds of the factors: every bond keeps a positive, bounded stiffness.
+    constexpr double smallest_factor = 0.2, largest_factor = 5.;
+    /// rho relative to the mean diagonal of the normal equations.
+    constexpr double relative_regularization = 1e-2;
+
+    /// Voigt notation: the strain (e_11, e_22, 2 e_12) in 2D, (e_11, e_22, e_33, 2 e_23,
+    /// 2 e_13, 2 e_12) in 3D; a symmetric Voigt matrix stored by its upper triangle.
+    template <int dim>
+    struct Voigt
+    {
+      static constexpr unsigned int n      = dim == 2 ? 3 : 6;
+      static constexpr unsigned int unique = n * (n + 1) / 2;
+      using Entries                        = std::array<double, unique>;
+
+      /// The upper triangle of H = axial a a^T + shear sum_k r_k^T r_k for the direction
+      /// @p v: a.e = n.e.n and r_k.e = (e.n)_k.
+      static Entries
+      bond_tensor(const Tensor<1, dim> &v, const double axial, const double shear)
+      {
+        std::array<double, n> a{}, r[dim]{};
+        if constexpr (dim == 2)
+          {
+            a    = {{v[0] * v[0], v[1] * v[1], v[0] * v[1]}};
+            r[0] = {{v[0], 0., 0.5 * v[1]}};
+            r[1] = {{0., v[1], 0.5 * v[0]}};
+          }
+        else
+          {
+            a    = {{v[0] * v[0], v[1] * v[1], v[2] * v[2], v[1] * v[2], v[0] * v[2], v[0] * v[1]}};
+            r[0] = {{v[0], 0., 0., 0., 0.5 * v[2], 0.5 * v[1]}};
+            r[1] = {{0., v[1], 0., 0.5 * v[2], 0., 0.5 * v[0]}};
+            r[2] = {{0., 0., v[2], 0.5 * v[1], 0.5 * v[0], 0.}};
+          }
+        Entries      h;
+        unsigned int k = 0;
+        for (unsigned int p = 0; p < n; ++p)
+          for (unsigned int q = p; q < n; ++q, ++k)
+            {
+              h[k] = axial * a[p] * a[q];
+              for (unsigned int d = 0; d < dim; ++d)
+                h[k] += shear * r[d][p] * r[d][q];
+            }
+        return h;
+      }
+    };
+
+    /**
+     * @brief The normal equations of the fit, (K + rho I) lambda with K lambda = sum over the
+     * free bonds of h_b (h_b . (lambda_i + lambda_j)); Voigt<dim>::unique multipliers per owned
+     * particle.
+     */
+    template <int dim>
+    class NormalEquations
+    {
+    public:
+      static constexpr unsigned int m = Voigt<dim>::unique;
+
+      explicit NormalEquations(const ParticleSystem<dim> &particles)
+        : particles(particles)
+        , h(particles.bonds().size())
+        , free(particles.bonds().size(), 1)
+        , fixed(particles.bonds().size(), 1.)
+      {}
+
+      /// G_b - 1 of bond @p b in row @p i (0 for a bond held at a bound); ghost values of
+      /// @p lambda current.
+      double
+      change(const unsigned int i, const std::size_t b, const ParticleVector &lambda) const
+      {
+        if (!free[b])
+          return 0.;
+        const unsigned int j = particles.bonds().neighbor[b];
+        double             s = 0.;
+        for (unsigned int k = 0; k < m; ++k)
+          s += h[b][k] * (lambda.local_element(i * m + k) + lambda.local_element(j * m + k));
+        return s;
+      }
+
+      /// What a bond adds to the sums of its ends.
+      enum class Sum
+      {
+        /// c_b h_b with c_b = G_b - 1 of the multipliers (K lambda).
+        change,
+        /// G_b h_b without multipliers (1, or the bound of a held bond): the particles' D V.
+        tensor,
+        /// The squares of the entries of h_b of the free bonds (K's diagonal).
+        squares
+      };
+
+      void
+      add_bond_sums(ParticleVector &dst, const Sum sum, const ParticleVector *lambda) const
+      {
+        const BondList    &bonds   = particles.bonds();
+        const unsigned int n_owned = particles.n_owned();
+        for (unsigned int i = 0; i < n_owned; ++i)
+          for (unsigned int b = bonds.row_start[i]; b < bonds.row_start[i + 1]; ++b)
+            {
+              if (sum == Sum::squares && !free[b])
+                continue;
+              const unsigned int j = bonds.neighbor[b];
+              const double       c = sum == Sum::change ? change(i, b, *lambda) :
+                                     sum == Sum::tensor ? (free[b] ? 1. : fixed[b]) :
+                                                          1.;
+              for (unsigned int k = 0; k < m; ++k)
+                {
+                  const double v = sum == Sum::squares ? h[b][k] * h[b][k] : c * h[b][k];
+                  dst.local_element(i * m + k) += v;
+                  if (j < n_owned)
+                    dst.local_element(j * m + k) += v;
+                }
+            }
+      }
+
+      void
+      vmult(ParticleVector &dst, const ParticleVector &src) const
+      {
+        src.update_ghost_values();
+        dst = src;
+        dst *= regularization;
+        add_bond_sums(dst, Sum::change, &src);
+        src.zero_out_ghost_values();
+      }
+
+      const ParticleSystem<dim>                &particles;
+      std::vector<typename Voigt<dim>::Entries> h;
+      double                                    regularization = 0.;
+      /// Whether a bond's factor is fitted (1) or held at a bound (0; the bound in fixed).
+      std::vector<std::uint8_t> free;
+      std::vector<double>       fixed;
+    };
+  } // namespace
+
+  template <int dim>
+  StiffnessFitReport
+  apply_stiffness_fit(ParticleSystem<dim>    &particles,
+                      const BondStiffnessLaw &law,
+                      const double            modulus)
+  {
+    using V                        = Voigt<dim>;
+    constexpr unsigned int m       = V::unique;
+    BondList              &bonds   = particles.bonds();
+    const auto            &x       = particles.positions();
+    const auto            &volume  = particles.volumes();
+    const unsigned int     n_owned = particles.n_owned();
+    const MPI_Comm         comm    = particles.get_communicator();
+
+    // The interior's tensor per unit volume of the particle, from the lattice family.
+    std::vector<Tensor<1, dim>> family;
+    std::vector<double>         family_weight;
+    particles.lattice_family(family, family_weight);
+    typename V::Entries interior{};
+    for (unsigned int f = 0; f < family.size(); ++f)
+      {
+        const double length = family[f].norm();
+        double       axial, shear;
+        law(length, axial, shear);
+        const auto h =
+          V::bond_tensor(family[f] / length, family_weight[f] * axial, family_weight[f] * shear);
+        for (unsigned int k = 0; k < m; ++k)
+          interior[k] += h[k];
+      }
+    // Scale: the interior's largest entry times the largest volume, so that the multipliers
+    // are of the order of the relative deviations.
+    double largest_volume = 0.;
+    for (unsigned int i = 0; i < n_owned; ++i)
+      largest_volume = std::max(largest_volume, volume[i]);
+    largest_volume       = Utilities::MPI::max(largest_volume, comm);
+    double largest_entry = 0.;
+    for (const double d : interior)
+      largest_entry = std::max(largest_entry, std::abs(d));
+    const double unit = largest_entry * largest_volume;
+    AssertThrow(interior[0] > 0., ExcInternalError());
+
+    NormalEquations<dim> equations(particles);
+    for (unsigned int i = 0; i < n_owned; ++i)
+      for (unsigned int b = bonds.row_start[i]; b < bonds.row_start[i + 1]; ++b)
+        {
+          double axial, shear;
+          law(bonds.length[b], axial, shear);
+          const double k = bonds.volume_factor[b] * volume[i] * volume[bonds.neighbor[b]] / unit;
+          equations.h[b] =
+            V::bond_tensor((x[bonds.neighbor[b]] - x[i]) / bonds.length[b], k * axial, k * shear);
+        }
+
+    // The right-hand side, the interior's D V_i minus the particles' with the factors without
+    // multipliers; with @p lambda, the particles' deviation after the fit. Returns the largest
+    // and the root-mean-square deviation relative to the interior's largest entry.
+    ParticleVector rhs, lambda, sums;
+    particles.reinit_vector(rhs, m);
+    particles.reinit_vector(lambda, m);
+    particles.reinit_vector(sums, m);
+    const auto deviation = [&](const ParticleVector *multipliers) {
+      sums = 0.;
+      equations.add_bond_sums(sums, NormalEquations<dim>::Sum::tensor, nullptr);
+      if (multipliers)
+        equations.add_bond_sums(sums, NormalEquations<dim>::Sum::change, multipliers);
+      double largest = 0., squares = 0.;
+      for (unsigned int i = 0; i < n_owned; ++i)
+        for (unsigned int k = 0; k < m; ++k)
+          {
+            const double d = interior[k] * volume[i] / unit - sums.local_element(i * m + k);
+            rhs.local_element(i * m + k) = d;
+            const double relative        = d * largest_volume / volume[i];
+            largest                      = std::max(largest, std::abs(relative));
+            squares += relative * relative;
+          }
+      const double n = static_cast<double>(particles.n_global()) * m;
+      return std::make_pair(Utilities::MPI::max(largest, comm),
+                            std::sqrt(Utilities::MPI::sum(squares, comm) / n));
+    };
+    StiffnessFitReport report;
+    report.interior_scale                              = modulus / interior[0];
+    std::tie(report.largest_before, report.rms_before) = deviation(nullptr);
+
+    // Rounds: CG on the normal equations of the free bonds (Jacobi preconditioner, to 1e-10 of
+    // the right-hand side); a free bond whose factor leaves the bounds is held at the bound it
+    // crossed, and the others are fitted again, until every factor is within the bounds.
+    DiagonalMatrix<ParticleVector> jacobi;
+    particles.reinit_vector(jacobi.get_vector(), m);
+    for (unsigned int round = 0;; ++round)
+      {
+        AssertThrow(round < 100, ExcMessage("The stiffness fit did not settle in 100 rounds."));
+        if (round > 0)
+          deviation(nullptr);
+        jacobi.get_vector() = 0.;
+        equations.add_bond_sums(jacobi.get_vector(), NormalEquations<dim>::Sum::squares, nullptr);
+        if (round == 0)
+          equations.regularization = relative_regularization * jacobi.get_vector().mean_value();
+        for (unsigned int c = 0; c < n_owned * m; ++c)
+          {
+            double &d = jacobi.get_vector().local_element(c);
+            d         = 1. / (d + equations.regularization);
+          }
+        lambda = 0.;
+        SolverControl            control(10000, 1e-10 * rhs.l2_norm());
+        SolverCG<ParticleVector> cg(control);
+        cg.solve(equations, lambda, rhs, jacobi);
+        report.iterations += control.last_step();
+
+        lambda.update_ghost_values();
+        unsigned int n_held = 0;
+        for (unsigned int i = 0; i < n_owned; ++i)
+          for (unsigned int b = bonds.row_start[i]; b < bonds.row_start[i + 1]; ++b)
+            if (equations.free[b])
+              {
+                const double g = 1. + equations.change(i, b, lambda);
+                if (g < smallest_factor || g > largest_factor)
+                  {
+                    equations.free[b]  = 0;
+                    equations.fixed[b] = g < smallest_factor ? smallest_factor : largest_factor;
+                    ++n_held;
+                  }
+              }
+        if (Utilities::MPI::sum(n_held, comm) == 0)
+          break;
+        lambda.zero_out_ghost_values();
+      }
+
+    report.smallest_factor = std::numeric_limits<double>::max();
+    report.largest_factor  = -std::numeric_limits<double>::max();
+    unsigned long held     = 0;
+    for (unsigned int i = 0; i < n_owned; ++i)
+      for (unsigned int b = bonds.row_start[i]; b < bonds.row_start[i + 1]; ++b)
+        {
+          bonds.surface_factor[b] =
+            equations.free[b] ? 1. + equations.change(i, b, lambda) : equations.fixed[b];
+          report.smallest_factor = std::min(report.smallest_factor, bonds.surface_factor[b]);
+          report.largest_factor  = std::max(report.largest_factor, bonds.surface_factor[b]);
+          // Twice, so that a bond to a ghost (a row on both ranks) counts once in the sum.
+          if (!equations.free[b])
+            held += particles.neighbor_is_owned(b) ? 2 : 1;
+        }
+    report.held            = Utilities::MPI::sum(held, comm) / 2;
+    report.smallest_factor = Utilities::MPI::min(report.smallest_factor, comm);
+    report.largest_factor  = Utilities::MPI::max(report.largest_factor, comm);
+    std::tie(report.largest_after, report.rms_after) = deviation(&lambda);
+    lambda.zero_out_ghost_values();
+    for (double &g : bonds.surface_factor)
+      g *= report.interior_scale;
+    return report;
+  }
+
+  template StiffnessFitReport
+  apply_stiffness_fit<2>(ParticleSystem<2> &, const BondStiffnessLaw &, double);
+  template StiffnessFitReport
+  apply_stiffness_fit<3>(ParticleSystem<3> &, const BondStiffnessLaw &, double);
+} // namespace perideal
