@@ -179,6 +179,10 @@ namespace perideal
     const auto            &volume  = particles.volumes();
     const unsigned int     n_owned = particles.n_owned();
     const MPI_Comm         comm    = particles.get_communicator();
+    StiffnessFitReport     report;
+    // A coupled problem may leave the region without particles.
+    if (particles.n_global() == 0)
+      return report;
 
     // The interior's tensor per unit volume of the particle, from the lattice family.
     std::vector<Tensor<1, dim>> family;
@@ -244,7 +248,6 @@ namespace perideal
       return std::make_pair(Utilities::MPI::max(largest, comm),
                             std::sqrt(Utilities::MPI::sum(squares, comm) / n));
     };
-    StiffnessFitReport report;
     report.interior_scale                              = modulus / interior[0];
     std::tie(report.largest_before, report.rms_before) = deviation(nullptr);
 
@@ -271,7 +274,6 @@ namespace perideal
         SolverControl            control(10000, 1e-10 * rhs.l2_norm());
         SolverCG<ParticleVector> cg(control);
         cg.solve(equations, lambda, rhs, jacobi);
-        report.iterations += control.last_step();
 
         lambda.update_ghost_values();
         unsigned int n_held = 0;

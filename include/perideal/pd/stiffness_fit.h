@@ -16,8 +16,7 @@ namespace perideal
   /**
    * @brief What apply_stiffness_fit() achieved: the largest and the root-mean-square deviation
    * of a particle's elasticity tensor from the interior's before and after (relative to the
-   * interior's largest entry), the range of the bond factors, the bonds held at a bound, and the
-   * conjugate-gradient iterations.
+   * interior's largest entry), the range of the bond factors and the bonds held at a bound.
    */
   struct StiffnessFitReport
   {
@@ -30,7 +29,6 @@ namespace perideal
     double        smallest_factor = 1.;
     double        largest_factor  = 1.;
     unsigned long held            = 0;
-    unsigned int  iterations      = 0;
 
     /// One line for a model's summary.
     std::string
