@@ -270,7 +270,7 @@ namespace perideal
             double &d = jacobi.get_vector().local_element(c);
             d         = 1. / (d + equations.regularization);
           }
-        lambda = 0.;
+        // Warm start: each round begins from the last round's multipliers.
         SolverControl            control(10000, 1e-10 * rhs.l2_norm());
         SolverCG<ParticleVector> cg(control);
         cg.solve(equations, lambda, rhs, jacobi);
