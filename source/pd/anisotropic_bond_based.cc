@@ -48,11 +48,12 @@ namespace perideal
       const double *break_factor;
 
       /// The linearized stretch (hides StretchPairLaw's deformed bond).
+      template <typename Bond>
       LinearStretch
-      strain(const typename BondBlocks<dim>::BondClass &bond,
-             const std::size_t                          first_lane,
-             const bond_simd::Vector                   *u_a,
-             const bond_simd::Vector                   *u_b) const
+      strain(const Bond              &bond,
+             const std::size_t        first_lane,
+             const bond_simd::Vector *u_a,
+             const bond_simd::Vector *u_b) const
       {
         using namespace bond_simd;
         Vector e = 0.;
@@ -65,9 +66,10 @@ namespace perideal
           return {s, s};
       }
 
+      template <typename Bond>
       void
-      pair(const typename BondBlocks<dim>::BondClass &bond,
-           const LinearStretch                       &y,
+      pair(const Bond          &bond,
+           const LinearStretch &y,
            const typename StretchPairLaw<dim>::Side &,
            const BondLanes   &lanes,
            bond_simd::Vector *to_a,
@@ -332,7 +334,18 @@ namespace perideal
           }
       k.blocks.to_lanes(factor, k.lane_break_factor);
     }
-    if (context.surface_correction)
+    if (context.surface_correction && context.stiffness_fit)
+      {
+        // Per end and unit beta V_i V_j, c(n) |xi| (n.e.n)^2 / 4 under a homogeneous strain (one
+        // grain: has_stiffness_fit()).
+        const auto law = [this](const Tensor<1, dim> &xi, double &axial, double &shear) {
+          const double length = xi.norm();
+          axial               = 0.5 * bond_modulus(0, 0, xi / length) * length;
+          shear               = 0.;
+        };
+        fit_report = apply_stiffness_fit<dim>(particles, law, elasticity_tensor()[0][0][0][0]);
+      }
+    else if (context.surface_correction)
       {
         ParticleVector force;
         particles.reinit_vector(force, dim);
@@ -364,6 +377,13 @@ namespace perideal
                        particle_grain[bonds.neighbor[b]],
                        Tensor<1, dim>((x[bonds.neighbor[b]] - x[i]) / bonds.length[b]));
     kernel->blocks.to_lanes(bond_coefficient, kernel->lane_coefficient);
+  }
+
+  template <int dim>
+  bool
+  AnisotropicBondBased<dim>::has_stiffness_fit() const
+  {
+    return grains.size() <= 1;
   }
 
   template <int dim>
@@ -507,7 +527,9 @@ namespace perideal
         << (calibration == Calibration::discrete ? "discrete" : "continuum")
         << " calibration, interior error |M Lambda - C|/|C| = " << calibration_residual
         << " (continuum calibration on this lattice: " << lattice_error << "); surface correction: "
-        << (context.surface_correction ? "energy method (C_aaaa per axis)" : "none");
+        << (!context.surface_correction ? std::string("none") :
+            context.stiffness_fit       ? fit_report.summary() :
+                                          std::string("energy method (C_aaaa per axis)"));
     if (!symmetrization_report.empty())
       out << "\n  " << symmetrization_report;
     if (!fracture_report.empty())

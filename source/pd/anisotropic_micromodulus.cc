@@ -216,53 +216,8 @@ namespace perideal
     Family<dim>
     interior_family(const ParticleSystem<dim> &particles)
     {
-      const MPI_Comm     comm    = particles.get_communicator();
-      const BondList    &bonds   = particles.bonds();
-      const unsigned int n_owned = particles.n_owned();
-      // The bond list holds an owned-owned bond once, in one of the two rows: a particle's
-      // family is its row and the bonds of other rows that name it.
-      std::vector<unsigned int> n_bonds(n_owned, 0);
-      for (unsigned int i = 0; i < n_owned; ++i)
-        for (unsigned int b = bonds.row_start[i]; b < bonds.row_start[i + 1]; ++b)
-          {
-            ++n_bonds[i];
-            if (bonds.neighbor[b] < n_owned)
-              ++n_bonds[bonds.neighbor[b]];
-          }
-      const auto         best = std::max_element(n_bonds.begin(), n_bonds.end()) - n_bonds.begin();
-      const unsigned int n_best = n_owned > 0 ? n_bonds[best] : 0;
-      const unsigned int n_max  = Utilities::MPI::max(n_best, comm);
-      const unsigned int rank   = Utilities::MPI::this_mpi_process(comm);
-      const unsigned int root =
-        Utilities::MPI::min(n_best == n_max ? rank : std::numeric_limits<unsigned int>::max(),
-                            comm);
-      std::vector<double> flat;
-      const auto add = [&](const unsigned int from, const unsigned int to, const std::size_t b) {
-        const auto xi = particles.positions()[to] - particles.positions()[from];
-        for (unsigned int d = 0; d < dim; ++d)
-          flat.push_back(xi[d]);
-        flat.push_back(bonds.volume_factor[b] * particles.volumes()[to]);
-      };
-      if (rank == root)
-        {
-          for (unsigned int i = 0; i < n_owned; ++i)
-            for (unsigned int b = bonds.row_start[i]; b < bonds.row_start[i + 1]; ++b)
-              {
-                if (i == best)
-                  add(i, bonds.neighbor[b], b);
-                else if (bonds.neighbor[b] == best)
-                  add(best, i, b);
-              }
-        }
-      flat = Utilities::MPI::broadcast(comm, flat, root);
       Family<dim> family;
-      for (std::size_t b = 0; b < flat.size(); b += dim + 1)
-        {
-          family.xi.emplace_back();
-          for (unsigned int d = 0; d < dim; ++d)
-            family.xi.back()[d] = flat[b + d];
-          family.weight.push_back(flat[b + dim]);
-        }
+      particles.lattice_family(family.xi, family.weight);
       return family;
     }
 

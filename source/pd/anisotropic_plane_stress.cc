@@ -30,10 +30,9 @@ namespace perideal
     };
 
     /// The linearized stretch of the lanes.
+    template <typename Bond>
     inline PlaneStressStretch
-    linear_stretch(const BondBlocks<2>::BondClass &bond,
-                   const bond_simd::Vector        *u_a,
-                   const bond_simd::Vector        *u_b)
+    linear_stretch(const Bond &bond, const bond_simd::Vector *u_a, const bond_simd::Vector *u_b)
     {
       const bond_simd::Vector e = bond.xi[0] * (u_b[0] - u_a[0]) + bond.xi[1] * (u_b[1] - u_a[1]);
       return {e * (bond.inverse_length * bond.inverse_length)};
@@ -51,8 +50,9 @@ namespace perideal
       /// g per lane.
       const double *g;
 
+      template <typename Bond>
       PlaneStressStretch
-      strain(const BondBlocks<2>::BondClass &bond,
+      strain(const Bond &bond,
              const std::size_t /*first_lane*/,
              const bond_simd::Vector *u_a,
              const bond_simd::Vector *u_b) const
@@ -60,9 +60,10 @@ namespace perideal
         return linear_stretch(bond, u_a, u_b);
       }
 
+      template <typename Bond>
       void
-      pair(const BondBlocks<2>::BondClass &bond,
-           const PlaneStressStretch       &y,
+      pair(const Bond               &bond,
+           const PlaneStressStretch &y,
            const StretchPairLaw<2>::Side &,
            const BondLanes   &lanes,
            bond_simd::Vector *to_a,
@@ -101,8 +102,9 @@ namespace perideal
         return {bond_simd::Vector(beta_A + a, std::experimental::element_aligned)};
       }
 
+      template <typename Bond>
       PlaneStressStretch
-      strain(const BondBlocks<2>::BondClass &bond,
+      strain(const Bond &bond,
              const std::size_t /*first_lane*/,
              const bond_simd::Vector *u_a,
              const bond_simd::Vector *u_b) const
@@ -110,13 +112,14 @@ namespace perideal
         return linear_stretch(bond, u_a, u_b);
       }
 
+      template <typename Bond>
       void
-      pair(const BondBlocks<2>::BondClass &bond,
-           const PlaneStressStretch       &y,
-           const Side                     &i,
-           const BondLanes                &lanes,
-           bond_simd::Vector              *to_a,
-           bond_simd::Vector              *to_b) const
+      pair(const Bond               &bond,
+           const PlaneStressStretch &y,
+           const Side               &i,
+           const BondLanes          &lanes,
+           bond_simd::Vector        *to_a,
+           bond_simd::Vector        *to_b) const
       {
         using namespace bond_simd;
         const Vector k_b(k + lanes.first_lane, stdx::element_aligned);

@@ -32,9 +32,10 @@ namespace perideal
     {
       static constexpr unsigned int n_outputs = dim;
 
+      template <typename Bond>
       void
-      pair(const typename BondBlocks<dim>::BondClass &bond,
-           const BondSlope                           &r,
+      pair(const Bond      &bond,
+           const BondSlope &r,
            const typename Slope::Side &,
            const BondLanes   &lanes,
            bond_simd::Vector *to_a,
@@ -86,11 +87,12 @@ namespace perideal
 
       /// The slope (the unknown 0, twisted by the unknowns 1 and 2 if @p twisted) and
       /// (s_a + s_b) . n / |xi| (the dim unknowns from first_state).
+      template <typename Bond>
       StateBondStrain
-      strain(const typename BondBlocks<dim>::BondClass &bond,
-             const std::size_t                          first_lane,
-             const bond_simd::Vector                   *u_a,
-             const bond_simd::Vector                   *u_b) const
+      strain(const Bond              &bond,
+             const std::size_t        first_lane,
+             const bond_simd::Vector *u_a,
+             const bond_simd::Vector *u_b) const
       {
         StateBondStrain y;
         static_cast<BondSlope &>(y) = Slope::strain(bond, first_lane, u_a, u_b);
@@ -102,13 +104,14 @@ namespace perideal
         return y;
       }
 
+      template <typename Bond>
       void
-      pair(const typename BondBlocks<dim>::BondClass &bond,
-           const StateBondStrain                     &y,
-           const typename Slope::Side                &side,
-           const BondLanes                           &lanes,
-           bond_simd::Vector                         *to_a,
-           bond_simd::Vector                         *to_b) const
+      pair(const Bond                 &bond,
+           const StateBondStrain      &y,
+           const typename Slope::Side &side,
+           const BondLanes            &lanes,
+           bond_simd::Vector          *to_a,
+           bond_simd::Vector          *to_b) const
       {
         using namespace bond_simd;
         Slope::pair(bond, y, side, lanes, to_a, to_b);

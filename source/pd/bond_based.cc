@@ -33,9 +33,10 @@ namespace perideal
       /// k per lane.
       const double *coefficient;
 
+      template <typename Bond>
       void
-      pair(const typename BondBlocks<dim>::BondClass &bond,
-           const DeformedBond<dim>                   &y,
+      pair(const Bond              &bond,
+           const DeformedBond<dim> &y,
            const typename StretchPairLaw<dim>::Side &,
            const BondLanes   &lanes,
            bond_simd::Vector *to_a,
@@ -172,10 +173,11 @@ namespace perideal
           {
             // Per end and unit beta V_i V_j, c |xi| (n.e.n)^2 / 4 under a homogeneous strain.
             const double micromodulus = c;
-            const auto   law = [micromodulus](const double l, double &axial, double &shear) {
-              axial = 0.5 * micromodulus * l;
-              shear = 0.;
-            };
+            const auto   law =
+              [micromodulus](const Tensor<1, dim> &xi, double &axial, double &shear) {
+                axial = 0.5 * micromodulus * xi.norm();
+                shear = 0.;
+              };
             fit_report = apply_stiffness_fit<dim>(particles, law, elasticity_tensor()[0][0][0][0]);
           }
         else

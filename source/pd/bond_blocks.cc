@@ -25,22 +25,20 @@ namespace perideal
     n_owned                   = particles.n_owned();
     n_local                   = particles.n_local();
 
-    // Lattice coordinates of the local particles.
-    Point<dim> origin;
-    for (unsigned int d = 0; d < dim; ++d)
-      origin[d] = std::numeric_limits<double>::max();
-    for (const auto &p : positions)
-      for (unsigned int d = 0; d < dim; ++d)
-        origin[d] = std::min(origin[d], p[d]);
+    // Lattice coordinates of the local particles (of their lattice points on a perturbed
+    // lattice, whose offsets are at most perturbation / 2 spacings per coordinate).
+    const Point<dim>                  &corner    = particles.lattice_corner();
+    const double                       tolerance = 0.5 * particles.settings().perturbation + 1e-6;
     std::vector<std::array<long, dim>> lattice(n_local);
     for (unsigned int i = 0; i < n_local; ++i)
       for (unsigned int d = 0; d < dim; ++d)
         {
-          const double q = (positions[i][d] - origin[d]) / dx;
+          const double q = (positions[i][d] - corner[d]) / dx - 0.5;
           lattice[i][d]  = std::lround(q);
-          AssertThrow(std::abs(q - lattice[i][d]) < 1e-6,
+          AssertThrow(std::abs(q - lattice[i][d]) < tolerance,
                       ExcMessage("Internal error: particle " + std::to_string(i) +
-                                 " is not on the lattice of spacing " + std::to_string(dx) +
+                                 " is not within its offset of the lattice of spacing " +
+                                 std::to_string(dx) +
                                  "; the force kernels need lattice particles."));
         }
 
@@ -148,6 +146,41 @@ namespace perideal
     // ("4K aliasing"), which made the kernel 25 times slower for unlucky particle counts.
     field_stride = (std::size_t(n_local) + width - 1) / width * width + 2 * width;
     field_stride += (168 - field_stride % 512 + 512) % 512;
+    // The lanes' own reference bonds on a perturbed lattice (from the lane's particle, the end
+    // of lower kernel index, to its neighbour, like the class's lattice vector).
+    lane_geometry.clear();
+    if (particles.settings().perturbation > 0.)
+      {
+        const std::size_t n_lanes = lane_bond.size();
+        lane_geometry.resize_fast((dim + 2) * n_lanes);
+        std::vector<unsigned int> particle_of(n_local);
+        for (unsigned int i = 0; i < n_local; ++i)
+          particle_of[kernel_index[i]] = i;
+        for (std::size_t g = 0; g + 1 < group_list.size(); ++g)
+          for (std::size_t q = group_list[g].first_block; q < group_list[g + 1].first_block; ++q)
+            for (unsigned int l = 0; l < width; ++l)
+              {
+                // Lane l is particle first + l, its neighbour first + offset + l.
+                const std::size_t       lane  = q * width + l;
+                const std::size_t       first = group_list[g].first_particle + l;
+                std::array<double, dim> xi    = class_list[block_list[q].bond_class].xi;
+                if (lane_bond[lane] != numbers::invalid_unsigned_int)
+                  {
+                    const auto &a = positions[particle_of[first]];
+                    const auto &b = positions[particle_of[first + block_list[q].offset]];
+                    for (unsigned int d = 0; d < dim; ++d)
+                      xi[d] = b[d] - a[d];
+                  }
+                double length2 = 0.;
+                for (unsigned int d = 0; d < dim; ++d)
+                  {
+                    lane_geometry[d * n_lanes + lane] = xi[d];
+                    length2 += xi[d] * xi[d];
+                  }
+                lane_geometry[dim * n_lanes + lane]       = std::sqrt(length2);
+                lane_geometry[(dim + 1) * n_lanes + lane] = 1. / std::sqrt(length2);
+              }
+      }
     lane_state.assign(lane_bond.size(), 0);
     synced_revision = bonds.revision + 1;
     sync_state(bonds);

@@ -30,9 +30,10 @@ namespace perideal
       /// omega beta V_i V_j per lane.
       const double *weight;
 
+      template <typename Bond>
       void
-      pair(const typename BondBlocks<dim>::BondClass &bond,
-           const DeformedBond<dim>                   &y,
+      pair(const Bond              &bond,
+           const DeformedBond<dim> &y,
            const typename StretchPairLaw<dim>::Side &,
            const BondLanes   &lanes,
            bond_simd::Vector *to_a,
@@ -81,13 +82,14 @@ namespace perideal
                 Vector(theta + a, stdx::element_aligned)};
       }
 
+      template <typename Bond>
       void
-      pair(const typename BondBlocks<dim>::BondClass &bond,
-           const DeformedBond<dim>                   &y,
-           const Side                                &i,
-           const BondLanes                           &lanes,
-           bond_simd::Vector                         *to_a,
-           bond_simd::Vector                         *to_b) const
+      pair(const Bond              &bond,
+           const DeformedBond<dim> &y,
+           const Side              &i,
+           const BondLanes         &lanes,
+           bond_simd::Vector       *to_a,
+           bond_simd::Vector       *to_b) const
       {
         using namespace bond_simd;
         const double      n = dim;

@@ -79,22 +79,38 @@ namespace perideal
                         "the cells the horizon cuts: right bulk stiffness without surface "
                         "correction, but an effective Poisson ratio 5 % low at delta = 3.015 dx). "
                         "See doc/architecture.md.");
+      prm.declare_entry("Lattice perturbation",
+                        "0",
+                        Patterns::Double(0., 0.5),
+                        "epsilon in [0, 0.5]: each particle moves from the centre of its lattice "
+                        "cell by a random offset, uniform in [-epsilon dx/2, epsilon dx/2] per "
+                        "coordinate (the centre decides whether it is in the body; volumes stay "
+                        "dx^dim). 0 is the regular lattice. A perturbed lattice has no preferred "
+                        "bond directions, so cracks do not lock onto lattice rows; the offsets "
+                        "depend on <Perturbation seed> and the lattice indices, not on the number "
+                        "of ranks. See doc/theory/models.md, 'Perturbed lattices'.");
+      prm.declare_entry("Perturbation seed",
+                        "1",
+                        Patterns::Integer(0),
+                        "Seed of the <Lattice perturbation>'s offsets; runs with other seeds give "
+                        "the scatter of a result over lattices.");
       prm.declare_entry("Surface correction",
                         "true",
                         Patterns::Bool(),
                         "Correct the stiffness near free surfaces: energy method for 'bond "
                         "based', discrete weighted volume for 'linear peridynamic solid'.");
-      prm.declare_entry("Surface correction method",
-                        "energy",
-                        Patterns::Selection("energy|stiffness fit"),
-                        "With 'Surface correction = true', for 'bond based' and 'timoshenko bond "
-                        "based': 'energy' (each particle's moduli C_aaaa along the axes, one "
-                        "factor per particle and axis) or 'stiffness fit' (the bond factors "
-                        "closest to 1 that give every particle the interior's whole elasticity "
-                        "tensor, D_12 and the shear moduli too; bounded to [0.2, 5], least "
-                        "squares at corners; a linear solve at set-up). The other models have "
-                        "their own method and accept 'energy' only. See doc/theory/models.md, "
-                        "'Surface correction: the stiffness fit'.");
+      prm.declare_entry(
+        "Surface correction method",
+        "energy",
+        Patterns::Selection("energy|stiffness fit"),
+        "With 'Surface correction = true', for 'bond based', 'timoshenko bond "
+        "based' and 'anisotropic bond based' (one grain): 'energy' (each particle's moduli C_aaaa along the axes, one "
+        "factor per particle and axis) or 'stiffness fit' (the bond factors "
+        "closest to 1 that give every particle the interior's whole elasticity "
+        "tensor, D_12 and the shear moduli too; bounded to [0.2, 5], least "
+        "squares at corners; a linear solve at set-up). The other models have "
+        "their own method and accept 'energy' only. See doc/theory/models.md, "
+        "'Surface correction: the stiffness fit'.");
       prm.declare_entry("Body",
                         "",
                         Patterns::Anything(),
@@ -167,12 +183,14 @@ namespace perideal
     settings.horizon   = horizon_factor * settings.spacing;
     settings.thickness = (dim == 2 ? prm.get_double("Thickness") : 1.);
     ParameterUtilities::require_positive(settings.thickness, "Discretization/Thickness");
-    const std::string partial = prm.get("Partial volume correction");
-    settings.partial_volume   = (partial == "none" ? PartialVolume::none :
-                                 partial == "book" ? PartialVolume::book :
-                                                     PartialVolume::geometric);
-    surface_correction        = prm.get_bool("Surface correction");
-    stiffness_fit             = prm.get("Surface correction method") == "stiffness fit";
+    const std::string partial  = prm.get("Partial volume correction");
+    settings.partial_volume    = (partial == "none" ? PartialVolume::none :
+                                  partial == "book" ? PartialVolume::book :
+                                                      PartialVolume::geometric);
+    settings.perturbation      = prm.get_double("Lattice perturbation");
+    settings.perturbation_seed = prm.get_integer("Perturbation seed");
+    surface_correction         = prm.get_bool("Surface correction");
+    stiffness_fit              = prm.get("Surface correction method") == "stiffness fit";
     prm.leave_subsection();
 
     regions.parse_parameters(prm);
@@ -200,10 +218,11 @@ namespace perideal
           model->resolve_regions(regions);
           AssertThrow(!(surface_correction && stiffness_fit) || model->has_stiffness_fit(),
                       ExcMessage("<Discretization/Surface correction method> = stiffness fit is "
-                                 "available for <Material/Model> = bond based or timoshenko "
-                                 "bond based, not '" +
+                                 "available for <Material/Model> = bond based, timoshenko bond "
+                                 "based and anisotropic bond based without a Grains file, not '" +
                                  model_name +
-                                 "'; accepted for it: energy (the model's own method)."));
+                                 "' as set up here; accepted for it: energy (the model's own "
+                                 "method)."));
         }
       no_fail_regions = ParameterUtilities::split_names(prm.get("No-fail regions"));
       for (const auto &name : no_fail_regions)

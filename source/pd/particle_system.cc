@@ -53,6 +53,40 @@ namespace perideal
     return a >= 0. && a <= 1. && b >= 0. && b <= 1.;
   }
 
+  namespace
+  {
+    /// SplitMix64 (Steele, Lea & Flood 2014): a well-mixed 64-bit hash.
+    std::uint64_t
+    mix(std::uint64_t z)
+    {
+      z += 0x9e3779b97f4a7c15ULL;
+      z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ULL;
+      z = (z ^ (z >> 27)) * 0x94d049bb133111ebULL;
+      return z ^ (z >> 31);
+    }
+
+    /// The offset of the particle of lattice indices @p index: uniform in [-a, a] per
+    /// coordinate, a function of @p seed and @p index only.
+    template <int dim>
+    Tensor<1, dim>
+    lattice_offset(const std::array<unsigned int, dim> &index,
+                   const unsigned int                   seed,
+                   const double                         a)
+    {
+      std::uint64_t h = mix(seed);
+      for (unsigned int d = 0; d < dim; ++d)
+        h = mix(h ^ index[d]);
+      Tensor<1, dim> offset;
+      for (unsigned int d = 0; d < dim; ++d)
+        {
+          h = mix(h);
+          // The top 53 bits as a double in [0, 1).
+          offset[d] = a * (2. * static_cast<double>(h >> 11) * 0x1.0p-53 - 1.);
+        }
+      return offset;
+    }
+  } // namespace
+
   template <int dim>
   ParticleSystem<dim>::ParticleSystem(const MPI_Comm comm)
     : communicator(comm)
@@ -69,6 +103,10 @@ namespace perideal
     parameters = settings;
     partitioners.clear();
     const double dx = settings.spacing;
+    // Half-width of the offsets; two perturbed particles are at most 2 a sqrt(dim) closer than
+    // their lattice points, so the bins widen by that much.
+    const double offset_bound = 0.5 * settings.perturbation * dx;
+    const double bin_minimum  = search_radius() + 2. * offset_bound * std::sqrt(double(dim));
 
     // Lattice and background bins, identical on every rank.
     std::array<unsigned int, dim> n_points, n_bins;
@@ -78,10 +116,10 @@ namespace perideal
       {
         n_points[d] = std::max(1, static_cast<int>(std::ceil(box.side_length(d) / dx - 1e-8)));
         upper[d]    = lower[d] + n_points[d] * dx;
-        n_bins[d] =
-          std::max(1, static_cast<int>(std::floor((upper[d] - lower[d]) / search_radius())));
+        n_bins[d] = std::max(1, static_cast<int>(std::floor((upper[d] - lower[d]) / bin_minimum)));
         bin_width[d] = (upper[d] - lower[d]) / n_bins[d];
       }
+    lower_corner = lower;
     // first_point[d][k]: first lattice index in bin k along d (bins are monotone in the index).
     std::array<std::vector<unsigned int>, dim> first_point;
     for (unsigned int d = 0; d < dim; ++d)
@@ -113,36 +151,35 @@ namespace perideal
       }
     const auto &background = *background_bins;
 
-    // The lattice points of the bin of one cell, in a fixed order.
+    // The particles of the bin of one cell, in a fixed order: the lattice points in the body,
+    // moved by their offsets.
     const auto points_of_cell = [&](const typename Triangulation<dim>::active_cell_iterator &cell,
                                     std::vector<Point<dim>> &points) {
       points.clear();
-      std::array<unsigned int, dim> bin;
+      std::array<unsigned int, dim> bin, index;
       for (unsigned int d = 0; d < dim; ++d)
         bin[d] = static_cast<unsigned int>((cell->center()[d] - lower[d]) / bin_width[d]);
-      Point<dim> p;
-      if (dim == 2)
+      const auto add = [&]() {
+        Point<dim> p;
+        for (unsigned int d = 0; d < dim; ++d)
+          p[d] = lower[d] + (index[d] + 0.5) * dx;
+        if (in_body(p))
+          points.push_back(
+            offset_bound > 0. ?
+              p + lattice_offset<dim>(index, settings.perturbation_seed, offset_bound) :
+              p);
+      };
+      const unsigned int k_begin = (dim == 3 ? first_point[dim - 1][bin[dim - 1]] : 0);
+      const unsigned int k_end   = (dim == 3 ? first_point[dim - 1][bin[dim - 1] + 1] : 1);
+      for (unsigned int k = k_begin; k < k_end; ++k)
         for (unsigned int j = first_point[1][bin[1]]; j < first_point[1][bin[1] + 1]; ++j)
           for (unsigned int i = first_point[0][bin[0]]; i < first_point[0][bin[0] + 1]; ++i)
             {
-              p[0] = lower[0] + (i + 0.5) * dx;
-              p[1] = lower[1] + (j + 0.5) * dx;
-              if (in_body(p))
-                points.push_back(p);
+              index[0]       = i;
+              index[1]       = j;
+              index[dim - 1] = (dim == 3 ? k : j);
+              add();
             }
-      else
-        for (unsigned int k = first_point[dim - 1][bin[dim - 1]];
-             k < first_point[dim - 1][bin[dim - 1] + 1];
-             ++k)
-          for (unsigned int j = first_point[1][bin[1]]; j < first_point[1][bin[1] + 1]; ++j)
-            for (unsigned int i = first_point[0][bin[0]]; i < first_point[0][bin[0] + 1]; ++i)
-              {
-                p[0]       = lower[0] + (i + 0.5) * dx;
-                p[1]       = lower[1] + (j + 0.5) * dx;
-                p[dim - 1] = lower[dim - 1] + (k + 0.5) * dx;
-                if (in_body(p))
-                  points.push_back(p);
-              }
     };
 
     // Owned particles, cell by cell.
@@ -541,6 +578,13 @@ namespace perideal
         if (d == dim)
           break;
       }
+  }
+
+  template <int dim>
+  const Point<dim> &
+  ParticleSystem<dim>::lattice_corner() const
+  {
+    return lower_corner;
   }
 
   template <int dim>

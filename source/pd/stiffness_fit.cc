@@ -168,9 +168,9 @@ namespace perideal
 
   template <int dim>
   StiffnessFitReport
-  apply_stiffness_fit(ParticleSystem<dim>    &particles,
-                      const BondStiffnessLaw &law,
-                      const double            modulus)
+  apply_stiffness_fit(ParticleSystem<dim>         &particles,
+                      const BondStiffnessLaw<dim> &law,
+                      const double                 modulus)
   {
     using V                        = Voigt<dim>;
     constexpr unsigned int m       = V::unique;
@@ -193,7 +193,7 @@ namespace perideal
       {
         const double length = family[f].norm();
         double       axial, shear;
-        law(length, axial, shear);
+        law(family[f], axial, shear);
         const auto h =
           V::bond_tensor(family[f] / length, family_weight[f] * axial, family_weight[f] * shear);
         for (unsigned int k = 0; k < m; ++k)
@@ -215,8 +215,9 @@ namespace perideal
     for (unsigned int i = 0; i < n_owned; ++i)
       for (unsigned int b = bonds.row_start[i]; b < bonds.row_start[i + 1]; ++b)
         {
-          double axial, shear;
-          law(bonds.length[b], axial, shear);
+          double               axial, shear;
+          const Tensor<1, dim> xi = x[bonds.neighbor[b]] - x[i];
+          law(xi, axial, shear);
           const double k = bonds.volume_factor[b] * volume[i] * volume[bonds.neighbor[b]] / unit;
           equations.h[b] =
             V::bond_tensor((x[bonds.neighbor[b]] - x[i]) / bonds.length[b], k * axial, k * shear);
@@ -319,7 +320,7 @@ namespace perideal
   }
 
   template StiffnessFitReport
-  apply_stiffness_fit<2>(ParticleSystem<2> &, const BondStiffnessLaw &, double);
+  apply_stiffness_fit<2>(ParticleSystem<2> &, const BondStiffnessLaw<2> &, double);
   template StiffnessFitReport
-  apply_stiffness_fit<3>(ParticleSystem<3> &, const BondStiffnessLaw &, double);
+  apply_stiffness_fit<3>(ParticleSystem<3> &, const BondStiffnessLaw<3> &, double);
 } // namespace perideal

@@ -95,15 +95,17 @@ namespace perideal
         return {};
       }
 
+      template <typename Bond>
       BondStrain<dim>
-      strain(const typename BondBlocks<dim>::BondClass &bond,
+      strain(const Bond &bond,
              const std::size_t /*first_lane*/,
              const Vector *u_a,
              const Vector *u_b) const
       {
+        using Value = BondValue<Bond>;
         BondStrain<dim> y;
-        const double    il = bond.inverse_length;
-        double          n[dim];
+        const Value     il = bond.inverse_length;
+        Value           n[dim];
         for (unsigned int d = 0; d < dim; ++d)
           n[d] = bond.xi[d] * il;
         Vector eta[dim];
@@ -150,16 +152,18 @@ namespace perideal
         return y;
       }
 
+      template <typename Bond>
       void
-      pair(const typename BondBlocks<dim>::BondClass &bond,
-           const BondStrain<dim>                     &y,
+      pair(const Bond            &bond,
+           const BondStrain<dim> &y,
            const Side &,
            const BondLanes &lanes,
            Vector          *to_a,
            Vector          *to_b) const
       {
-        const double il = bond.inverse_length, l = bond.length;
-        double       n[dim];
+        using Value    = BondValue<Bond>;
+        const Value il = bond.inverse_length, l = bond.length;
+        Value       n[dim];
         for (unsigned int d = 0; d < dim; ++d)
           n[d] = bond.xi[d] * il;
         Vector k = 0.;
@@ -229,11 +233,12 @@ namespace perideal
        * lanes without force: a bond broken in this evaluation keeps its history, and
        * released_energy() takes its energy).
        */
+      template <typename Bond>
       void
-      update_history(const typename BondBlocks<dim>::BondClass &bond,
-                     const BondStrain<dim>                     &y,
-                     const std::size_t                          q,
-                     const Vector                              &k) const
+      update_history(const Bond            &bond,
+                     const BondStrain<dim> &y,
+                     const std::size_t      q,
+                     const Vector          &k) const
       {
         Vector g2 = 0., b2 = 0.;
         for (unsigned int d = 0; d < n_shear; ++d)
@@ -248,17 +253,16 @@ namespace perideal
         for (auto &x : present)
           stdx::where(k == 0., x) = 0.;
         // U_0 per mode: p.C_N |xi| s_0^2, 12 p.C_theta gamma_0^2 / |xi|, p.C_B kappa_0^2 / |xi|.
-        const double U0[3] = {p.inverse_limit[0] > 0. ?
-                                p.C_N * bond.length / (p.inverse_limit[0] * p.inverse_limit[0]) :
-                                0.,
-                              p.inverse_limit[1] > 0. ?
-                                12. * p.C_theta * bond.inverse_length /
-                                  (p.inverse_limit[1] * p.inverse_limit[1]) :
-                                0.,
-                              p.inverse_limit[2] > 0. ?
-                                p.C_B * bond.inverse_length /
-                                  (p.inverse_limit[2] * p.inverse_limit[2]) :
-                                0.};
+        const BondValue<Bond> U0[3] = {
+          p.inverse_limit[0] > 0. ?
+            p.C_N * bond.length / (p.inverse_limit[0] * p.inverse_limit[0]) :
+            BondValue<Bond>(0.),
+          p.inverse_limit[1] > 0. ?
+            12. * p.C_theta * bond.inverse_length / (p.inverse_limit[1] * p.inverse_limit[1]) :
+            BondValue<Bond>(0.),
+          p.inverse_limit[2] > 0. ?
+            p.C_B * bond.inverse_length / (p.inverse_limit[2] * p.inverse_limit[2]) :
+            BondValue<Bond>(0.)};
         const double kk = p.softening_parameter;
         const auto   D  = [kk](const Vector &x) {
           Vector d = 0.;
@@ -516,9 +520,11 @@ namespace perideal
             // Per end and unit beta V_i V_j, w / 2 = [C_N |xi| (n.e.n)^2 / 2 + 6 C_theta
             // (|e.n|^2 - (n.e.n)^2) / |xi|] / 2 under a homogeneous strain, theta its rotation.
             const double C_N = bond_stiffness.normal, C_theta = bond_stiffness.shear;
-            const auto   law = [C_N, C_theta](const double l, double &axial, double &shear) {
-              axial = 0.5 * (C_N * l - 12. * C_theta / l);
-              shear = 6. * C_theta / l;
+            const auto   law = [C_N,
+                              C_theta](const Tensor<1, dim> &xi, double &axial, double &shear) {
+              const double l = xi.norm();
+              axial          = 0.5 * (C_N * l - 12. * C_theta / l);
+              shear          = 6. * C_theta / l;
             };
             fit_report = apply_stiffness_fit<dim>(particles, law, D[0]);
           }

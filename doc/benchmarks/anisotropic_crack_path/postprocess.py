@@ -259,6 +259,8 @@ def read_run(directory, threshold, r0, r1):
     crack = numbers(entry(prm, "Cracks"))
     start, tip = np.array(crack[0:2]), np.array(crack[2:4])
     notch = math.degrees(math.atan2(tip[1] - start[1], tip[0] - start[0]))
+    perturbation = float(entry(prm, "Lattice perturbation", "0"))
+    seed = int(entry(prm, "Perturbation seed", "1"))
     pmb = entry(prm, "Model") == "bond based"
     phi, theta, psi = numbers(entry(prm, "Orientation"))
     axes = euler_axes(phi, theta, psi)
@@ -287,6 +289,7 @@ def read_run(directory, threshold, r0, r1):
         "delta": delta, "tip": tip, "notch": notch, "alpha": alpha, "r_t": r_t, "r_f": r_f, "ratios": ratios,
         "time": series[-1][0], "nodes": nodes, "new_damage": damage - damage0,
         "damage": damage, "wall": wall, "n_particles": len(nodes),
+        "perturbation": perturbation, "seed": seed,
     }
     run["crack"] = measure(run, threshold, r0 if r0 is not None else delta, r1)
     return run
@@ -311,12 +314,18 @@ def set_label(run):
         label += f", plate turned {run['notch']:.0f} deg against the lattice (grips clamped)"
     elif "clamped" in run["set"]:
         label += ", grips clamped"
+    if "continuum" in run["set"]:
+        label += ", continuum calibration"
+    if run["perturbation"] > 0:
+        label += f", lattice perturbed (epsilon = {run['perturbation']:g})"
     return label
 
 
 def set_key(run):
-    """The set of a run: the directory that holds the run's directory."""
-    return run["set"]
+    """The series of a run in the angle plot: the directory that holds the run's directory,
+    without run.sh's _sSEED, so that the seeds of a perturbed lattice form one series (their
+    mean, with the range as an error bar)."""
+    return re.sub(r"_s[0-9]+(?=_|$)", "", run["set"])
 
 
 # ----------------------------------------------------------------------------- output
@@ -339,10 +348,21 @@ def plot_angles(runs, prefix, skip_damage=()):
     order = sorted(sets.items(), key=order_key)
     for k, (key, members) in enumerate(order):
         members.sort(key=lambda r: r["alpha"])
-        a = [r["alpha"] for r in members]
         style = markers[k % len(markers)] + ("-" if members[0]["r_t"] != members[0]["r_f"] else ":")
-        y = [r["crack"]["angle"] if r["crack"] else np.nan for r in members]
-        ax.plot(a, y, style, lw=1, ms=5, label="PD: " + set_label(members[0]))
+        by_alpha = {}
+        for r in members:
+            by_alpha.setdefault(r["alpha"], []).append(r["crack"]["angle"] if r["crack"] else np.nan)
+        a = sorted(by_alpha)
+        y = [np.nanmean(by_alpha[x]) if np.isfinite(by_alpha[x]).any() else np.nan for x in a]
+        n_seeds = max(len(v) for v in by_alpha.values())
+        label = "PD: " + set_label(members[0])
+        if n_seeds > 1:
+            label += f", mean and range of {n_seeds} seeds"
+            low = [y[i] - np.nanmin(by_alpha[x]) for i, x in enumerate(a)]
+            high = [np.nanmax(by_alpha[x]) - y[i] for i, x in enumerate(a)]
+            ax.errorbar(a, y, yerr=[low, high], fmt=style, lw=1, ms=5, capsize=3, label=label)
+        else:
+            ax.plot(a, y, style, lw=1, ms=5, label=label)
         r_t, r_f = members[0]["r_t"], members[0]["r_f"]
         if r_t != r_f and (r_t, r_f) not in drawn:
             drawn.add((r_t, r_f))
@@ -372,7 +392,10 @@ def plot_angles(runs, prefix, skip_damage=()):
     fig.savefig(f"{prefix}_angle.png", dpi=110)
     plt.close(fig)
 
-    for key, members in sets.items():
+    by_set = {}
+    for r in runs:
+        by_set.setdefault(r["set"], []).append(r)
+    for key, members in by_set.items():
         if key in skip_damage:
             continue
         members.sort(key=lambda r: r["alpha"])

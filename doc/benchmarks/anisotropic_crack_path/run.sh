@@ -20,7 +20,10 @@
 #              grips clamped).
 #   ACP_STUDY  the study sets (default "ratios_dx0.5_m4 ratios_dx0.5_m5 r1.4_dx0.5
 #              ratios_dx0.5_clamped ratios_dx0.5_rot15 ratios_dx0.5_rot30 iso_dx0.5_rot30
-#              pmb_dx0.5_rot30"); "" skips them.
+#              pmb_dx0.5_rot30" and the perturbed lattice: ratios_dx0.5, ratios_dx0.5_clamped,
+#              ratios_dx0.5_rot30 and iso_dx0.5, each with _p0.5_s1, _s2, _s3); "" skips them.
+#              More set options: _pEPS a perturbed lattice (<Lattice perturbation> = EPS),
+#              _sSEED its <Perturbation seed>, _continuum the continuum calibration.
 #   ACP_ANGLES (default "0 15 30 45 60 75 90"); ACP_NP MPI ranks per run (default 1: the wall
 #              times in README.md are one rank); ACP_POSTPROCESS_ONLY=1: no runs, the tables
 #              and plots of the results there are.
@@ -33,7 +36,13 @@ solver="$build/bin/perideal-solid"
 export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1
 cd "$here"
 sets=${ACP_SETS:-iso_dx0.5 iso_dx0.25 ratios_dx0.5 ratios_dx0.25}
-study=${ACP_STUDY-ratios_dx0.5_m4 ratios_dx0.5_m5 r1.4_dx0.5 ratios_dx0.5_clamped ratios_dx0.5_rot15 ratios_dx0.5_rot30 iso_dx0.5_rot30 pmb_dx0.5_rot30}
+perturbed_sets=""
+for seed in 1 2 3; do
+  for kind in ratios_dx0.5 ratios_dx0.5_clamped ratios_dx0.5_rot30 iso_dx0.5; do
+    perturbed_sets="$perturbed_sets ${kind}_p0.5_s$seed"
+  done
+done
+study=${ACP_STUDY-ratios_dx0.5_m4 ratios_dx0.5_m5 r1.4_dx0.5 ratios_dx0.5_clamped ratios_dx0.5_rot15 ratios_dx0.5_rot30 iso_dx0.5_rot30 pmb_dx0.5_rot30 $perturbed_sets}
 angles=${ACP_ANGLES:-0 15 30 45 60 75 90}
 np=${ACP_NP:-1}
 has_ratios=false
@@ -58,12 +67,16 @@ variant() {
   local set=$1 alpha=$2 dir="results/$1/alpha_$2"
   local kind=${set%%_*} rest=${set#*_dx}
   local dx_mm=${rest%%_*} m=3 beta=0 base=anisotropic_crack_path.prm clamped=false
+  local perturbation=0 seed=1 calibration=discrete
   local option
   for option in $(echo "${rest#"$dx_mm"}" | tr '_' ' '); do
     case "$option" in
       m*) m=${option#m} ;;
       clamped) clamped=true ;;
       rot*) beta=${option#rot} ;;
+      p*) perturbation=${option#p} ;;
+      s*) seed=${option#s} ;;
+      continuum) calibration=continuum ;;
     esac
   done
   mkdir -p "results/$set"
@@ -79,6 +92,8 @@ variant() {
     echo "subsection Discretization"
     echo "  set Lattice spacing = ${dx_mm}e-3"
     echo "  set Horizon factor  = $m.015"
+    echo "  set Lattice perturbation = $perturbation"
+    echo "  set Perturbation seed    = $seed"
     echo "end"
     echo "subsection Material"
     if [ "$kind" = pmb ]; then
@@ -90,6 +105,7 @@ variant() {
     echo "  subsection anisotropic bond based"
     echo "    set Orientation = $((alpha + beta + 90)), 90, 0"
     echo "    set Fracture energy ratios = 1, 1, $(ratio_of "$kind")"
+    echo "    set Calibration = $calibration"
     echo "  end"
     echo "end"
     if $clamped; then
@@ -164,6 +180,9 @@ if [ -n "$study" ]; then
   plot anisotropic_crack_path_lattice ratios_dx0.5_clamped,ratios_dx0.5_rot15 "" \
     ratios_dx0.5_clamped ratios_dx0.5_rot15 ratios_dx0.5_rot30 iso_dx0.5_rot30 \
     pmb_dx0.5_rot30
+  echo "== perturbed lattice (epsilon = 1/2, seeds 1-3): grips free and clamped, plate turned 30 deg"
+  skip=$(echo $perturbed_sets | tr ' ' '\n' | grep -v -E '^ratios_dx0.5(_rot30)?_p0.5_s1$' | tr '\n' ',')
+  plot anisotropic_crack_path_perturbed "$skip" "" $perturbed_sets
 fi
 echo "== crack deflection angles (postprocess.py)"
 plot anisotropic_crack_path "" --robustness $sets

@@ -9,6 +9,7 @@
 #include <perideal/pd/anisotropic_micromodulus.h>
 #include <perideal/pd/grains.h>
 #include <perideal/pd/material_model.h>
+#include <perideal/pd/stiffness_fit.h>
 
 #include <memory>
 
@@ -138,6 +139,10 @@ namespace perideal
     std::string
     summary() const override;
 
+    /// The stiffness fit is offered for one grain (the fit's target is one interior tensor).
+    bool
+    has_stiffness_fit() const override;
+
     /**
      * @brief The micromodulus tensor Lambda [N/m^6] (after initialize()).
      */
@@ -192,6 +197,7 @@ namespace perideal
     std::vector<unsigned int>                                particle_grain;
     /// k_b = c(n_b) G beta V_i V_j and the breaking factor per bond.
     std::vector<double> bond_coefficient, bond_break_factor;
+    StiffnessFitReport  fit_report;
     /// The force kernel's data (bonds in SIMD blocks, per-lane k_b, per-class breaking
     /// factors): defined in anisotropic_bond_based.cc, compiled with the kernel options.
     struct Kernel;

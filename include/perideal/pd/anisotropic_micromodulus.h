@@ -121,9 +121,8 @@ namespace perideal
     using LatticeFamily = Family<3>;
 
     /**
-     * @brief The family of the particle with the most bonds over all ranks (an interior
-     * particle; the first on the lowest rank that owns one), the same on every rank
-     * (collective).
+     * @brief The family of an interior particle of the regular lattice
+     * (ParticleSystem::lattice_family()): with a perturbed lattice, the calibration's reference.
      */
     template <int dim>
     Family<dim>

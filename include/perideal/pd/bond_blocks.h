@@ -80,7 +80,11 @@ namespace perideal
    * group, the neighbours' side once per block, and the per-lane arrays of the block. Lanes
    * without a bond (line ends, ghosts, other offsets) have state 0 and coefficient 0: they
    * produce zero forces and need no masks. The reference bond vector is the class's lattice
-   * vector, shared by the block; it is not stored per bond.
+   * vector, shared by the block; it is not stored per bond. On a perturbed lattice
+   * (ParticleSystem::Settings::perturbation > 0) the particles keep the kernel order and the
+   * classes of their lattice points, but every bond has its own reference vector: the blocks
+   * then also hold it per lane (lane_bond(); has_lane_bonds()), and for_each_bond_block() hands
+   * the pair laws a LaneBond instead of the class.
    *
    * The class depends on the SIMD width: it is compiled, like the kernels that use it, with
    * the kernel options of source/pd/CMakeLists.txt.
@@ -107,6 +111,20 @@ namespace perideal
       double                  length;
       double                  inverse_length;
     };
+
+    /// The reference bonds of a block's lanes on a perturbed lattice: the bond vector from the
+    /// lane's particle to its neighbour, its length and inverse length, per lane (empty lanes
+    /// hold the class's).
+    struct LaneBond
+    {
+      bond_simd::Vector xi[dim];
+      bond_simd::Vector length;
+      bond_simd::Vector inverse_length;
+    };
+
+    /// The per-lane reference bonds: a pointer to each of the dim + 2 per-lane arrays (xi's
+    /// components, length, inverse length), read by lane_bond().
+    using LaneBondArrays = std::array<const double *, dim + 2>;
 
     /// The blocks of one group of width consecutive particles (kernel order).
     struct Group
@@ -152,6 +170,37 @@ namespace perideal
     classes() const
     {
       return class_list;
+    }
+
+    /// Whether the bonds have their own reference vectors (a perturbed lattice).
+    bool
+    has_lane_bonds() const
+    {
+      return !lane_geometry.empty();
+    }
+
+    /// The per-lane arrays of the reference bonds (has_lane_bonds() only).
+    LaneBondArrays
+    lane_bond_arrays() const
+    {
+      LaneBondArrays arrays;
+      for (unsigned int k = 0; k < dim + 2; ++k)
+        arrays[k] = lane_geometry.data() + k * lane_bond.size();
+      return arrays;
+    }
+
+    /// The reference bonds of the lanes from @p first_lane on, from @p arrays
+    /// (lane_bond_arrays()).
+    static LaneBond
+    lane_bonds(const LaneBondArrays &arrays, const std::size_t first_lane)
+    {
+      namespace stdx = std::experimental;
+      LaneBond bond;
+      for (unsigned int d = 0; d < dim; ++d)
+        bond.xi[d].copy_from(arrays[d] + first_lane, stdx::element_aligned);
+      bond.length.copy_from(arrays[dim] + first_lane, stdx::element_aligned);
+      bond.inverse_length.copy_from(arrays[dim + 1] + first_lane, stdx::element_aligned);
+      return bond;
     }
 
     /**
@@ -230,7 +279,10 @@ namespace perideal
     std::vector<BondClass>    class_list;
     std::vector<unsigned int> lane_bond;
     std::vector<std::uint8_t> lane_state;
-    std::uint64_t             synced_revision = 0;
+    /// On a perturbed lattice: xi's components, the lengths and the inverse lengths of the lanes,
+    /// one array of lane_bond.size() after the other; empty on a regular lattice.
+    Array         lane_geometry;
+    std::uint64_t synced_revision = 0;
   };
 } // namespace perideal
 

@@ -10,6 +10,7 @@
 #include <array>
 #include <cstddef>
 #include <type_traits>
+#include <utility>
 #include <vector>
 
 namespace perideal
@@ -28,6 +29,89 @@ namespace perideal
     bond_simd::Mask active;
   };
 
+  /// The type of a reference bond's members: double for a BondBlocks::BondClass,
+  /// bond_simd::Vector for a BondBlocks::LaneBond.
+  template <typename Bond>
+  using BondValue = std::decay_t<decltype(std::declval<Bond>().length)>;
+
+  namespace internal
+  {
+    /// for_each_bond_block() with the reference bonds of the classes (@p lane_bonds false) or
+    /// of the lanes (true: a perturbed lattice).
+    template <bool lane_bonds, unsigned int n_components, int dim, typename PairLaw>
+    inline void
+    bond_block_loop(BondBlocks<dim>                               &blocks,
+                    const std::array<const double *, n_components> u,
+                    const std::array<double *, PairLaw::n_outputs> outputs,
+                    const PairLaw                                  law,
+                    BondList                                      &bonds,
+                    const double                                   critical_stretch)
+    {
+      using namespace bond_simd;
+      using BondClass                                     = typename BondBlocks<dim>::BondClass;
+      constexpr unsigned int                   n_outputs  = PairLaw::n_outputs;
+      const std::size_t                        n_entries  = blocks.groups().size();
+      const auto                              *groups     = blocks.groups().data();
+      const auto                              *block_list = blocks.blocks().data();
+      const BondClass                         *classes    = blocks.classes().data();
+      const std::uint8_t                      *state      = blocks.state();
+      typename BondBlocks<dim>::LaneBondArrays lane_arrays{};
+      if constexpr (lane_bonds)
+        lane_arrays = blocks.lane_bond_arrays();
+      const auto add_to = [](double *target, const Vector &value) {
+        Vector sum(target, stdx::element_aligned);
+        sum += value;
+        sum.copy_to(target, stdx::element_aligned);
+      };
+
+      for (std::size_t g = 0; g + 1 < n_entries; ++g)
+        {
+          const unsigned int a = groups[g].first_particle;
+          Vector             u_a[n_components], sum_a[n_outputs];
+          for (unsigned int c = 0; c < n_components; ++c)
+            u_a[c].copy_from(u[c] + a, stdx::element_aligned);
+          for (unsigned int k = 0; k < n_outputs; ++k)
+            sum_a[k] = 0.;
+          const auto side = law.side(a);
+          for (unsigned int q = groups[g].first_block; q < groups[g + 1].first_block; ++q)
+            {
+              const auto &block = block_list[q];
+              BondLanes   lanes;
+              lanes.first_lane = std::size_t(q) * width;
+              lanes.neighbour  = std::size_t(std::ptrdiff_t(a) + block.offset);
+              Vector u_b[n_components];
+              for (unsigned int c = 0; c < n_components; ++c)
+                u_b[c].copy_from(u[c] + lanes.neighbour, stdx::element_aligned);
+              // The block's reference bonds: its class's lattice vector, or the lanes' own.
+              const auto bond = [&]() {
+                if constexpr (lane_bonds)
+                  return BondBlocks<dim>::lane_bonds(lane_arrays, lanes.first_lane);
+                else
+                  return classes[block.bond_class];
+              }();
+              const auto strain = law.strain(bond, lanes.first_lane, u_a, u_b);
+              lanes.active      = intact_lanes(state + lanes.first_lane);
+              if constexpr (PairLaw::breaks_bonds)
+                if (stdx::any_of(lanes.active && (strain.stretch > critical_stretch)))
+                  {
+                    const Vector stretch = strain.stretch;
+                    blocks.break_lanes(stretch, critical_stretch, q, bonds);
+                    lanes.active = intact_lanes(state + lanes.first_lane);
+                  }
+              Vector to_a[n_outputs], to_b[n_outputs];
+              law.pair(bond, strain, side, lanes, to_a, to_b);
+              for (unsigned int k = 0; k < n_outputs; ++k)
+                {
+                  sum_a[k] += to_a[k];
+                  add_to(outputs[k] + lanes.neighbour, to_b[k]);
+                }
+            }
+          for (unsigned int k = 0; k < n_outputs; ++k)
+            add_to(outputs[k] + a, sum_a[k]);
+        }
+    }
+  } // namespace internal
+
   /**
    * @brief The loop over the lattice bond blocks of @p blocks that every force kernel runs;
    * the model supplies only its pair law @p law, inlined (no call per bond through a pointer).
@@ -42,15 +126,20 @@ namespace perideal
    *    @p outputs it accumulates into (force components, energy, dilatation, ...);
    *  - `static constexpr bool breaks_bonds`;
    *  - `side(a)`: what it reads once per group on the particle side (any type);
-   *  - `strain(bond_class, first_lane, u_a, u_b)`: its per-lane measures of the deformed bond
+   *  - `strain(bond, first_lane, u_a, u_b)`: its per-lane measures of the deformed bond
    *    (any type; per-lane arrays are read at first_lane = lanes.first_lane; with a
    *    bond_simd::Vector member `stretch` if it breaks bonds: intact breakable lanes whose
    *    stretch exceeds @p critical_stretch are broken in the lanes and in @p bonds,
    *    BondBlocks::break_lanes(), before the pair is evaluated);
-   *  - `pair(bond_class, strain, side, lanes, to_a, to_b)`: the contributions to_a[k] and
+   *  - `pair(bond, strain, side, lanes, to_a, to_b)`: the contributions to_a[k] and
    *    to_b[k] of the block's bonds to output k at the particle side and at the neighbour side
    *    (zero in lanes that are not lanes.active); per-lane arrays are read at lanes.first_lane,
    *    per-particle arrays at a and lanes.neighbour.
+   *
+   * `bond` is the block's reference bond: its BondBlocks::BondClass (scalars: xi, length,
+   * inverse_length) on a regular lattice, a BondBlocks::LaneBond (the same members, one value
+   * per lane) on a perturbed one, so a law writes strain() and pair() as templates of the bond
+   * type (BondValue<Bond> is double or bond_simd::Vector). One branch per call picks the loop.
    *
    * The loop adds to_b to the neighbours' entries at once and keeps the sums of to_a in
    * registers until the group ends. @p bonds and @p critical_stretch are read only if the law
@@ -73,59 +162,20 @@ namespace perideal
                       BondList                                      &bonds,
                       const double                                   critical_stretch)
   {
-    using namespace bond_simd;
-    using BondClass                   = typename BondBlocks<dim>::BondClass;
-    constexpr unsigned int n_outputs  = PairLaw::n_outputs;
-    const std::size_t      n_entries  = blocks.groups().size();
-    const auto            *groups     = blocks.groups().data();
-    const auto            *block_list = blocks.blocks().data();
-    const BondClass       *classes    = blocks.classes().data();
-    const std::uint8_t    *state      = blocks.state();
-    const auto             add_to     = [](double *target, const Vector &value) {
-      Vector sum(target, stdx::element_aligned);
-      sum += value;
-      sum.copy_to(target, stdx::element_aligned);
-    };
-
-    for (std::size_t g = 0; g + 1 < n_entries; ++g)
-      {
-        const unsigned int a = groups[g].first_particle;
-        Vector             u_a[n_components], sum_a[n_outputs];
-        for (unsigned int c = 0; c < n_components; ++c)
-          u_a[c].copy_from(u[c] + a, stdx::element_aligned);
-        for (unsigned int k = 0; k < n_outputs; ++k)
-          sum_a[k] = 0.;
-        const auto side = law.side(a);
-        for (unsigned int q = groups[g].first_block; q < groups[g + 1].first_block; ++q)
-          {
-            const auto &block      = block_list[q];
-            const auto &bond_class = classes[block.bond_class];
-            BondLanes   lanes;
-            lanes.first_lane = std::size_t(q) * width;
-            lanes.neighbour  = std::size_t(std::ptrdiff_t(a) + block.offset);
-            Vector u_b[n_components];
-            for (unsigned int c = 0; c < n_components; ++c)
-              u_b[c].copy_from(u[c] + lanes.neighbour, stdx::element_aligned);
-            const auto strain = law.strain(bond_class, lanes.first_lane, u_a, u_b);
-            lanes.active      = intact_lanes(state + lanes.first_lane);
-            if constexpr (PairLaw::breaks_bonds)
-              if (stdx::any_of(lanes.active && (strain.stretch > critical_stretch)))
-                {
-                  const Vector stretch = strain.stretch;
-                  blocks.break_lanes(stretch, critical_stretch, q, bonds);
-                  lanes.active = intact_lanes(state + lanes.first_lane);
-                }
-            Vector to_a[n_outputs], to_b[n_outputs];
-            law.pair(bond_class, strain, side, lanes, to_a, to_b);
-            for (unsigned int k = 0; k < n_outputs; ++k)
-              {
-                sum_a[k] += to_a[k];
-                add_to(outputs[k] + lanes.neighbour, to_b[k]);
-              }
-          }
-        for (unsigned int k = 0; k < n_outputs; ++k)
-          add_to(outputs[k] + a, sum_a[k]);
-      }
+    if (blocks.has_lane_bonds())
+      internal::bond_block_loop<true, n_components, dim>(blocks,
+                                                         u,
+                                                         outputs,
+                                                         law,
+                                                         bonds,
+                                                         critical_stretch);
+    else
+      internal::bond_block_loop<false, n_components, dim>(blocks,
+                                                          u,
+                                                          outputs,
+                                                          law,
+                                                          bonds,
+                                                          critical_stretch);
   }
 
   /**
@@ -179,15 +229,14 @@ namespace perideal
   };
 
   /**
-   * @brief The DeformedBond of the lanes of a block of class @p bond_class with displacements
+   * @brief The DeformedBond of the lanes of a block of reference bond @p bond_class (its
+   * class or the lanes' own, see for_each_bond_block()) with displacements
    * @p u_a at the particle side and @p u_b at the neighbours (dim components each);
    * multiplications only (bond_simd::inverse_sqrt()).
    */
-  template <int dim>
+  template <int dim, typename Bond>
   inline DeformedBond<dim>
-  deformed_bond(const typename BondBlocks<dim>::BondClass &bond_class,
-                const bond_simd::Vector                   *u_a,
-                const bond_simd::Vector                   *u_b)
+  deformed_bond(const Bond &bond_class, const bond_simd::Vector *u_a, const bond_simd::Vector *u_b)
   {
     using bond_simd::Vector;
     DeformedBond<dim> y;
@@ -224,8 +273,9 @@ namespace perideal
     }
 
     /// The deformed bond of the lanes (relative position, rho, stretch).
+    template <typename Bond>
     DeformedBond<dim>
-    strain(const typename BondBlocks<dim>::BondClass &bond,
+    strain(const Bond &bond,
            const std::size_t /*first_lane*/,
            const bond_simd::Vector *u_a,
            const bond_simd::Vector *u_b) const
@@ -271,8 +321,9 @@ namespace perideal
     }
 
     /// The slope of the lanes and its magnitude (what breaks a bond).
+    template <typename Bond>
     BondSlope
-    strain(const typename BondBlocks<dim>::BondClass &bond,
+    strain(const Bond &bond,
            const std::size_t /*first_lane*/,
            const bond_simd::Vector *w_a,
            const bond_simd::Vector *w_b) const
@@ -282,9 +333,10 @@ namespace perideal
     }
 
     /// The pair force k r (and energy) of the active lanes.
+    template <typename Bond>
     void
-    pair(const typename BondBlocks<dim>::BondClass &bond,
-         const BondSlope                           &r,
+    pair(const Bond      &bond,
+         const BondSlope &r,
          const Side &,
          const BondLanes   &lanes,
          bond_simd::Vector *to_a,
@@ -320,8 +372,9 @@ namespace perideal
   struct TwistedSlopePairLaw : SlopePairLaw<dim, with_energy>
   {
     /// The twisted slope of the lanes and its magnitude.
+    template <typename Bond>
     BondSlope
-    strain(const typename BondBlocks<dim>::BondClass &bond,
+    strain(const Bond &bond,
            const std::size_t /*first_lane*/,
            const bond_simd::Vector *u_a,
            const bond_simd::Vector *u_b) const

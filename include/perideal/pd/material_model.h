@@ -353,7 +353,7 @@ namespace perideal
      * @brief Whether the model offers the stiffness fit as its surface correction
      * (<Discretization/Surface correction method> = stiffness fit): false by default; the
      * bond-based models whose bond energy is axial and transverse terms ('bond based',
-     * 'timoshenko bond based').
+     * 'timoshenko bond based', 'anisotropic bond based' with one grain).
      */
     virtual bool
     has_stiffness_fit() const;

@@ -85,10 +85,12 @@ namespace perideal
    * @brief Particles on a lattice, distributed over MPI ranks, with ghosts and bonds.
    *
    * Particles sit at the centres of the cells of a lattice of spacing dx covering the bounding
-   * box of the body. Ownership follows a distributed background mesh
-   * (parallel::distributed::Triangulation) whose cells are at least a horizon wide, so that all
-   * neighbours of an owned particle lie in owned or ghost cells. Global indices are contiguous
-   * per rank; the owners' indices of ghost particles are brought by
+   * box of the body, or, with Settings::perturbation > 0, at a random point of the inner part of
+   * their cell (the cell's centre decides whether it belongs to the body; the offset is a hash of
+   * the seed and the lattice indices, so it does not depend on the number of ranks). Ownership
+   * follows a distributed background mesh (parallel::distributed::Triangulation) whose cells are at
+   * least a horizon wide, so that all neighbours of an owned particle lie in owned or ghost cells.
+   * Global indices are contiguous per rank; the owners' indices of ghost particles are brought by
    * GridTools::exchange_cell_data_to_ghosts, and field values of ghost particles by the ghost
    * exchange of ParticleVector. The result does not depend on the number of ranks.
    */
@@ -106,6 +108,11 @@ namespace perideal
       double thickness = 1.;
       /// How neighbours that the horizon cuts count.
       PartialVolume partial_volume = PartialVolume::book;
+      /// Random perturbation of the lattice: each particle is moved from its cell centre by an
+      /// offset uniform in [-epsilon dx/2, epsilon dx/2] per coordinate (0 <= epsilon <= 1/2).
+      double perturbation = 0.;
+      /// Seed of the perturbation's offsets (a function of the seed and the lattice indices).
+      unsigned int perturbation_seed = 1;
     };
 
     /**
@@ -173,6 +180,10 @@ namespace perideal
     /// The bonds, for models that set per-bond factors and for damage.
     BondList &
     bonds();
+    /// The lower corner of the lattice box: lattice point k sits at corner + (k + 1/2) dx (the
+    /// particle there is moved by its offset on a perturbed lattice).
+    const dealii::Point<dim> &
+    lattice_corner() const;
     /// The largest bond length: delta, or delta + dx/2 for PartialVolume::geometric.
     double
     search_radius() const;
@@ -249,6 +260,7 @@ namespace perideal
     std::vector<dealii::types::global_dof_index>                       global_indices;
     std::vector<std::uint64_t>                                         invariant_indices;
     BondList                                                           bond_list;
+    dealii::Point<dim>                                                 lower_corner;
     mutable std::map<unsigned int, std::shared_ptr<const Partitioner>> partitioners;
 
     /// The largest bond length the search accepts (search_radius() with a round-off margin).

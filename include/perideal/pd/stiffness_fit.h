@@ -5,6 +5,8 @@
 #ifndef perideal_pd_stiffness_fit_h
 #define perideal_pd_stiffness_fit_h
 
+#include <deal.II/base/tensor.h>
+
 #include <perideal/pd/particle_system.h>
 
 #include <functional>
@@ -39,16 +41,18 @@ namespace perideal
    * @brief The energy of a bond under a homogeneous strain e at one of its ends, per unit
    * beta V_i V_j (partial-volume factor and volumes): e:H:e / 2 with
    * H = axial a a^T + shear sum_k r_k^T r_k in Voigt notation, i.e. axial (n.e.n)^2 / 2 +
-   * shear |e.n|^2 / 2 (n = xi/|xi|); a function of the bond's length that sets axial and shear.
+   * shear |e.n|^2 / 2 (n = xi/|xi|); a function of the bond vector xi (its length, and its
+   * direction for an anisotropic micromodulus) that sets axial and shear.
    */
-  using BondStiffnessLaw = std::function<void(double, double &, double &)>;
+  template <int dim>
+  using BondStiffnessLaw = std::function<void(const dealii::Tensor<1, dim> &, double &, double &)>;
 
   /**
    * @brief Set BondList::surface_factor by the stiffness fit (doc/theory/models.md, "Surface
    * correction: the stiffness fit").
    *
    * The elasticity tensor of particle i is D_i V_i = sum_j G_b beta_b V_i V_j H_b (@p law of
-   * BondList::length); the interior's D is that of the lattice family
+   * the bond vector); the interior's D is that of the lattice family
    * (ParticleSystem::lattice_family(): beta V_j per neighbour).
    * The factors G_b = 1 + h_b . (lambda_i + lambda_j), h_b the entries of H_b, are the
    * smallest change of the bonds that gives every owned particle the interior's D, in the
@@ -65,9 +69,9 @@ namespace perideal
    */
   template <int dim>
   StiffnessFitReport
-  apply_stiffness_fit(ParticleSystem<dim>    &particles,
-                      const BondStiffnessLaw &law,
-                      const double            modulus);
+  apply_stiffness_fit(ParticleSystem<dim>         &particles,
+                      const BondStiffnessLaw<dim> &law,
+                      const double                 modulus);
 } // namespace perideal
 
 #endif
