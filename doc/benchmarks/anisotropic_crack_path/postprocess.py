@@ -311,13 +311,15 @@ def set_label(run):
     if m != 3.015:
         label += f", delta = {m:g} dx"
     if abs(run["notch"]) > 1e-9:
-        label += f", plate turned {run['notch']:.0f} deg against the lattice (grips clamped)"
+        label += f", plate turned {run['notch']:.0f} deg (grips clamped)"
     elif "clamped" in run["set"]:
         label += ", grips clamped"
     if "continuum" in run["set"]:
         label += ", continuum calibration"
+    if "_fit" in run["set"]:
+        label += ", stiffness fit"
     if run["perturbation"] > 0:
-        label += f", lattice perturbed (epsilon = {run['perturbation']:g})"
+        label += f", perturbed (eps = {run['perturbation']:g})"
     return label
 
 
@@ -357,7 +359,7 @@ def plot_angles(runs, prefix, skip_damage=()):
         n_seeds = max(len(v) for v in by_alpha.values())
         label = "PD: " + set_label(members[0])
         if n_seeds > 1:
-            label += f", mean and range of {n_seeds} seeds"
+            label += f", {n_seeds} seeds"
             low = [y[i] - np.nanmin(by_alpha[x]) for i, x in enumerate(a)]
             high = [np.nanmax(by_alpha[x]) - y[i] for i, x in enumerate(a)]
             ax.errorbar(a, y, yerr=[low, high], fmt=style, lw=1, ms=5, capsize=3, label=label)

@@ -21,9 +21,11 @@
 #   ACP_STUDY  the study sets (default "ratios_dx0.5_m4 ratios_dx0.5_m5 r1.4_dx0.5
 #              ratios_dx0.5_clamped ratios_dx0.5_rot15 ratios_dx0.5_rot30 iso_dx0.5_rot30
 #              pmb_dx0.5_rot30" and the perturbed lattice: ratios_dx0.5, ratios_dx0.5_clamped,
-#              ratios_dx0.5_rot30 and iso_dx0.5, each with _p0.5_s1, _s2, _s3); "" skips them.
+#              ratios_dx0.5_rot30, iso_dx0.5, ratios_dx0.5_clamped_fit and ratios_dx0.5_rot30_fit,
+#              each with _p0.5_s1, _s2, _s3); "" skips them.
 #              More set options: _pEPS a perturbed lattice (<Lattice perturbation> = EPS),
-#              _sSEED its <Perturbation seed>, _continuum the continuum calibration.
+#              _sSEED its <Perturbation seed>, _continuum the continuum calibration, _fit
+#              <Surface correction method> = stiffness fit.
 #   ACP_ANGLES (default "0 15 30 45 60 75 90"); ACP_NP MPI ranks per run (default 1: the wall
 #              times in README.md are one rank); ACP_POSTPROCESS_ONLY=1: no runs, the tables
 #              and plots of the results there are.
@@ -38,7 +40,8 @@ cd "$here"
 sets=${ACP_SETS:-iso_dx0.5 iso_dx0.25 ratios_dx0.5 ratios_dx0.25}
 perturbed_sets=""
 for seed in 1 2 3; do
-  for kind in ratios_dx0.5 ratios_dx0.5_clamped ratios_dx0.5_rot30 iso_dx0.5; do
+  for kind in ratios_dx0.5 ratios_dx0.5_clamped ratios_dx0.5_rot30 iso_dx0.5 \
+    ratios_dx0.5_clamped_fit ratios_dx0.5_rot30_fit; do
     perturbed_sets="$perturbed_sets ${kind}_p0.5_s$seed"
   done
 done
@@ -67,7 +70,7 @@ variant() {
   local set=$1 alpha=$2 dir="results/$1/alpha_$2"
   local kind=${set%%_*} rest=${set#*_dx}
   local dx_mm=${rest%%_*} m=3 beta=0 base=anisotropic_crack_path.prm clamped=false
-  local perturbation=0 seed=1 calibration=discrete
+  local perturbation=0 seed=1 calibration=discrete method=energy
   local option
   for option in $(echo "${rest#"$dx_mm"}" | tr '_' ' '); do
     case "$option" in
@@ -77,6 +80,7 @@ variant() {
       p*) perturbation=${option#p} ;;
       s*) seed=${option#s} ;;
       continuum) calibration=continuum ;;
+      fit) method="stiffness fit" ;;
     esac
   done
   mkdir -p "results/$set"
@@ -94,6 +98,7 @@ variant() {
     echo "  set Horizon factor  = $m.015"
     echo "  set Lattice perturbation = $perturbation"
     echo "  set Perturbation seed    = $seed"
+    echo "  set Surface correction method = $method"
     echo "end"
     echo "subsection Material"
     if [ "$kind" = pmb ]; then
