@@ -337,7 +337,10 @@ def plot_angles(runs, prefix, skip_damage=()):
     import matplotlib
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
-    fig, ax = plt.subplots(figsize=(8, 5.6))
+    n_series = len({set_key(r) for r in runs})
+    # Many series: the legend goes below the axes, where it hides no data.
+    below = n_series > 5
+    fig, ax = plt.subplots(figsize=(8, 5.6 + (0.16 * (n_series + 3) if below else 0.)))
     sets = {}
     for r in runs:
         sets.setdefault(set_key(r), []).append(r)
@@ -387,7 +390,10 @@ def plot_angles(runs, prefix, skip_damage=()):
     ax.set_xlim(-3, 93)
     ax.set_ylim(-35, 95)
     ax.grid(alpha=0.3)
-    ax.legend(fontsize=6.5, loc="upper left")
+    if below:
+        ax.legend(fontsize=6.5, loc="upper left", bbox_to_anchor=(0.0, -0.1))
+    else:
+        ax.legend(fontsize=6.5, loc="upper left")
     ax.set_title("Edge-notched plate under remote mode I, anisotropic bond-based PD:\n"
                  "crack angle against the material orientation", fontsize=9)
     fig.tight_layout()

@@ -21,7 +21,8 @@
 #   ACP_STUDY  the study sets (default "ratios_dx0.5_m4 ratios_dx0.5_m5 r1.4_dx0.5
 #              ratios_dx0.5_clamped ratios_dx0.5_rot15 ratios_dx0.5_rot30 iso_dx0.5_rot30
 #              pmb_dx0.5_rot30" and the perturbed lattice: ratios_dx0.5, ratios_dx0.5_clamped,
-#              ratios_dx0.5_rot30, iso_dx0.5, ratios_dx0.5_clamped_fit and ratios_dx0.5_rot30_fit,
+#              ratios_dx0.5_rot30, iso_dx0.5, ratios_dx0.5_clamped_fit, ratios_dx0.5_rot30_fit,
+#              ratios_dx0.5_clamped_m4 and ratios_dx0.5_rot30_m4,
 #              each with _p0.5_s1, _s2, _s3); "" skips them.
 #              More set options: _pEPS a perturbed lattice (<Lattice perturbation> = EPS),
 #              _sSEED its <Perturbation seed>, _continuum the continuum calibration, _fit
@@ -41,7 +42,7 @@ sets=${ACP_SETS:-iso_dx0.5 iso_dx0.25 ratios_dx0.5 ratios_dx0.25}
 perturbed_sets=""
 for seed in 1 2 3; do
   for kind in ratios_dx0.5 ratios_dx0.5_clamped ratios_dx0.5_rot30 iso_dx0.5 \
-    ratios_dx0.5_clamped_fit ratios_dx0.5_rot30_fit; do
+    ratios_dx0.5_clamped_fit ratios_dx0.5_rot30_fit ratios_dx0.5_clamped_m4 ratios_dx0.5_rot30_m4; do
     perturbed_sets="$perturbed_sets ${kind}_p0.5_s$seed"
   done
 done
