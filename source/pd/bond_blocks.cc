@@ -152,7 +152,7 @@ namespace perideal
     if (particles.settings().perturbation > 0.)
       {
         const std::size_t n_lanes = lane_bond.size();
-        lane_geometry.resize_fast((dim + 2) * n_lanes);
+        lane_geometry.resize_fast((dim + 1) * n_lanes);
         std::vector<unsigned int> particle_of(n_local);
         for (unsigned int i = 0; i < n_local; ++i)
           particle_of[kernel_index[i]] = i;
@@ -177,8 +177,7 @@ namespace perideal
                     lane_geometry[d * n_lanes + lane] = xi[d];
                     length2 += xi[d] * xi[d];
                   }
-                lane_geometry[dim * n_lanes + lane]       = std::sqrt(length2);
-                lane_geometry[(dim + 1) * n_lanes + lane] = 1. / std::sqrt(length2);
+                lane_geometry[dim * n_lanes + lane] = 1. / std::sqrt(length2);
               }
       }
     lane_state.assign(lane_bond.size(), 0);

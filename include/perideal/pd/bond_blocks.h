@@ -122,9 +122,9 @@ namespace perideal
       bond_simd::Vector inverse_length;
     };
 
-    /// The per-lane reference bonds: a pointer to each of the dim + 2 per-lane arrays (xi's
-    /// components, length, inverse length), read by lane_bond().
-    using LaneBondArrays = std::array<const double *, dim + 2>;
+    /// The per-lane reference bonds: a pointer to each of the dim + 1 per-lane arrays (xi's
+    /// components, inverse length), read by lane_bonds(); the length is |xi|^2 / |xi|.
+    using LaneBondArrays = std::array<const double *, dim + 1>;
 
     /// The blocks of one group of width consecutive particles (kernel order).
     struct Group
@@ -184,7 +184,7 @@ namespace perideal
     lane_bond_arrays() const
     {
       LaneBondArrays arrays;
-      for (unsigned int k = 0; k < dim + 2; ++k)
+      for (unsigned int k = 0; k < dim + 1; ++k)
         arrays[k] = lane_geometry.data() + k * lane_bond.size();
       return arrays;
     }
@@ -196,10 +196,14 @@ namespace perideal
     {
       namespace stdx = std::experimental;
       LaneBond bond;
+      bond.length = 0.;
       for (unsigned int d = 0; d < dim; ++d)
-        bond.xi[d].copy_from(arrays[d] + first_lane, stdx::element_aligned);
-      bond.length.copy_from(arrays[dim] + first_lane, stdx::element_aligned);
-      bond.inverse_length.copy_from(arrays[dim + 1] + first_lane, stdx::element_aligned);
+        {
+          bond.xi[d].copy_from(arrays[d] + first_lane, stdx::element_aligned);
+          bond.length += bond.xi[d] * bond.xi[d];
+        }
+      bond.inverse_length.copy_from(arrays[dim] + first_lane, stdx::element_aligned);
+      bond.length *= bond.inverse_length;
       return bond;
     }
 
@@ -279,8 +283,8 @@ namespace perideal
     std::vector<BondClass>    class_list;
     std::vector<unsigned int> lane_bond;
     std::vector<std::uint8_t> lane_state;
-    /// On a perturbed lattice: xi's components, the lengths and the inverse lengths of the lanes,
-    /// one array of lane_bond.size() after the other; empty on a regular lattice.
+    /// On a perturbed lattice: xi's components and the inverse lengths of the lanes, one array of
+    /// lane_bond.size() after the other; empty on a regular lattice.
     Array         lane_geometry;
     std::uint64_t synced_revision = 0;
   };
