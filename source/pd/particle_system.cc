@@ -159,26 +159,24 @@ namespace perideal
       std::array<unsigned int, dim> bin, index;
       for (unsigned int d = 0; d < dim; ++d)
         bin[d] = static_cast<unsigned int>((cell->center()[d] - lower[d]) / bin_width[d]);
-      const auto add = [&]() {
-        Point<dim> p;
-        for (unsigned int d = 0; d < dim; ++d)
-          p[d] = lower[d] + (index[d] + 0.5) * dx;
-        if (in_body(p))
-          points.push_back(
-            offset_bound > 0. ?
-              p + lattice_offset<dim>(index, settings.perturbation_seed, offset_bound) :
-              p);
-      };
       const unsigned int k_begin = (dim == 3 ? first_point[dim - 1][bin[dim - 1]] : 0);
       const unsigned int k_end   = (dim == 3 ? first_point[dim - 1][bin[dim - 1] + 1] : 1);
       for (unsigned int k = k_begin; k < k_end; ++k)
         for (unsigned int j = first_point[1][bin[1]]; j < first_point[1][bin[1] + 1]; ++j)
           for (unsigned int i = first_point[0][bin[0]]; i < first_point[0][bin[0] + 1]; ++i)
             {
-              index[0]       = i;
-              index[1]       = j;
-              index[dim - 1] = (dim == 3 ? k : j);
-              add();
+              const unsigned int ijk[3] = {i, j, k};
+              Point<dim>         p;
+              for (unsigned int d = 0; d < dim; ++d)
+                {
+                  index[d] = ijk[d];
+                  p[d]     = lower[d] + (index[d] + 0.5) * dx;
+                }
+              if (in_body(p))
+                points.push_back(
+                  offset_bound > 0. ?
+                    p + lattice_offset<dim>(index, settings.perturbation_seed, offset_bound) :
+                    p);
             }
     };
 

@@ -147,24 +147,6 @@ wave_speed_error(perideal::MaterialModel<2>  &model,
   return worst;
 }
 
-// The FE side's 2D Voigt stiffness of @p entries under @p planar.
-FullMatrix<double>
-fe_stiffness(const Entries &entries, const perideal::PlanarAssumption planar)
-{
-  ParameterHandler prm;
-  perideal::ElasticMaterial::declare_parameters(prm);
-  for (const auto &entry : entries)
-    prm.set(entry.first, entry.second);
-  perideal::ElasticMaterial material;
-  material.parse_parameters(prm, "Finite elements/Elasticity");
-  const auto         C = material.tensor<2>(planar);
-  FullMatrix<double> voigt(3, 3);
-  for (unsigned int I = 0; I < 3; ++I)
-    for (unsigned int J = 0; J < 3; ++J)
-      voigt(I, J) = C[voigt_pair[I][0]][voigt_pair[I][1]][voigt_pair[J][0]][voigt_pair[J][1]];
-  return voigt;
-}
-
 // The largest |C_IJ - reference_IJ| relative to the largest |reference_IJ|.
 double
 relative_error(const FullMatrix<double> &C, const FullMatrix<double> &reference)
@@ -182,7 +164,7 @@ relative_error(const FullMatrix<double> &C, const FullMatrix<double> &reference)
 void
 check(const std::string &label, const Entries &entries, const perideal::PlanarAssumption planar)
 {
-  const FullMatrix<double>          reference = fe_stiffness(entries, planar);
+  const FullMatrix<double>          reference = pd_tests::fe_voigt_stiffness(entries, planar);
   perideal::AnisotropicBondBased<2> discrete, continuum;
   pd_tests::parse_model(discrete, entries);
   Entries continuum_entries = entries;
@@ -336,6 +318,7 @@ main(int argc, char **argv)
   const auto C = model.elasticity_tensor();
   deallog << "cubic NaCl in plane stress, symmetrized: C'11 = " << C[0][0][0][0] / 1e9
           << " GPa, C'12 = C'66 = " << C[0][0][1][1] / 1e9
-          << " GPa (the FE side's C'12 = " << fe_stiffness(nacl, stress)(0, 1) / 1e9
-          << ", C'66 = " << fe_stiffness(nacl, stress)(2, 2) / 1e9 << " GPa)" << std::endl;
+          << " GPa (the FE side's C'12 = " << pd_tests::fe_voigt_stiffness(nacl, stress)(0, 1) / 1e9
+          << ", C'66 = " << pd_tests::fe_voigt_stiffness(nacl, stress)(2, 2) / 1e9 << " GPa)"
+          << std::endl;
 }

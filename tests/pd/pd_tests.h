@@ -9,7 +9,9 @@
 #include <deal.II/base/parameter_handler.h>
 #include <deal.II/base/point.h>
 #include <deal.II/base/tensor.h>
+#include <deal.II/lac/full_matrix.h>
 
+#include <perideal/base/elasticity.h>
 #include <perideal/coupling/coupled_problem.h>
 #include <perideal/pd/material_model.h>
 #include <perideal/pd/particle_system.h>
@@ -206,6 +208,27 @@ namespace pd_tests
     for (const auto &entry : entries)
       prm.set(entry.first, entry.second);
     model.parse_parameters(prm);
+  }
+
+  // The FE side's 2D Voigt stiffness (pairs 11, 22, 12) of the material @p entries
+  // (ElasticMaterial's) under @p planar.
+  inline dealii::FullMatrix<double>
+  fe_voigt_stiffness(const std::vector<std::pair<std::string, std::string>> &entries,
+                     const perideal::PlanarAssumption                        planar)
+  {
+    dealii::ParameterHandler prm;
+    perideal::ElasticMaterial::declare_parameters(prm);
+    for (const auto &entry : entries)
+      prm.set(entry.first, entry.second);
+    perideal::ElasticMaterial material;
+    material.parse_parameters(prm, "Finite elements/Elasticity");
+    const auto                 C          = material.tensor<2>(planar);
+    const unsigned int         pair[3][2] = {{0, 0}, {1, 1}, {0, 1}};
+    dealii::FullMatrix<double> voigt(3, 3);
+    for (unsigned int I = 0; I < 3; ++I)
+      for (unsigned int J = 0; J < 3; ++J)
+        voigt(I, J) = C[pair[I][0]][pair[I][1]][pair[J][0]][pair[J][1]];
+    return voigt;
   }
 
   // A model context with all four entries given.

@@ -17,7 +17,6 @@
 //    13-20 % between particles; the stiffness fit, which fits each particle's whole tensor to the
 //    regular lattice's, keeps the mean within 1 % of the target at every epsilon (as on the
 //    regular lattice, whose PMB C_12 is 0.7 % high) and the scatter below 0.6 %.
-#include <perideal/base/elasticity.h>
 #include <perideal/pd/anisotropic_bond_based.h>
 #include <perideal/pd/bond_based.h>
 
@@ -187,25 +186,6 @@ namespace
     return result;
   }
 
-  // The FE side's Voigt stiffness of the material entries under planar.
-  FullMatrix<double>
-  target(const Entries &entries, const perideal::PlanarAssumption planar)
-  {
-    ParameterHandler prm;
-    perideal::ElasticMaterial::declare_parameters(prm);
-    for (const auto &entry : entries)
-      prm.set(entry.first, entry.second);
-    perideal::ElasticMaterial material;
-    material.parse_parameters(prm, "Finite elements/Elasticity");
-    const auto         C          = material.tensor<2>(planar);
-    const unsigned int pair[3][2] = {{0, 0}, {1, 1}, {0, 1}};
-    FullMatrix<double> voigt(3, 3);
-    for (unsigned int I = 0; I < 3; ++I)
-      for (unsigned int J = 0; J < 3; ++J)
-        voigt(I, J) = C[pair[I][0]][pair[I][1]][pair[J][0]][pair[J][1]];
-    return voigt;
-  }
-
   template <typename Model>
   void
   check_stiffness(const std::string               &label,
@@ -215,7 +195,7 @@ namespace
                   const bool                       stiffness_fit,
                   const std::array<double, 3>     &tolerance)
   {
-    const FullMatrix<double> reference   = target(fe_entries, planar);
+    const FullMatrix<double> reference   = pd_tests::fe_voigt_stiffness(fe_entries, planar);
     const double             epsilons[3] = {0., 0.25, 0.5};
     for (unsigned int k = 0; k < 3; ++k)
       {
