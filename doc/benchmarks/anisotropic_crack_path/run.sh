@@ -8,7 +8,7 @@
 # output); postprocess.py prints the tables (angles, reference directions, wall times, the
 # robustness of the measurement) and draws anisotropic_crack_path_angle.png,
 # anisotropic_crack_path_horizon_angle.png, anisotropic_crack_path_lattice_angle.png and the
-# damage maps *_damage_<set>.png. About 25 min on one core.
+# damage maps *_damage_<set>.png. About 70 min on one core.
 # usage: bash doc/benchmarks/anisotropic_crack_path/run.sh [BUILD_DIR]   (default: build)
 # Environment:
 #   ACP_SETS   the main sets (default "iso_dx0.5 iso_dx0.25 ratios_dx0.5 ratios_dx0.25"). A set
@@ -22,8 +22,8 @@
 #              ratios_dx0.5_clamped ratios_dx0.5_rot15 ratios_dx0.5_rot30 iso_dx0.5_rot30
 #              pmb_dx0.5_rot30" and the perturbed lattice: ratios_dx0.5, ratios_dx0.5_clamped,
 #              ratios_dx0.5_rot30, iso_dx0.5, ratios_dx0.5_clamped_fit, ratios_dx0.5_rot30_fit,
-#              ratios_dx0.5_clamped_m4 and ratios_dx0.5_rot30_m4,
-#              each with _p0.5_s1, _s2, _s3); "" skips them.
+#              ratios_dx0.5_clamped_m4, ratios_dx0.5_rot30_m4, ratios_dx0.25_clamped_m4 and
+#              ratios_dx0.25_rot30_m4, each with _p0.5_s1, _s2, _s3); "" skips them.
 #              More set options: _pEPS a perturbed lattice (<Lattice perturbation> = EPS),
 #              _sSEED its <Perturbation seed>, _continuum the continuum calibration, _fit
 #              <Surface correction method> = stiffness fit.
@@ -42,7 +42,8 @@ sets=${ACP_SETS:-iso_dx0.5 iso_dx0.25 ratios_dx0.5 ratios_dx0.25}
 perturbed_sets=""
 for seed in 1 2 3; do
   for kind in ratios_dx0.5 ratios_dx0.5_clamped ratios_dx0.5_rot30 iso_dx0.5 \
-    ratios_dx0.5_clamped_fit ratios_dx0.5_rot30_fit ratios_dx0.5_clamped_m4 ratios_dx0.5_rot30_m4; do
+    ratios_dx0.5_clamped_fit ratios_dx0.5_rot30_fit ratios_dx0.5_clamped_m4 ratios_dx0.5_rot30_m4 \
+    ratios_dx0.25_clamped_m4 ratios_dx0.25_rot30_m4; do
     perturbed_sets="$perturbed_sets ${kind}_p0.5_s$seed"
   done
 done
