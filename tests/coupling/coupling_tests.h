@@ -51,6 +51,16 @@ namespace coupling_tests
     MPI_Barrier(MPI_COMM_WORLD);
   }
 
+  /// The whole text of @p file (empty if there is none).
+  inline std::string
+  read_text(const std::string &file)
+  {
+    std::ifstream      in(file);
+    std::ostringstream text;
+    text << in.rdbuf();
+    return text.str();
+  }
+
   /**
    * Declare and read the parameters of the coupled problem in @p file and hand them to
    * @p problem, as perideal-solid does: a first pass reads the names of the regions and of the

@@ -38,21 +38,11 @@ namespace
 
   const std::string benchmark = "doc/benchmarks/polycrystal/";
 
-  std::string
-  read_text(const std::string &file)
-  {
-    std::ifstream      in(file);
-    std::ostringstream text;
-    text << in.rdbuf();
-    AssertThrow(in.good() || in.eof(), ExcMessage("cannot read " + file));
-    return text.str();
-  }
-
   /// The grain seeds of the benchmark's grains.txt.
   std::vector<Point<2>>
   read_seeds()
   {
-    std::istringstream    lines(read_text(benchmark + "grains.txt"));
+    std::istringstream    lines(coupling_tests::read_text(benchmark + "grains.txt"));
     std::vector<Point<2>> seeds;
     for (std::string line; std::getline(lines, line);)
       if (!line.empty() && line[0] != '#')
@@ -105,13 +95,13 @@ namespace
   run(const std::string &name, const std::string &ratio, const std::vector<Point<2>> &seeds)
   {
     const std::string specimen = "specimen_" + ratio + ".prm";
-    coupling_tests::write_file(specimen,
-                               coupling_tests::substitute(read_text(benchmark + "specimen.prm"),
-                                                          {{"RATIO", ratio},
-                                                           {"= grains.txt",
-                                                            "= " + benchmark + "grains.txt"}}));
+    coupling_tests::write_file(
+      specimen,
+      coupling_tests::substitute(coupling_tests::read_text(benchmark + "specimen.prm"),
+                                 {{"RATIO", ratio},
+                                  {"= grains.txt", "= " + benchmark + "grains.txt"}}));
     const std::string text =
-      coupling_tests::substitute(read_text(benchmark + name + ".prm"),
+      coupling_tests::substitute(coupling_tests::read_text(benchmark + name + ".prm"),
                                  {{"RATIO", ratio},
                                   {"include specimen.prm", "include " + specimen},
                                   {"../../../meshes/", "meshes/"}}) +

@@ -63,15 +63,6 @@ namespace
     unsigned int        n_steps = 0;
   };
 
-  std::string
-  read_text(const std::string &file)
-  {
-    std::ifstream      in(file);
-    std::ostringstream text;
-    text << in.rdbuf();
-    return text.str();
-  }
-
   // Run @p text with its output in @p directory on @p comm (nothing on ranks outside it):
   // stopped after step @p stop, or restarted from the checkpoint there.
   Result
@@ -185,7 +176,7 @@ namespace
   std::size_t
   n_lines(const std::string &file)
   {
-    const std::string text = read_text(file);
+    const std::string text = coupling_tests::read_text(file);
     return std::count(text.begin(), text.end(), '\n');
   }
 
@@ -229,8 +220,8 @@ namespace
         for (const auto &file : files)
           if (std::filesystem::exists(c.name + "_full/" + file))
             {
-              const bool same =
-                read_text(c.name + "_full/" + file) == read_text(c.name + "_stopped/" + file);
+              const bool same = coupling_tests::read_text(c.name + "_full/" + file) ==
+                                coupling_tests::read_text(c.name + "_stopped/" + file);
               deallog << "  " << file << " the same file: " << coupling_tests::ok(same)
                       << std::endl;
             }

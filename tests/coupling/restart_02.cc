@@ -30,15 +30,6 @@ using namespace dealii;
 
 namespace
 {
-  std::string
-  read_text(const std::string &file)
-  {
-    std::ifstream      in(file);
-    std::ostringstream text;
-    text << in.rdbuf();
-    return text.str();
-  }
-
   struct Outcome
   {
     std::vector<double> u;
@@ -88,8 +79,8 @@ namespace
     const Outcome full      = run(text, name, false);
     const auto    steps     = checkpoint_steps(full.log);
     const auto    expected  = expected_steps(full.log);
-    const auto    statistic = read_text(name + "/statistics.csv");
-    const auto    xdmf      = read_text(name + "/particles.xdmf");
+    const auto    statistic = coupling_tests::read_text(name + "/statistics.csv");
+    const auto    xdmf      = coupling_tests::read_text(name + "/particles.xdmf");
     const Outcome restarted = run(text, name, true);
     double        difference =
       full.u.size() == restarted.u.size() ? 0. : std::numeric_limits<double>::infinity();
@@ -112,9 +103,11 @@ namespace
     deallog << "  largest difference of the final particle displacements: " << difference << ": "
             << coupling_tests::ok(difference == 0.) << std::endl;
     deallog << "  statistics.csv the same file: "
-            << coupling_tests::ok(read_text(name + "/statistics.csv") == statistic) << std::endl;
+            << coupling_tests::ok(coupling_tests::read_text(name + "/statistics.csv") == statistic)
+            << std::endl;
     deallog << "  particles.xdmf the same file: "
-            << coupling_tests::ok(read_text(name + "/particles.xdmf") == xdmf) << std::endl;
+            << coupling_tests::ok(coupling_tests::read_text(name + "/particles.xdmf") == xdmf)
+            << std::endl;
   }
 } // namespace
 

@@ -30,15 +30,6 @@ namespace
                             "subsection Time stepping\n  set End time = 1e-6\nend\n"
                             "subsection Output\n  set Probe points =\n  set Progress = false\n";
 
-  std::string
-  read_text(const std::string &file)
-  {
-    std::ifstream      in(file);
-    std::ostringstream text;
-    text << in.rdbuf();
-    return text.str();
-  }
-
   // The message with the sizes of a truncated checkpoint, "(N bytes, its header gives M)",
   // replaced by their difference: the test cuts 100 bytes off, but the size itself depends on
   // the statistics the checkpoint holds, whose round-off digits differ between machines.
@@ -91,10 +82,10 @@ namespace
   refused_restart(const std::string &text, const std::string &directory)
   {
     const std::string statistics = directory + "/statistics.csv";
-    const std::string before     = read_text(statistics);
+    const std::string before     = coupling_tests::read_text(statistics);
     run(text, directory, 0, true);
-    deallog << "  statistics.csv unchanged: " << coupling_tests::ok(read_text(statistics) == before)
-            << std::endl;
+    deallog << "  statistics.csv unchanged: "
+            << coupling_tests::ok(coupling_tests::read_text(statistics) == before) << std::endl;
   }
 } // namespace
 

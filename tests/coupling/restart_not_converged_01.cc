@@ -37,19 +37,10 @@ namespace
 {
   const std::string max_iterations_failing = "300";
 
-  std::string
-  read_text(const std::string &file)
-  {
-    std::ifstream      in(file);
-    std::ostringstream text;
-    text << in.rdbuf();
-    return text.str();
-  }
-
   std::size_t
   n_lines(const std::string &file)
   {
-    const std::string text = read_text(file);
+    const std::string text = coupling_tests::read_text(file);
     return std::count(text.begin(), text.end(), '\n');
   }
 
@@ -164,7 +155,7 @@ main(int argc, char **argv)
       for (const auto &name : written)
         deallog << ' ' << name;
       deallog << std::endl;
-      const std::string xdmf = read_text("stopped/particles_not_converged.xdmf");
+      const std::string xdmf = coupling_tests::read_text("stopped/particles_not_converged.xdmf");
       const auto        time = xdmf.find("<Time Value=\"");
       deallog << "  particles_not_converged.xdmf: "
               << (time == std::string::npos ?
@@ -176,11 +167,12 @@ main(int argc, char **argv)
   MPI_Barrier(MPI_COMM_WORLD);
 
   // Another number of load steps: another problem for the checkpoint.
-  const std::string statistics_before = read_text("stopped/statistics.csv");
+  const std::string statistics_before = coupling_tests::read_text("stopped/statistics.csv");
   const Outcome     other_steps = run(plate("  set Load steps = 7\n", "stopped"), "7.prm", true);
   deallog << "restart with Load steps = 7: " << other_steps.error << std::endl;
   deallog << "  statistics.csv unchanged: "
-          << coupling_tests::ok(read_text("stopped/statistics.csv") == statistics_before)
+          << coupling_tests::ok(coupling_tests::read_text("stopped/statistics.csv") ==
+                                statistics_before)
           << std::endl;
 
   // The restart with enough iterations.
@@ -198,7 +190,8 @@ main(int argc, char **argv)
               << difference << ": " << coupling_tests::ok(difference == 0.) << std::endl;
       for (const std::string file : {"statistics.csv", "particles.xdmf"})
         deallog << "  " << file << " the same file as the full run's: "
-                << coupling_tests::ok(read_text("full/" + file) == read_text("stopped/" + file))
+                << coupling_tests::ok(coupling_tests::read_text("full/" + file) ==
+                                      coupling_tests::read_text("stopped/" + file))
                 << std::endl;
     }
 }
