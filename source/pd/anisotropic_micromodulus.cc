@@ -333,7 +333,8 @@ namespace perideal
     scan_symbol(const ComponentsOf<dim> &Lambda,
                 const Family<dim>       &family,
                 const double             spacing,
-                const unsigned int       n_k)
+                const unsigned int       n_k,
+                const SymbolTerm<dim>   &extra_term)
     {
       const std::size_t                    n_bonds = family.xi.size();
       std::vector<SymmetricTensor<2, dim>> nn(n_bonds);
@@ -358,6 +359,8 @@ namespace perideal
           SymmetricTensor<2, dim> K;
           for (std::size_t b = 0; b < n_bonds; ++b)
             K += (1. - std::cos(k * family.xi[b])) * nn[b];
+          if (extra_term)
+            extra_term(k, K);
           const auto values = eigenvalues(K);
           largest           = std::max(largest, values[0]);
           if (values[dim - 1] < smallest)
@@ -392,7 +395,8 @@ namespace perideal
   template SymbolScanOf<dim>    scan_symbol<dim>(const ComponentsOf<dim> &,                         \
                                               const Family<dim> &,                               \
                                               const double,                                      \
-                                              const unsigned int);
+                                              const unsigned int,                                \
+                                              const SymbolTerm<dim> &);
 
     PERIDEAL_INSTANTIATE(2)
     PERIDEAL_INSTANTIATE(3)

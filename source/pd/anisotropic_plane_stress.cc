@@ -388,33 +388,19 @@ namespace perideal
     // - s s^T / B, s = sum lambda_2 xi sin(k.xi) w (W = 1/2 u^H K u for u e^(ik.x)).
     {
       const double B_interior = C33 * m_interior / m_ref;
-      double       smallest = std::numeric_limits<double>::infinity(), largest = 0.;
-      double       spacing = std::numeric_limits<double>::infinity();
+      double       spacing    = std::numeric_limits<double>::infinity();
       for (const auto &xi : family.xi)
         spacing = std::min(spacing, xi.norm());
-      const unsigned int n_k = 16;
-      const double       dk  = 2. * numbers::PI / (spacing * n_k);
-      for (unsigned int q = 1; q < n_k * n_k; ++q)
-        {
-          const Tensor<1, 2>    k = Point<2>(dk * (q % n_k), dk * (q / n_k));
-          SymmetricTensor<2, 2> K;
-          Tensor<1, 2>          s;
-          for (std::size_t b = 0; b < family.xi.size(); ++b)
-            {
-              const double       r = family.xi[b].norm();
-              const Tensor<1, 2> n = family.xi[b] / r;
-              const double       w = family.weight[b];
-              K +=
-                (am::directional_modulus(Lambda0, n) * w / r * (1. - std::cos(k * family.xi[b]))) *
-                symmetrize(outer_product(n, n));
-              s += quadratic_form(M, n) * w * std::sin(k * family.xi[b]) * n;
-            }
-          K -= symmetrize(outer_product(s, s)) / B_interior;
-          const auto values = eigenvalues(K);
-          largest           = std::max(largest, values[0]);
-          smallest          = std::min(smallest, values[1]);
-        }
-      symbol_min = smallest / largest;
+      const auto coupling = [&](const Tensor<1, 2> &k, SymmetricTensor<2, 2> &K) {
+        Tensor<1, 2> s;
+        for (std::size_t b = 0; b < family.xi.size(); ++b)
+          {
+            const Tensor<1, 2> n = family.xi[b] / family.xi[b].norm();
+            s += quadratic_form(M, n) * family.weight[b] * std::sin(k * family.xi[b]) * n;
+          }
+        K -= symmetrize(outer_product(s, s)) / B_interior;
+      };
+      symbol_min = am::scan_symbol<2>(Lambda0, family, spacing, 16, coupling).relative_minimum;
     }
     AssertThrow(symbol_min > -1e-10,
                 ExcMessage("The elastic constants of <" + section + "> (" + material.summary() +

@@ -11,6 +11,7 @@
 #include <perideal/pd/particle_system.h>
 
 #include <array>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -210,14 +211,25 @@ namespace perideal
     using SymbolScan = SymbolScanOf<3>;
 
     /**
-     * @brief The SymbolScan of @p Lambda on @p family (lattice spacing @p spacing).
+     * @brief A term a model adds to the symbol K(k) of the bond sum at the wave vector k (the
+     * first argument), e.g. the plane-stress model's -s s^T / B
+     * (AnisotropicPlaneStress::initialize()).
+     */
+    template <int dim>
+    using SymbolTerm =
+      std::function<void(const dealii::Tensor<1, dim> &, dealii::SymmetricTensor<2, dim> &)>;
+
+    /**
+     * @brief The SymbolScan of @p Lambda on @p family (lattice spacing @p spacing), with
+     * @p extra_term added to K(k) at every wave vector if it is given.
      */
     template <int dim>
     SymbolScanOf<dim>
     scan_symbol(const ComponentsOf<dim> &Lambda,
                 const Family<dim>       &family,
                 const double             spacing,
-                const unsigned int       n_k);
+                const unsigned int       n_k,
+                const SymbolTerm<dim>   &extra_term = {});
   } // namespace anisotropic_micromodulus
 } // namespace perideal
 
