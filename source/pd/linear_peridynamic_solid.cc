@@ -238,29 +238,21 @@ namespace perideal
          {&k.w_field, &k.theta_field, &k.theta_over_m_field, &k.alpha_field, &k.beta_over_m_field})
       k.blocks.reinit_field(*field, 1);
 
+    // Each particle's own discrete weighted volume m_i = sum_j omega |xi|^2 V_j beta, with or
+    // without surface correction: only with it are the forces the gradient of the energy
+    // (doc/theory/models.md).
     particles.reinit_vector(weighted_volume, 1);
     particles.reinit_vector(theta, 1);
-    if (context.surface_correction)
-      {
-        for (unsigned int i = 0; i < particles.n_owned(); ++i)
-          for (unsigned int b = bonds.row_start[i]; b < bonds.row_start[i + 1]; ++b)
-            {
-              const unsigned int j  = bonds.neighbor[b];
-              const double       r2 = bonds.length[b] * bonds.length[b];
-              weighted_volume.local_element(i) += pair_weight[b] * r2 / volume[i];
-              if (j < particles.n_owned())
-                weighted_volume.local_element(j) += pair_weight[b] * r2 / volume[j];
-            }
-        weighted_volume.update_ghost_values();
-      }
-    else
-      {
-        const double m = continuum_weighted_volume<dim>(*influence,
-                                                        context.horizon,
-                                                        dim == 2 ? context.thickness : 0.);
-        for (unsigned int i = 0; i < particles.n_local(); ++i)
-          weighted_volume.local_element(i) = m;
-      }
+    for (unsigned int i = 0; i < particles.n_owned(); ++i)
+      for (unsigned int b = bonds.row_start[i]; b < bonds.row_start[i + 1]; ++b)
+        {
+          const unsigned int j  = bonds.neighbor[b];
+          const double       r2 = bonds.length[b] * bonds.length[b];
+          weighted_volume.local_element(i) += pair_weight[b] * r2 / volume[i];
+          if (j < particles.n_owned())
+            weighted_volume.local_element(j) += pair_weight[b] * r2 / volume[j];
+        }
+    weighted_volume.update_ghost_values();
     const double n       = dim;
     const double alpha_m = shear_modulus * n * (n + 2.);
     alpha.resize(particles.n_local());

@@ -98,7 +98,10 @@ namespace perideal
                         "true",
                         Patterns::Bool(),
                         "Correct the stiffness near free surfaces: energy method for 'bond "
-                        "based', discrete weighted volume for 'linear peridynamic solid'.");
+                        "based' (and the other models, each its own method). 'linear peridynamic "
+                        "solid' always uses each particle's discrete weighted volume (its "
+                        "correction, and what makes its forces the gradient of its energy), so "
+                        "this entry does not change it.");
       prm.declare_entry(
         "Surface correction method",
         "energy",

@@ -198,6 +198,24 @@ namespace pd_tests
     return dealii::Utilities::MPI::sum(energy, ps.get_communicator());
   }
 
+  // Example entries of the models that the tests over every model share (perturbed_kernels_01,
+  // energy_balance_01): NaCl with its axes turned about three axes, NaCl turned about z only (the
+  // plane-stress model needs z = 0 as a mirror plane), and Timoshenko bonds at nu = 0.1 with the
+  // lattice calibration.
+  inline const std::vector<std::pair<std::string, std::string>> nacl_entries = {
+    {"Symmetry", "cubic"},
+    {"Cubic constants", "49.1e9, 12.8e9, 12.8e9"},
+    {"Orientation", "20, 30, 40"}};
+  inline const std::vector<std::pair<std::string, std::string>> nacl_about_z_entries = {
+    {"Symmetry", "cubic"},
+    {"Cubic constants", "49.1e9, 12.8e9, 12.8e9"},
+    {"Orientation", "20, 0, 0"}};
+  inline const std::vector<std::pair<std::string, std::string>> timoshenko_entries = {
+    {"Young's modulus", "2e11"},
+    {"Poisson's ratio", "0.1"},
+    {"Calibration", "lattice"},
+    {"Bending stiffness ratio", "0.4"}};
+
   // Declare the parameters of a material model, set the given entries and parse them.
   template <typename Model>
   inline void

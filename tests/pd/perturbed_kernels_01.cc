@@ -106,17 +106,9 @@ main(int argc, char **argv)
   Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
   mpi_initlog();
   using perideal::PlanarAssumption;
-  const Entries nacl = {{"Symmetry", "cubic"},
-                        {"Cubic constants", "49.1e9, 12.8e9, 12.8e9"},
-                        {"Orientation", "20, 30, 40"}};
-  // The plane-stress model needs z = 0 as a mirror plane: axes turned about z only.
-  const Entries nacl_about_z = {{"Symmetry", "cubic"},
-                                {"Cubic constants", "49.1e9, 12.8e9, 12.8e9"},
-                                {"Orientation", "20, 0, 0"}};
-  const Entries timoshenko   = {{"Young's modulus", "2e11"},
-                                {"Poisson's ratio", "0.1"},
-                                {"Calibration", "lattice"},
-                                {"Bending stiffness ratio", "0.4"}};
+  const Entries &nacl         = pd_tests::nacl_entries;
+  const Entries &nacl_about_z = pd_tests::nacl_about_z_entries;
+  const Entries &timoshenko   = pd_tests::timoshenko_entries;
 
   compare<perideal::BondBased<2>, 2>("bond based",
                                      {{"Young's modulus", "2e11"}},

@@ -66,17 +66,6 @@ namespace perideal
     value(const double r, const double delta) const override;
     using InfluenceFunction::declare_parameters;
   };
-
-  /**
-   * @brief The weighted volume m = int_H omega(r) r^2 dV of a full horizon: 3D when
-   * @p thickness is zero, otherwise a 2D disk of that thickness. Gauss quadrature, relative
-   * accuracy better than 1e-12 for the functions above.
-   */
-  template <int dim>
-  double
-  continuum_weighted_volume(const InfluenceFunction &omega,
-                            const double             delta,
-                            const double             thickness);
 } // namespace perideal
 
 #endif

@@ -26,9 +26,10 @@ namespace perideal
    * reproduce W = k (tr eps)^2 / 2 + mu eps_dev : eps_dev for any homogeneous strain inside
    * the body (derivation in doc/theory/lps.md).
    *
-   * Surface correction: m_i is the discrete sum over the actual family, so theta is exact for
-   * any isotropic expansion at every particle; without correction the continuum m of a full
-   * horizon is used. Critical stretch from the fracture energy G0 for the inverse-distance
+   * Weighted volume: m_i is the discrete sum over the actual family, with or without surface
+   * correction, so theta is exact for any isotropic expansion at every particle and the force
+   * is minus the gradient of the energy (with the continuum m of a full horizon it is not at
+   * particles near a surface; doc/theory/models.md). Critical stretch from the fracture energy G0 for the inverse-distance
    * influence function (Madenci & Oterkus 2014, Peridynamic Theory and Its Applications,
    * ordinary state-based critical stretch, 2D and 3D):
    * 3D s0 = sqrt(G0 / ((3 mu + (3/4)^4 (K - 5 mu / 3)) delta)),
