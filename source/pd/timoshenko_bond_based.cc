@@ -1,21 +1,16 @@
 // ---------------------------------------------------------------------
-// PeriDeal: bond-based peridynamics with Timoshenko-beam bonds and particle rotations (seed 003).
+// PeriDeal: bond-based peridynamics with Timoshenko-beam bonds and particle rotations (seed 003):
+// the pair law, its softening histories and the force evaluation.
 // ---------------------------------------------------------------------
-#include <deal.II/base/numbers.h>
-
-#include <perideal/base/parameter_utilities.h>
-#include <perideal/pd/bond_loop.h>
-#include <perideal/pd/surface_correction.h>
 #include <perideal/pd/timoshenko_bond_based.h>
+#include <perideal/pd/timoshenko_kernel.h>
 
 #include <cmath>
 #include <limits>
-#include <sstream>
 
 namespace perideal
 {
   using namespace dealii;
-
 
   namespace
   {
@@ -41,14 +36,6 @@ namespace perideal
       Vector stretch;
     };
 
-    /**
-     * @brief The pair law of the Timoshenko bond (TimoshenkoBondBased): force k f on the
-     * particle side, -k f on the neighbour, moments k m_i and k m_j, and, if @p with_energy,
-     * the pair energy k w / 2 at both ends (k per lane = G beta V_i V_j). With @p softening,
-     * each mode is scaled by its factor per lane (stiffness of the largest value reached); if
-     * `commit`, the pair first raises the lanes' histories to the present values and updates
-     * their factors and dissipated energies.
-     */
     /**
      * @brief The constants and per-lane arrays a TimoshenkoPairLaw reads.
      */
@@ -85,6 +72,7 @@ namespace perideal
       static constexpr unsigned int n_shear      = (dim == 2 ? 1 : 3);
       static constexpr unsigned int n_outputs    = dim + n_rot + (with_energy ? 1 : 0);
       static constexpr bool         breaks_bonds = true;
+      static constexpr bool         softens      = softening;
       TimoshenkoLawData             p;
 
       struct Side
@@ -300,243 +288,12 @@ namespace perideal
   } // namespace
 
   template <int dim>
-  struct TimoshenkoBondBased<dim>::Kernel
-  {
-    static constexpr unsigned int   n_components = dim + n_rotations(dim);
-    BondBlocks<dim>                 blocks;
-    typename BondBlocks<dim>::Array lane_coefficient;
-    typename BondBlocks<dim>::Array u_field, f_field, w_field;
-    /// Softening: per lane the histories and factors of the three modes, and the dissipated
-    /// energy (lanes of bonds to ghosts count on both ranks).
-    typename BondBlocks<dim>::Array history[3], factor[3], dissipated;
-    double                          dissipated_reported = 0., largest_growth = 0.;
-
-    template <bool with_energy, bool softening>
-    void
-    force_loop(TimoshenkoPairLaw<dim, with_energy, softening> law,
-               BondList                                      &bonds,
-               const double                                   threshold)
-    {
-      std::array<const double *, n_components>                                        u;
-      std::array<double *, TimoshenkoPairLaw<dim, with_energy, softening>::n_outputs> out;
-      for (unsigned int c = 0; c < n_components; ++c)
-        {
-          u[c]   = blocks.component(u_field, c);
-          out[c] = blocks.component(f_field, c);
-        }
-      if constexpr (with_energy)
-        out[n_components] = blocks.component(w_field, 0);
-      law.p.coefficient = lane_coefficient.data();
-      if constexpr (softening)
-        {
-          for (unsigned int m = 0; m < 3; ++m)
-            {
-              law.p.history[m] = history[m].data();
-              law.p.factor[m]  = factor[m].data();
-            }
-          law.p.dissipated     = dissipated.data();
-          law.p.largest_growth = &largest_growth;
-        }
-      for_each_bond_block<n_components>(blocks, u, out, law, bonds, threshold);
-    }
-  };
-
-  template <int dim>
   TimoshenkoBondBased<dim>::TimoshenkoBondBased()
     : kernel(std::make_unique<Kernel>())
   {}
 
   template <int dim>
   TimoshenkoBondBased<dim>::~TimoshenkoBondBased() = default;
-
-  template <int dim>
-  void
-  TimoshenkoBondBased<dim>::declare_parameters(ParameterHandler &prm)
-  {
-    prm.declare_entry("Young's modulus", "0", Patterns::Double(0.), "Young's modulus E [Pa].");
-    prm.declare_entry("Poisson's ratio",
-                      "0.2",
-                      Patterns::Double(),
-                      "Poisson's ratio nu, -1 < nu <= 1/3 in plane stress, <= 1/4 in plane strain "
-                      "and 3D (the bond's shear stiffness C_theta is 0 at the limit: the "
-                      "classical bond-based model).");
-    prm.declare_entry("Calibration",
-                      "lattice",
-                      Patterns::Anything(),
-                      "How C_N and C_theta follow from E and nu: 'lattice' (fitted to the "
-                      "interior lattice sums of the particles' family, so that D_11 and D_12 are "
-                      "exact in the interior; the square lattice's shear modulus is reported) or "
-                      "'continuum' (the paper's eqs. 9-11, integrals over the horizon; the "
-                      "lattice Poisson ratio then misses nu by up to 57 % at delta = 3 dx).");
-    prm.declare_entry("Bending stiffness ratio",
-                      "0",
-                      Patterns::Double(0.),
-                      "C_B / C_theta >= 0, the stiffness of the bond against the relative rotation "
-                      "of its ends; 0 is the paper's C_M = 3/4 C_theta. Homogeneous deformations "
-                      "do not see it.");
-    prm.declare_entry("Rotational inertia factor",
-                      "0.0833333333333333",
-                      Patterns::Double(),
-                      "j > 0 in the rotational inertia J = j rho dx^2 per unit volume [kg/m]; "
-                      "1/12 is rho I / A of a bond with a square section of side dx. It changes "
-                      "dynamics and the stable time step, never a static solution.");
-    prm.declare_entry("Failure law",
-                      "brittle",
-                      Patterns::Anything(),
-                      "'brittle' (a bond breaks when its stretch, shear strain or bending rotation "
-                      "exceeds its limit) or 'softening' (each mode softens exponentially beyond "
-                      "its limit, irreversibly; seed eqs. 15-19).");
-    prm.declare_entry("Softening parameter",
-                      "10",
-                      Patterns::Double(),
-                      "k > 0 of the softening law: force C x0 exp(-k (x - x0)/x0) beyond the "
-                      "limit x0; the limits are the brittle ones times sqrt(k / (k + 2)).");
-    prm.declare_entry("Softening tolerance",
-                      "1e-3",
-                      Patterns::Double(),
-                      "Softening, quasi-static runs: a load step is solved again (with the secant "
-                      "stiffness of the histories reached) while a history beyond its limit grows "
-                      "by more than this fraction of the limit in one solve; accepted: (0, 0.1].");
-  }
-
-  template <int dim>
-  void
-  TimoshenkoBondBased<dim>::parse_parameters(ParameterHandler &prm)
-  {
-    const std::string section = "Material/timoshenko bond based/";
-    youngs_modulus            = prm.get_double("Young's modulus");
-    ParameterUtilities::require_positive(youngs_modulus, section + "Young's modulus");
-    poisson_ratio = prm.get_double("Poisson's ratio");
-    AssertThrow(poisson_ratio > -1.,
-                ExcMessage("<" + section + "Poisson's ratio> = " +
-                           ParameterUtilities::format_number(poisson_ratio) +
-                           " must be > -1 (and at most 1/3 in plane stress, 1/4 in plane "
-                           "strain and 3D)."));
-    const std::string calibration_name = prm.get("Calibration");
-    AssertThrow(calibration_name == "lattice" || calibration_name == "continuum",
-                ExcMessage("<" + section + "Calibration> = '" + calibration_name +
-                           "' is not known; accepted values: lattice | continuum."));
-    calibration    = calibration_name == "lattice" ? Timoshenko::Calibration::lattice :
-                                                     Timoshenko::Calibration::continuum;
-    bending_ratio  = prm.get_double("Bending stiffness ratio");
-    inertia_factor = prm.get_double("Rotational inertia factor");
-    AssertThrow(inertia_factor > 0.,
-                ExcMessage("<" + section + "Rotational inertia factor> = " +
-                           ParameterUtilities::format_number(inertia_factor) +
-                           " must be > 0 (J = j rho dx^2; 1/12 for a square bond section)."));
-    const std::string law = prm.get("Failure law");
-    AssertThrow(law == "brittle" || law == "softening",
-                ExcMessage("<" + section + "Failure law> = '" + law +
-                           "' is not known; accepted values: brittle | softening."));
-    failure   = law == "brittle" ? FailureLaw::brittle : FailureLaw::softening;
-    softening = prm.get_double("Softening parameter");
-    AssertThrow(softening > 0.,
-                ExcMessage("<" + section + "Softening parameter> = " +
-                           ParameterUtilities::format_number(softening) +
-                           " must be > 0 (the limits scale by sqrt(k / (k + 2)))."));
-    softening_tolerance = prm.get_double("Softening tolerance");
-    AssertThrow(softening_tolerance > 0. && softening_tolerance <= 0.1,
-                ExcMessage("<" + section + "Softening tolerance> = " +
-                           ParameterUtilities::format_number(softening_tolerance) +
-                           "; accepted: (0, 0.1] (a fraction of the limit)."));
-  }
-
-  template <int dim>
-  FieldLayout
-  TimoshenkoBondBased<dim>::field_layout() const
-  {
-    return FieldLayout::displacement_and_rotation(dim);
-  }
-
-  template <int dim>
-  void
-  TimoshenkoBondBased<dim>::initialize(ParticleSystem<dim> &particles,
-                                       const ModelContext  &model_context)
-  {
-    context            = model_context;
-    spacing            = particles.settings().spacing;
-    communicator       = particles.get_communicator();
-    const double limit = Timoshenko::poisson_limit(context.planar);
-    AssertThrow(poisson_ratio <= limit + 1e-12,
-                ExcMessage("<Material/timoshenko bond based/Poisson's ratio> = " +
-                           ParameterUtilities::format_number(poisson_ratio) +
-                           " is above the model's reach, nu <= " +
-                           ParameterUtilities::format_number(limit) + " (" +
-                           (context.planar == PlanarAssumption::plane_stress ?
-                              "plane stress" :
-                              (dim == 2 ? "plane strain" : "3D")) +
-                           "): the bonds' shear stiffness C_theta would be negative."));
-    const auto D = Timoshenko::target_moduli(youngs_modulus, poisson_ratio, context.planar);
-    std::vector<Tensor<1, dim>> family;
-    std::vector<double>         weight;
-    particles.lattice_family(family, weight);
-    if (calibration == Timoshenko::Calibration::continuum)
-      bond_stiffness = Timoshenko::continuum_stiffness(D, dim, context.horizon, context.thickness);
-    else
-      {
-        bond_stiffness =
-          Timoshenko::lattice_stiffness(D, Timoshenko::lattice_sums<dim>(family, weight));
-        AssertThrow(bond_stiffness.shear >=
-                      -1e-12 * bond_stiffness.normal * context.horizon * context.horizon,
-                    ExcMessage("<Material/timoshenko bond based/Calibration> = lattice gives a "
-                               "negative shear stiffness C_theta for nu = " +
-                               ParameterUtilities::format_number(poisson_ratio) +
-                               " on this lattice; use a smaller Poisson's ratio or "
-                               "Calibration = continuum."));
-      }
-    if (std::abs(poisson_ratio - limit) <= 1e-12 &&
-        calibration == Timoshenko::Calibration::continuum)
-      bond_stiffness.shear = 0.;
-    bond_stiffness.bending = bending_ratio * bond_stiffness.shear;
-    lattice_moduli         = Timoshenko::lattice_moduli<dim>(bond_stiffness, family, weight);
-
-    Kernel &k = *kernel;
-    k.blocks.reinit(particles);
-    k.blocks.reinit_field(k.u_field, Kernel::n_components);
-    k.blocks.reinit_field(k.f_field, Kernel::n_components);
-    k.blocks.reinit_field(k.w_field, 1);
-    if (failure == FailureLaw::softening)
-      {
-        // Sized like the lanes before the first force evaluation (the surface correction's).
-        const std::vector<double> zero(particles.bonds().size(), 0.), one(zero.size(), 1.);
-        for (unsigned int m = 0; m < 3; ++m)
-          {
-            k.blocks.to_lanes(zero, k.history[m]);
-            k.blocks.to_lanes(one, k.factor[m]);
-          }
-        k.blocks.to_lanes(zero, k.dissipated);
-        k.dissipated_reported = 0.;
-      }
-    if (context.surface_correction)
-      {
-        ParticleVector force;
-        particles.reinit_vector(force, Kernel::n_components);
-        set_bond_coefficients(particles, false);
-        const auto energy = [&](const ParticleVector &u, std::vector<double> &w) {
-          compute_forces(particles, u, force, &w, std::numeric_limits<double>::infinity());
-        };
-        if (context.stiffness_fit)
-          {
-            // Per end and unit beta V_i V_j, w / 2 = [C_N |xi| (n.e.n)^2 / 2 + 6 C_theta
-            // (|e.n|^2 - (n.e.n)^2) / |xi|] / 2 under a homogeneous strain, theta its rotation.
-            const double C_N = bond_stiffness.normal, C_theta = bond_stiffness.shear;
-            const auto   law = [C_N,
-                              C_theta](const Tensor<1, dim> &xi, double &axial, double &shear) {
-              const double l = xi.norm();
-              axial          = 0.5 * (C_N * l - 12. * C_theta / l);
-              shear          = 6. * C_theta / l;
-            };
-            fit_report = apply_stiffness_fit<dim>(particles, law, D[0]);
-          }
-        else
-          {
-            std::array<double, dim> modulus;
-            modulus.fill(D[0]);
-            apply_energy_surface_correction<dim>(particles, field_layout(), modulus, energy);
-          }
-      }
-    set_bond_coefficients(particles, true);
-  }
 
   template <int dim>
   void
@@ -583,11 +340,11 @@ namespace perideal
       constexpr bool e = decltype(with_energy)::value;
       if (soft)
         {
-          k.template force_loop<e, true>({base}, particles.bonds(), threshold);
+          k.force_loop(TimoshenkoPairLaw<dim, e, true>{base}, particles.bonds(), threshold);
         }
       else
         {
-          k.template force_loop<e, false>({base}, particles.bonds(), threshold);
+          k.force_loop(TimoshenkoPairLaw<dim, e, false>{base}, particles.bonds(), threshold);
         }
     };
     evaluate_bond_kernel<dim>(k.blocks,
@@ -603,265 +360,10 @@ namespace perideal
   }
 
   template <int dim>
-  template <typename Emit>
-  void
-  TimoshenkoBondBased<dim>::bond_rows(const ParticleSystem<dim> &particles,
-                                      const unsigned int         i,
-                                      const std::size_t          b,
-                                      const Emit                &emit) const
+  FieldLayout
+  TimoshenkoBondBased<dim>::field_layout() const
   {
-    using Entry                = LinearizedModel::Entry;
-    const BondList    &bonds   = particles.bonds();
-    const unsigned int j       = bonds.neighbor[b];
-    const double       r       = bonds.length[b];
-    const double       k       = bond_coefficient[b];
-    const auto         xi      = particles.positions()[j] - particles.positions()[i];
-    const auto         n       = xi / r;
-    const auto        &C       = bond_stiffness;
-    const unsigned int n_trans = dim;
-    // Transverse unit vectors e (dim - 1 of them) and the rotation axes n x e of their shear.
-    std::vector<Tensor<1, dim>> e;
-    std::vector<Tensor<1, 3>>   axis;
-    if constexpr (dim == 2)
-      {
-        Tensor<1, dim> t;
-        t[0] = -n[1];
-        t[1] = n[0];
-        e.push_back(t);
-        Tensor<1, 3> z;
-        z[2] = 1.;
-        axis.push_back(z);
-      }
-    else
-      {
-        Tensor<1, 3> a;
-        a[std::abs(n[0]) < 0.6 ? 0 : 1] = 1.;
-        const Tensor<1, 3> e1           = cross_product_3d(n, a) / cross_product_3d(n, a).norm();
-        const Tensor<1, 3> e2           = cross_product_3d(n, e1);
-        e                               = {e1, e2};
-        axis                            = {cross_product_3d(n, e1), cross_product_3d(n, e2)};
-      }
-    std::vector<Entry> entries;
-    entries.reserve(4 * dim);
-    // Stretch: n . (u_j - u_i), weight k C_N / |xi|.
-    for (unsigned int d = 0; d < dim; ++d)
-      {
-        entries.push_back({i, d, -n[d]});
-        entries.push_back({j, d, n[d]});
-      }
-    emit(k * C.normal / r, entries, 0u);
-    // Shear strains: e . (u_j - u_i) / |xi| - (n x e) . (theta_i + theta_j) / 2, weight
-    // 12 k C_theta / |xi|.
-    if (C.shear != 0.)
-      for (unsigned int a = 0; a < e.size(); ++a)
-        {
-          entries.clear();
-          for (unsigned int d = 0; d < dim; ++d)
-            {
-              entries.push_back({i, d, -e[a][d] / r});
-              entries.push_back({j, d, e[a][d] / r});
-            }
-          for (unsigned int q = 0; q < n_rotations(dim); ++q)
-            {
-              const double g = -0.5 * axis[a][dim == 2 ? 2 : q];
-              entries.push_back({i, n_trans + q, g});
-              entries.push_back({j, n_trans + q, g});
-            }
-          emit(12. * k * C.shear / r, entries, 1u);
-        }
-    // Bending rotations: e . (theta_j - theta_i) (2D: rz_j - rz_i), weight k C_B / |xi|.
-    if (C.bending != 0.)
-      for (unsigned int a = 0; a < (dim == 2 ? 1 : 2); ++a)
-        {
-          entries.clear();
-          for (unsigned int q = 0; q < n_rotations(dim); ++q)
-            {
-              const double g = (dim == 2 ? 1. : e[a][q]);
-              entries.push_back({i, n_trans + q, -g});
-              entries.push_back({j, n_trans + q, g});
-            }
-          emit(k * C.bending / r, entries, 2u);
-        }
-  }
-
-  template <int dim>
-  void
-  TimoshenkoBondBased<dim>::linearize(const ParticleSystem<dim> &particles,
-                                      LinearizedModel           &linearized) const
-  {
-    const BondList &bonds = particles.bonds();
-    linearized.reinit(Kernel::n_components, particles.n_owned());
-    std::vector<double> factor[3];
-    if (failure == FailureLaw::softening)
-      for (unsigned int m = 0; m < 3; ++m)
-        {
-          factor[m].assign(bonds.size(), 1.);
-          kernel->blocks.from_lanes(kernel->factor[m], factor[m]);
-        }
-    for (unsigned int i = 0; i < particles.n_owned(); ++i)
-      for (std::size_t b = bonds.row_start[i]; b < bonds.row_start[i + 1]; ++b)
-        if (bonds.intact[b])
-          {
-            bond_rows(particles,
-                      i,
-                      b,
-                      [&](const double w, const auto &entries, const unsigned int mode) {
-                        const double mu = factor[mode].empty() ? 1. : factor[mode][b];
-                        linearized.add_row(w * mu * particles.bond_share(b), entries);
-                      });
-          }
-    // The stiffness of a particle's prescribed rows: its axial bond stiffness.
-    std::vector<double> bound;
-    stiffness_bound(particles, bound);
-    for (unsigned int i = 0; i < particles.n_owned(); ++i)
-      linearized.stiffness_scale()[i] = bound[i * Kernel::n_components] * particles.volumes()[i];
-  }
-
-  template <int dim>
-  void
-  TimoshenkoBondBased<dim>::stiffness_bound(const ParticleSystem<dim> &particles,
-                                            std::vector<double>       &per_particle) const
-  {
-    // Gershgorin over the rows of the strain operator, for the matrix scaled by the inertias
-    // (D^-1/2 K D^-1/2, whose eigenvalues are those of D^-1 K): row r adds
-    // w |g_pc| sum_e |g_e| sqrt(rho_c / rho_e) to the row of unknown (p, c) of K = G^T diag(w) G.
-    // Without the scaling, the entries 1/|xi| of translations against 1/2 of rotations would
-    // bound the rotations' stiffness by that of the translations and shrink the step tenfold.
-    const BondList    &bonds   = particles.bonds();
-    const unsigned int n_owned = particles.n_owned(), nc = Kernel::n_components;
-    const double       ratio = std::sqrt(inertia_factor) * spacing; // sqrt(J / rho)
-    const auto         scale = [&](const unsigned int c, const unsigned int e) {
-      const bool rc = c >= unsigned(dim), re = e >= unsigned(dim);
-      return rc == re ? 1. : (rc ? ratio : 1. / ratio);
-    };
-    per_particle.assign(std::size_t(n_owned) * nc, 0.);
-    for (unsigned int i = 0; i < n_owned; ++i)
-      for (std::size_t b = bonds.row_start[i]; b < bonds.row_start[i + 1]; ++b)
-        if (bonds.intact[b])
-          bond_rows(particles, i, b, [&](const double w, const auto &entries, unsigned int) {
-            for (const auto &entry : entries)
-              if (entry.particle < n_owned)
-                {
-                  double sum = 0.;
-                  for (const auto &other : entries)
-                    sum += std::abs(other.coefficient) * scale(entry.component, other.component);
-                  per_particle[entry.particle * nc + entry.component] +=
-                    w * std::abs(entry.coefficient) * sum / particles.volumes()[entry.particle];
-                }
-          });
-  }
-
-  template <int dim>
-  double
-  TimoshenkoBondBased<dim>::released_energy(ParticleSystem<dim> &particles, const ParticleVector &u)
-  {
-    BondList &bonds    = particles.bonds();
-    double    released = 0.;
-    // The bond energy 1/2 sum_r w_r (G_r u)^2 of each newly broken bond (factors as they were).
-    std::vector<double> factor[3];
-    if (failure == FailureLaw::softening && !bonds.newly_broken.empty())
-      for (unsigned int m = 0; m < 3; ++m)
-        {
-          factor[m].assign(bonds.size(), 1.);
-          kernel->blocks.from_lanes(kernel->factor[m], factor[m]);
-        }
-    const unsigned int nc = Kernel::n_components;
-    for (const unsigned int b : bonds.newly_broken)
-      {
-        const unsigned int i = std::upper_bound(bonds.row_start.begin(), bonds.row_start.end(), b) -
-                               bonds.row_start.begin() - 1;
-        bond_rows(particles,
-                  i,
-                  b,
-                  [&](const double w, const auto &entries, const unsigned int mode) {
-                    double strain = 0.;
-                    for (const auto &entry : entries)
-                      strain +=
-                        entry.coefficient * u.local_element(entry.particle * nc + entry.component);
-                    const double mu = factor[mode].empty() ? 1. : factor[mode][b];
-                    released += particles.bond_share(b) * 0.5 * w * mu * strain * strain;
-                  });
-      }
-    bonds.newly_broken.clear();
-    if (failure == FailureLaw::softening)
-      {
-        // The energy the softening bonds dissipated, lanes of bonds to ghosts counted half.
-        std::vector<double> per_bond(bonds.size(), 0.);
-        kernel->blocks.from_lanes(kernel->dissipated, per_bond);
-        double total = 0.;
-        for (std::size_t b = 0; b < bonds.size(); ++b)
-          total += particles.bond_share(b) * per_bond[b];
-        released += total - kernel->dissipated_reported;
-        kernel->dissipated_reported = total;
-      }
-    return released;
-  }
-
-  template <int dim>
-  bool
-  TimoshenkoBondBased<dim>::damage_changed() const
-  {
-    return failure == FailureLaw::softening &&
-           Utilities::MPI::max(kernel->largest_growth, communicator) > softening_tolerance;
-  }
-
-  template <int dim>
-  unsigned int
-  TimoshenkoBondBased<dim>::n_bond_history_values() const
-  {
-    return failure == FailureLaw::softening ? 4 : 0;
-  }
-
-  template <int dim>
-  std::vector<double>
-  TimoshenkoBondBased<dim>::bond_history(const ParticleSystem<dim> &particles) const
-  {
-    if (failure != FailureLaw::softening)
-      return {};
-    const typename BondBlocks<dim>::Array *lanes[4] = {&kernel->history[0],
-                                                       &kernel->history[1],
-                                                       &kernel->history[2],
-                                                       &kernel->dissipated};
-    std::vector<double> per_bond(particles.bonds().size()), values(4 * per_bond.size());
-    for (unsigned int v = 0; v < 4; ++v)
-      {
-        kernel->blocks.from_lanes(*lanes[v], per_bond);
-        for (std::size_t b = 0; b < per_bond.size(); ++b)
-          values[4 * b + v] = per_bond[b];
-      }
-    return values;
-  }
-
-  template <int dim>
-  void
-  TimoshenkoBondBased<dim>::set_bond_history(const ParticleSystem<dim> &particles,
-                                             const std::vector<double> &values)
-  {
-    const std::size_t n_bonds = particles.bonds().size();
-    AssertThrow(values.size() == n_bond_history_values() * n_bonds,
-                ExcMessage("set_bond_history(): " + std::to_string(values.size()) + " values for " +
-                           std::to_string(n_bonds) + " bonds."));
-    if (failure != FailureLaw::softening)
-      return;
-    std::vector<double> per_bond(n_bonds), mu(n_bonds);
-    for (unsigned int m = 0; m < 3; ++m)
-      {
-        for (std::size_t b = 0; b < n_bonds; ++b)
-          {
-            per_bond[b] = values[4 * b + m];
-            mu[b]       = Timoshenko::softening_factor(per_bond[b], softening);
-          }
-        kernel->blocks.to_lanes(per_bond, kernel->history[m]);
-        kernel->blocks.to_lanes(mu, kernel->factor[m]);
-      }
-    double total = 0.;
-    for (std::size_t b = 0; b < n_bonds; ++b)
-      {
-        per_bond[b] = values[4 * b + 3];
-        total += particles.bond_share(b) * per_bond[b];
-      }
-    kernel->blocks.to_lanes(per_bond, kernel->dissipated);
-    kernel->dissipated_reported = total;
+    return FieldLayout::displacement_and_rotation(dim);
   }
 
   template <int dim>
@@ -901,39 +403,10 @@ namespace perideal
   }
 
   template <int dim>
-  typename TimoshenkoBondBased<dim>::FailureLaw
-  TimoshenkoBondBased<dim>::failure_law() const
-  {
-    return failure;
-  }
-
-  template <int dim>
   bool
   TimoshenkoBondBased<dim>::has_stiffness_fit() const
   {
     return true;
-  }
-
-  template <int dim>
-  std::string
-  TimoshenkoBondBased<dim>::summary() const
-  {
-    const double       E = youngs_modulus, nu = poisson_ratio;
-    const double       mu = E / (2. * (1. + nu));
-    std::ostringstream out;
-    out << "timoshenko bond based: E = " << E << " Pa, nu = " << nu << ", "
-        << (calibration == Timoshenko::Calibration::lattice ? "lattice" : "continuum")
-        << " calibration: C_N = " << bond_stiffness.normal
-        << " N/m^6, C_theta = " << bond_stiffness.shear
-        << " N/m^4, C_M = " << bond_stiffness.paper_bending()
-        << " N/m^4, C_B = " << bond_stiffness.bending
-        << " N/m^4; interior lattice D_12/D_11 = " << lattice_moduli[1] / lattice_moduli[0]
-        << ", D_66/mu = " << lattice_moduli[2] / mu << "; J = " << inertia_factor
-        << " rho dx^2; failure " << (failure == FailureLaw::brittle ? "brittle" : "softening, k = ")
-        << (failure == FailureLaw::brittle ? std::string() : std::to_string(softening));
-    if (context.surface_correction && context.stiffness_fit)
-      out << "; " << fit_report.summary();
-    return out.str();
   }
 
   template class TimoshenkoBondBased<2>;

@@ -271,10 +271,6 @@ namespace perideal
     const Timoshenko::Stiffness &
     stiffness() const;
 
-    /// The failure law.
-    FailureLaw
-    failure_law() const;
-
   private:
     double youngs_modulus = 0., poisson_ratio = 0., bending_ratio = 0.;
     double inertia_factor = 1. / 12., softening = 10.;
