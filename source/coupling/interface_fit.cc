@@ -5,9 +5,9 @@
 #include <deal.II/lac/full_matrix.h>
 #include <deal.II/lac/vector.h>
 
+#include <perideal/base/cell_list.h>
 #include <perideal/coupling/interface_fit.h>
 
-#include <array>
 #include <cmath>
 #include <cstdint>
 #include <limits>
@@ -49,50 +49,24 @@ namespace perideal
         y[d] = all[p * stride + 2 + d];
       return y;
     };
-    using Key         = std::array<long, dim>;
-    const auto key_of = [delta](const Point<dim> &y) {
-      Key key;
-      for (unsigned int d = 0; d < dim; ++d)
-        key[d] = static_cast<long>(std::floor(y[d] / delta));
-      return key;
-    };
-    std::map<Key, std::vector<unsigned int>> bins;
-    for (unsigned int i = 0; i < n_owned; ++i)
-      bins[key_of(x[i])].push_back(i);
+    CellList<dim> cells;
+    cells.reinit(make_array_view(x.data(), x.data() + n_owned), delta);
     const double              none = std::numeric_limits<double>::max();
     std::vector<double>       distance(n_points, none), rank_index(n_points, none);
     std::vector<unsigned int> nearest(n_points, numbers::invalid_unsigned_int);
     for (std::size_t p = 0; p < n_points; ++p)
       {
-        const Point<dim> y   = point_of(p);
-        const Key        key = key_of(y);
-        Key              k   = key;
-        for (unsigned int d = 0; d < dim; ++d)
-          k[d] = key[d] - 1;
-        while (true)
-          {
-            const auto found = bins.find(k);
-            if (found != bins.end())
-              for (const unsigned int i : found->second)
-                {
-                  const double r = y.distance(x[i]);
-                  const auto   n = static_cast<double>(particles.invariant_index(i));
-                  if (r < distance[p] || (r == distance[p] && n < rank_index[p]))
-                    {
-                      distance[p]   = r;
-                      rank_index[p] = n;
-                      nearest[p]    = i;
-                    }
-                }
-            unsigned int d = 0;
-            while (d < dim && ++k[d] > key[d] + 1)
-              {
-                k[d] = key[d] - 1;
-                ++d;
-              }
-            if (d == dim)
-              break;
-          }
+        const Point<dim> y = point_of(p);
+        cells.for_each_near(y, [&](const unsigned int i) {
+          const double r = y.distance(x[i]);
+          const auto   n = static_cast<double>(particles.invariant_index(i));
+          if (r < distance[p] || (r == distance[p] && n < rank_index[p]))
+            {
+              distance[p]   = r;
+              rank_index[p] = n;
+              nearest[p]    = i;
+            }
+        });
       }
     std::vector<double> shortest(n_points), chosen(n_points);
     Utilities::MPI::min(distance, comm, shortest);
