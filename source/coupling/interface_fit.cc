@@ -2,16 +2,17 @@
 // PeriDeal: the least-squares fit of FE dof values from the particle field.
 // ---------------------------------------------------------------------
 #include <deal.II/base/mpi.h>
-#include <deal.II/lac/full_matrix.h>
-#include <deal.II/lac/vector.h>
 
 #include <perideal/base/cell_list.h>
 #include <perideal/coupling/interface_fit.h>
 
+#include <array>
 #include <cmath>
 #include <cstdint>
 #include <limits>
 #include <map>
+
+#include <Eigen/QR>
 
 namespace perideal
 {
@@ -106,10 +107,11 @@ namespace perideal
     start.assign(1, 0);
     particles_of.clear();
     weights.clear();
-    IndexSet           ghosts(owned.size());
-    std::uint64_t      n_in_layer = 0;
-    FullMatrix<double> M;
-    Vector<double>     a(n_quadratic);
+    IndexSet                              ghosts(owned.size());
+    std::uint64_t                         n_in_layer = 0;
+    Eigen::MatrixXd                       A;
+    Eigen::VectorXd                       w;
+    Eigen::HouseholderQR<Eigen::MatrixXd> qr;
     for (std::size_t p = 0; p < n_points; ++p)
       if (nearest[p] != numbers::invalid_unsigned_int && rank_index[p] == chosen[p])
         {
@@ -117,35 +119,40 @@ namespace perideal
           n_in_layer += constrained[i];
           std::vector<unsigned int> members = family[i];
           members.push_back(i);
-          const unsigned int n_basis  = members.size() >= 2 * n_quadratic ? n_quadratic : n_linear;
-          const Point<dim>   y        = point_of(p);
-          const auto         vector_a = [&](const unsigned int k) {
-            const Tensor<1, dim> r = (x[k] - y) / delta;
-            unsigned int         m = 0;
-            a(m++)                 = 1.;
-            for (unsigned int d = 0; d < dim; ++d)
-              a(m++) = r[d];
-            for (unsigned int d = 0; d < dim; ++d)
-              for (unsigned int e = d; e < dim; ++e)
-                a(m++) = r[d] * r[e];
-          };
-          M.reinit(n_basis, n_basis);
-          for (const unsigned int k : members)
+          const unsigned int n_basis = members.size() >= 2 * n_quadratic ? n_quadratic : n_linear;
+          const Point<dim>   y       = point_of(p);
+          // The fit matrix: row k holds the monomials a(r_k) of member k.
+          A.resize(members.size(), n_basis);
+          for (unsigned int k = 0; k < members.size(); ++k)
             {
-              vector_a(k);
-              for (unsigned int m = 0; m < n_basis; ++m)
-                for (unsigned int n = 0; n < n_basis; ++n)
-                  M(m, n) += a(m) * a(n);
+              const Tensor<1, dim>            r = (x[members[k]] - y) / delta;
+              std::array<double, n_quadratic> a;
+              unsigned int                    m = 0;
+              a[m++]                            = 1.;
+              for (unsigned int d = 0; d < dim; ++d)
+                a[m++] = r[d];
+              for (unsigned int d = 0; d < dim; ++d)
+                for (unsigned int e = d; e < dim; ++e)
+                  a[m++] = r[d] * r[e];
+              for (unsigned int n = 0; n < n_basis; ++n)
+                A(k, n) = a[n];
             }
-          M.gauss_jordan();
-          for (const unsigned int k : members)
+          // w = A (A^T A)^-1 e_0 = Q R^-T e_0 of the QR factorization A = Q R: the first row
+          // of the pseudo-inverse, without forming the normal equations (whose condition number
+          // is that of A squared).
+          qr.compute(A);
+          w.setZero(members.size());
+          w(0) = 1.;
+          qr.matrixQR()
+            .topLeftCorner(n_basis, n_basis)
+            .template triangularView<Eigen::Upper>()
+            .transpose()
+            .solveInPlace(w.head(n_basis));
+          qr.householderQ().applyThisOnTheLeft(w);
+          for (unsigned int k = 0; k < members.size(); ++k)
             {
-              vector_a(k);
-              double w = 0.;
-              for (unsigned int m = 0; m < n_basis; ++m)
-                w += M(0, m) * a(m);
-              particles_of.push_back(k);
-              weights.push_back(w);
+              particles_of.push_back(members[k]);
+              weights.push_back(w(k));
             }
           const auto dof = static_cast<types::global_dof_index>(all[p * stride]);
           dofs.push_back(dof);
