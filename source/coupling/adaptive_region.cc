@@ -11,7 +11,6 @@
 #include <perideal/pd/damage_model.h>
 
 #include <algorithm>
-#include <array>
 #include <cmath>
 #include <limits>
 #include <sstream>
@@ -167,7 +166,6 @@ namespace perideal
       }
     bin_width = core_radius + ramp_width + 2. * horizon;
     seeds.clear();
-    grid.clear();
     std::vector<Point<dim>> initial;
     for (const auto &item : Utilities::split_string_list(prm.get("Initial seeds"), ';'))
       if (!item.empty())
@@ -202,93 +200,33 @@ namespace perideal
   }
 
   template <int dim>
-  std::array<long, dim>
-  AdaptiveRegion<dim>::bin_of(const Point<dim> &x) const
-  {
-    std::array<long, dim> key;
-    for (unsigned int d = 0; d < dim; ++d)
-      key[d] = std::lround(std::floor(x[d] / bin_width));
-    return key;
-  }
-
-  template <int dim>
   void
   AdaptiveRegion<dim>::add_seeds(const std::vector<Point<dim>> &new_seeds)
   {
     seeds.insert(seeds.end(), new_seeds.begin(), new_seeds.end());
-    // The grid of bins that holds the seeds, one bin of margin around them.
-    if (seeds.empty())
-      return;
-    std::array<long, dim> upper = bin_of(seeds.front());
-    grid_lower                  = upper;
-    for (const auto &s : seeds)
-      {
-        const auto key = bin_of(s);
-        for (unsigned int d = 0; d < dim; ++d)
-          {
-            grid_lower[d] = std::min(grid_lower[d], key[d] - 1);
-            upper[d]      = std::max(upper[d], key[d] + 1);
-          }
-      }
-    std::size_t n_bins = 1;
-    for (unsigned int d = 0; d < dim; ++d)
-      {
-        grid_size[d] = upper[d] - grid_lower[d] + 1;
-        n_bins *= grid_size[d];
-      }
-    grid.assign(n_bins, {});
-    for (unsigned int s = 0; s < seeds.size(); ++s)
-      {
-        const auto  key   = bin_of(seeds[s]);
-        std::size_t index = 0;
-        for (unsigned int d = dim; d-- > 0;)
-          index = index * grid_size[d] + (key[d] - grid_lower[d]);
-        grid[index].push_back(s);
-      }
+    if (!seeds.empty())
+      seed_cells.reinit(make_array_view(seeds), bin_width);
   }
 
   template <int dim>
   double
   AdaptiveRegion<dim>::nearest_seed(const Point<dim> &x, unsigned int *index) const
   {
-    // Every seed within a bin width of x lies in the 3^dim bins around x's; outside the grid
-    // (a bin of margin around the seeds' bins) there is none.
-    double nearest = std::numeric_limits<double>::max();
+    // Every seed within a bin width of x lies in the 3^dim bins around x's.
+    double       nearest = std::numeric_limits<double>::max();
+    unsigned int first   = numbers::invalid_unsigned_int;
     if (seeds.empty())
       return nearest;
-    auto centre = bin_of(x);
-    for (unsigned int d = 0; d < dim; ++d)
-      {
-        centre[d] -= grid_lower[d];
-        if (centre[d] < 0 || centre[d] >= grid_size[d])
-          return nearest;
-      }
-    std::array<int, dim> k;
-    k.fill(-1);
-    while (true)
-      {
-        std::size_t bin    = 0;
-        bool        inside = true;
-        for (unsigned int d = dim; d-- > 0;)
-          {
-            const long j = centre[d] + k[d];
-            inside       = inside && j >= 0 && j < grid_size[d];
-            bin          = bin * grid_size[d] + j;
-          }
-        if (inside)
-          for (const unsigned int s : grid[bin])
-            if (const double distance = x.distance(seeds[s]); distance < nearest)
-              {
-                nearest = distance;
-                if (index != nullptr)
-                  *index = s;
-              }
-        unsigned int d = 0;
-        while (d < dim && ++k[d] > 1)
-          k[d++] = -1;
-        if (d == dim)
-          break;
-      }
+    seed_cells.for_each_near(x, [&](const unsigned int s) {
+      const double distance = x.distance(seeds[s]);
+      if (distance < nearest || (distance == nearest && s < first))
+        {
+          nearest = distance;
+          first   = s;
+        }
+    });
+    if (index != nullptr && first != numbers::invalid_unsigned_int)
+      *index = first;
     return nearest;
   }
 

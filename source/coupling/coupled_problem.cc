@@ -12,9 +12,9 @@
 #include <perideal/coupling/postprocessors/reactions.h>
 #include <perideal/coupling/postprocessors/section_integrals.h>
 #include <perideal/pd/damage_model.h>
+#include <perideal/pd/lattice.h>
 
 #include <algorithm>
-#include <array>
 #include <cmath>
 #include <sstream>
 #include <unordered_map>
@@ -313,30 +313,15 @@ namespace perideal
   {
     // Particles where the method's particle weight is positive and within a horizon of such
     // points (lattice offsets up to delta + dx cover every bond).
-    const double dx = pd.discretization().spacing, delta = pd.discretization().horizon;
-    const int    reach = static_cast<int>(std::ceil(delta / dx)) + 1;
-    std::vector<Tensor<1, dim>> offsets;
-    {
-      std::array<int, 3> k{{-reach, -reach, -reach}};
-      while (true)
-        {
-          Tensor<1, dim> offset;
-          for (unsigned int d = 0; d < dim; ++d)
-            offset[d] = k[d] * dx;
-          if (offset.norm() <= delta + dx)
-            offsets.push_back(offset);
-          unsigned int d = 0;
-          while (d < dim && ++k[d] > reach)
-            k[d++] = -reach;
-          if (d == dim)
-            break;
-        }
-    }
+    const double       dx = pd.discretization().spacing, delta = pd.discretization().horizon;
+    const Lattice<dim> lattice(dx);
+    std::vector<Tensor<1, dim>> offsets = lattice.vectors(delta + dx);
+    offsets.emplace_back();
     // beta is evaluated once per lattice point (the offsets are lattice vectors, so x + offset
     // is a lattice point too).
-    std::unordered_map<std::array<long, dim>, double, LatticeKeyHash> beta_at;
+    std::unordered_map<typename Lattice<dim>::Key, double, typename Lattice<dim>::KeyHash> beta_at;
     const auto lattice_beta = [&](const Point<dim> &y) {
-      const auto key   = lattice_key(y);
+      const auto key   = lattice.key(y);
       const auto found = beta_at.find(key);
       if (found != beta_at.end())
         return found->second;
@@ -435,16 +420,6 @@ namespace perideal
     list.push_back(std::make_unique<FieldOutput<dim>>());
     postprocessors = std::make_unique<Postprocessors<dim>>(std::move(list));
     postprocessors->initialize(*state);
-  }
-
-  template <int dim>
-  std::array<long, dim>
-  CoupledProblem<dim>::lattice_key(const Point<dim> &x) const
-  {
-    std::array<long, dim> key;
-    for (unsigned int d = 0; d < dim; ++d)
-      key[d] = std::lround(x[d] / pd.discretization().spacing * 2.);
-    return key;
   }
 
   template <int dim>

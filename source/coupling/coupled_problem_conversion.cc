@@ -7,6 +7,7 @@
 #include <perideal/coupling/coupled_problem.h>
 #include <perideal/coupling/transfer_operator.h>
 #include <perideal/pd/damage_model.h>
+#include <perideal/pd/lattice.h>
 
 #include <map>
 #include <set>
@@ -22,8 +23,10 @@ namespace perideal
   bool
   CoupledProblem<dim>::convert_regions(const unsigned int step, const double time)
   {
-    using Key        = std::array<long, dim>;
-    const auto seeds = adaptive.propose_seeds(
+    using Key = typename Lattice<dim>::Key;
+    // Particles are matched by their lattice point across the regeneration.
+    const Lattice<dim> lattice(pd.discretization().spacing);
+    const auto         seeds = adaptive.propose_seeds(
       *state,
       [this](const Point<dim> &x) { return blending(x); },
       [this](const Point<dim> &x) { return pd.in_body(x); },
@@ -42,11 +45,11 @@ namespace perideal
     auto              &ps         = pd.particles();
     const auto        &x          = ps.positions();
     const auto        &follows_fe = method->particles_following_fe();
-    std::unordered_map<Key, std::vector<double>, LatticeKeyHash> free_values;
+    std::unordered_map<Key, std::vector<double>, typename Lattice<dim>::KeyHash> free_values;
     for (unsigned int i = 0; i < ps.n_owned(); ++i)
       if (!follows_fe[i])
         {
-          std::vector<double> &values = free_values[lattice_key(x[i])];
+          std::vector<double> &values = free_values[lattice.key(x[i])];
           for (unsigned int c = 0; c < nc; ++c)
             {
               values.push_back(state->u.local_element(i * nc + c));
@@ -59,7 +62,7 @@ namespace perideal
       for (unsigned int i = 0; i < ps.n_owned(); ++i)
         for (unsigned int b = bonds.row_start[i]; b < bonds.row_start[i + 1]; ++b)
           if (bonds.intact[b] == 0)
-            broken.emplace(lattice_key(x[i]), lattice_key(x[bonds.neighbor[b]]));
+            broken.emplace(lattice.key(x[i]), lattice.key(x[bonds.neighbor[b]]));
     }
     const unsigned int                               n_particles_before = ps.n_global();
     const auto                                       n_dofs_before      = fe.n_dofs();
@@ -87,7 +90,7 @@ namespace perideal
       const auto       &y = ps.positions();
       std::vector<bool> without_values(ps.n_owned());
       for (unsigned int i = 0; i < ps.n_owned(); ++i)
-        without_values[i] = free_values.count(lattice_key(y[i])) == 0;
+        without_values[i] = free_values.count(lattice.key(y[i])) == 0;
       TransferOperator<dim> before;
       before.reinit(fe, ps, layout, without_values);
       ps.reinit_vector(u_new, nc);
@@ -97,7 +100,7 @@ namespace perideal
       for (unsigned int i = 0; i < ps.n_owned(); ++i)
         if (!before.is_slaved(i))
           {
-            const auto found = free_values.find(lattice_key(y[i]));
+            const auto found = free_values.find(lattice.key(y[i]));
             AssertThrow(found != free_values.end(),
                         ExcInternalError("A particle of the grown PD region is neither in a "
                                          "cell with FE unknowns nor a particle before."));
@@ -112,7 +115,7 @@ namespace perideal
       for (unsigned int i = 0; i < ps.n_owned(); ++i)
         for (unsigned int b = bonds.row_start[i]; b < bonds.row_start[i + 1]; ++b)
           if (bonds.intact[b] != 0 &&
-              broken.count({lattice_key(y[i]), lattice_key(y[bonds.neighbor[b]])}))
+              broken.count({lattice.key(y[i]), lattice.key(y[bonds.neighbor[b]])}))
             bonds.intact[b] = 0;
       ++bonds.revision;
     }

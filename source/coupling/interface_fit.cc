@@ -2,9 +2,8 @@
 // PeriDeal: the least-squares fit of FE dof values from the particle field.
 // ---------------------------------------------------------------------
 #include <deal.II/base/mpi.h>
-#include <deal.II/lac/full_matrix.h>
-#include <deal.II/lac/vector.h>
 
+#include <perideal/base/cell_list.h>
 #include <perideal/coupling/interface_fit.h>
 
 #include <array>
@@ -12,6 +11,8 @@
 #include <cstdint>
 #include <limits>
 #include <map>
+
+#include <Eigen/QR>
 
 namespace perideal
 {
@@ -49,50 +50,24 @@ namespace perideal
         y[d] = all[p * stride + 2 + d];
       return y;
     };
-    using Key         = std::array<long, dim>;
-    const auto key_of = [delta](const Point<dim> &y) {
-      Key key;
-      for (unsigned int d = 0; d < dim; ++d)
-        key[d] = static_cast<long>(std::floor(y[d] / delta));
-      return key;
-    };
-    std::map<Key, std::vector<unsigned int>> bins;
-    for (unsigned int i = 0; i < n_owned; ++i)
-      bins[key_of(x[i])].push_back(i);
+    CellList<dim> cells;
+    cells.reinit(make_array_view(x.data(), x.data() + n_owned), delta);
     const double              none = std::numeric_limits<double>::max();
     std::vector<double>       distance(n_points, none), rank_index(n_points, none);
     std::vector<unsigned int> nearest(n_points, numbers::invalid_unsigned_int);
     for (std::size_t p = 0; p < n_points; ++p)
       {
-        const Point<dim> y   = point_of(p);
-        const Key        key = key_of(y);
-        Key              k   = key;
-        for (unsigned int d = 0; d < dim; ++d)
-          k[d] = key[d] - 1;
-        while (true)
-          {
-            const auto found = bins.find(k);
-            if (found != bins.end())
-              for (const unsigned int i : found->second)
-                {
-                  const double r = y.distance(x[i]);
-                  const auto   n = static_cast<double>(particles.invariant_index(i));
-                  if (r < distance[p] || (r == distance[p] && n < rank_index[p]))
-                    {
-                      distance[p]   = r;
-                      rank_index[p] = n;
-                      nearest[p]    = i;
-                    }
-                }
-            unsigned int d = 0;
-            while (d < dim && ++k[d] > key[d] + 1)
-              {
-                k[d] = key[d] - 1;
-                ++d;
-              }
-            if (d == dim)
-              break;
-          }
+        const Point<dim> y = point_of(p);
+        cells.for_each_near(y, [&](const unsigned int i) {
+          const double r = y.distance(x[i]);
+          const auto   n = static_cast<double>(particles.invariant_index(i));
+          if (r < distance[p] || (r == distance[p] && n < rank_index[p]))
+            {
+              distance[p]   = r;
+              rank_index[p] = n;
+              nearest[p]    = i;
+            }
+        });
       }
     std::vector<double> shortest(n_points), chosen(n_points);
     Utilities::MPI::min(distance, comm, shortest);
@@ -132,10 +107,11 @@ namespace perideal
     start.assign(1, 0);
     particles_of.clear();
     weights.clear();
-    IndexSet           ghosts(owned.size());
-    std::uint64_t      n_in_layer = 0;
-    FullMatrix<double> M;
-    Vector<double>     a(n_quadratic);
+    IndexSet                              ghosts(owned.size());
+    std::uint64_t                         n_in_layer = 0;
+    Eigen::MatrixXd                       A;
+    Eigen::VectorXd                       w;
+    Eigen::HouseholderQR<Eigen::MatrixXd> qr;
     for (std::size_t p = 0; p < n_points; ++p)
       if (nearest[p] != numbers::invalid_unsigned_int && rank_index[p] == chosen[p])
         {
@@ -143,35 +119,40 @@ namespace perideal
           n_in_layer += constrained[i];
           std::vector<unsigned int> members = family[i];
           members.push_back(i);
-          const unsigned int n_basis  = members.size() >= 2 * n_quadratic ? n_quadratic : n_linear;
-          const Point<dim>   y        = point_of(p);
-          const auto         vector_a = [&](const unsigned int k) {
-            const Tensor<1, dim> r = (x[k] - y) / delta;
-            unsigned int         m = 0;
-            a(m++)                 = 1.;
-            for (unsigned int d = 0; d < dim; ++d)
-              a(m++) = r[d];
-            for (unsigned int d = 0; d < dim; ++d)
-              for (unsigned int e = d; e < dim; ++e)
-                a(m++) = r[d] * r[e];
-          };
-          M.reinit(n_basis, n_basis);
-          for (const unsigned int k : members)
+          const unsigned int n_basis = members.size() >= 2 * n_quadratic ? n_quadratic : n_linear;
+          const Point<dim>   y       = point_of(p);
+          // The fit matrix: row k holds the monomials a(r_k) of member k.
+          A.resize(members.size(), n_basis);
+          for (unsigned int k = 0; k < members.size(); ++k)
             {
-              vector_a(k);
-              for (unsigned int m = 0; m < n_basis; ++m)
-                for (unsigned int n = 0; n < n_basis; ++n)
-                  M(m, n) += a(m) * a(n);
+              const Tensor<1, dim>            r = (x[members[k]] - y) / delta;
+              std::array<double, n_quadratic> a;
+              unsigned int                    m = 0;
+              a[m++]                            = 1.;
+              for (unsigned int d = 0; d < dim; ++d)
+                a[m++] = r[d];
+              for (unsigned int d = 0; d < dim; ++d)
+                for (unsigned int e = d; e < dim; ++e)
+                  a[m++] = r[d] * r[e];
+              for (unsigned int n = 0; n < n_basis; ++n)
+                A(k, n) = a[n];
             }
-          M.gauss_jordan();
-          for (const unsigned int k : members)
+          // w = A (A^T A)^-1 e_0 = Q R^-T e_0 of the QR factorization A = Q R: the first row
+          // of the pseudo-inverse, without forming the normal equations (whose condition number
+          // is that of A squared).
+          qr.compute(A);
+          w.setZero(members.size());
+          w(0) = 1.;
+          qr.matrixQR()
+            .topLeftCorner(n_basis, n_basis)
+            .template triangularView<Eigen::Upper>()
+            .transpose()
+            .solveInPlace(w.head(n_basis));
+          qr.householderQ().applyThisOnTheLeft(w);
+          for (unsigned int k = 0; k < members.size(); ++k)
             {
-              vector_a(k);
-              double w = 0.;
-              for (unsigned int m = 0; m < n_basis; ++m)
-                w += M(0, m) * a(m);
-              particles_of.push_back(k);
-              weights.push_back(w);
+              particles_of.push_back(members[k]);
+              weights.push_back(w(k));
             }
           const auto dof = static_cast<types::global_dof_index>(all[p * stride]);
           dofs.push_back(dof);

@@ -27,20 +27,9 @@ namespace perideal
 
     // Lattice coordinates of the local particles (of their lattice points on a perturbed
     // lattice, whose offsets are at most perturbation / 2 spacings per coordinate).
-    const Point<dim>                  &corner    = particles.lattice_corner();
-    const double                       tolerance = 0.5 * particles.settings().perturbation + 1e-6;
     std::vector<std::array<long, dim>> lattice(n_local);
     for (unsigned int i = 0; i < n_local; ++i)
-      for (unsigned int d = 0; d < dim; ++d)
-        {
-          const double q = (positions[i][d] - corner[d]) / dx - 0.5;
-          lattice[i][d]  = std::lround(q);
-          AssertThrow(std::abs(q - lattice[i][d]) < tolerance,
-                      ExcMessage("Internal error: particle " + std::to_string(i) +
-                                 " is not within its offset of the lattice of spacing " +
-                                 std::to_string(dx) +
-                                 "; the force kernels need lattice particles."));
-        }
+      lattice[i] = particles.lattice().index_of(positions[i]);
 
     // Kernel order: lexicographic, the last coordinate slowest.
     std::vector<unsigned int> order(n_local);

@@ -6,6 +6,7 @@
 #include <deal.II/grid/grid_generator.h>
 #include <deal.II/grid/grid_tools.h>
 
+#include <perideal/base/cell_list.h>
 #include <perideal/pd/particle_system.h>
 
 #include <algorithm>
@@ -53,40 +54,6 @@ namespace perideal
     return a >= 0. && a <= 1. && b >= 0. && b <= 1.;
   }
 
-  namespace
-  {
-    /// SplitMix64 (Steele, Lea & Flood 2014): a well-mixed 64-bit hash.
-    std::uint64_t
-    mix(std::uint64_t z)
-    {
-      z += 0x9e3779b97f4a7c15ULL;
-      z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ULL;
-      z = (z ^ (z >> 27)) * 0x94d049bb133111ebULL;
-      return z ^ (z >> 31);
-    }
-
-    /// The offset of the particle of lattice indices @p index: uniform in [-a, a] per
-    /// coordinate, a function of @p seed and @p index only.
-    template <int dim>
-    Tensor<1, dim>
-    lattice_offset(const std::array<unsigned int, dim> &index,
-                   const unsigned int                   seed,
-                   const double                         a)
-    {
-      std::uint64_t h = mix(seed);
-      for (unsigned int d = 0; d < dim; ++d)
-        h = mix(h ^ index[d]);
-      Tensor<1, dim> offset;
-      for (unsigned int d = 0; d < dim; ++d)
-        {
-          h = mix(h);
-          // The top 53 bits as a double in [0, 1).
-          offset[d] = a * (2. * static_cast<double>(h >> 11) * 0x1.0p-53 - 1.);
-        }
-      return offset;
-    }
-  } // namespace
-
   template <int dim>
   ParticleSystem<dim>::ParticleSystem(const MPI_Comm comm)
     : communicator(comm)
@@ -102,30 +69,28 @@ namespace perideal
   {
     parameters = settings;
     partitioners.clear();
+    grid = Lattice<dim>(settings.spacing, settings.perturbation, settings.perturbation_seed);
+    grid.cover(box);
     const double dx = settings.spacing;
-    // Half-width of the offsets; two perturbed particles are at most 2 a sqrt(dim) closer than
-    // their lattice points, so the bins widen by that much.
-    const double offset_bound = 0.5 * settings.perturbation * dx;
-    const double bin_minimum  = search_radius() + 2. * offset_bound * std::sqrt(double(dim));
+    // Two perturbed particles are at most 2 a sqrt(dim) closer than their lattice points, a the
+    // half-width of the offsets, so the bins widen by that much.
+    const double bin_minimum = search_radius() + 2. * grid.offset_bound() * std::sqrt(double(dim));
 
-    // Lattice and background bins, identical on every rank.
-    std::array<unsigned int, dim> n_points, n_bins;
-    Point<dim>                    lower = box.get_boundary_points().first, upper;
+    // Background bins, identical on every rank.
+    std::array<unsigned int, dim> n_bins;
+    const Point<dim>              lower = grid.lower_corner(), upper = grid.upper_corner();
     std::array<double, dim>       bin_width;
     for (unsigned int d = 0; d < dim; ++d)
       {
-        n_points[d] = std::max(1, static_cast<int>(std::ceil(box.side_length(d) / dx - 1e-8)));
-        upper[d]    = lower[d] + n_points[d] * dx;
         n_bins[d] = std::max(1, static_cast<int>(std::floor((upper[d] - lower[d]) / bin_minimum)));
         bin_width[d] = (upper[d] - lower[d]) / n_bins[d];
       }
-    lower_corner = lower;
     // first_point[d][k]: first lattice index in bin k along d (bins are monotone in the index).
     std::array<std::vector<unsigned int>, dim> first_point;
     for (unsigned int d = 0; d < dim; ++d)
       {
-        first_point[d].assign(n_bins[d] + 1, n_points[d]);
-        for (unsigned int i = n_points[d]; i-- > 0;)
+        first_point[d].assign(n_bins[d] + 1, grid.n_points(d));
+        for (unsigned int i = grid.n_points(d); i-- > 0;)
           {
             const unsigned int bin =
               std::min<unsigned int>(n_bins[d] - 1,
@@ -156,7 +121,8 @@ namespace perideal
     const auto points_of_cell = [&](const typename Triangulation<dim>::active_cell_iterator &cell,
                                     std::vector<Point<dim>> &points) {
       points.clear();
-      std::array<unsigned int, dim> bin, index;
+      std::array<unsigned int, dim> bin;
+      typename Lattice<dim>::Index  index;
       for (unsigned int d = 0; d < dim; ++d)
         bin[d] = static_cast<unsigned int>((cell->center()[d] - lower[d]) / bin_width[d]);
       const unsigned int k_begin = (dim == 3 ? first_point[dim - 1][bin[dim - 1]] : 0);
@@ -166,17 +132,10 @@ namespace perideal
           for (unsigned int i = first_point[0][bin[0]]; i < first_point[0][bin[0] + 1]; ++i)
             {
               const unsigned int ijk[3] = {i, j, k};
-              Point<dim>         p;
               for (unsigned int d = 0; d < dim; ++d)
-                {
-                  index[d] = ijk[d];
-                  p[d]     = lower[d] + (index[d] + 0.5) * dx;
-                }
-              if (in_body(p))
-                points.push_back(
-                  offset_bound > 0. ?
-                    p + lattice_offset<dim>(index, settings.perturbation_seed, offset_bound) :
-                    p);
+                index[d] = ijk[d];
+              if (in_body(grid.point(index)))
+                points.push_back(grid.particle(index));
             }
     };
 
@@ -286,40 +245,8 @@ namespace perideal
     const auto   n_all = static_cast<unsigned int>(reference_positions.size());
 
     // Cell list of all local particles (owned and ghost candidates): O(N).
-    BoundingBox<dim> local_box(reference_positions.empty() ?
-                                 std::make_pair(Point<dim>(), Point<dim>()) :
-                                 std::make_pair(reference_positions[0], reference_positions[0]));
-    for (const auto &p : reference_positions)
-      local_box.merge_with(BoundingBox<dim>(std::make_pair(p, p)));
-    std::array<unsigned int, dim> n_cells;
-    std::size_t                   n_total_cells = 1;
-    for (unsigned int d = 0; d < dim; ++d)
-      {
-        n_cells[d] = 1 + static_cast<unsigned int>(local_box.side_length(d) / reach);
-        n_total_cells *= n_cells[d];
-      }
-    const Point<dim> origin  = local_box.get_boundary_points().first;
-    const auto       cell_of = [&](const Point<dim> &p) {
-      std::array<unsigned int, dim> c;
-      for (unsigned int d = 0; d < dim; ++d)
-        c[d] = std::min(n_cells[d] - 1, static_cast<unsigned int>((p[d] - origin[d]) / reach));
-      return c;
-    };
-    const auto linear = [&](const std::array<unsigned int, dim> &c) {
-      std::size_t index = 0;
-      for (unsigned int d = dim; d-- > 0;)
-        index = index * n_cells[d] + c[d];
-      return index;
-    };
-    std::vector<unsigned int> cell_start(n_total_cells + 1, 0), cell_particles(n_all);
-    for (unsigned int i = 0; i < n_all; ++i)
-      ++cell_start[linear(cell_of(reference_positions[i])) + 1];
-    std::partial_sum(cell_start.begin(), cell_start.end(), cell_start.begin());
-    {
-      std::vector<unsigned int> fill(cell_start.begin(), cell_start.end() - 1);
-      for (unsigned int i = 0; i < n_all; ++i)
-        cell_particles[fill[linear(cell_of(reference_positions[i]))]++] = i;
-    }
+    CellList<dim> cells;
+    cells.reinit(make_array_view(reference_positions), reach);
 
     // Bonds of owned particles; ghosts are referenced by candidate index for now.
     BondList                  found;
@@ -329,38 +256,11 @@ namespace perideal
     for (unsigned int i = 0; i < n_owned_particles; ++i)
       {
         row.clear();
-        const auto                    c = cell_of(reference_positions[i]);
-        std::array<unsigned int, dim> lo, hi;
-        for (unsigned int d = 0; d < dim; ++d)
-          {
-            lo[d] = (c[d] == 0 ? 0 : c[d] - 1);
-            hi[d] = std::min(n_cells[d] - 1, c[d] + 1);
-          }
-        std::array<unsigned int, dim> k = lo;
-        while (true)
-          {
-            const std::size_t cell = linear(k);
-            for (unsigned int q = cell_start[cell]; q < cell_start[cell + 1]; ++q)
-              {
-                const unsigned int j = cell_particles[q];
-                if (j < n_owned_particles && j <= i)
-                  continue;
-                if (reference_positions[i].distance(reference_positions[j]) <= reach)
-                  row.push_back(j);
-              }
-            unsigned int d = 0;
-            for (; d < dim; ++d)
-              {
-                if (k[d] < hi[d])
-                  {
-                    ++k[d];
-                    break;
-                  }
-                k[d] = lo[d];
-              }
-            if (d == dim)
-              break;
-          }
+        const Point<dim> &x = reference_positions[i];
+        cells.for_each_near(x, [&](const unsigned int j) {
+          if ((j >= n_owned_particles || j > i) && x.distance(reference_positions[j]) <= reach)
+            row.push_back(j);
+        });
         std::sort(row.begin(), row.end());
         for (const unsigned int j : row)
           {
@@ -552,37 +452,18 @@ namespace perideal
                                       std::vector<double>         &weight) const
   {
     const double dx     = parameters.spacing;
-    const double reach  = bond_reach();
     const double volume = std::pow(dx, dim) * (dim == 2 ? parameters.thickness : 1.);
-    const int    n      = static_cast<int>(reach / dx) + 1;
-    xi.clear();
+    xi                  = grid.vectors(bond_reach());
     weight.clear();
-    std::array<int, dim> k;
-    k.fill(-n);
-    while (true)
-      {
-        Tensor<1, dim> v;
-        for (unsigned int d = 0; d < dim; ++d)
-          v[d] = k[d] * dx;
-        const double r = v.norm();
-        if (r > 0. && r <= reach)
-          {
-            xi.push_back(v);
-            weight.push_back(partial_volume_factor(r) * volume);
-          }
-        unsigned int d = 0;
-        while (d < dim && ++k[d] > n)
-          k[d++] = -n;
-        if (d == dim)
-          break;
-      }
+    for (const auto &v : xi)
+      weight.push_back(partial_volume_factor(v.norm()) * volume);
   }
 
   template <int dim>
-  const Point<dim> &
-  ParticleSystem<dim>::lattice_corner() const
+  const Lattice<dim> &
+  ParticleSystem<dim>::lattice() const
   {
-    return lower_corner;
+    return grid;
   }
 
   template <int dim>

@@ -7,9 +7,9 @@
 #include <deal.II/base/parameter_handler.h>
 #include <deal.II/base/point.h>
 
+#include <perideal/base/cell_list.h>
 #include <perideal/coupling/coupled_state.h>
 
-#include <array>
 #include <functional>
 #include <string>
 #include <vector>
@@ -118,28 +118,22 @@ namespace perideal
     disk_blending(const double distance) const;
 
     /// Core radius R and ramp width w [m].
-    double core_radius = 0., ramp_width = 0.;
-    /// The key of the bin of @p x in the search grid of the seeds.
-    std::array<long, dim>
-    bin_of(const dealii::Point<dim> &x) const;
-
+    double       core_radius = 0., ramp_width = 0.;
     Criterion    criterion       = Criterion::none;
     unsigned int interval        = 10;
     double       strain_fraction = 0.5, damage_threshold = 0.5, damage_distance = 0.;
     /// <Lead distance> [m].
     double                          lead_distance = 0.;
     std::vector<dealii::Point<dim>> seeds;
-    /// The nearest seed's distance to @p x, or the largest double if none lies within a bin;
-    /// its index in @p index if given (unchanged if none).
+    /// The nearest seed's distance to @p x (of equally near seeds the first), or the largest
+    /// double if none lies within a bin; its index in @p index if given (unchanged if none).
     double
     nearest_seed(const dealii::Point<dim> &x, unsigned int *index = nullptr) const;
 
     /// The width of the bins of the seeds: R + w + 2 delta (a seed's weight and a bond beyond).
     double bin_width = 0.;
-    /// Seeds by bin of width bin_width in the grid of bins from grid_lower (a bin of margin
-    /// around every seed's), grid_size bins per axis, the first axis fastest.
-    std::vector<std::vector<unsigned int>> grid;
-    std::array<long, dim>                  grid_lower{}, grid_size{};
+    /// The seeds by bin of width bin_width.
+    CellList<dim> seed_cells;
   };
 } // namespace perideal
 

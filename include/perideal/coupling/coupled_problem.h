@@ -18,7 +18,6 @@
 #include <perideal/fem/fe_region.h>
 #include <perideal/pd/particle_region.h>
 
-#include <array>
 #include <functional>
 #include <memory>
 #include <ostream>
@@ -144,23 +143,6 @@ namespace perideal
      */
     bool
     convert_regions(const unsigned int step, const double time);
-
-    /// The key of a lattice point (its coordinates in half spacings).
-    std::array<long, dim>
-    lattice_key(const dealii::Point<dim> &x) const;
-
-    /// A hash of lattice_key().
-    struct LatticeKeyHash
-    {
-      std::size_t
-      operator()(const std::array<long, dim> &key) const
-      {
-        std::size_t h = 0;
-        for (const long k : key)
-          h = h * 1000003u ^ std::hash<long>()(k);
-        return h;
-      }
-    };
 
     MPI_Comm      comm;
     std::ostream &log;

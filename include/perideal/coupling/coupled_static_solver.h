@@ -1,5 +1,5 @@
 // ---------------------------------------------------------------------
-// PeriDeal: static linear solve of the blended FE-PD coupling.
+// PeriDeal: the static linear solve of an FE-PD coupling (blended, Schwarz, FE only).
 // ---------------------------------------------------------------------
 #ifndef perideal_coupling_coupled_static_solver_h
 #define perideal_coupling_coupled_static_solver_h
@@ -20,14 +20,18 @@
 namespace perideal
 {
   /**
-   * @brief The static equilibrium of the blended FE-PD coupling linearized about the reference
-   * configuration: one symmetric positive definite Trilinos system for the FE dofs and the free
-   * particles, solved by CG + AMG or a direct solver (Amesos KLU).
+   * @brief The static equilibrium of an FE region and a particle region joined by a
+   * TransferOperator, linearized about the reference configuration: one symmetric positive
+   * definite Trilinos system for the FE dofs and the free particles, solved by CG + AMG or a
+   * direct solver (Amesos KLU). The blended coupling solves both regions in one system; the
+   * overlapping Schwarz method solves each region alone (the other one empty), as do FE-only
+   * runs (no particles).
    *
    * Unknowns z = (U, u_free): the FE dofs and the components of the particles in FE_Nothing
-   * cells. The particle displacements are u = T z with T = [P for the slaved particles;
-   * identity for the free ones] (P from TransferOperator). The blended energy of
-   * doc/theory/coupling.md, linearized,
+   * cells. The particle displacements are u = T z with T = [P for the particles that
+   * follow the FE field; identity for the free ones] (P from TransferOperator). The energy of
+   * the coupling (the blended energy of doc/theory/coupling.md; for a region alone, that
+   * region's own energy), linearized,
    *
    *   E(z) = 1/2 U^T K_FE U + 1/2 (G T z)^T diag(w) (G T z) - F^T z,
    *
@@ -65,7 +69,7 @@ namespace perideal
      * @brief Number the unknowns, build T and the FE part of K for the FE region @p fe and the
      * @p particles joined by @p transfer. The prescribed FE dofs are FERegion::prescribed_mask();
      * @p particle_prescribed holds 1 on the prescribed components of owned free particles
-     * (owned entries; slaved particles cannot be prescribed).
+     * (owned entries; particles that follow the FE field cannot be prescribed).
      */
     void
     reinit(const FERegion<dim>         &fe,
@@ -83,10 +87,10 @@ namespace perideal
 
     /**
      * @brief assemble(), then solve K z = F. On entry @p U and @p u hold the prescribed values
-     * (owned entries; others are ignored); on exit the solution with ghost values, the slaved
-     * particles' u = P U included. @p f_fe is the FE load (FERegion::assemble_load()), @p f_pd
-     * the particle force density [N/m^3] (owned entries). Returns the number of CG iterations
-     * (0 for the direct solver).
+     * (owned entries; others are ignored); on exit the solution with ghost values, u = P U of the
+     * particles that follow the FE field included. @p f_fe is the FE load
+     * (FERegion::assemble_load()), @p f_pd the particle force density [N/m^3] (owned entries).
+     * Returns the number of CG iterations (0 for the direct solver).
      */
     unsigned int
     solve(const MaterialModel<dim> &material,
@@ -126,7 +130,7 @@ namespace perideal
     /**
      * @brief @p fe_residual = K_FE @p U - @p f_fe - P^T @p nodal_force: the FE part of the
      * forces of forces(), for the particles' unbalanced forces @p nodal_force [N] (internal plus
-     * applied; only the slaved particles' rows of P^T contribute).
+     * applied; only the rows of P^T of the particles that follow the FE field contribute).
      */
     void
     fe_forces(const FEVector       &U,
@@ -143,8 +147,8 @@ namespace perideal
     to_unknowns(const FEVector &U, const ParticleVector &u, ParticleVector &z) const;
 
     /**
-     * @brief The FE dofs @p U and the particle displacements @p u (free ones from @p z, slaved
-     * ones u = P U) of the unknowns @p z, with ghost values.
+     * @brief The FE dofs @p U and the particle displacements @p u (free ones from @p z, those
+     * that follow the FE field u = P U) of the unknowns @p z, with ghost values.
      */
     void
     from_unknowns(const ParticleVector &z, FEVector &U, ParticleVector &u) const;
@@ -196,7 +200,8 @@ namespace perideal
     dealii::types::global_dof_index z_first = 0;
     /// First FE dof, number of FE dofs and first z index of every rank (FE dofs are contiguous).
     std::vector<dealii::types::global_dof_index> rank_fe_first, rank_fe_count, rank_z_first;
-    /// Per owned particle component: its index in z (free particles) or invalid (slaved).
+    /// Per owned particle component: its index in z (free particles) or invalid (it follows the FE
+    /// field).
     std::vector<dealii::types::global_dof_index> particle_z;
     /// Per locally owned z entry: prescribed or not.
     std::vector<bool> prescribed;

@@ -27,11 +27,12 @@ namespace perideal
    * The weights are those of a quadratic least-squares fit over the family:
    * u(y + r) = sum_m c_m a_m(r / delta), a the monomials of degree <= 2 (1, r_d, r_d r_e for
    * d <= e), so the value at y is c_0 = sum_k w_k u_k with w_k = (M^-1 a(r_k))_0,
-   * M = sum_k a(r_k) a(r_k)^T, r_k = x_k - y. Exact for quadratic fields; a linear fit is exact
-   * for linear fields only and, evaluated at y, biased by the field's curvature times the
-   * family's second moment (of order u'' delta^2), which in a bending arm changed the coupled
-   * stiffness by percent. A family with fewer than twice as many members as monomials (a corner
-   * of the body with a small horizon) gets the linear fit, which it determines well.
+   * M = sum_k a(r_k) a(r_k)^T, r_k = x_k - y (computed as w = Q R^-T e_0 from a Householder QR
+   * of the fit matrix A = [a(r_k)^T], without forming M = A^T A). Exact for quadratic fields; a
+   * linear fit is exact for linear fields only and, evaluated at y, biased by the field's curvature
+   * times the family's second moment (of order u'' delta^2), which in a bending arm changed the
+   * coupled stiffness by percent. A family with fewer than twice as many members as monomials (a
+   * corner of the body with a small horizon) gets the linear fit, which it determines well.
    */
   template <int dim>
   class InterfaceFit

@@ -10,6 +10,7 @@
 #include <deal.II/distributed/tria.h>
 
 #include <perideal/base/linear_algebra.h>
+#include <perideal/pd/lattice.h>
 #include <perideal/pd/pre_crack.h>
 
 #include <cstdint>
@@ -180,10 +181,9 @@ namespace perideal
     /// The bonds, for models that set per-bond factors and for damage.
     BondList &
     bonds();
-    /// The lower corner of the lattice box: lattice point k sits at corner + (k + 1/2) dx (the
-    /// particle there is moved by its offset on a perturbed lattice).
-    const dealii::Point<dim> &
-    lattice_corner() const;
+    /// The lattice of the particles, over the box of generate().
+    const Lattice<dim> &
+    lattice() const;
     /// The largest bond length: delta, or delta + dx/2 for PartialVolume::geometric.
     double
     search_radius() const;
@@ -260,7 +260,7 @@ namespace perideal
     std::vector<dealii::types::global_dof_index>                       global_indices;
     std::vector<std::uint64_t>                                         invariant_indices;
     BondList                                                           bond_list;
-    dealii::Point<dim>                                                 lower_corner;
+    Lattice<dim>                                                       grid;
     mutable std::map<unsigned int, std::shared_ptr<const Partitioner>> partitioners;
 
     /// The largest bond length the search accepts (search_radius() with a round-off margin).

@@ -1,0 +1,296 @@
+// ---------------------------------------------------------------------
+// PeriDeal: the static linear solve of an FE-PD coupling: assembly of the system, its solve
+// and the forces of a state.
+// ---------------------------------------------------------------------
+#include <deal.II/base/mpi.h>
+#include <deal.II/lac/dynamic_sparsity_pattern.h>
+#include <deal.II/lac/sparsity_tools.h>
+#include <deal.II/lac/trilinos_precondition.h>
+
+#include <perideal/coupling/coupled_static_solver.h>
+#include <perideal/coupling/matrix_rows.h>
+
+#include <algorithm>
+
+
+namespace perideal
+{
+  using namespace dealii;
+
+  namespace
+  {
+    /// @p result = @p A^T diag(@p w) @p A, with rows and columns partitioned as @p owned (A's
+    /// columns): every local row r of A adds w_r a_r a_r^T, rows of other ranks sent by
+    /// compress(). Trilinos' transposed products (EpetraExt's Multiply with A transposed, with or
+    /// without an explicit transpose) corrupt the heap on two ranks for some partitions (the
+    /// coupled torsion of tests/coupling/torsion_edge_crack_02, the PD part of overlapping
+    /// Schwarz), so the product is summed here.
+    void
+    weighted_gram(const SparseMatrix &A,
+                  const SolverVector &w,
+                  const IndexSet     &owned,
+                  const MPI_Comm      comm,
+                  SparseMatrix       &result)
+    {
+      std::vector<types::global_dof_index> touched;
+      for_each_local_row(A, [&](const auto, const auto &columns, const double *) {
+        touched.insert(touched.end(), columns.begin(), columns.end());
+      });
+      std::sort(touched.begin(), touched.end());
+      touched.erase(std::unique(touched.begin(), touched.end()), touched.end());
+      IndexSet relevant(owned);
+      relevant.add_indices(touched.begin(), touched.end());
+      relevant.compress();
+
+      DynamicSparsityPattern dsp(owned.size(), owned.size(), relevant);
+      for_each_local_row(A, [&](const auto, const auto &columns, const double *) {
+        for (const auto column : columns)
+          dsp.add_entries(column, columns.begin(), columns.end());
+      });
+      SparsityTools::distribute_sparsity_pattern(dsp, owned, comm, relevant);
+      result.reinit(owned, owned, dsp, comm);
+
+      std::vector<double> row_values;
+      for_each_local_row(A, [&](const auto row, const auto &columns, const double *values) {
+        const double weight = w[row];
+        row_values.resize(columns.size());
+        for (std::size_t k = 0; k < columns.size(); ++k)
+          {
+            for (std::size_t l = 0; l < columns.size(); ++l)
+              row_values[l] = weight * values[k] * values[l];
+            result.add(columns[k], columns.size(), columns.data(), row_values.data(), false);
+          }
+      });
+      result.compress(VectorOperation::add);
+    }
+  } // namespace
+
+  template <int dim>
+  void
+  CoupledStaticSolver<dim>::assemble(const MaterialModel<dim> &material,
+                                     const std::string        &conditions)
+  {
+    Assert(fe != nullptr, ExcMessage("Call reinit() first."));
+    const std::size_t n_local = prescribed.size();
+
+    // The PD part (G T_f)^T diag(w) (G T_f) of the linearization about the reference state.
+    LinearizedModel linearized;
+    material.linearize(*particles, linearized);
+    StaticSolver<dim>::extension_matrix(*particles, linearized, G, weights);
+    SparseMatrix pd_part, GT;
+    G.mmult(GT, T_free);
+    weighted_gram(GT, weights, z_owned, comm, pd_part);
+
+    // K = E_f^T K_FE E_f + (G T_f)^T diag(w) (G T_f) + s on the prescribed diagonal, summed
+    // row by row (both parts have the rows of z).
+    std::vector<double> diagonal(n_local, 0.);
+    {
+      DynamicSparsityPattern dsp(z_owned.size(), z_owned.size(), z_owned);
+      for (const SparseMatrix *part : {&fe_part, &pd_part})
+        for_each_local_row(*part, [&](const auto row, const auto &columns, const double *values) {
+          dsp.add_entries(row, columns.begin(), columns.end());
+          for (std::size_t k = 0; k < columns.size(); ++k)
+            if (columns[k] == row)
+              diagonal[row - z_first] += values[k];
+        });
+      for (std::size_t k = 0; k < n_local; ++k)
+        dsp.add(z_first + k, z_first + k);
+      system_matrix.reinit(z_owned, z_owned, dsp, comm);
+    }
+    for (const SparseMatrix *part : {&fe_part, &pd_part})
+      for_each_local_row(*part, [&](const auto row, const auto &columns, const double *values) {
+        system_matrix.add(row, columns.size(), columns.data(), values, false, false);
+      });
+    double diagonal_sum = 0., n_free = 0.;
+    for (std::size_t k = 0; k < n_local; ++k)
+      if (!prescribed[k])
+        {
+          diagonal_sum += diagonal[k];
+          n_free += 1.;
+        }
+    diagonal_sum     = Utilities::MPI::sum(diagonal_sum, comm);
+    n_free           = Utilities::MPI::sum(n_free, comm);
+    prescribed_scale = (n_free > 0. && diagonal_sum > 0.) ? diagonal_sum / n_free : 1.;
+    double n_p       = 0.;
+    for (std::size_t k = 0; k < n_local; ++k)
+      if (prescribed[k])
+        {
+          system_matrix.add(z_first + k, z_first + k, prescribed_scale);
+          n_p += 1.;
+        }
+    system_matrix.compress(VectorOperation::add);
+    linear_system.clear();
+    AssertThrow(Utilities::MPI::sum(n_p, comm) > 0.,
+                ExcMessage("The coupled static system is singular: no displacement is prescribed "
+                           "(boundary conditions: " +
+                           (conditions.empty() ? std::string("none") : conditions) +
+                           "), so rigid-body motions are free. Add a 'displacement' condition in "
+                           "<Finite elements/Boundary conditions> (or on free particles in "
+                           "<Boundary conditions>) that holds the rigid-body modes."));
+  }
+
+  template <int dim>
+  unsigned int
+  CoupledStaticSolver<dim>::solve(const MaterialModel<dim> &material,
+                                  const FEVector           &f_fe,
+                                  const ParticleVector     &f_pd,
+                                  FEVector                 &U,
+                                  ParticleVector           &u,
+                                  const std::string        &conditions)
+  {
+    assemble(material, conditions);
+    return solve_assembled(material, f_fe, f_pd, U, u, conditions);
+  }
+
+  template <int dim>
+  unsigned int
+  CoupledStaticSolver<dim>::solve_assembled(const MaterialModel<dim> &material,
+                                            const FEVector           &f_fe,
+                                            const ParticleVector     &f_pd,
+                                            FEVector                 &U,
+                                            ParticleVector           &u,
+                                            const std::string        &conditions)
+  {
+    const std::size_t n_local    = prescribed.size();
+    const std::size_t n_fe_owned = fe_owned.n_elements();
+    const auto       &volume     = particles->volumes();
+    const double      s          = prescribed_scale;
+
+    // Right-hand side: F - K g on free rows, s g on prescribed rows.
+    SolverVector g(z_owned, comm), F(z_owned, comm), rhs(z_owned, comm), z(z_owned, comm);
+    for (std::size_t k = 0; k < n_fe_owned; ++k)
+      if (prescribed[k])
+        g.begin()[k] = U.local_element(k);
+    for (std::size_t k = 0; k < particle_z.size(); ++k)
+      if (particle_z[k] != numbers::invalid_dof_index && prescribed[particle_z[k] - z_first])
+        g.begin()[particle_z[k] - z_first] = u.local_element(k);
+    {
+      // F = E^T f_FE + T^T (V f_PD).
+      SolverVector load;
+      gather_particles(f_pd, load);
+      for (std::size_t k = 0; k < load.locally_owned_size(); ++k)
+        load.begin()[k] *= volume[k / n_components];
+      T.Tvmult(F, load);
+      for (std::size_t k = 0; k < n_fe_owned; ++k)
+        F.begin()[k] += f_fe.local_element(k);
+      // K g of the unconstrained operator: E^T K_FE E g + T^T G^T diag(w) G T g.
+      SolverVector g_fe(fe_owned, comm), Kg_fe(fe_owned, comm), Tg(particle_rows, comm),
+        Gg(weights), GtGg(particle_rows, comm), Kg(z_owned, comm);
+      for (std::size_t k = 0; k < n_fe_owned; ++k)
+        g_fe.begin()[k] = g.begin()[k];
+      fe->stiffness_matrix().vmult(Kg_fe, g_fe);
+      T.vmult(Tg, g);
+      G.vmult(Gg, Tg);
+      Gg.scale(weights);
+      G.Tvmult(GtGg, Gg);
+      T.Tvmult(Kg, GtGg);
+      for (std::size_t k = 0; k < n_fe_owned; ++k)
+        Kg.begin()[k] += Kg_fe.begin()[k];
+      for (std::size_t k = 0; k < n_local; ++k)
+        {
+          rhs.begin()[k] = prescribed[k] ? s * g.begin()[k] : F.begin()[k] - Kg.begin()[k];
+          z.begin()[k]   = prescribed[k] ? g.begin()[k] : 0.;
+        }
+    }
+
+    const unsigned int iterations = linear_system.solve(
+      system_matrix,
+      rhs,
+      z,
+      settings,
+      [&]() {
+        // Near-null space: the constant field of each component (of each FE dof and particle
+        // unknown; the FE region's component masks follow the same layout).
+        const auto                                        fe_modes = fe->component_masks();
+        TrilinosWrappers::PreconditionAMG::AdditionalData data;
+        data.elliptic = true;
+        // One mode per FE component and per particle component (particle rotations the FE
+        // field lacks have modes of their own). A rank without rows keeps the FE region's
+        // (none without owned dofs), as ML expects.
+        data.constant_modes.assign(n_local > 0 ?
+                                     std::max<std::size_t>(fe_modes.size(), n_components) :
+                                     fe_modes.size(),
+                                   std::vector<bool>(n_local, false));
+        for (unsigned int d = 0; d < fe_modes.size(); ++d)
+          for (std::size_t k = 0; k < n_fe_owned; ++k)
+            data.constant_modes[d][k] = fe_modes[d][k];
+        for (std::size_t k = 0; k < particle_z.size(); ++k)
+          if (particle_z[k] != numbers::invalid_dof_index)
+            data.constant_modes[k % n_components][particle_z[k] - z_first] = true;
+        data.higher_order_elements = fe->get_fe_collection()[0].degree > 1;
+        data.smoother_sweeps       = 2;
+        data.aggregation_threshold = 0.02;
+        return data;
+      },
+      "coupled static solve",
+      " The boundary conditions (" + conditions + ") may leave " +
+        material.field_layout().free_motions() +
+        " free (to be held by displacement conditions, 'value' for a scalar field), or broken "
+        "bonds may have split off free pieces of the PD region.");
+
+    // Back to the FE dofs and the particles (those that follow the FE field through P).
+    ParticleVector solution;
+    reinit_unknowns(solution);
+    for (std::size_t k = 0; k < n_local; ++k)
+      solution.local_element(k) = z.begin()[k];
+    from_unknowns(solution, U, u);
+    return iterations;
+  }
+
+  template <int dim>
+  double
+  CoupledStaticSolver<dim>::forces(const FEVector       &U,
+                                   const ParticleVector &u,
+                                   const FEVector       &f_fe,
+                                   const ParticleVector &f_pd,
+                                   FEVector             &fe_residual,
+                                   ParticleVector       &pd_force) const
+  {
+    const auto &volume = particles->volumes();
+    // Particles: e = G u, energy 1/2 e^T diag(w) e, force -G^T diag(w) e.
+    SolverVector up, extension(weights), stress(weights), force(particle_rows, comm);
+    gather_particles(u, up);
+    G.vmult(extension, up);
+    stress.scale(extension);
+    const double energy = 0.5 * (stress * extension);
+    stress              = extension;
+    stress.scale(weights);
+    G.Tvmult(force, stress);
+    ParticleVector nodal_force;
+    particles->reinit_vector(nodal_force, n_components);
+    for (std::size_t k = 0; k < particle_rows.n_elements(); ++k)
+      {
+        const double V            = volume[k / n_components];
+        pd_force.local_element(k) = -force.begin()[k] / V;
+        // The particles' unbalanced force, internal plus applied, for P^T.
+        nodal_force.local_element(k) = -force.begin()[k] + f_pd.local_element(k) * V;
+      }
+    fe_forces(U, f_fe, nodal_force, fe_residual);
+    return energy;
+  }
+
+  template <int dim>
+  void
+  CoupledStaticSolver<dim>::fe_forces(const FEVector       &U,
+                                      const FEVector       &f_fe,
+                                      const ParticleVector &nodal_force,
+                                      FEVector             &fe_residual) const
+  {
+    // K_FE U - f_FE - P^T (nodal force) of the particles that follow the FE field:
+    // -(f_FE - K_FE U + P^T f).
+    fe->stiffness_matrix().vmult(fe_residual, U);
+    fe_residual.sadd(-1., 1., f_fe);
+    transfer->add_transpose(nodal_force, fe_residual);
+    fe_residual *= -1.;
+  }
+
+  template <int dim>
+  const SparseMatrix &
+  CoupledStaticSolver<dim>::matrix() const
+  {
+    return system_matrix;
+  }
+
+  template class CoupledStaticSolver<2>;
+  template class CoupledStaticSolver<3>;
+} // namespace perideal
