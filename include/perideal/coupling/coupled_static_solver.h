@@ -53,7 +53,6 @@ namespace perideal
   class CoupledStaticSolver
   {
   public:
-    using FEVector = dealii::LinearAlgebra::distributed::Vector<double>;
     using Settings = typename StaticSolver<dim>::Settings;
 
     /**
