@@ -44,17 +44,39 @@ namespace perideal
       stiffness.invert(compliance);
       return stiffness;
     }
+
+    // The symmetry classes by their names in <Symmetry>.
+    const ParameterUtilities::Choices<ElasticMaterial::Symmetry> &
+    symmetries()
+    {
+      using Symmetry                                           = ElasticMaterial::Symmetry;
+      static const ParameterUtilities::Choices<Symmetry> names = {
+        {"isotropic", Symmetry::isotropic},
+        {"cubic", Symmetry::cubic},
+        {"transversely isotropic", Symmetry::transversely_isotropic},
+        {"orthotropic", Symmetry::orthotropic},
+        {"general", Symmetry::general}};
+      return names;
+    }
   } // namespace
+
+  const ParameterUtilities::Choices<PlanarAssumption> &
+  planar_assumption_names()
+  {
+    static const ParameterUtilities::Choices<PlanarAssumption> names = {
+      {"plane stress", PlanarAssumption::plane_stress},
+      {"plane strain", PlanarAssumption::plane_strain}};
+    return names;
+  }
 
   PlanarAssumption
   planar_assumption_from_name(const std::string &name, const int dim)
   {
     if (dim == 3)
       return PlanarAssumption::three_dimensional;
-    AssertThrow(name == "plane stress" || name == "plane strain",
-                ExcMessage("The planar assumption <" + name +
-                           "> is unknown; accepted: plane stress, plane strain."));
-    return name == "plane stress" ? PlanarAssumption::plane_stress : PlanarAssumption::plane_strain;
+    return ParameterUtilities::choice(planar_assumption_names(),
+                                      name,
+                                      "Material/Planar assumption");
   }
 
   template <int dim>
@@ -173,8 +195,7 @@ namespace perideal
   {
     prm.declare_entry("Symmetry",
                       "isotropic",
-                      Patterns::Selection(
-                        "isotropic|cubic|transversely isotropic|orthotropic|general"),
+                      Patterns::Selection(ParameterUtilities::selection(symmetries())),
                       "Symmetry class of the material; each class reads its own constants below "
                       "(material axes 1, 2, 3; the others are ignored).");
     prm.declare_entry("Young's modulus", "0", Patterns::Double(0.), "isotropic: E [Pa].");
@@ -225,11 +246,11 @@ namespace perideal
       [&](const std::string &entry, const std::vector<double> &values, const std::size_t n) {
         AssertThrow(values.size() == n,
                     ExcMessage("The parameter <" + section + "/" + entry + "> needs " +
-                               std::to_string(n) + " values for <" + section +
-                               "/Symmetry> = " + symmetry + "."));
+                               std::to_string(n) + " values for <" + section + "/Symmetry> = " +
+                               ParameterUtilities::choice_name(symmetries(), symmetry) + "."));
       };
-    symmetry = prm.get("Symmetry");
-    if (symmetry == "isotropic")
+    symmetry = ParameterUtilities::choice(symmetries(), prm.get("Symmetry"), section + "/Symmetry");
+    if (symmetry == Symmetry::isotropic)
       {
         E  = prm.get_double("Young's modulus");
         nu = prm.get_double("Poisson's ratio");
@@ -241,7 +262,7 @@ namespace perideal
         const double G = E / (2. * (1. + nu));
         stiffness      = orthotropic_stiffness({{E, E, E}}, {{nu, nu, nu}}, {{G, G, G}});
       }
-    else if (symmetry == "cubic")
+    else if (symmetry == Symmetry::cubic)
       {
         const auto c = numbers("Cubic constants");
         require_count("Cubic constants", c, 3);
@@ -252,7 +273,7 @@ namespace perideal
         for (unsigned int i = 3; i < 6; ++i)
           stiffness(i, i) = c[2];
       }
-    else if (symmetry == "transversely isotropic")
+    else if (symmetry == Symmetry::transversely_isotropic)
       {
         const auto e = numbers("Young's moduli"), n = numbers("Poisson's ratios"),
                    g = numbers("Shear moduli");
@@ -263,7 +284,7 @@ namespace perideal
         stiffness =
           orthotropic_stiffness({{e[0], e[0], e[1]}}, {{n[0], n[1], n[1]}}, {{g[0], g[0], G12}});
       }
-    else if (symmetry == "orthotropic")
+    else if (symmetry == Symmetry::orthotropic)
       {
         const auto e = numbers("Young's moduli"), n = numbers("Poisson's ratios"),
                    g = numbers("Shear moduli");
@@ -299,7 +320,8 @@ namespace perideal
             }
         }
       AssertThrow(positive,
-                  ExcMessage("The elastic constants in <" + section + "> (Symmetry = " + symmetry +
+                  ExcMessage("The elastic constants in <" + section + "> (Symmetry = " +
+                             ParameterUtilities::choice_name(symmetries(), symmetry) +
                              ") do not give a positive definite stiffness: the material would be "
                              "unstable. Check the moduli and Poisson's ratios."));
     }
@@ -341,7 +363,7 @@ namespace perideal
   bool
   ElasticMaterial::is_isotropic() const
   {
-    return symmetry == "isotropic";
+    return symmetry == Symmetry::isotropic;
   }
 
   double
@@ -360,7 +382,7 @@ namespace perideal
   ElasticMaterial::summary() const
   {
     std::ostringstream out;
-    out << symmetry;
+    out << ParameterUtilities::choice_name(symmetries(), symmetry);
     if (is_isotropic())
       out << ", E = " << E << " Pa, nu = " << nu;
     else

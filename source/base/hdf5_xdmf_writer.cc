@@ -19,7 +19,8 @@ namespace perideal
                        const std::string                             &base_name,
                        const unsigned int                             step,
                        const double                                   time,
-                       std::vector<dealii::XDMFEntry>                &entries)
+                       std::vector<dealii::XDMFEntry>                &entries,
+                       const std::function<void(dealii::DataOutBase::DataOutFilter &)> &fill_filter)
   {
     const unsigned int my_rank = dealii::Utilities::MPI::this_mpi_process(comm);
     const unsigned int n_ranks = dealii::Utilities::MPI::n_mpi_processes(comm);
@@ -43,7 +44,10 @@ namespace perideal
       {
         dealii::DataOutBase::DataOutFilter filter(
           dealii::DataOutBase::DataOutFilterFlags(merge_vertices, true));
-        data.write_filtered_data(filter);
+        if (fill_filter)
+          fill_filter(filter);
+        else
+          data.write_filtered_data(filter);
         data.write_hdf5_parallel(filter, directory + "/" + h5_name, writers);
         entry = data.create_xdmf_entry(filter, h5_name, time, writers);
       }
@@ -61,7 +65,8 @@ namespace perideal
                              const std::string &,
                              const unsigned int,
                              const double,
-                             std::vector<dealii::XDMFEntry> &);
+                             std::vector<dealii::XDMFEntry> &,
+                             const std::function<void(dealii::DataOutBase::DataOutFilter &)> &);
   template void
   write_hdf5_xdmf_step<0, 3>(const dealii::DataOutInterface<0, 3> &,
                              const bool,
@@ -71,7 +76,8 @@ namespace perideal
                              const std::string &,
                              const unsigned int,
                              const double,
-                             std::vector<dealii::XDMFEntry> &);
+                             std::vector<dealii::XDMFEntry> &,
+                             const std::function<void(dealii::DataOutBase::DataOutFilter &)> &);
   template void
   write_hdf5_xdmf_step<2, 2>(const dealii::DataOutInterface<2, 2> &,
                              const bool,
@@ -81,7 +87,8 @@ namespace perideal
                              const std::string &,
                              const unsigned int,
                              const double,
-                             std::vector<dealii::XDMFEntry> &);
+                             std::vector<dealii::XDMFEntry> &,
+                             const std::function<void(dealii::DataOutBase::DataOutFilter &)> &);
   template void
   write_hdf5_xdmf_step<3, 3>(const dealii::DataOutInterface<3, 3> &,
                              const bool,
@@ -91,5 +98,6 @@ namespace perideal
                              const std::string &,
                              const unsigned int,
                              const double,
-                             std::vector<dealii::XDMFEntry> &);
+                             std::vector<dealii::XDMFEntry> &,
+                             const std::function<void(dealii::DataOutBase::DataOutFilter &)> &);
 } // namespace perideal

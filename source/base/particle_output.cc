@@ -228,6 +228,38 @@ namespace perideal
   void
   ParticleOutput<dim>::write_hdf5_xdmf(const unsigned int step, const double time)
   {
+    // The patches keep their values in single precision (deal.II 9.4's Patch::data): the
+    // filter takes the nodes from patches without values and the values from #fields, so that
+    // the data sets (declared double, XDMF Precision="8") hold the doubles themselves.
+    const auto fill_filter = [this](dealii::DataOutBase::DataOutFilter &filter) {
+      std::vector<dealii::DataOutBase::Patch<0, dim>> nodes(patches.size());
+      for (unsigned int p = 0; p < patches.size(); ++p)
+        {
+          nodes[p].vertices[0]          = patches[p].vertices[0];
+          nodes[p].patch_index          = p;
+          nodes[p].points_are_available = false;
+        }
+      dealii::DataOutBase::write_filtered_data(nodes, {}, {}, filter);
+
+      dealii::Table<2, double> values(dataset_names.size(), points.size());
+      unsigned int             row = 0;
+      for (const auto &field : fields)
+        for (unsigned int c = 0; c < field.n_components; ++c, ++row)
+          for (unsigned int p = 0; p < points.size(); ++p)
+            values(row, p) = field.values[p * field.n_components + c];
+      // The data sets of build_patches(): a field of dim components as one vector, the others
+      // by component.
+      row = 0;
+      for (const auto &field : fields)
+        if (field.n_components == dim)
+          {
+            filter.write_data_set(field.name, dim, row, values);
+            row += dim;
+          }
+        else
+          for (unsigned int c = 0; c < field.n_components; ++c, ++row)
+            filter.write_data_set(dataset_names[row], 1, row, values);
+    };
     // Do not merge coincident vertices: two particles at the same position are still two.
     write_hdf5_xdmf_step(*this,
                          !patches.empty(),
@@ -237,7 +269,8 @@ namespace perideal
                          base_name,
                          step,
                          time,
-                         xdmf_entries);
+                         xdmf_entries,
+                         fill_filter);
   }
 
 

@@ -16,13 +16,29 @@ namespace perideal
 {
   using namespace dealii;
 
+  namespace
+  {
+    // The shapes by their names in <Regions/<name>/Shape>.
+    template <int dim>
+    const ParameterUtilities::Choices<typename Region<dim>::Shape> &
+    shapes()
+    {
+      using Shape                                           = typename Region<dim>::Shape;
+      static const ParameterUtilities::Choices<Shape> names = {{"box", Shape::box},
+                                                               {"ball", Shape::ball},
+                                                               {"cylinder", Shape::cylinder},
+                                                               {"mesh", Shape::mesh}};
+      return names;
+    }
+  } // namespace
+
   template <int dim>
   void
   Region<dim>::declare_parameters(ParameterHandler &prm)
   {
     prm.declare_entry("Shape",
                       "box",
-                      Patterns::Selection("box|ball|cylinder|mesh"),
+                      Patterns::Selection(ParameterUtilities::selection(shapes<dim>())),
                       "The kind of region: 'box' (axis-aligned, Lower/Upper corner), 'ball' "
                       "(disk in 2D, sphere in 3D: Center, Radius), 'cylinder' (3D only: Center of "
                       "the base, Axis vector whose length is the height, Radius), 'mesh' (cells "
@@ -53,10 +69,9 @@ namespace perideal
   {
     region_name              = name;
     const std::string prefix = "Regions/" + name + "/";
-    const std::string kind   = prm.get("Shape");
-    if (kind == "box")
+    shape = ParameterUtilities::choice(shapes<dim>(), prm.get("Shape"), prefix + "Shape");
+    if (shape == Shape::box)
       {
-        shape = Shape::box;
         const auto lower =
           ParameterUtilities::parse_point<dim>(prm.get("Lower corner"), prefix + "Lower corner");
         const auto upper =
@@ -67,9 +82,8 @@ namespace perideal
                                  "Upper corner> must exceed <Lower corner> in every coordinate."));
         box = BoundingBox<dim>(std::make_pair(lower, upper));
       }
-    else if (kind == "ball" || kind == "cylinder")
+    else if (shape == Shape::ball || shape == Shape::cylinder)
       {
-        shape  = (kind == "ball" ? Shape::ball : Shape::cylinder);
         center = ParameterUtilities::parse_point<dim>(prm.get("Center"), prefix + "Center");
         radius = prm.get_double("Radius");
         ParameterUtilities::require_positive(radius, prefix + "Radius");
@@ -98,7 +112,6 @@ namespace perideal
       }
     else
       {
-        shape                       = Shape::mesh;
         const std::string file_name = prm.get("Mesh file");
         AssertThrow(std::filesystem::exists(file_name),
                     ExcMessage("The parameter <" + prefix + "Mesh file> = <" + file_name +

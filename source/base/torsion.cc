@@ -65,6 +65,24 @@ namespace perideal
     return "<" + section + "/Twist axis>";
   }
 
+  void
+  Torsion::check_axis(const BoundingBox<2> &body) const
+  {
+    for (unsigned int d = 0; d < 2; ++d)
+      {
+        const char  *name = d == 0 ? "x" : "y";
+        const double low = body.lower_bound(d), high = body.upper_bound(d);
+        AssertThrow(center[d] >= low && center[d] <= high,
+                    ExcMessage("The parameter " + axis_entry() + " has " + name + " = " +
+                               ParameterUtilities::format_number(center[d]) +
+                               ", outside the section (" + name + " in [" +
+                               ParameterUtilities::format_number(low) + ", " +
+                               ParameterUtilities::format_number(high) +
+                               "]); accepted are points of the section (the twist axis must "
+                               "pierce the bar's cross-section)."));
+      }
+  }
+
   template <int dim>
   Tensor<1, dim>
   Torsion::twist_strain(const Point<dim> &p) const

@@ -44,7 +44,7 @@ namespace perideal
   void
   BlendedCoupling<dim>::check_overlap_width() const
   {
-    // No bond from beta = 1 to beta = 0: a particle whose neighbours all follow the FE field
+    // No bond from beta = 1 to beta = 0: a particle whose neighbours are all slaved to the FE field
     // but which carries the whole energy of its bonds, or the reverse, is a ghost force the
     // overlap cannot spread.
     const auto         &particles = *regions.particles;
@@ -82,7 +82,7 @@ namespace perideal
 
   template <int dim>
   const std::vector<bool> &
-  BlendedCoupling<dim>::particles_following_fe() const
+  BlendedCoupling<dim>::slaved_particles() const
   {
     return transfer.slaved_particles();
   }

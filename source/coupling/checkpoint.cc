@@ -394,7 +394,7 @@ namespace perideal
     std::vector<char> fe_data;
     if (fe.n_dofs() > 0)
       {
-        std::vector<typename CoupledState<dim>::FEVector> ghosted(parts.fe_vectors.size());
+        std::vector<FEVector> ghosted(parts.fe_vectors.size());
         for (unsigned int k = 0; k < ghosted.size(); ++k)
           {
             fe.initialize_vector(ghosted[k]);

@@ -11,6 +11,7 @@
 #include <perideal/coupling/postprocessors/probes.h>
 #include <perideal/coupling/postprocessors/reactions.h>
 #include <perideal/coupling/postprocessors/section_integrals.h>
+#include <perideal/pd/antiplane_torsion.h>
 #include <perideal/pd/damage_model.h>
 #include <perideal/pd/lattice.h>
 
@@ -116,6 +117,15 @@ namespace perideal
                            "linearized static solve gives."));
     pd.parse_parameters(prm);
     fe.parse_parameters(prm, pd.planar_assumption(), pd.discretization().thickness);
+    // A polycrystal's grains are a particle feature: an FE region needs the homogenized
+    // constants, which are not the crystal's it would share.
+    const std::string nonuniform = pd.has_body() ? pd.material().nonuniform_constants() : "";
+    AssertThrow(!fe.has_mesh() || !fe.physics().shares_particle_material() || nonuniform.empty(),
+                ExcMessage("<Finite elements/Elasticity/Same material as the particles> = true, "
+                           "but " +
+                           nonuniform +
+                           ", whose homogenized stiffness is not the crystal's; accepted: false "
+                           "and the homogenized constants in <Finite elements/Elasticity>."));
     AssertThrow(pd.has_body() || fe.has_mesh(),
                 ExcMessage("The problem has neither particles nor an FE region: give "
                            "<Discretization/Body> (the regions filled with particles), "
@@ -263,7 +273,7 @@ namespace perideal
   }
 
   template <int dim>
-  const LinearAlgebra::distributed::Vector<double> &
+  const FEVector &
   CoupledProblem<dim>::fe_displacement() const
   {
     return state->U;
@@ -346,6 +356,35 @@ namespace perideal
   }
 
   template <int dim>
+  void
+  CoupledProblem<dim>::check_twist_axis() const
+  {
+    const Torsion *torsion = pd.has_body() ? pd.material().torsion() : nullptr;
+    if (torsion == nullptr)
+      return;
+    const BoundingBox<2> particles = AntiplaneTorsion::section_box(pd.particles());
+    Point<2>             low       = particles.get_boundary_points().first,
+             high                  = particles.get_boundary_points().second;
+    if (fe.has_mesh())
+      {
+        for (const auto &cell : fe.get_triangulation().active_cell_iterators())
+          if (cell->is_locally_owned())
+            for (const unsigned int v : cell->vertex_indices())
+              for (unsigned int d = 0; d < 2; ++d)
+                {
+                  low[d]  = std::min(low[d], cell->vertex(v)[d]);
+                  high[d] = std::max(high[d], cell->vertex(v)[d]);
+                }
+        for (unsigned int d = 0; d < 2; ++d)
+          {
+            low[d]  = Utilities::MPI::min(low[d], comm);
+            high[d] = Utilities::MPI::max(high[d], comm);
+          }
+      }
+    torsion->check_axis(BoundingBox<2>(std::make_pair(low, high)));
+  }
+
+  template <int dim>
   CoupledRegions<dim>
   CoupledProblem<dim>::coupled_regions()
   {
@@ -369,6 +408,7 @@ namespace perideal
     fe.setup([this](const Point<dim> &x) { return method->fe_weight(blending(x)); });
     setup_particles();
     check_blending();
+    check_twist_axis();
     if (adaptive.enabled())
       {
         AssertThrow(std::isfinite(pd.critical_stretch()),

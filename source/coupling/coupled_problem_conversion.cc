@@ -38,16 +38,16 @@ namespace perideal
     adaptive.check_conditions_outside(fe, seeds, when.str());
 
     // What carries over, before anything changes: the unknowns of the free particles by lattice
-    // point (the others follow the FE field and take it again), their broken bonds (a particle
-    // keeps its rank: ParticleSystem's bins do not depend on which lattice points exist), and
-    // the FE dof values of each owned cell with unknowns (the mesh and its partition stay).
-    const unsigned int nc         = layout.n_components();
-    auto              &ps         = pd.particles();
-    const auto        &x          = ps.positions();
-    const auto        &follows_fe = method->particles_following_fe();
+    // point (the others are slaved to the FE field and take it again), their broken bonds (a
+    // particle keeps its rank: ParticleSystem's bins do not depend on which lattice points exist),
+    // and the FE dof values of each owned cell with unknowns (the mesh and its partition stay).
+    const unsigned int nc     = layout.n_components();
+    auto              &ps     = pd.particles();
+    const auto        &x      = ps.positions();
+    const auto        &slaved = method->slaved_particles();
     std::unordered_map<Key, std::vector<double>, typename Lattice<dim>::KeyHash> free_values;
     for (unsigned int i = 0; i < ps.n_owned(); ++i)
-      if (!follows_fe[i])
+      if (!slaved[i])
         {
           std::vector<double> &values = free_values[lattice.key(x[i])];
           for (unsigned int c = 0; c < nc; ++c)
@@ -64,9 +64,9 @@ namespace perideal
           if (bonds.intact[b] == 0)
             broken.emplace(lattice.key(x[i]), lattice.key(x[bonds.neighbor[b]]));
     }
-    const unsigned int                               n_particles_before = ps.n_global();
-    const auto                                       n_dofs_before      = fe.n_dofs();
-    const LinearAlgebra::distributed::Vector<double> U_before = state->U, V_before = state->V;
+    const unsigned int n_particles_before = ps.n_global();
+    const auto         n_dofs_before      = fe.n_dofs();
+    const FEVector     U_before = state->U, V_before = state->V;
     U_before.update_ghost_values();
     V_before.update_ghost_values();
     std::map<CellId, std::pair<Vector<double>, Vector<double>>> cell_values;

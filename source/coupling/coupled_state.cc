@@ -37,32 +37,31 @@ namespace perideal
     const auto        &ps         = pd.particles();
     const unsigned int n_owned    = ps.n_owned();
     const auto        &conditions = pd.boundary_conditions();
-    const auto        &follows_fe = method.particles_following_fe();
-    AssertDimension(follows_fe.size(), n_owned);
+    const auto        &slaved     = method.slaved_particles();
+    AssertDimension(slaved.size(), n_owned);
 
-    // The method decides which particles follow the FE field; the free ones carry their own
+    // The method decides which particles are slaved to the FE field; the free ones carry their own
     // mass, and PD boundary conditions may act only on them.
-    motion.assign(std::size_t(n_owned) * nc, Motion::follows_fe);
+    motion.assign(std::size_t(n_owned) * nc, Motion::slaved);
     std::uint64_t n_constrained_slaved = 0;
     for (unsigned int i = 0; i < n_owned; ++i)
       for (unsigned int c = 0; c < nc; ++c)
         {
           const bool prescribed = conditions.is_prescribed(i, c);
-          if (follows_fe[i])
+          if (slaved[i])
             n_constrained_slaved += prescribed;
           else
             motion[i * nc + c] = prescribed ? Motion::prescribed : Motion::moves;
         }
-    particles_follow_fe =
-      Utilities::MPI::logical_or(std::find(follows_fe.begin(), follows_fe.end(), true) !=
-                                   follows_fe.end(),
+    any_particle_slaved =
+      Utilities::MPI::logical_or(std::find(slaved.begin(), slaved.end(), true) != slaved.end(),
                                  comm);
     n_constrained_slaved = Utilities::MPI::sum(n_constrained_slaved, comm);
     AssertThrow(n_constrained_slaved == 0,
                 ExcMessage(
                   "A displacement or velocity condition of <Boundary conditions> acts on " +
                   std::to_string(n_constrained_slaved) +
-                  " particle components that follow the FE field (they lie in cells "
+                  " particle components slaved to the FE field (they lie in cells "
                   "with FE unknowns); prescribe it there with <Finite elements/Boundary "
                   "conditions>, or move its region into the PD-only zone (beta = 1)."));
 
@@ -236,7 +235,7 @@ namespace perideal
         {
           const double e =
             0.5 * particle_mass[i] * inertia_ratio[c] * std::pow(v.local_element(i * nc + c), 2);
-          if (motion[i * nc + c] != Motion::follows_fe)
+          if (motion[i * nc + c] != Motion::slaved)
             energy.total += e;
           if (motion[i * nc + c] == Motion::prescribed)
             energy.prescribed += e;

@@ -104,11 +104,10 @@ namespace perideal
       }
     AssertThrow(size > 0.,
                 ExcMessage("The parameter " + entry + " names a condition that holds " +
-                           (fe_condition ?
-                              std::string("no FE dof (its boundary ids are on no "
-                                          "FE-carrying face)") :
-                              std::string("no particle (its region contains none, or "
-                                          "only particles that follow the FE field)")) +
+                           (fe_condition ? std::string("no FE dof (its boundary ids are on no "
+                                                       "FE-carrying face)") :
+                                           std::string("no particle (its region contains none, or "
+                                                       "only particles slaved to the FE field)")) +
                            ", so it has no load; name a condition that holds part of the body."));
   }
 

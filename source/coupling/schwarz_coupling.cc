@@ -221,7 +221,7 @@ namespace perideal
 
   template <int dim>
   const std::vector<bool> &
-  SchwarzCoupling<dim>::particles_following_fe() const
+  SchwarzCoupling<dim>::slaved_particles() const
   {
     return constrained;
   }

@@ -15,7 +15,6 @@
 namespace perideal
 {
   using namespace dealii;
-  using Vector = LinearAlgebra::distributed::Vector<double>;
 
   template <int dim>
   FERegion<dim>::FERegion(const MPI_Comm comm)
@@ -221,7 +220,7 @@ namespace perideal
   }
 
   template <int dim>
-  const Vector &
+  const FEVector &
   FERegion<dim>::lumped_mass() const
   {
     return mass;

@@ -17,7 +17,6 @@
 namespace perideal
 {
   using namespace dealii;
-  using Vector = LinearAlgebra::distributed::Vector<double>;
 
   template <int dim>
   void
@@ -133,7 +132,7 @@ namespace perideal
 
   template <int dim>
   void
-  FERegion<dim>::assemble_load(const double time, Vector &f) const
+  FERegion<dim>::assemble_load(const double time, FEVector &f) const
   {
     const bool has_load = std::any_of(condition_list.begin(),
                                       condition_list.end(),
@@ -180,9 +179,9 @@ namespace perideal
 
   template <int dim>
   double
-  FERegion<dim>::stable_time_step(const Vector *mass_in) const
+  FERegion<dim>::stable_time_step(const FEVector *mass_in) const
   {
-    const Vector &m = mass_in ? *mass_in : mass;
+    const FEVector &m = mass_in ? *mass_in : mass;
     // Gershgorin: lambda_max(M^-1 K) <= max_i sum_j |K_ij| / m_i.
     const auto sums  = absolute_row_sums();
     double     bound = 0.;
@@ -195,7 +194,7 @@ namespace perideal
 
   template <int dim>
   std::vector<double>
-  FERegion<dim>::absolute_row_sums(const Vector *x) const
+  FERegion<dim>::absolute_row_sums(const FEVector *x) const
   {
     // Rows read through Epetra views: deal.II's row iterator copies every row.
     const auto         &matrix = stiffness.trilinos_matrix();
@@ -216,21 +215,21 @@ namespace perideal
 
   template <int dim>
   double
-  FERegion<dim>::strain_energy(const Vector &u) const
+  FERegion<dim>::strain_energy(const FEVector &u) const
   {
-    Vector Ku;
+    FEVector Ku;
     initialize_vector(Ku);
     stiffness.vmult(Ku, u);
     return 0.5 * (Ku * u);
   }
 
   // The members defined in this file (the class is instantiated in fe_region.cc).
-#define PERIDEAL_INSTANTIATE(dim)                                                          \
-  template void                FERegion<dim>::assemble_matrices();                         \
-  template void                FERegion<dim>::assemble_load(const double, Vector &) const; \
-  template double              FERegion<dim>::stable_time_step(const Vector *) const;      \
-  template std::vector<double> FERegion<dim>::absolute_row_sums(const Vector *) const;     \
-  template double              FERegion<dim>::strain_energy(const Vector &) const;
+#define PERIDEAL_INSTANTIATE(dim)                                                            \
+  template void                FERegion<dim>::assemble_matrices();                           \
+  template void                FERegion<dim>::assemble_load(const double, FEVector &) const; \
+  template double              FERegion<dim>::stable_time_step(const FEVector *) const;      \
+  template std::vector<double> FERegion<dim>::absolute_row_sums(const FEVector *) const;     \
+  template double              FERegion<dim>::strain_energy(const FEVector &) const;
   PERIDEAL_INSTANTIATE(2)
   PERIDEAL_INSTANTIATE(3)
 #undef PERIDEAL_INSTANTIATE

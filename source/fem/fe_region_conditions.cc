@@ -18,7 +18,6 @@
 namespace perideal
 {
   using namespace dealii;
-  using Vector = LinearAlgebra::distributed::Vector<double>;
 
   namespace
   {
@@ -295,7 +294,7 @@ namespace perideal
 
   template <int dim>
   void
-  FERegion<dim>::prescribe(const double time, Vector &u, Vector &v) const
+  FERegion<dim>::prescribe(const double time, FEVector &u, FEVector &v) const
   {
     for (const auto &c : condition_list)
       c.function->set_time(time);
@@ -338,7 +337,7 @@ namespace perideal
 
   template <int dim>
   std::vector<double>
-  FERegion<dim>::interior_reactions(const Vector &residual) const
+  FERegion<dim>::interior_reactions(const FEVector &residual) const
   {
     std::vector<double> result(interior_dofs.size(), 0.);
     for (unsigned int k = 0; k < interior_dofs.size(); ++k)
@@ -357,7 +356,7 @@ namespace perideal
 
   template <int dim>
   std::vector<std::vector<double>>
-  FERegion<dim>::reactions(const Vector &residual) const
+  FERegion<dim>::reactions(const FEVector &residual) const
   {
     std::vector<std::vector<double>> result(condition_list.size(),
                                             std::vector<double>(layout.n_components(), 0.));
@@ -381,15 +380,15 @@ namespace perideal
   template void FERegion<dim>::locate_prescribed_dofs();                                         \
   template void FERegion<dim>::check_held_point() const;                                         \
   template void FERegion<dim>::check_conditions_act() const;                                     \
-  template void FERegion<dim>::prescribe(const double, Vector &, Vector &) const;                \
+  template void FERegion<dim>::prescribe(const double, FEVector &, FEVector &) const;            \
   template void FERegion<dim>::set_interior_values(const std::vector<types::global_dof_index> &, \
                                                    const std::vector<double> &);                 \
                                                                                                  \
-  template std::vector<double> FERegion<dim>::interior_reactions(const Vector &) const;          \
+  template std::vector<double> FERegion<dim>::interior_reactions(const FEVector &) const;        \
                                                                                                  \
   template const std::vector<bool> &FERegion<dim>::prescribed_mask() const;                      \
                                                                                                  \
-  template std::vector<std::vector<double>> FERegion<dim>::reactions(const Vector &) const;
+  template std::vector<std::vector<double>> FERegion<dim>::reactions(const FEVector &) const;
   PERIDEAL_INSTANTIATE(2)
   PERIDEAL_INSTANTIATE(3)
 #undef PERIDEAL_INSTANTIATE

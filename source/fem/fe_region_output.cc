@@ -17,16 +17,15 @@
 namespace perideal
 {
   using namespace dealii;
-  using Vector = LinearAlgebra::distributed::Vector<double>;
 
   template <int dim>
   std::vector<double>
-  FERegion<dim>::section_integrals(const Vector &u) const
+  FERegion<dim>::section_integrals(const FEVector &u) const
   {
     std::vector<double> integrals(physics_model->integral_names().size(), 0.);
     if (integrals.empty() || n_dofs() == 0)
       return integrals;
-    Vector ghosted;
+    FEVector ghosted;
     initialize_vector(ghosted);
     ghosted = u;
     hanging_constraints.distribute(ghosted);
@@ -65,7 +64,7 @@ namespace perideal
                               const std::string &base_name,
                               const unsigned int step,
                               const double       time,
-                              const Vector      &u)
+                              const FEVector    &u)
   {
     if (n_dofs() == 0)
       return;
@@ -169,11 +168,11 @@ namespace perideal
                                             const std::string &,         \
                                             const unsigned int,          \
                                             const double,                \
-                                            const Vector &);             \
+                                            const FEVector &);           \
   template std::string         FERegion<dim>::summary() const;                          \
   template std::string         FERegion<dim>::save_output_records() const;              \
   template void                FERegion<dim>::load_output_records(const std::string &); \
-  template std::vector<double> FERegion<dim>::section_integrals(const Vector &) const;
+  template std::vector<double> FERegion<dim>::section_integrals(const FEVector &) const;
   PERIDEAL_INSTANTIATE(2)
   PERIDEAL_INSTANTIATE(3)
 #undef PERIDEAL_INSTANTIATE

@@ -22,7 +22,6 @@
 namespace perideal
 {
   using namespace dealii;
-  using Vector = LinearAlgebra::distributed::Vector<double>;
 
   namespace
   {
@@ -177,7 +176,7 @@ namespace perideal
 
   template <int dim>
   void
-  FERegion<dim>::interpolate(const Function<dim> &function, Vector &vector) const
+  FERegion<dim>::interpolate(const Function<dim> &function, FEVector &vector) const
   {
     Assert(function.n_components >= layout.n_components(),
            ExcMessage("The function has fewer components than the field."));
@@ -201,7 +200,7 @@ namespace perideal
 
   template <int dim>
   void
-  FERegion<dim>::initialize_vector(Vector &vector) const
+  FERegion<dim>::initialize_vector(FEVector &vector) const
   {
     // Without FE unknowns there are no ghosts (deal.II's owner lookup divides by the size).
     if (n_dofs() == 0)
@@ -211,14 +210,14 @@ namespace perideal
   }
 
   // The members defined in this file (the class is instantiated in fe_region.cc).
-#define PERIDEAL_INSTANTIATE(dim)                                                  \
-  template void FERegion<dim>::setup(const WeightFunction &);                      \
-  template void FERegion<dim>::reweight(const WeightFunction &);                   \
-  template void FERegion<dim>::distribute(const WeightFunction &);                 \
-  template bool FERegion<dim>::has_hanging_nodes() const;                          \
-  template void FERegion<dim>::interpolate(const Function<dim> &, Vector &) const; \
-  template std::vector<std::vector<bool>> FERegion<dim>::component_masks() const;  \
-  template void                           FERegion<dim>::initialize_vector(Vector &) const;
+#define PERIDEAL_INSTANTIATE(dim)                                                    \
+  template void FERegion<dim>::setup(const WeightFunction &);                        \
+  template void FERegion<dim>::reweight(const WeightFunction &);                     \
+  template void FERegion<dim>::distribute(const WeightFunction &);                   \
+  template bool FERegion<dim>::has_hanging_nodes() const;                            \
+  template void FERegion<dim>::interpolate(const Function<dim> &, FEVector &) const; \
+  template std::vector<std::vector<bool>> FERegion<dim>::component_masks() const;    \
+  template void                           FERegion<dim>::initialize_vector(FEVector &) const;
   PERIDEAL_INSTANTIATE(2)
   PERIDEAL_INSTANTIATE(3)
 #undef PERIDEAL_INSTANTIATE

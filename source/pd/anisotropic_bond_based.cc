@@ -34,7 +34,7 @@ namespace perideal
 
     /**
      * @brief The pair law of the linearized bond (StretchPairLaw's side, its own strain): pair
-     * force k s n on the particle side (-k s n on the neighbour), k = c(n) G beta V_i V_j per lane,
+     * force k s n on the particle side (-k s n on the neighbour), k = c(n) G chi V_i V_j per lane,
      * and, if @p with_energy, the pair energy k s^2 |xi| / 4 at both ends; if @p breaks, a bond
      * breaks where s times its factor (per lane) exceeds the reference critical stretch.
      */
@@ -336,7 +336,7 @@ namespace perideal
     }
     if (context.surface_correction && context.stiffness_fit)
       {
-        // Per end and unit beta V_i V_j, c(n) |xi| (n.e.n)^2 / 4 under a homogeneous strain (one
+        // Per end and unit chi V_i V_j, c(n) |xi| (n.e.n)^2 / 4 under a homogeneous strain (one
         // grain: has_stiffness_fit()).
         const auto law = [this](const Tensor<1, dim> &xi, double &axial, double &shear) {
           const double length = xi.norm();
@@ -384,6 +384,14 @@ namespace perideal
   AnisotropicBondBased<dim>::has_stiffness_fit() const
   {
     return grains.size() <= 1;
+  }
+
+  template <int dim>
+  std::string
+  AnisotropicBondBased<dim>::nonuniform_constants() const
+  {
+    return grains.has_file() ? "<" + section + "/Grains file> makes the particles a polycrystal" :
+                               std::string();
   }
 
   template <int dim>

@@ -40,7 +40,7 @@ namespace perideal
 
     /**
      * @brief Pass 1 as a pair law of for_each_bond_block(): breaks bonds by their linearized
-     * stretch, then adds g_b n . eta = g_b s |xi| (g_b = M:nn beta V_i V_j) at both ends (A V_i
+     * stretch, then adds g_b n . eta = g_b s |xi| (g_b = M:nn chi V_i V_j) at both ends (A V_i
      * B_i before the division).
      */
     struct PlaneStressDilatationLaw : StretchPairLaw<2>

@@ -12,7 +12,7 @@ namespace perideal
   using namespace dealii;
 
   // E = sum_i beta_i V_i W_i with W_i = 1/4 sum_j lambda_0 (xi . eta)^2 w - 1/2 B_i A_i^2 is,
-  // per pair, 1/2 (k_b/|xi|) e_b^2 (e_b = n_b . (u_j - u_i), k_b = c_0(n) beta V_i V_j times
+  // per pair, 1/2 (k_b/|xi|) e_b^2 (e_b = n_b . (u_j - u_i), k_b = c_0(n) chi V_i V_j times
   // the coupling's energy weight) and, per particle, -1/2 (beta_i V_i B_i) A_i^2 with
   // A_i = sum_b g_b e_b / (V_i B_i) over the intact bonds of i. Hence: one row e_b per intact
   // bond with weight k_b/|xi| (times the bond's share), one row A_i per owned particle with the

@@ -59,6 +59,13 @@ namespace perideal
   }
 
   template <int dim>
+  const Torsion *
+  AntiplaneModel<dim>::torsion() const
+  {
+    return twist.active() ? &twist : nullptr;
+  }
+
+  template <int dim>
   std::vector<std::string>
   AntiplaneModel<dim>::integral_names() const
   {
@@ -156,7 +163,7 @@ namespace perideal
   {
     if (!twist.active())
       return {};
-    AntiplaneTorsion::check_section(particles, twist);
+    AntiplaneTorsion::check_section(particles);
     return AntiplaneTorsion::twist_fields(particles, twist);
   }
 

@@ -23,7 +23,7 @@ namespace perideal
      * @brief Pass 1 of the state-based antiplane kernel as a pair law of for_each_bond_block():
      * breaks bonds by slope (@p Slope: SlopePairLaw, or TwistedSlopePairLaw under torsion),
      * then adds the pair sum
-     * k r n = omega (w_b - w_a) n beta V_i V_j (k = delta beta V_i V_j per lane, n = xi/|xi|) to
+     * k r n = omega (w_b - w_a) n chi V_i V_j (k = delta chi V_i V_j per lane, n = xi/|xi|) to
      * the dim outputs at both ends (r and n change sign together): the shear angles before the
      * factor b g / V_i.
      */
@@ -65,9 +65,9 @@ namespace perideal
 
     /**
      * @brief Pass 2 of the state-based antiplane kernel as a pair law of for_each_bond_block():
-     * the pair force k (s_a + s_b) . n / |xi| = omega (s_a + s_b) . n beta V_i V_j (k = delta
-     * beta V_i V_j per lane, @p weight) plus the bond-based term of SlopePairLaw (its coefficient
-     * alpha c G beta V_i V_j, and its pair energy if @p with_energy; TwistedSlopePairLaw's if
+     * the pair force k (s_a + s_b) . n / |xi| = omega (s_a + s_b) . n chi V_i V_j (k = delta
+     * chi V_i V_j per lane, @p weight) plus the bond-based term of SlopePairLaw (its coefficient
+     * alpha c G chi V_i V_j, and its pair energy if @p with_energy; TwistedSlopePairLaw's if
      * @p twisted) on the particle side, the negative on the neighbour. No breaking (pass 1
      * broke the bonds).
      */
@@ -82,7 +82,7 @@ namespace perideal
       static constexpr bool breaks_bonds = false;
       /// The first unknown of s: after w (and the twist fields p, q of TwistedSlopePairLaw).
       static constexpr unsigned int first_state = twisted ? 3 : 1;
-      /// delta beta V_i V_j per lane.
+      /// delta chi V_i V_j per lane.
       const double *weight;
 
       /// The slope (the unknown 0, twisted by the unknowns 1 and 2 if @p twisted) and
@@ -302,7 +302,7 @@ namespace perideal
     particles.reinit_vector(angles, dim);
     particles.reinit_vector(force_state, dim);
 
-    // Per-point correction (seed eqs. 50-54): g_i,a = 1 / (b sum_j omega x_a n_a V_j beta), one
+    // Per-point correction (seed eqs. 50-54): g_i,a = 1 / (b sum_j omega x_a n_a V_j chi), one
     // over the shear angle of w = x_a without correction (omega x_a n_a = delta n_a^2), over
     // the intact bonds of the family: the faces of a pre-crack are free faces like the outer
     // ones (bonds broken later do not change it). angle_factor holds b g.

@@ -16,42 +16,47 @@ namespace perideal
     using namespace dealii;
 
     template <int dim>
-    void
-    check_section(const ParticleSystem<dim> &particles, const Torsion &torsion)
+    BoundingBox<2>
+    section_box(const ParticleSystem<dim> &particles)
     {
       const MPI_Comm comm = particles.get_communicator();
-      const double   dx = particles.settings().spacing, delta = particles.settings().horizon;
-      const auto    &x = particles.positions();
+      const double   dx   = particles.settings().spacing;
+      const auto    &x    = particles.positions();
+      Point<2>       low, high;
       for (unsigned int d = 0; d < 2; ++d)
         {
-          double low = std::numeric_limits<double>::max(), high = -low;
+          low[d]  = std::numeric_limits<double>::max();
+          high[d] = -low[d];
           for (unsigned int i = 0; i < particles.n_owned(); ++i)
             {
-              low  = std::min(low, x[i][d]);
-              high = std::max(high, x[i][d]);
+              low[d]  = std::min(low[d], x[i][d]);
+              high[d] = std::max(high[d], x[i][d]);
             }
-          // The section's extent: the lattice cells of the particles.
-          low              = Utilities::MPI::min(low, comm) - 0.5 * dx;
-          high             = Utilities::MPI::max(high, comm) + 0.5 * dx;
-          const char *axis = d == 0 ? "x" : "y";
-          AssertThrow(high - low >= 2. * delta,
+          // The lattice cells of the particles.
+          low[d]  = Utilities::MPI::min(low[d], comm) - 0.5 * dx;
+          high[d] = Utilities::MPI::max(high[d], comm) + 0.5 * dx;
+        }
+      return BoundingBox<2>(std::make_pair(low, high));
+    }
+
+    template <int dim>
+    void
+    check_section(const ParticleSystem<dim> &particles)
+    {
+      const double         delta = particles.settings().horizon;
+      const BoundingBox<2> box   = section_box(particles);
+      for (unsigned int d = 0; d < 2; ++d)
+        {
+          const double width = box.side_length(d);
+          AssertThrow(width >= 2. * delta,
                       ExcMessage(std::string("Torsion: the section is ") +
-                                 ParameterUtilities::format_number(high - low) + " m wide in " +
-                                 axis + ", less than two horizons (delta = " +
+                                 ParameterUtilities::format_number(width) + " m wide in " +
+                                 (d == 0 ? "x" : "y") + ", less than two horizons (delta = " +
                                  ParameterUtilities::format_number(delta) +
                                  " m): the particles near one face would see the other. "
                                  "Accepted: <Discretization/Horizon factor> times "
                                  "<Discretization/Lattice spacing> at most half the section's "
                                  "width (refine the lattice)."));
-          const double center = torsion.axis()[d];
-          AssertThrow(center >= low && center <= high,
-                      ExcMessage("The parameter " + torsion.axis_entry() + " has " + axis + " = " +
-                                 ParameterUtilities::format_number(center) +
-                                 ", outside the section (" + axis + " in [" +
-                                 ParameterUtilities::format_number(low) + ", " +
-                                 ParameterUtilities::format_number(high) +
-                                 "]); accepted are points of the section (the twist axis must "
-                                 "pierce the bar's cross-section)."));
         }
     }
 
@@ -90,14 +95,14 @@ namespace perideal
             const Tensor<1, dim> xi   = x[j] - x[i];
             const Tensor<2, dim> xixi = outer_product(xi, xi);
             const Tensor<1, dim> dw   = xi * (w.local_element(j) - w.local_element(i));
-            const double         beta = bonds.volume_factor[b];
-            shape[i] += beta * volume[j] * xixi;
-            moment[i] += beta * volume[j] * dw;
+            const double         chi  = bonds.volume_factor[b];
+            shape[i] += chi * volume[j] * xixi;
+            moment[i] += chi * volume[j] * dw;
             // The other end sees -xi and -(w_j - w_i): the same products.
             if (particles.neighbor_is_owned(b))
               {
-                shape[j] += beta * volume[i] * xixi;
-                moment[j] += beta * volume[i] * dw;
+                shape[j] += chi * volume[i] * xixi;
+                moment[j] += chi * volume[i] * dw;
               }
           }
       gradient.assign(n_owned, Tensor<1, dim>());
@@ -146,21 +151,22 @@ namespace perideal
       return {Utilities::MPI::sum(torque, particles.get_communicator()), strain_energy / h};
     }
 
-#define PERIDEAL_INSTANTIATE(dim)                                                           \
-  template void                check_section(const ParticleSystem<dim> &, const Torsion &); \
-  template std::vector<double> twist_fields(const ParticleSystem<dim> &, const Torsion &);  \
-  template void                scalar_gradient(const ParticleSystem<dim> &,                 \
-                                               const ParticleVector &,                      \
-                                               std::vector<Tensor<1, dim>> &);              \
-  template void                shear_stresses(const ParticleSystem<dim> &,                  \
-                                              const ParticleVector &,                       \
-                                              const Torsion &,                              \
-                                              const double,                                 \
-                                              std::vector<Tensor<1, dim>> &);               \
-  template std::vector<double> section_integrals(const ParticleSystem<dim> &,               \
-                                                 const ParticleVector &,                    \
-                                                 const Torsion &,                           \
-                                                 const double,                              \
+#define PERIDEAL_INSTANTIATE(dim)                                                          \
+  template BoundingBox<2>      section_box(const ParticleSystem<dim> &);                   \
+  template void                check_section(const ParticleSystem<dim> &);                 \
+  template std::vector<double> twist_fields(const ParticleSystem<dim> &, const Torsion &); \
+  template void                scalar_gradient(const ParticleSystem<dim> &,                \
+                                               const ParticleVector &,                     \
+                                               std::vector<Tensor<1, dim>> &);             \
+  template void                shear_stresses(const ParticleSystem<dim> &,                 \
+                                              const ParticleVector &,                      \
+                                              const Torsion &,                             \
+                                              const double,                                \
+                                              std::vector<Tensor<1, dim>> &);              \
+  template std::vector<double> section_integrals(const ParticleSystem<dim> &,              \
+                                                 const ParticleVector &,                   \
+                                                 const Torsion &,                          \
+                                                 const double,                             \
                                                  const double);
     PERIDEAL_INSTANTIATE(2)
     PERIDEAL_INSTANTIATE(3)

@@ -23,7 +23,7 @@ namespace perideal
     /**
      * @brief The PMB pair law of for_each_bond_block(): pair force F = k s (xi + eta)/|xi + eta|
      * on the particle side (-F on the neighbour) and, if @p with_energy, the pair energy
-     * k s^2 |xi| / 4 at both ends, with k = c G beta V_i V_j per lane; breaks bonds by stretch.
+     * k s^2 |xi| / 4 at both ends, with k = c G chi V_i V_j per lane; breaks bonds by stretch.
      */
     template <int dim, bool with_energy>
     struct PMBPairLaw : StretchPairLaw<dim>
@@ -171,7 +171,7 @@ namespace perideal
         };
         if (context.stiffness_fit)
           {
-            // Per end and unit beta V_i V_j, c |xi| (n.e.n)^2 / 4 under a homogeneous strain.
+            // Per end and unit chi V_i V_j, c |xi| (n.e.n)^2 / 4 under a homogeneous strain.
             const double micromodulus = c;
             const auto   law =
               [micromodulus](const Tensor<1, dim> &xi, double &axial, double &shear) {

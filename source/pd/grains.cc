@@ -113,6 +113,13 @@ namespace perideal
   }
 
   template <int dim>
+  bool
+  Grains<dim>::has_file() const
+  {
+    return !file.empty();
+  }
+
+  template <int dim>
   const Tensor<2, 3> &
   Grains<dim>::rotation(const unsigned int g) const
   {

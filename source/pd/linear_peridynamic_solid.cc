@@ -19,7 +19,7 @@ namespace perideal
   {
     /**
      * @brief Pass 1 of the LPS kernel as a pair law of for_each_bond_block(): breaks bonds by
-     * stretch, then adds the pair sum p omega beta V_i V_j |xi| e (e = |xi| s) at both ends
+     * stretch, then adds the pair sum p omega chi V_i V_j |xi| e (e = |xi| s) at both ends
      * (the dilatation before the factor n / (m_i V_i)).
      */
     template <int dim>
@@ -27,7 +27,7 @@ namespace perideal
     {
       static constexpr unsigned int n_outputs    = 1;
       static constexpr bool         breaks_bonds = true;
-      /// omega beta V_i V_j per lane.
+      /// omega chi V_i V_j per lane.
       const double *weight;
 
       template <typename Bond>
@@ -51,9 +51,9 @@ namespace perideal
     /**
      * @brief Pass 2 of the LPS kernel as a pair law of for_each_bond_block(): the pair force
      * [(n k - (n + 2) mu) |xi| (theta_i / m_i + theta_j / m_j) + (alpha_i + alpha_j) e]
-     * omega beta V_i V_j (xi + eta)/|xi + eta| on the particle side (its negative on the
+     * omega chi V_i V_j (xi + eta)/|xi + eta| on the particle side (its negative on the
      * neighbour) and, if @p with_energy, the deviatoric pair energies
-     * alpha_i omega beta V_i V_j (e - theta_i |xi| / n)^2 / 2 at i and the same with j at j
+     * alpha_i omega chi V_i V_j (e - theta_i |xi| / n)^2 / 2 at i and the same with j at j
      * (theta / m and alpha carry the particles' energy weights).
      */
     template <int dim, bool with_energy>
@@ -61,7 +61,7 @@ namespace perideal
     {
       static constexpr unsigned int n_outputs    = dim + (with_energy ? 1 : 0);
       static constexpr bool         breaks_bonds = false;
-      /// omega beta V_i V_j per lane.
+      /// omega chi V_i V_j per lane.
       const double *weight;
       /// Kernel order: beta theta / m, beta alpha, theta.
       const double *theta_over_m, *alpha, *theta;

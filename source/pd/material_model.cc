@@ -179,6 +179,20 @@ namespace perideal
   }
 
   template <int dim>
+  const Torsion *
+  MaterialModel<dim>::torsion() const
+  {
+    return nullptr;
+  }
+
+  template <int dim>
+  std::string
+  MaterialModel<dim>::nonuniform_constants() const
+  {
+    return {};
+  }
+
+  template <int dim>
   std::vector<double>
   MaterialModel<dim>::breaking_factors(const ParticleSystem<dim> &particles) const
   {

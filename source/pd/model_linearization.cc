@@ -121,7 +121,7 @@ namespace perideal
   } // namespace
 
   // PMB: the bond b couples i and j through the block k_b n n^T (force density per unit
-  // displacement k_b = c G beta V_j / |xi|, i.e. bond_coefficient / (|xi| V_i)); block
+  // displacement k_b = c G chi V_j / |xi|, i.e. bond_coefficient / (|xi| V_i)); block
   // Gershgorin with spectral norms gives |K_ii| + sum_j |K_ij| <= 2 sum_j k_b.
   template <int dim>
   void
@@ -131,8 +131,8 @@ namespace perideal
     bond_pair_stiffness_bound(particles, bond_coefficient, dim, per_particle);
   }
 
-  // PMB linearized: f_i V_i = sum_j (c G beta / |xi|) V_i V_j n n^T (u_j - u_i), i.e. one row
-  // e_b = n_b . (u_j - u_i) per intact bond with weight k_b = c G beta V_i V_j / |xi|.
+  // PMB linearized: f_i V_i = sum_j (c G chi / |xi|) V_i V_j n n^T (u_j - u_i), i.e. one row
+  // e_b = n_b . (u_j - u_i) per intact bond with weight k_b = c G chi V_i V_j / |xi|.
   template <int dim>
   void
   BondBased<dim>::linearize(const ParticleSystem<dim> &particles, LinearizedModel &linearized) const
@@ -159,7 +159,7 @@ namespace perideal
     bond_pair_stiffness_bound(particles, magnitude, dim, per_particle);
   }
 
-  // Anisotropic linearized bond (the model is linear): PMB's rows with k_b = c(n_b) G beta V_i
+  // Anisotropic linearized bond (the model is linear): PMB's rows with k_b = c(n_b) G chi V_i
   // V_j / |xi|.
   template <int dim>
   void
@@ -173,7 +173,7 @@ namespace perideal
                   linearized);
   }
 
-  // Antiplane: the bond b couples w_i and w_j through k_b = c G beta V_j / |xi| as PMB's
+  // Antiplane: the bond b couples w_i and w_j through k_b = c G chi V_j / |xi| as PMB's
   // n n^T block does the displacements, hence the same bound.
   template <int dim>
   void
@@ -183,8 +183,8 @@ namespace perideal
     bond_pair_stiffness_bound(particles, bond_coefficient, 1, per_particle);
   }
 
-  // Antiplane linearized (the model is linear): f_i V_i = sum_j (c G beta / |xi|) V_i V_j
-  // (w_j - w_i), i.e. one row w_j - w_i per intact bond with weight c G beta V_i V_j / |xi|.
+  // Antiplane linearized (the model is linear): f_i V_i = sum_j (c G chi / |xi|) V_i V_j
+  // (w_j - w_i), i.e. one row w_j - w_i per intact bond with weight c G chi V_i V_j / |xi|.
   template <int dim>
   void
   AntiplaneBondBased<dim>::linearize(const ParticleSystem<dim> &particles,
@@ -199,15 +199,15 @@ namespace perideal
   }
 
   // Antiplane state based (doc/theory/models.md): E = sum_i W_i V_i with the shear angles
-  // r_i,a = sum_j G_(i,a),j w_j linear in w, G_(i,a),j = b g_i,a omega beta V_j n_a for a
+  // r_i,a = sum_j G_(i,a),j w_j linear in w, G_(i,a),j = b g_i,a omega chi V_j n_a for a
   // neighbour and minus their sum for i. Each row (i, a) has the weight
   // w_(i,a) = (1 - alpha) mu_i beta_i V_i (beta_i the energy weight, mu_i the particle's shear
   // modulus), with
   // S_i,a = sum_j |G_(i,a),j| (intact bonds) and |G_(i,a),i| = S_i,a; the row of a neighbour l
-  // holds i with |G_(l,a),i| = b g_l,a omega beta V_i |n_a|. Gershgorin:
+  // holds i with |G_(l,a),i| = b g_l,a omega chi V_i |n_a|. Gershgorin:
   // sum_k |K_ik| <= (1/V_i) sum_rows w_r |G_ri| sum_k |G_rk|
   //              = sum_a 2 (1 - alpha) mu_i beta_i S_i,a^2
-  //                + sum_l sum_a P_l,a omega beta |n_a|,   P_l,a = 2 w_(l,a) S_l,a b g_l,a,
+  //                + sum_l sum_a P_l,a omega chi |n_a|,   P_l,a = 2 w_(l,a) S_l,a b g_l,a,
   // P of a ghost neighbour from its owner; plus the bond-based term's bound.
   template <int dim>
   void
@@ -219,7 +219,7 @@ namespace perideal
     const auto        &x       = particles.positions();
     const auto        &beta    = particles.energy_weights();
     const unsigned int n_owned = particles.n_owned();
-    // |n_a| omega beta V_i V_j per intact bond and direction.
+    // |n_a| omega chi V_i V_j per intact bond and direction.
     const auto n_weight = [&](const unsigned int i, const std::size_t b, const unsigned int a) {
       const unsigned int j = bonds.neighbor[b];
       return std::abs(x[j][a] - x[i][a]) / (bonds.length[b] * bonds.length[b]) *
@@ -267,10 +267,10 @@ namespace perideal
   }
 
   // Antiplane state based linearized (the model is linear): per owned particle i and direction
-  // a the row r_i,a (entries b g_i,a omega beta V_j n_a at j and their negatives at i, over the
+  // a the row r_i,a (entries b g_i,a omega chi V_j n_a at j and their negatives at i, over the
   // intact bonds stored in row i and in the rows of owned neighbours) with weight
   // (1 - alpha) mu_i beta_i V_i; per intact bond the row w_j - w_i of the bond-based term with
-  // weight alpha c G beta V_i V_j / |xi|. The stiffness scale adds the diagonal of the rows of
+  // weight alpha c G chi V_i V_j / |xi|. The stiffness scale adds the diagonal of the rows of
   // particle i, sum_a (1 - alpha) mu_i beta_i V_i S_i,a^2 (stiffness_bound()).
   template <int dim>
   void
@@ -363,12 +363,12 @@ namespace perideal
   }
 
   // LPS linearized (doc/theory/models.md): W_i = (n k - (n+2) mu)/(2 n) theta_i^2
-  // + (alpha_i / 2) sum_j omega e^2 V_j beta, because the deviatoric sum expands to
+  // + (alpha_i / 2) sum_j omega e^2 V_j chi, because the deviatoric sum expands to
   // sum omega e^2 V - theta_i^2 m_i / n^2 and alpha_i m_i = mu n (n + 2). Hence, with the
   // energy weights b_i of a blended coupling (E = sum_i b_i W_i V_i) and e_b = n_b . (u_j - u_i):
-  // one row e_b per intact bond with weight k_b = (b_i alpha_i + b_j alpha_j) omega beta V_i V_j,
+  // one row e_b per intact bond with weight k_b = (b_i alpha_i + b_j alpha_j) omega chi V_i V_j,
   // and one row theta_i = sum_{b at i} g_b^(i) e_b per owned particle with weight
-  // w_i = b_i V_i (n k - (n+2) mu) / n, g_b^(i) = (n / m_i) omega beta |xi| V_j. theta_i collects
+  // w_i = b_i V_i (n k - (n+2) mu) / n, g_b^(i) = (n / m_i) omega chi |xi| V_j. theta_i collects
   // the bonds stored in row i and those stored in the row of an owned neighbour.
   template <int dim>
   void

@@ -14,6 +14,17 @@ namespace perideal
 
   namespace
   {
+    // The partial-volume rules by their names in <Discretization/Partial volume correction>.
+    const ParameterUtilities::Choices<PartialVolume> &
+    partial_volumes()
+    {
+      static const ParameterUtilities::Choices<PartialVolume> names = {
+        {"none", PartialVolume::none},
+        {"book", PartialVolume::book},
+        {"geometric", PartialVolume::geometric}};
+      return names;
+    }
+
     template <int dim>
     std::vector<PreCrack<dim>>
     parse_pre_cracks(const std::string &text)
@@ -69,7 +80,7 @@ namespace perideal
                         "2D only: thickness h of the body [m]; particle volume dx^2 h.");
       prm.declare_entry("Partial volume correction",
                         "book",
-                        Patterns::Selection("none|book|geometric"),
+                        Patterns::Selection(ParameterUtilities::selection(partial_volumes())),
                         "How neighbours cut by the horizon count: 'none' (|xi| <= delta, full "
                         "volume); 'book' (|xi| <= delta, volume scaled by (delta + dx/2 - "
                         "|xi|)/dx beyond delta - dx/2, as in Madenci & Oterkus' codes and LAMMPS: "
@@ -142,7 +153,8 @@ namespace perideal
                           PluginRegistry<MaterialModel<dim>>::documentation());
       prm.declare_entry("Planar assumption",
                         "plane stress",
-                        Patterns::Selection("plane stress|plane strain"),
+                        Patterns::Selection(
+                          ParameterUtilities::selection(planar_assumption_names())),
                         "2D only: the state of the third direction.");
       prm.declare_entry("Density", "0", Patterns::Double(0.), "Mass density rho [kg/m^3].");
       prm.declare_entry("No-fail regions",
@@ -186,10 +198,10 @@ namespace perideal
     settings.horizon   = horizon_factor * settings.spacing;
     settings.thickness = (dim == 2 ? prm.get_double("Thickness") : 1.);
     ParameterUtilities::require_positive(settings.thickness, "Discretization/Thickness");
-    const std::string partial  = prm.get("Partial volume correction");
-    settings.partial_volume    = (partial == "none" ? PartialVolume::none :
-                                  partial == "book" ? PartialVolume::book :
-                                                      PartialVolume::geometric);
+    settings.partial_volume =
+      ParameterUtilities::choice(partial_volumes(),
+                                 prm.get("Partial volume correction"),
+                                 "Discretization/Partial volume correction");
     settings.perturbation      = prm.get_double("Lattice perturbation");
     settings.perturbation_seed = prm.get_integer("Perturbation seed");
     surface_correction         = prm.get_bool("Surface correction");
@@ -337,6 +349,13 @@ namespace perideal
   template <int dim>
   MaterialModel<dim> &
   ParticleRegion<dim>::material()
+  {
+    return *model;
+  }
+
+  template <int dim>
+  const MaterialModel<dim> &
+  ParticleRegion<dim>::material() const
   {
     return *model;
   }

@@ -41,7 +41,7 @@ namespace perideal
      */
     struct TimoshenkoLawData
     {
-      /// k = G beta V_i V_j per lane.
+      /// k = G chi V_i V_j per lane.
       const double *coefficient = nullptr;
       double        C_N = 0., C_theta = 0., C_B = 0.;
       /// 1/s_0, 1/gamma_0, 1/kappa_0 (0: that mode does not fail).
@@ -60,7 +60,7 @@ namespace perideal
     /**
      * @brief The pair law of the Timoshenko bond (TimoshenkoBondBased): force k f on the
      * particle side, -k f on the neighbour, moments k m_i and k m_j, and, if @p with_energy,
-     * the pair energy k w / 2 at both ends (k per lane = G beta V_i V_j). With @p softening,
+     * the pair energy k w / 2 at both ends (k per lane = G chi V_i V_j). With @p softening,
      * each mode is scaled by its factor per lane (secant stiffness at the largest value
      * reached); if `commit`, the pair first raises the lanes' histories to the present values
      * and updates their factors and dissipated energies.

@@ -176,7 +176,7 @@ namespace perideal
         };
         if (context.stiffness_fit)
           {
-            // Per end and unit beta V_i V_j, w / 2 = [C_N |xi| (n.e.n)^2 / 2 + 6 C_theta
+            // Per end and unit chi V_i V_j, w / 2 = [C_N |xi| (n.e.n)^2 / 2 + 6 C_theta
             // (|e.n|^2 - (n.e.n)^2) / |xi|] / 2 under a homogeneous strain, theta its rotation.
             const double C_N = bond_stiffness.normal, C_theta = bond_stiffness.shear;
             const auto   law = [C_N,

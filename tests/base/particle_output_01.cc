@@ -1,5 +1,6 @@
 // ParticleOutput writes HDF5/XDMF and VTU for 7 particles split over the ranks in three ways
-// (last rank empty, first rank empty, round robin); the files read back give the exact sums.
+// (last rank empty, first rank empty, round robin); the files read back give the exact sums,
+// and the HDF5 data sets hold the values in double precision, as their XDMF record declares.
 
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/point.h>
@@ -253,6 +254,52 @@ namespace
                       << count_occurrences(read_text(output.pvd_filename()), "<DataSet")
                       << std::endl;
   }
+
+  // Values that single precision rounds (0.1 (i + 1)) read back bit for bit from the HDF5 file,
+  // and every floating-point data item of the XDMF record (nodes, values) declares Precision="8"
+  // (doubles).
+  void
+  test_precision()
+  {
+    const unsigned int            rank = dealii::Utilities::MPI::this_mpi_process(MPI_COMM_WORLD);
+    const unsigned int            n_ranks = dealii::Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD);
+    perideal::ParticleOutput<2>   output(MPI_COMM_WORLD,
+                                       "particle_output_01_data",
+                                       "precision",
+                                       true,
+                                       false);
+    std::vector<dealii::Point<2>> points;
+    std::vector<double>           values;
+    for (const unsigned int i : owned_ids(Split::round_robin, rank, n_ranks))
+      {
+        points.emplace_back(0.5 * i, 0.);
+        values.push_back(0.1 * (i + 1));
+      }
+    output.set_points(points);
+    output.add_scalar_field("value", values);
+    output.write(0, 0.);
+    if (rank != 0)
+      return;
+    const hid_t file = H5Fopen(output.hdf5_filename(0).c_str(), H5F_ACC_RDONLY, H5P_DEFAULT);
+    AssertThrow(file >= 0, dealii::ExcMessage("cannot open " + output.hdf5_filename(0)));
+    hsize_t                   n_nodes, node_dim, n_rows, n_cols;
+    const std::vector<double> nodes = read_dataset(file, "nodes", n_nodes, node_dim);
+    const std::vector<double> read  = read_dataset(file, "value", n_rows, n_cols);
+    H5Fclose(file);
+    unsigned int n_exact = 0;
+    for (unsigned int p = 0; p < n_nodes; ++p)
+      {
+        // Particle i sits at x = 0.5 i.
+        const auto i = static_cast<unsigned int>(std::lround(2. * nodes[p * node_dim]));
+        n_exact += (read[p] == 0.1 * (i + 1));
+      }
+    const std::string xdmf = read_text(output.xdmf_filename());
+    dealii::deallog << "precision: " << n_exact << " of " << n_nodes
+                    << " values 0.1 (i + 1) read back exactly; XDMF Precision=\"8\" on "
+                    << count_occurrences(xdmf, "Precision=\"8\"") << " of "
+                    << count_occurrences(xdmf, "NumberType=\"Float\"")
+                    << " floating-point data items" << std::endl;
+  }
 } // namespace
 
 int
@@ -267,4 +314,5 @@ main(int argc, char **argv)
       test<3>(split);
     }
   test_no_particles();
+  test_precision();
 }

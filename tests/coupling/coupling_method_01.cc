@@ -9,7 +9,7 @@
 //    is exact for both methods; in tension both balance the load exactly, and the sharp
 //    interface's ghost forces give a larger displacement error than the 10 mm blending ramp.
 // 2. "separate regions", not derived from BlendedCoupling (no transfer operator, no particle
-//    follows the FE field): the FE region and the particles occupy disjoint parts of the body
+//    slaved to the FE field): the FE region and the particles occupy disjoint parts of the body
 //    and do not interact. A PMB strip held at its left end and pulled by a traction at its
 //    right, beside an FE strip clamped at its left end and pulled likewise, both under a body
 //    force, run explicit and static through the unchanged solvers, against the PMB strip alone
@@ -48,6 +48,8 @@ using namespace dealii;
 
 namespace
 {
+  using perideal::FEVector;
+
   template <int dim>
   class SharpInterface : public perideal::BlendedCoupling<dim>
   {
@@ -67,7 +69,7 @@ namespace
   /**
    * <Coupling/Method> = separate regions, not derived from BlendedCoupling: the FE region and
    * the particles occupy disjoint parts of the body (FE where beta < 1/2, particles elsewhere)
-   * and do not interact. No particle follows the FE field, so there is no P and no P^T; the
+   * and do not interact. No particle is slaved to the FE field, so there is no P and no P^T; the
    * strain energy is the sum of the two regions'; a quasi-static step solves each region alone
    * with the library's static solve, as the one-region problems do (for the FE region with no
    * particles, for the particles with an FE region without unknowns).
@@ -76,8 +78,6 @@ namespace
   class SeparateRegions : public perideal::CouplingMethod<dim>
   {
   public:
-    using typename perideal::CouplingMethod<dim>::FEVector;
-
     /// No parameters.
     static void
     declare_parameters(ParameterHandler &)
@@ -107,20 +107,20 @@ namespace
     initialize(const perideal::CoupledRegions<dim> &coupled_regions) override
     {
       regions = coupled_regions;
-      follows_fe.assign(regions.particles->n_owned(), false);
+      slaved.assign(regions.particles->n_owned(), false);
     }
 
     std::string
     summary() const override
     {
-      return "no particle follows the FE field, " + std::to_string(regions.particles->n_global()) +
-             " free";
+      return "no particle slaved to the FE field, " +
+             std::to_string(regions.particles->n_global()) + " free";
     }
 
     const std::vector<bool> &
-    particles_following_fe() const override
+    slaved_particles() const override
     {
-      return follows_fe;
+      return slaved;
     }
 
     void
@@ -212,7 +212,7 @@ namespace
 
   private:
     perideal::CoupledRegions<dim> regions;
-    std::vector<bool>             follows_fe;
+    std::vector<bool>             slaved;
     std::string                   conditions;
     // The empty counterparts of the two regions, and the one-region static solves.
     std::unique_ptr<perideal::FERegion<dim>>            no_fe;

@@ -2,9 +2,9 @@
 // Bad input of torsion problems (the twist of 'scalar laplace' and 'antiplane bond based'): valid
 // FE and PD files are accepted; each bad case stops, with a message naming the entry and the
 // accepted values, before the solve: a twist axis outside the section (FE: outside the mesh,
-// found right after the mesh is made; PD: outside the particles' section), a horizon that does
-// not fit the section (fewer than two horizons across), the static linear solve with a PD twist
-// (found when the file is read).
+// found right after the mesh is made; PD: outside the body, here the particles' section, found
+// once the particles are made), a horizon that does not fit the section (fewer than two
+// horizons across), the static linear solve with a PD twist (found when the file is read).
 // ---------------------------------------------------------------------
 #include <perideal/coupling/coupled_problem.h>
 

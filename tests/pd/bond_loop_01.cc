@@ -51,7 +51,7 @@ namespace
                 {});
 
     // Random w of amplitude 2 crit dx keyed by lattice position (rank independent), and
-    // k = beta V_i V_j per bond.
+    // k = chi V_i V_j per bond.
     auto               &bonds  = ps.bonds();
     const auto         &volume = ps.volumes();
     std::vector<double> w(ps.n_local()), k(bonds.size());

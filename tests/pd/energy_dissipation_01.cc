@@ -1,6 +1,6 @@
 // The energy of broken bonds (MaterialModel::released_energy()): at a fixed displacement it is
 // the drop of the model's energy that the breaking causes, for PMB also the sum of the broken
-// bonds' energies k s^2 |xi| / 2 with k = c G beta V_i V_j from the analytic micromodulus; in an
+// bonds' energies k s^2 |xi| / 2 with k = c G chi V_i V_j from the analytic micromodulus; in an
 // explicit run of a bar pulled apart (PMB, LPS) kinetic + strain - work falls by about the
 // dissipated energy while kinetic + strain + dissipated - work is the time-integration error:
 // first order in dt once bonds break (a bond breaks within a step, above s0 by the step's
@@ -124,7 +124,7 @@ namespace
             << ": released = E(u, before) - E(u, after) to 1e-10: " << ok(drop_error < 1e-10)
             << std::endl;
     if (name == "pmb")
-      deallog << name << ": released = sum of k s^2 |xi| / 2, k = c G beta V_i V_j, to 1e-10: "
+      deallog << name << ": released = sum of k s^2 |xi| / 2, k = c G chi V_i V_j, to 1e-10: "
               << ok(std::abs(released / bond_sum - 1.) < 1e-10) << std::endl;
     deallog << name << ": bonds stay broken (forces unchanged), counted once: "
             << ok(force_change == 0. && repeated == 0.) << std::endl;

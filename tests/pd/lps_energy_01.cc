@@ -69,7 +69,7 @@ namespace
 
   // The discrete shear-energy ratio of a full family: under u_x = g y, u_y = g x the extension
   // is e = 2 g |xi| n_x n_y (linearized) and theta = 0, so
-  // W_PD / (2 mu g^2) = n (n + 2) sum omega beta |xi|^2 n_x^2 n_y^2 / sum omega beta |xi|^2,
+  // W_PD / (2 mu g^2) = n (n + 2) sum omega chi |xi|^2 n_x^2 n_y^2 / sum omega chi |xi|^2,
   // which is 1 for the continuum (<n_x^2 n_y^2> = 1/8 on a circle, 1/15 on a sphere).
   template <int dim>
   double

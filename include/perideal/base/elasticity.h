@@ -8,6 +8,8 @@
 #include <deal.II/base/symmetric_tensor.h>
 #include <deal.II/lac/full_matrix.h>
 
+#include <perideal/base/parameter_utilities.h>
+
 #include <string>
 
 namespace perideal
@@ -23,8 +25,15 @@ namespace perideal
   };
 
   /**
-   * @brief The planar assumption named by a value of a "Planar assumption" entry ("plane
-   * stress" or "plane strain"); three_dimensional when @p dim is 3.
+   * @brief The 2D planar assumptions by the names <Material/Planar assumption> accepts ("plane
+   * stress", "plane strain").
+   */
+  const ParameterUtilities::Choices<PlanarAssumption> &
+  planar_assumption_names();
+
+  /**
+   * @brief The planar assumption named by a value of <Material/Planar assumption>
+   * (planar_assumption_names()); three_dimensional when @p dim is 3.
    */
   PlanarAssumption
   planar_assumption_from_name(const std::string &name, const int dim);
@@ -138,8 +147,18 @@ namespace perideal
     std::string
     summary() const;
 
+    /// The symmetry classes of <Symmetry>.
+    enum class Symmetry
+    {
+      isotropic,
+      cubic,
+      transversely_isotropic,
+      orthotropic,
+      general
+    };
+
   private:
-    std::string                symmetry;
+    Symmetry                   symmetry = Symmetry::isotropic;
     double                     E = 0., nu = 0.;
     dealii::FullMatrix<double> stiffness;
     dealii::Tensor<2, 3>       rotation;

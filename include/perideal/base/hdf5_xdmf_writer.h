@@ -7,6 +7,7 @@
 #include <deal.II/base/data_out_base.h>
 #include <deal.II/base/mpi.h>
 
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -27,18 +28,25 @@ namespace perideal
    *
    * @p merge_vertices merges coincident vertices (right for a mesh, wrong for particles).
    * `<step>` is zero-padded to five digits. Collective on @p comm.
+   *
+   * @p fill_filter, if given, fills the filter instead of
+   * DataOutInterface::write_filtered_data() (which takes the values from the patches, stored
+   * in single precision by deal.II 9.4): ParticleOutput passes its values in double precision.
+   * The data sets are written as doubles either way (XDMF Precision="8").
    */
   template <int dim, int spacedim>
   void
-  write_hdf5_xdmf_step(const dealii::DataOutInterface<dim, spacedim> &data,
-                       const bool                                     has_patches,
-                       const bool                                     merge_vertices,
-                       const MPI_Comm                                 comm,
-                       const std::string                             &directory,
-                       const std::string                             &base_name,
-                       const unsigned int                             step,
-                       const double                                   time,
-                       std::vector<dealii::XDMFEntry>                &entries);
+  write_hdf5_xdmf_step(
+    const dealii::DataOutInterface<dim, spacedim>                   &data,
+    const bool                                                       has_patches,
+    const bool                                                       merge_vertices,
+    const MPI_Comm                                                   comm,
+    const std::string                                               &directory,
+    const std::string                                               &base_name,
+    const unsigned int                                               step,
+    const double                                                     time,
+    std::vector<dealii::XDMFEntry>                                  &entries,
+    const std::function<void(dealii::DataOutBase::DataOutFilter &)> &fill_filter = {});
 } // namespace perideal
 
 #endif

@@ -18,6 +18,12 @@ namespace perideal
    */
   using ParticleVector = dealii::LinearAlgebra::distributed::Vector<double>;
 
+  /**
+   * A distributed vector of FE dofs (owned entries plus ghost entries, the FE region's
+   * partitioner): the FE displacement, forces and masses of every coupled problem.
+   */
+  using FEVector = dealii::LinearAlgebra::distributed::Vector<double>;
+
   using Partitioner = dealii::Utilities::MPI::Partitioner;
 
   /// A distributed sparse matrix (Trilinos Epetra), rows partitioned like the particle dofs.

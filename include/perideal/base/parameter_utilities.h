@@ -9,14 +9,71 @@
 #include <deal.II/base/point.h>
 #include <deal.II/base/tensor.h>
 
+#include <algorithm>
 #include <memory>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace perideal
 {
   namespace ParameterUtilities
   {
+    /**
+     * @brief A small closed choice (STYLE.md, habit 7): its names with their enum values, in
+     * the order of its Patterns::Selection. One table gives the pattern (selection()), the value
+     * of a name (choice()) and the name of a value (choice_name()).
+     */
+    template <typename Enum>
+    using Choices = std::vector<std::pair<std::string, Enum>>;
+
+    /**
+     * @brief The Patterns::Selection of @p choices: their names joined by '|'.
+     */
+    template <typename Enum>
+    std::string
+    selection(const Choices<Enum> &choices)
+    {
+      std::string names;
+      for (const auto &[name, value] : choices)
+        names += (names.empty() ? "" : "|") + name;
+      return names;
+    }
+
+    /**
+     * @brief The value named @p name in @p choices; throws, naming @p entry and the accepted
+     * names, for another name.
+     */
+    template <typename Enum>
+    Enum
+    choice(const Choices<Enum> &choices, const std::string &name, const std::string &entry)
+    {
+      const auto  found = std::find_if(choices.begin(), choices.end(), [&](const auto &c) {
+        return c.first == name;
+      });
+      std::string accepted;
+      for (const auto &c : choices)
+        accepted += (accepted.empty() ? "" : ", ") + c.first;
+      AssertThrow(found != choices.end(),
+                  dealii::ExcMessage("The parameter <" + entry + "> is <" + name +
+                                     ">; accepted: " + accepted + "."));
+      return found->second;
+    }
+
+    /**
+     * @brief The name of @p value in @p choices.
+     */
+    template <typename Enum>
+    const std::string &
+    choice_name(const Choices<Enum> &choices, const Enum value)
+    {
+      const auto found = std::find_if(choices.begin(), choices.end(), [&](const auto &c) {
+        return c.second == value;
+      });
+      Assert(found != choices.end(), dealii::ExcInternalError());
+      return found->first;
+    }
+
     /**
      * @brief Parse a comma-separated list of @p dim numbers into a point; the error names
      * @p entry.

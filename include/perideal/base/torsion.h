@@ -4,6 +4,7 @@
 #ifndef perideal_base_torsion_h
 #define perideal_base_torsion_h
 
+#include <deal.II/base/bounding_box.h>
 #include <deal.II/base/parameter_handler.h>
 #include <deal.II/base/point.h>
 #include <deal.II/base/tensor.h>
@@ -68,6 +69,14 @@ namespace perideal
      */
     std::string
     axis_entry() const;
+
+    /**
+     * @brief Stop, naming the axis entry, unless the axis lies in @p body, the extent in x and y
+     * of the whole body (the particles' lattice cells and the FE mesh together): the twist is
+     * defined for the whole section, so a region of particles away from the axis is accepted.
+     */
+    void
+    check_axis(const dealii::BoundingBox<2> &body) const;
 
     /**
      * @brief The shear strain of the rotation of the sections at @p p (first two coordinates):

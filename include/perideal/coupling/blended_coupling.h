@@ -28,8 +28,6 @@ namespace perideal
   class BlendedCoupling : public CouplingMethod<dim>
   {
   public:
-    using typename CouplingMethod<dim>::FEVector;
-
     /// No parameters of its own (the overlap is <Coupling/Blending function>).
     static void
     declare_parameters(dealii::ParameterHandler &prm);
@@ -43,7 +41,7 @@ namespace perideal
     std::string
     summary() const override;
     const std::vector<bool> &
-    particles_following_fe() const override;
+    slaved_particles() const override;
     void
     interpolate_to_particles(const FEVector &U, ParticleVector &u) const override;
     void

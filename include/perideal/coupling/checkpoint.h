@@ -155,15 +155,15 @@ namespace perideal
     /// What keep() keeps: copies of the stored parts, the bond states, the postprocessors.
     struct Kept
     {
-      std::vector<ParticleVector>                       particle_vectors;
-      std::vector<double>                               energy_density;
-      std::vector<typename CoupledState<dim>::FEVector> fe_vectors;
-      double                                            work = 0., dissipated = 0.;
-      std::vector<std::uint8_t>                         intact;
-      std::vector<double>                               history;
-      std::string                                       postprocessors;
-      RunPosition                                       position;
-      bool                                              valid = false;
+      std::vector<ParticleVector> particle_vectors;
+      std::vector<double>         energy_density;
+      std::vector<FEVector>       fe_vectors;
+      double                      work = 0., dissipated = 0.;
+      std::vector<std::uint8_t>   intact;
+      std::vector<double>         history;
+      std::string                 postprocessors;
+      RunPosition                 position;
+      bool                        valid = false;
     };
 
     std::string  file;

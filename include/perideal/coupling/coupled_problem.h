@@ -41,7 +41,7 @@ namespace perideal
    * acts, 0 where only FE acts) gives, through the method's weights, where FE unknowns and
    * particles exist: particles fill the body (<Discretization/Body>) where the particle weight
    * is positive and within a horizon of it; FE cells where the FE weight vanishes carry
-   * FE_Nothing. The method decides which particles follow the FE field (the blended method:
+   * FE_Nothing. The method decides which particles are slaved to the FE field (the blended method:
    * those inside FE-carrying cells, u = P U), the others are free. Checked before any heavy
    * work: beta in [0, 1] (here), what the method needs of the overlap (its initialize(); the
    * blended method: a transition 0 < beta < 1 at least a horizon wide); PD boundary conditions
@@ -99,7 +99,7 @@ namespace perideal
     particle_displacement() const;
 
     /// The FE displacement after run() (owned entries).
-    const dealii::LinearAlgebra::distributed::Vector<double> &
+    const FEVector &
     fe_displacement() const;
 
     /// The FE region (its mesh and dofs after setup()).
@@ -113,6 +113,16 @@ namespace perideal
     /// beta at @p x (values within 1e-10 of 0 or 1 snapped to them).
     double
     blending(const dealii::Point<dim> &x) const;
+
+    /**
+     * @brief Stop, naming the material model's <Twist axis>, unless its twist axis
+     * (MaterialModel::torsion(), if any) lies in the whole body: the extent in x and y of the
+     * particles' lattice cells and the FE mesh together (Torsion::check_axis()), so that a PD
+     * region away from the axis, e.g. around an edge crack, is accepted. After the particles
+     * are made (setup() calls it); collective.
+     */
+    void
+    check_twist_axis() const;
 
   private:
     /**

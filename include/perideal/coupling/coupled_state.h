@@ -7,6 +7,7 @@
 #include <deal.II/lac/la_parallel_vector.h>
 
 #include <perideal/base/field_layout.h>
+#include <perideal/base/linear_algebra.h>
 #include <perideal/base/problem_settings.h>
 #include <perideal/coupling/coupling_method.h>
 #include <perideal/fem/fe_region.h>
@@ -33,13 +34,11 @@ namespace perideal
   class CoupledState
   {
   public:
-    using FEVector = dealii::LinearAlgebra::distributed::Vector<double>;
-
     /// How an owned particle component moves.
     enum class Motion : unsigned char
     {
-      /// with the FE field (CouplingMethod::particles_following_fe())
-      follows_fe,
+      /// with the FE field (CouplingMethod::slaved_particles())
+      slaved,
       /// by its acceleration (a free particle)
       moves,
       /// by a displacement or velocity condition (a free particle)
@@ -131,8 +130,8 @@ namespace perideal
     };
 
     /**
-     * @brief The kinetic energy of the FE dofs and of the particle components that do not
-     * follow the FE field (lumped masses of the method), summed over the ranks [J].
+     * @brief The kinetic energy of the FE dofs and of the particle components not
+     * slaved to the FE field (lumped masses of the method), summed over the ranks [J].
      */
     KineticEnergy
     kinetic_energy() const;
@@ -209,11 +208,11 @@ namespace perideal
 
     // What the set-up derives, per owned particle component.
     std::vector<Motion> motion;
-    /// Whether any particle (on any rank) follows the FE field.
-    bool particles_follow_fe = false;
+    /// Whether any particle (on any rank) is slaved to the FE field.
+    bool any_particle_slaved = false;
     /// Factors from the internal and the applied force density to the load that does work:
     /// -V_i and 0 on prescribed components (the support balances the internal force), 0 and
-    /// V_i on the others (particles that follow the FE field too: they move with it).
+    /// V_i on the others (particles slaved to the FE field too: they move with it).
     std::vector<double> internal_work_factor, applied_work_factor;
     /// The particles' masses of explicit runs (per owned particle; for free particles).
     std::vector<double> particle_mass;

@@ -57,7 +57,6 @@ namespace perideal
   class CoupledStaticSolver
   {
   public:
-    using FEVector = dealii::LinearAlgebra::distributed::Vector<double>;
     using Settings = typename StaticSolver<dim>::Settings;
 
     /**

@@ -7,6 +7,7 @@
 #include <deal.II/base/parameter_handler.h>
 #include <deal.II/lac/la_parallel_vector.h>
 
+#include <perideal/base/linear_algebra.h>
 #include <perideal/base/plugin_registry.h>
 #include <perideal/base/problem_settings.h>
 #include <perideal/fem/fe_region.h>
@@ -77,10 +78,10 @@ namespace perideal
   /**
    * @brief A method that joins the FE region and the particles of a CoupledProblem
    * (<Coupling/Method>): it owns the coupling. It decides how the two energies share the
-   * overlap, which particles follow the FE field and which are free, how the FE field moves the
-   * particles that follow it (P) and how their forces act on the FE dofs (P^T) in explicit
-   * runs, the masses, the strain energy of the coupled system, and how a quasi-static load
-   * step reaches equilibrium.
+   * overlap, which particles are slaved to the FE field and which are free, how the FE field moves
+   * the particles slaved to it (P) and how their forces act on the FE dofs (P^T) in explicit runs,
+   * the masses, the strain energy of the coupled system, and how a quasi-static load step reaches
+   * equilibrium.
    *
    * The solvers and postprocessors of CoupledProblem (the explicit time loop, the quasi-static
    * load stepping with re-solves while bonds break, the statistics, reactions and output) call
@@ -97,8 +98,6 @@ namespace perideal
   class CouplingMethod
   {
   public:
-    using FEVector = dealii::LinearAlgebra::distributed::Vector<double>;
-
     virtual ~CouplingMethod() = default;
 
     /// Read the method's subsection <Coupling/name> (entered by the caller); none by default.
@@ -136,15 +135,15 @@ namespace perideal
     summary() const = 0;
 
     /**
-     * @brief After initialize(): per owned particle, whether it follows the FE field (its
+     * @brief After initialize(): per owned particle, whether it is slaved to the FE field (its
      * values come from interpolate_to_particles(), its forces act on the FE dofs through
      * add_particle_forces()) or is free (it moves by its own forces and conditions).
      */
     virtual const std::vector<bool> &
-    particles_following_fe() const = 0;
+    slaved_particles() const = 0;
 
     /**
-     * @brief P: overwrite the owned entries of @p u of the particles that follow the FE field
+     * @brief P: overwrite the owned entries of @p u of the particles slaved to the FE field
      * with their values from the FE field @p U (ghost values current); the free particles keep
      * theirs. Call update_ghost_values() on @p u afterwards.
      */
@@ -152,7 +151,7 @@ namespace perideal
     interpolate_to_particles(const FEVector &U, ParticleVector &u) const = 0;
 
     /**
-     * @brief P^T: add to @p F (FE dofs) the nodal forces of the particles that follow the FE
+     * @brief P^T: add to @p F (FE dofs) the nodal forces of the particles slaved to the FE
      * field, from the particles' nodal forces @p f [N] (owned entries; those of free particles
      * are ignored).
      */

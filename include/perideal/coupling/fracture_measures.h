@@ -72,8 +72,8 @@ namespace perideal
     /// Bonds crossing a unit length (2D) or area (3D) of crack, averaged over directions.
     double crossing_density = 0.;
     /// 1 on every owned particle component, 1 on every FE dof (for the sizes).
-    ParticleVector                       particle_ones;
-    typename CoupledState<dim>::FEVector fe_ones;
+    ParticleVector particle_ones;
+    FEVector       fe_ones;
   };
 } // namespace perideal
 

@@ -10,6 +10,7 @@
 #include <deal.II/base/types.h>
 #include <deal.II/lac/la_parallel_vector.h>
 
+#include <perideal/base/linear_algebra.h>
 #include <perideal/pd/particle_system.h>
 
 #include <string>
@@ -77,7 +78,7 @@ namespace perideal
     std::vector<unsigned int>                    components, start, particles_of;
     std::vector<double>                          weights;
     /// The fitted values, owned like the FE dofs with the fits of other ranks' dofs as ghosts.
-    dealii::LinearAlgebra::distributed::Vector<double> fitted;
+    FEVector fitted;
   };
 } // namespace perideal
 

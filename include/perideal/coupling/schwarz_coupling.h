@@ -49,8 +49,6 @@ namespace perideal
   class SchwarzCoupling : public CouplingMethod<dim>
   {
   public:
-    using typename CouplingMethod<dim>::FEVector;
-
     /// How the interface values are updated.
     enum class Relaxation
     {
@@ -76,7 +74,7 @@ namespace perideal
     std::string
     summary() const override;
     const std::vector<bool> &
-    particles_following_fe() const override;
+    slaved_particles() const override;
     void
     interpolate_to_particles(const FEVector &U, ParticleVector &u) const override;
     /// Explicit dynamics only, which check_solver() refuses.

@@ -22,7 +22,7 @@ namespace perideal
    * particles), columns FE dofs (partitioned like the dofs). A particle inside a cell with FE
    * unknowns is *slaved*: its rows hold the shape functions of that cell (each
    * particle is given to exactly one cell, so every slaved row sums to 1 per component). A
-   * particle component follows the FE component of the same name; a rotation the FE field
+   * particle component is slaved to the FE component of the same name; a rotation the FE field
    * lacks (a micropolar model coupled to elasticity) follows half the curl of the FE
    * displacement, theta = 1/2 curl U (2D: theta_z = 1/2 (dU_y/dx - dU_x/dy)), whose rows are
    * the shape gradients of the cell (they sum to 0), so that P^T turns a moment m on a slaved
@@ -36,8 +36,6 @@ namespace perideal
   class TransferOperator
   {
   public:
-    using FEVector = dealii::LinearAlgebra::distributed::Vector<double>;
-
     /**
      * @brief Build P for the current particle positions (reference configuration), with the
      * unknowns @p layout per particle and the FE region's per node. The two must name the same

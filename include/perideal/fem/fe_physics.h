@@ -133,6 +133,14 @@ namespace perideal
      */
     virtual std::string
     summary() const = 0;
+
+    /**
+     * @brief Whether the physics took its constants from the particles' material subsection
+     * (false by default): the particles must then have one set of constants
+     * (MaterialModel::nonuniform_constants(), checked by the coupled problem).
+     */
+    virtual bool
+    shares_particle_material() const;
   };
 
   template <int dim>
@@ -149,6 +157,13 @@ namespace perideal
                                 const std::vector<double> &,
                                 dealii::Vector<double> &) const
   {}
+
+  template <int dim>
+  bool
+  FEPhysics<dim>::shares_particle_material() const
+  {
+    return false;
+  }
 
   template <int dim>
   std::optional<std::pair<dealii::Point<dim>, std::string>>

@@ -155,14 +155,14 @@ namespace perideal
      * set_interior_values(), in its order, summed over the ranks (collective).
      */
     std::vector<double>
-    interior_reactions(const dealii::LinearAlgebra::distributed::Vector<double> &residual) const;
+    interior_reactions(const FEVector &residual) const;
 
     /**
      * @brief The external load f(t): load conditions, body force and the physics' own load
      * (FEPhysics::add_cell_load(): the twist of torsion), each weighted by 1 - beta.
      */
     void
-    assemble_load(const double time, dealii::LinearAlgebra::distributed::Vector<double> &f) const;
+    assemble_load(const double time, FEVector &f) const;
 
     /**
      * @brief Set the prescribed components at @p time: of @p u for displacement (value)
@@ -170,9 +170,7 @@ namespace perideal
      * the caller integrates u from v).
      */
     void
-    prescribe(const double                                        time,
-              dealii::LinearAlgebra::distributed::Vector<double> &u,
-              dealii::LinearAlgebra::distributed::Vector<double> &v) const;
+    prescribe(const double time, FEVector &u, FEVector &v) const;
 
     /**
      * @brief Whether the dof is prescribed by a displacement or velocity (value or rate)
@@ -187,8 +185,7 @@ namespace perideal
      * @p mass (e.g. with the particles' masses added in a coupled problem).
      */
     double
-    stable_time_step(
-      const dealii::LinearAlgebra::distributed::Vector<double> *mass = nullptr) const;
+    stable_time_step(const FEVector *mass = nullptr) const;
 
     /**
      * @brief Per owned dof, sum_j |K_ij x_j| (with ghost values of @p x), or sum_j |K_ij|
@@ -196,7 +193,7 @@ namespace perideal
      * cancellation between neighbours.
      */
     std::vector<double>
-    absolute_row_sums(const dealii::LinearAlgebra::distributed::Vector<double> *x = nullptr) const;
+    absolute_row_sums(const FEVector *x = nullptr) const;
 
     /**
      * @brief Strain energy 1/2 u^T K u and reactions sum over the dofs of every displacement
@@ -204,9 +201,9 @@ namespace perideal
      * component c of the layout in entry c).
      */
     double
-    strain_energy(const dealii::LinearAlgebra::distributed::Vector<double> &u) const;
+    strain_energy(const FEVector &u) const;
     std::vector<std::vector<double>>
-    reactions(const dealii::LinearAlgebra::distributed::Vector<double> &residual) const;
+    reactions(const FEVector &residual) const;
 
     /**
      * @brief The physics' section integrals (FEPhysics::integral_names(), e.g. the torque and
@@ -214,7 +211,7 @@ namespace perideal
      * weighted by 1 - beta (collective).
      */
     std::vector<double>
-    section_integrals(const dealii::LinearAlgebra::distributed::Vector<double> &u) const;
+    section_integrals(const FEVector &u) const;
 
     /**
      * @brief Write the field (translations as the vector 'displacement', other components
@@ -222,11 +219,11 @@ namespace perideal
      * `<directory>/<base_name>_<step>.h5` plus `<base_name>.xdmf` (nothing without FE unknowns).
      */
     void
-    write_output(const std::string                                        &directory,
-                 const std::string                                        &base_name,
-                 const unsigned int                                        step,
-                 const double                                              time,
-                 const dealii::LinearAlgebra::distributed::Vector<double> &u);
+    write_output(const std::string &directory,
+                 const std::string &base_name,
+                 const unsigned int step,
+                 const double       time,
+                 const FEVector    &u);
 
     /**
      * @brief The XDMF records of the steps write_output() wrote so far, packed: a checkpoint
@@ -242,7 +239,7 @@ namespace perideal
 
     /// A vector with the layout of the solution (owned + ghosted dofs).
     void
-    initialize_vector(dealii::LinearAlgebra::distributed::Vector<double> &vector) const;
+    initialize_vector(FEVector &vector) const;
 
     /// Whether the parameters give a mesh (<Mesh file> or <Generator>): otherwise the problem
     /// has no FE region.
@@ -261,8 +258,7 @@ namespace perideal
     /// The nodal interpolation of @p function (one component per component of the layout) into
     /// @p vector (owned entries).
     void
-    interpolate(const dealii::Function<dim>                        &function,
-                dealii::LinearAlgebra::distributed::Vector<double> &vector) const;
+    interpolate(const dealii::Function<dim> &function, FEVector &vector) const;
 
     /// Per component of the layout, which owned dofs belong to it (the constant modes: the
     /// translations of elasticity, the constant of a scalar field; the near-null space of AMG).
@@ -282,7 +278,7 @@ namespace perideal
     get_fe_collection() const;
     const SparseMatrix &
     stiffness_matrix() const;
-    const dealii::LinearAlgebra::distributed::Vector<double> &
+    const FEVector &
     lumped_mass() const;
     /// The physics (after parse_parameters()).
     const FEPhysics<dim> &
@@ -384,16 +380,16 @@ namespace perideal
     std::vector<std::pair<dealii::types::boundary_id, dealii::Point<2>>> circular_boundaries;
 
     // State.
-    WeightFunction                                     fe_weight;
-    dealii::parallel::distributed::Triangulation<dim>  triangulation;
-    dealii::hp::FECollection<dim>                      fe_collection;
-    dealii::DoFHandler<dim>                            dof_handler;
-    dealii::IndexSet                                   owned_dofs, relevant_dofs;
-    dealii::AffineConstraints<double>                  hanging_constraints;
-    SparseMatrix                                       stiffness;
-    dealii::LinearAlgebra::distributed::Vector<double> mass;
-    std::vector<bool>                                  prescribed;
-    std::vector<PrescribedDof>                         prescribed_dofs;
+    WeightFunction                                    fe_weight;
+    dealii::parallel::distributed::Triangulation<dim> triangulation;
+    dealii::hp::FECollection<dim>                     fe_collection;
+    dealii::DoFHandler<dim>                           dof_handler;
+    dealii::IndexSet                                  owned_dofs, relevant_dofs;
+    dealii::AffineConstraints<double>                 hanging_constraints;
+    SparseMatrix                                      stiffness;
+    FEVector                                          mass;
+    std::vector<bool>                                 prescribed;
+    std::vector<PrescribedDof>                        prescribed_dofs;
     /// The dofs of set_interior_values() (global) and, for those owned, local index and value.
     std::vector<dealii::types::global_dof_index> interior_dofs;
     std::vector<std::pair<unsigned int, double>> interior_values;

@@ -23,11 +23,11 @@ namespace perideal
    * Force density rho u_tt = int lambda(xi) xi (xi . eta) dx' with the micromodulus
    * lambda(xi) = omega(|xi|)/|xi|^2 Lambda_ijkl n_i n_j n_k n_l, omega = 1/|xi|, n = xi/|xi|,
    * eta = u' - u. Discretely the pair force is k_b s n with the linearized stretch
-   * s = n . eta / |xi| and k_b = c(n_b) G beta V_i V_j, c(n) = Lambda_ijkl n_i n_j n_k n_l the
-   * direction factor computed per bond at set-up (G surface correction, beta partial volume);
+   * s = n . eta / |xi| and k_b = c(n_b) G chi V_i V_j, c(n) = Lambda_ijkl n_i n_j n_k n_l the
+   * direction factor computed per bond at set-up (G surface correction, chi partial volume);
    * pair energy k_b s^2 |xi| / 2. Lambda (completely symmetric) follows from the elasticity
    * tensor C of the entries of ElasticMaterial (the FE side's: symmetry class, constants,
-   * orientation) by C = M Lambda, C_ijkl = 1/2 sum_b lambda_b xi_i xi_j xi_k xi_l beta V_j:
+   * orientation) by C = M Lambda, C_ijkl = 1/2 sum_b lambda_b xi_i xi_j xi_k xi_l chi V_j:
    * - "discrete" calibration: M from the neighbour sums of an interior particle, so that a
    *   homogeneous deformation reproduces C there to round-off;
    * - "continuum": M from the integrals over the ball (the note's closed form); its error on
@@ -143,6 +143,11 @@ namespace perideal
     bool
     has_stiffness_fit() const override;
 
+    /// With a <Grains file>: "<Material/anisotropic bond based/Grains file> makes the
+    /// particles a polycrystal".
+    std::string
+    nonuniform_constants() const override;
+
     /**
      * @brief The micromodulus tensor Lambda [N/m^6] (after initialize()).
      */
@@ -195,7 +200,7 @@ namespace perideal
     std::vector<anisotropic_micromodulus::ComponentsOf<dim>> grain_Lambda;
     std::vector<AnisotropicFractureEnergy<dim>>              grain_fracture;
     std::vector<unsigned int>                                particle_grain;
-    /// k_b = c(n_b) G beta V_i V_j and the breaking factor per bond.
+    /// k_b = c(n_b) G chi V_i V_j and the breaking factor per bond.
     std::vector<double> bond_coefficient, bond_break_factor;
     StiffnessFitReport  fit_report;
     /// The force kernel's data (bonds in SIMD blocks, per-lane k_b, per-class breaking

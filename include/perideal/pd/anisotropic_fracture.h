@@ -26,7 +26,7 @@ namespace perideal
    *   g(n) = sum_a g_a (n . t_a)^2,
    * t_a the material axes in the body's dimension (in 2D the two axes in the plane). The
    * energy of a crack with normal m is the critical energy of the bonds that cross it,
-   * G(m) ~ sum_{xi . m > 0} (xi . m) w_b |xi_b| g(n_b) (w_b = beta V_j of one family; a bond's
+   * G(m) ~ sum_{xi . m > 0} (xi . m) w_b |xi_b| g(n_b) (w_b = chi V_j of one family; a bond's
    * critical energy k s0(n)^2 |xi| / 2 is proportional to w_b |xi_b| g(n_b)), linear in g:
    * G(t_b) = sum_a A_ba g_a. The g_a
    * solve A g = r (A 1) component-wise, so that G(t_b) / G_isotropic(t_b) = r_b:

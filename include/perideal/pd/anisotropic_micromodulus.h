@@ -109,7 +109,7 @@ namespace perideal
 
     /**
      * @brief The bonds of one interior particle of a lattice: relative positions xi and
-     * weights beta V_j (partial-volume factor times neighbour volume).
+     * weights chi V_j (partial-volume factor times neighbour volume).
      */
     template <int dim>
     struct Family

@@ -21,10 +21,10 @@ namespace perideal
    *
    * The 3D bond-based model of a plate, averaged through its thickness with the out-of-plane
    * displacement eliminated by the zero mean out-of-plane traction, is an ordinary state-based
-   * 2D model. Per unit volume, with eta = u(x') - u(x) and w = beta V_j:
+   * 2D model. Per unit volume, with eta = u(x') - u(x) and w = chi V_j:
    *   W_i = 1/4 sum_j lambda_0(xi) (xi . eta)^2 w - 1/2 B_i A_i^2,
    *   A_i = sum_j lambda_2(xi) xi . eta w / B_i  (= -eps_33, the out-of-plane strain),
-   *   f_i V_i = sum_j beta V_i V_j xi [lambda_0 (xi . eta) - lambda_2 (A_i + A_j)],
+   *   f_i V_i = sum_j chi V_i V_j xi [lambda_0 (xi . eta) - lambda_2 (A_i + A_j)],
    * lambda_0 = c_0(n)/|xi|^3 with c_0(n) = Lambda0_abcd n_a n_b n_c n_d (the 2D anisotropic
    * bond-based kernel), lambda_2 = M_ab n_a n_b / |xi| and B_i = C_3333 m_i / m (m_i = sum_j |xi|
    * w, its interior or continuum value m: the note's per-node B_i = sum_j lambda_4 w with
@@ -160,8 +160,8 @@ namespace perideal
     double                                    C33 = 0.;
     double       lattice_error = 0., calibration_residual = 0., symbol_min = 0.;
     ModelContext context;
-    /// Per bond (BondList entries of owned rows): k_b = c_0(n) beta V_i V_j (times the
-    /// coupling's energy weight) and g_b = M:nn beta V_i V_j.
+    /// Per bond (BondList entries of owned rows): k_b = c_0(n) chi V_i V_j (times the
+    /// coupling's energy weight) and g_b = M:nn chi V_i V_j.
     std::vector<double> k0, g;
     /// B_i of the owned and ghost particles.
     std::vector<double> B;

@@ -16,8 +16,8 @@ namespace perideal
    * w (field layout: the scalar "w").
    *
    * Bond slope r = (w_j - w_i)/|xi|; pair force c G r on i (its negative on j), with G the
-   * surface-correction factor; the force density on i is sum_j c G r beta V_j (beta the
-   * partial-volume factor), W_i = 1/4 sum_j c G r^2 |xi| beta V_j. The micromodulus follows
+   * surface-correction factor; the force density on i is sum_j c G r chi V_j (chi the
+   * partial-volume factor), W_i = 1/4 sum_j c G r^2 |xi| chi V_j. The micromodulus follows
    * from the shear modulus mu by energy matching with W = mu |grad w|^2 / 2 (seed eq. 40):
    *  - 2D (the cross-section of a prismatic body of thickness h): c = 6 mu / (pi h delta^3);
    *  - 3D (the same Laplace-type energy of a scalar field in a volume, doc/theory/models.md):
@@ -87,7 +87,7 @@ namespace perideal
                     std::vector<double>       &per_particle) const override;
 
     /**
-     * @brief One row (w_j - w_i) per intact bond with weight c G beta V_i V_j / |xi|; defined
+     * @brief One row (w_j - w_i) per intact bond with weight c G chi V_i V_j / |xi|; defined
      * in source/pd/model_linearization.cc.
      */
     void
@@ -109,7 +109,7 @@ namespace perideal
     using AntiplaneModel<dim>::context;
 
     double c = 0.;
-    /// c G beta V_i V_j per bond (the pair force per unit slope).
+    /// c G chi V_i V_j per bond (the pair force per unit slope).
     std::vector<double> bond_coefficient;
     /// The force kernel's data (bonds in SIMD blocks, kernel-order fields): defined in
     /// antiplane_bond_based.cc, compiled with the kernel options (source/pd/CMakeLists.txt).

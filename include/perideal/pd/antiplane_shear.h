@@ -79,6 +79,12 @@ namespace perideal
     has_prestrain() const override;
 
     /**
+     * @brief The twist (<Twist per unit length>, <Twist axis>) if one is given, else nullptr.
+     */
+    const Torsion *
+    torsion() const override;
+
+    /**
      * @brief "torque", "torsion_energy" with a twist.
      */
     std::vector<std::string>
@@ -134,7 +140,7 @@ namespace perideal
     antiplane_summary() const;
 
     /**
-     * @brief Check, under torsion, that the section holds the horizon and the axis
+     * @brief Check, under torsion, that the section holds the horizon
      * (AntiplaneTorsion::check_section()), and return the twist fields p = psi (x - x0),
      * q = psi (y - y0) per local particle (empty without a twist).
      */

@@ -19,22 +19,22 @@ namespace perideal
    *
    * The PD shear angles (seed eqs. 23, 56) are a nonlocal gradient with the influence function
    * omega = delta/|xi|:
-   *   r_i = b g_i (.) sum_j omega (w_j - w_i) n V_j beta,   n = xi/|xi|,
+   *   r_i = b g_i (.) sum_j omega (w_j - w_i) n V_j chi,   n = xi/|xi|,
    * with b = 2/(pi h delta^3) in 2D (seed eq. 25, h the thickness) and 9/(4 pi delta^4) in 3D,
    * so that b delta int_H n_a^2 dV = 1 (r = grad w for a linear field in a full horizon), and
    * g_i the per-point surface-correction factors of the directions (.: componentwise; 1 without
    * correction). The energy density is that of the seed (eq. 22, a = mu/2) plus an optional
    * fraction alpha ("Stabilization") of the bond-based energy (AntiplaneBondBased):
-   *   W_i = (1 - alpha) mu/2 |r_i|^2 + alpha 1/4 sum_j c G r_ij^2 |xi| V_j beta,
+   *   W_i = (1 - alpha) mu/2 |r_i|^2 + alpha 1/4 sum_j c G r_ij^2 |xi| V_j chi,
    * r_ij = (w_j - w_i)/|xi| the bond slope. Both terms equal mu |grad w|^2 / 2 for a uniform
    * gradient, so alpha changes nothing for uniform fields; it removes the zero-energy modes of
    * the first term, which sees only a weighted mean of the slopes (an odd-even field
    * (-1)^(i+j+k) on the lattice has r = 0 at every particle with a symmetric family). The force
    * density is -dE/dw_i / V_i of E = sum_i W_i V_i:
-   *   f_i = sum_j [omega (s_i + s_j) . n + alpha c G r_ij] V_j beta,   s = (1 - alpha) mu b g (.)
+   *   f_i = sum_j [omega (s_i + s_j) . n + alpha c G r_ij] V_j chi,   s = (1 - alpha) mu b g (.)
    * r, i.e. the seed's eq. 55 with the factor b that the seed's eqs. 28-30 and 55 omit (seed note
    * 000, sec. 7 T1; doc/theory/models.md). The surface correction is the seed's per point:
-   * g_i,a = 1 / (b sum_j omega x_a n_a V_j beta), the ratio of the classical to the PD shear
+   * g_i,a = 1 / (b sum_j omega x_a n_a V_j chi), the ratio of the classical to the PD shear
    * angle for w = x_a over the family without its pre-cracked bonds (crack faces are free
    * faces), so that r_i,a = zeta for w = zeta x_a at every particle (the cross terms near
    * corners stay); the bond-based term takes the energy method
@@ -53,7 +53,7 @@ namespace perideal
    * shear modulus mu_i of each particle, W_i = (1 - alpha) mu_i/2 |r_i|^2 (the variationally
    * consistent form; the seed gives its eq. 60 for the parameter a = mu/2 of a bond, which the
    * nonlocal gradient of this model does not have, seed note 000, sec. 7 A9), so the force
-   * density reads f_i = sum_j omega (s_i + s_j) . n V_j beta with s = (1 - alpha) mu b g (.) r of
+   * density reads f_i = sum_j omega (s_i + s_j) . n V_j chi with s = (1 - alpha) mu b g (.) r of
    * each end; the bond-based term takes the series rule of AntiplaneBondBased. The critical
    * slope takes the model's <Shear modulus>.
    */
@@ -105,7 +105,7 @@ namespace perideal
     /**
      * @brief Per owned particle and direction a the row r_i,a (weight (1 - alpha) mu beta_i V_i,
      * beta_i the energy weight), and per intact bond the row w_j - w_i of the bond-based term
-     * (weight alpha c G beta V_i V_j / |xi|); defined in source/pd/model_linearization.cc.
+     * (weight alpha c G chi V_i V_j / |xi|); defined in source/pd/model_linearization.cc.
      */
     void
     linearize(const ParticleSystem<dim> &particles, LinearizedModel &linearized) const override;
@@ -150,9 +150,9 @@ namespace perideal
     double c       = 0.;
     /// (1 - alpha) mu_i per owned particle (mu_i the shear modulus at the particle).
     std::vector<double> state_modulus;
-    /// delta beta V_i V_j per bond (omega |xi| beta V_i V_j: what r and the force share).
+    /// delta chi V_i V_j per bond (omega |xi| chi V_i V_j: what r and the force share).
     std::vector<double> state_coefficient;
-    /// alpha c G beta V_i V_j per bond (the bond-based term's pair force per unit slope).
+    /// alpha c G chi V_i V_j per bond (the bond-based term's pair force per unit slope).
     std::vector<double> bond_coefficient;
     /// b g_i,a per owned particle and direction (r_i,a = this times the sum over j / V_i).
     std::vector<double> angle_factor;

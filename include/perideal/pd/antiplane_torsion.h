@@ -4,6 +4,7 @@
 #ifndef perideal_pd_antiplane_torsion_h
 #define perideal_pd_antiplane_torsion_h
 
+#include <deal.II/base/bounding_box.h>
 #include <deal.II/base/tensor.h>
 
 #include <perideal/base/linear_algebra.h>
@@ -24,14 +25,22 @@ namespace perideal
   namespace AntiplaneTorsion
   {
     /**
+     * @brief The extent in x and y of the particles' lattice cells (their positions widened by
+     * half a lattice spacing), over all ranks (collective).
+     */
+    template <int dim>
+    dealii::BoundingBox<2>
+    section_box(const ParticleSystem<dim> &particles);
+
+    /**
      * @brief Stop, naming <Discretization/Horizon factor> and <Discretization/Lattice
-     * spacing>, unless the section (the particles' lattice cells) is at least two horizons
-     * wide in x and in y; stop, naming the twist axis entry of @p torsion, unless the axis lies
-     * in the particles' bounding box (collective).
+     * spacing>, unless the particles' section (section_box()) is at least two horizons wide in
+     * x and in y (collective). The twist axis is checked against the whole body
+     * (Torsion::check_axis()), not here: a PD region away from the axis is accepted.
      */
     template <int dim>
     void
-    check_section(const ParticleSystem<dim> &particles, const Torsion &torsion);
+    check_section(const ParticleSystem<dim> &particles);
 
     /**
      * @brief The fixed fields of TwistedSlopePairLaw per local (owned and ghost) particle, two
@@ -43,8 +52,8 @@ namespace perideal
 
     /**
      * @brief The gradient of the scalar field @p w (ghost values current) at each owned
-     * particle by least squares over its intact bonds (weights beta V_j):
-     *   grad w_i = K_i^-1 sum_j beta V_j xi (w_j - w_i),  K_i = sum_j beta V_j xi (x) xi,
+     * particle by least squares over its intact bonds (weights chi V_j):
+     *   grad w_i = K_i^-1 sum_j chi V_j xi (w_j - w_i),  K_i = sum_j chi V_j xi (x) xi,
      * exact for linear fields at every particle whose intact bonds span the plane, boundary
      * particles included (the shape tensor of correspondence models, Silling et al. 2007,
      * J. Elasticity 88, eq. 15, with influence 1). Zero where K_i is singular.

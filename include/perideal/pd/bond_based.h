@@ -16,8 +16,8 @@ namespace perideal
    *
    * Pairwise force density f = c G s (xi + eta)/|xi + eta| with stretch
    * s = (|xi + eta| - |xi|)/|xi| and G the surface-correction factor of the bond; the force on
-   * particle i is sum_j f V_j beta_ij (beta the partial-volume factor). Strain-energy density
-   * W_i = 1/4 sum_j c G s^2 |xi| V_j beta_ij. The micromodulus follows from the Young's modulus
+   * particle i is sum_j f V_j chi_ij (chi the partial-volume factor). Strain-energy density
+   * W_i = 1/4 sum_j c G s^2 |xi| V_j chi_ij. The micromodulus follows from the Young's modulus
    * by energy matching (seed 002, eqs. 4.107 and 5.164; seed note 002, sec. 2.3):
    *  - 3D: c = 18 K / (pi delta^4) = 12 E / (pi delta^4), implied nu = 1/4;
    *  - 2D plane stress: c = 9 E / (pi h delta^3), implied nu = 1/3;
@@ -62,7 +62,7 @@ namespace perideal
     /**
      * @brief The energy of the bonds broken since the last call, as
      * MaterialModel::released_energy() defines it: the sum over BondList::newly_broken of the
-     * bond energy k s^2 |xi| / 2 at @p u (k = c G beta V_i V_j, the pair energy of both ends, s
+     * bond energy k s^2 |xi| / 2 at @p u (k = c G chi V_i V_j, the pair energy of both ends, s
      * the stretch), each times its share on this rank; no force evaluation, no communication.
      */
     double
@@ -111,7 +111,7 @@ namespace perideal
     double       youngs_modulus = 0.;
     ModelContext context;
     double       c = 0.;
-    /// c G beta V_i V_j per bond (the pair force per unit stretch).
+    /// c G chi V_i V_j per bond (the pair force per unit stretch).
     std::vector<double> bond_coefficient;
     /// What the stiffness fit achieved (<Discretization/Surface correction method>).
     StiffnessFitReport fit_report;

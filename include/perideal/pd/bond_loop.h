@@ -297,7 +297,7 @@ namespace perideal
    * @brief The pair law of the bond-based energy of a scalar field (the antiplane models):
    * slope r (BondSlope) as its strain, pair force k r on the particle side (-k r on the
    * neighbour) and, if @p with_energy, the pair energy k r^2 |xi| / 4 at both ends, with k the
-   * per-lane coefficient (c G beta V_i V_j); a bond breaks where |r| exceeds the critical slope.
+   * per-lane coefficient (c G chi V_i V_j); a bond breaks where |r| exceeds the critical slope.
    * The law does not depend on the bond's orientation. A scalar law that breaks bonds by their
    * slope derives from it and adds its own outputs and pair().
    */

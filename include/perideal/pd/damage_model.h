@@ -76,7 +76,7 @@ namespace perideal
   };
 
   /**
-   * @brief Damage index of each owned particle: phi_i = 1 - sum_j mu_ij V_j beta / sum_j V_j beta
+   * @brief Damage index of each owned particle: phi_i = 1 - sum_j mu_ij V_j chi / sum_j V_j chi
    * with mu_ij = 1 for intact bonds (seed note 002, sec. 4.2).
    */
   template <int dim>

@@ -51,6 +51,10 @@ namespace perideal
     unsigned int
     size() const;
 
+    /// Whether a <Grains file> is given (the particles are then a polycrystal).
+    bool
+    has_file() const;
+
     /// The rotation of grain @p g (applied to the material's axes).
     const dealii::Tensor<2, 3> &
     rotation(const unsigned int g) const;

@@ -15,12 +15,12 @@ namespace perideal
    * @brief The linear peridynamic solid (Silling, Epton, Weckner, Xu & Askari 2007,
    * J. Elasticity 88, sec. 15), in 3D and in 2D plane stress and plane strain.
    *
-   * With extension e = |xi + eta| - |xi|, weighted volume m_i = sum_j omega |xi|^2 V_j beta and
-   * dilatation theta_i = (n/m_i) sum_j omega |xi| e V_j beta (n = dim), the energy density is
-   * W_i = k theta_i^2 / 2 + (alpha_i / 2) sum_j omega (e - theta_i |xi| / n)^2 V_j beta with
+   * With extension e = |xi + eta| - |xi|, weighted volume m_i = sum_j omega |xi|^2 V_j chi and
+   * dilatation theta_i = (n/m_i) sum_j omega |xi| e V_j chi (n = dim), the energy density is
+   * W_i = k theta_i^2 / 2 + (alpha_i / 2) sum_j omega (e - theta_i |xi| / n)^2 V_j chi with
    * alpha_i = mu n (n + 2) / m_i. The scalar force state is
    * t_ij = (n k - (n + 2) mu) omega |xi| theta_i / m_i + alpha_i omega e, and the force density
-   * on i is sum_j (t_ij + t_ji) (xi + eta)/|xi + eta| V_j beta. Here k is the bulk modulus of the
+   * on i is sum_j (t_ij + t_ji) (xi + eta)/|xi + eta| V_j chi. Here k is the bulk modulus of the
    * represented dimension: K = E / (3 (1 - 2 nu)) in 3D, lambda + mu in plane strain and
    * E / (2 (1 - nu)) in plane stress; these reduce to Silling et al. (3 K, 15 mu / m) in 3D and
    * reproduce W = k (tr eps)^2 / 2 + mu eps_dev : eps_dev for any homogeneous strain inside
@@ -113,7 +113,7 @@ namespace perideal
     ModelContext                       context;
     double                             bulk_modulus  = 0.;
     double                             shear_modulus = 0.;
-    /// omega beta V_i V_j per bond.
+    /// omega chi V_i V_j per bond.
     std::vector<double> pair_weight;
     /// Weighted volume per local particle (owned and ghost).
     ParticleVector weighted_volume;

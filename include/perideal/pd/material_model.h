@@ -12,6 +12,7 @@
 #include <perideal/base/linear_algebra.h>
 #include <perideal/base/plugin_registry.h>
 #include <perideal/base/region.h>
+#include <perideal/base/torsion.h>
 #include <perideal/pd/particle_system.h>
 
 #include <string>
@@ -310,6 +311,23 @@ namespace perideal
     has_prestrain() const;
 
     /**
+     * @brief The Saint-Venant twist the model carries (Torsion: its axis is checked against
+     * the whole body, particles and FE mesh, by the coupled problem), nullptr for none (the
+     * default).
+     */
+    virtual const Torsion *
+    torsion() const;
+
+    /**
+     * @brief Why one set of elastic constants does not describe every particle (a
+     * polycrystal's grains: "<Material/.../Grains file> makes the particles a polycrystal"),
+     * empty if it does (the default): an FE region cannot then share the particles' constants
+     * (<Finite elements/Elasticity/Same material as the particles>).
+     */
+    virtual std::string
+    nonuniform_constants() const;
+
+    /**
      * @brief The names of the section integrals the model computes from the particles' field
      * (statistics columns pd_<name>: the torque and strain energy per unit length of torsion);
      * none by default.
@@ -375,10 +393,10 @@ namespace perideal
   };
 
   /**
-   * @brief The pair coefficients k_b = c G beta V_i V_j of the bonds of a bond-based model with
+   * @brief The pair coefficients k_b = c G chi V_i V_j of the bonds of a bond-based model with
    * micromodulus @p micromodulus (PMB, antiplane): with the surface-correction factors G and
    * the coupling's energy weights (BondList::surface_factor, BondList::energy_weight) if
-   * @p with_surface_factor, without them (G = 1) otherwise; beta the partial-volume factor.
+   * @p with_surface_factor, without them (G = 1) otherwise; chi the partial-volume factor.
    * @p coefficient is sized like the bond list (the entries of owned rows are set).
    */
   template <int dim>

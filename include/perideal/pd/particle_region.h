@@ -96,6 +96,10 @@ namespace perideal
     MaterialModel<dim> &
     material();
 
+    /// The material model (after parse_parameters()).
+    const MaterialModel<dim> &
+    material() const;
+
     /// The boundary conditions of the particles.
     BoundaryConditions<dim> &
     boundary_conditions();

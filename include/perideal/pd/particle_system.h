@@ -37,7 +37,8 @@ namespace perideal
     std::vector<unsigned int> neighbor;
     /// Reference bond length |xi| [m].
     std::vector<double> length;
-    /// Partial-volume factor of the bond (1 inside delta - dx/2, then (delta + dx/2 - |xi|)/dx).
+    /// Partial-volume factor chi of the bond (1 inside delta - dx/2, then (delta + dx/2 -
+    /// |xi|)/dx); beta is the coupling's blending weight.
     std::vector<double> volume_factor;
     /// Surface-correction factor (1 until a model computes it).
     std::vector<double> surface_factor;
@@ -195,7 +196,7 @@ namespace perideal
     partial_volume_factor(const double r) const;
     /**
      * @brief The family of an interior particle of the lattice, whatever the body: the lattice
-     * vectors @p xi of the bonds the search finds and their weights beta V_j (partial-volume
+     * vectors @p xi of the bonds the search finds and their weights chi V_j (partial-volume
      * factor times dx^dim, times the thickness in 2D). For lattice calibrations.
      */
     void

@@ -39,7 +39,7 @@ namespace perideal
 
   /**
    * @brief The energy of a bond under a homogeneous strain e at one of its ends, per unit
-   * beta V_i V_j (partial-volume factor and volumes): e:H:e / 2 with
+   * chi V_i V_j (partial-volume factor and volumes): e:H:e / 2 with
    * H = axial a a^T + shear sum_k r_k^T r_k in Voigt notation, i.e. axial (n.e.n)^2 / 2 +
    * shear |e.n|^2 / 2 (n = xi/|xi|); a function of the bond vector xi (its length, and its
    * direction for an anisotropic micromodulus) that sets axial and shear.
@@ -53,7 +53,7 @@ namespace perideal
    *
    * The elasticity tensor of particle i is D_i V_i = sum_j G_b beta_b V_i V_j H_b (@p law of
    * the bond vector); the interior's D is that of the lattice family
-   * (ParticleSystem::lattice_family(): beta V_j per neighbour).
+   * (ParticleSystem::lattice_family(): chi V_j per neighbour).
    * The factors G_b = 1 + h_b . (lambda_i + lambda_j), h_b the entries of H_b, are the
    * smallest change of the bonds that gives every owned particle the interior's D, in the
    * least-squares sense rho sum_b (G_b - 1)^2 + sum_i |D_i - D|^2 with rho = 1e-2 of the mean

@@ -83,7 +83,7 @@ namespace perideal
                         const double                 thickness);
 
     /**
-     * @brief The lattice sums of a family (relative positions @p xi, weights beta V_j):
+     * @brief The lattice sums of a family (relative positions @p xi, weights chi V_j):
      * D_11 = C_N a_11 + C_theta b_11 and D_12 = C_N a_12 + C_theta b_12 for a homogeneous
      * strain with theta = 0; returns {a_11, b_11, a_12, b_12}.
      */
@@ -248,7 +248,7 @@ namespace perideal
     /**
      * @brief Per bond the rows of its stretch (weight k C_N / |xi|), of its shear strains
      * (dim - 1 rows, weight 12 k C_theta / |xi|) and of its bending rotations (weight
-     * k C_B / |xi|, if C_B > 0), k = G beta V_i V_j.
+     * k C_B / |xi|, if C_B > 0), k = G chi V_i V_j.
      */
     void
     linearize(const ParticleSystem<dim> &particles, LinearizedModel &linearized) const override;
@@ -284,7 +284,7 @@ namespace perideal
     Timoshenko::Stiffness   bond_stiffness;
     /// {D_11, D_12, D_66} of the interior lattice (for the summary).
     std::array<double, 3> lattice_moduli{};
-    /// G beta V_i V_j per bond.
+    /// G chi V_i V_j per bond.
     std::vector<double> bond_coefficient;
     /// What the stiffness fit achieved (<Discretization/Surface correction method>).
     StiffnessFitReport fit_report;

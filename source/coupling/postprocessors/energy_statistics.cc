@@ -74,7 +74,7 @@ namespace perideal
       }
     else
       {
-        // Kinetic energy of the FE dofs and the components that do not follow the FE field;
+        // Kinetic energy of the FE dofs and the components not slaved to the FE field;
         // that of prescribed dofs and components separately (EnergyBalance counts it as work).
         const auto          kinetic = state.kinetic_energy();
         const CoupledEnergy energy  = state.strain_energy();

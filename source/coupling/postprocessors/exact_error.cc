@@ -25,7 +25,6 @@ namespace perideal
   {
     if (!data.final_row)
       return;
-    using FEVector             = typename CoupledState<dim>::FEVector;
     using Motion               = typename CoupledState<dim>::Motion;
     const auto        &ps      = state.pd.particles();
     const auto        &x       = ps.positions();
@@ -33,7 +32,7 @@ namespace perideal
     const unsigned int n_owned = ps.n_owned(), nc = state.n_components();
     const MPI_Comm     comm = state.comm;
 
-    // The exact field at the FE nodes and the particles (those that follow the FE field through
+    // The exact field at the FE nodes and the particles (those slaved to the FE field through
     // the method's P, as the coupled model sees them).
     FEVector       U_exact, fe_residual;
     ParticleVector u_exact, force;

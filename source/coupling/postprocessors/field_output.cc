@@ -38,7 +38,7 @@ namespace perideal
         const auto        &ps      = state.pd.particles();
         const unsigned int n_owned = ps.n_owned(), nc = state.n_components();
         const auto        &x = ps.positions();
-        // The particles that follow the FE field move with it: show its velocity there.
+        // The particles slaved to the FE field move with it: show its velocity there.
         ParticleVector velocity(state.v);
         state.method.interpolate_to_particles(state.V, velocity);
         writer->clear_fields();

@@ -123,7 +123,7 @@ namespace perideal
         pd.boundary_conditions().add_loads(time, state.external_force);
       }
     // Particles: a = f V / m on the components that move by it (one pass, no branches); the
-    // nodal forces f V only if some particle follows the FE field (zero otherwise).
+    // nodal forces f V only if some particle is slaved to the FE field (zero otherwise).
     const std::size_t n        = state.motion.size();
     const double     *internal = state.internal_force.begin();
     const double     *applied  = state.external_force.begin();
@@ -138,7 +138,7 @@ namespace perideal
     auto &fe = state.fe;
     if (fe.n_dofs() == 0)
       return;
-    if (state.particles_follow_fe)
+    if (state.any_particle_slaved)
       {
         const unsigned int nc     = state.n_components();
         const auto        &volume = pd.particles().volumes();
@@ -271,11 +271,11 @@ namespace perideal
         fe.prescribe(time + 0.5 * dt, U, V);
         conditions.prescribe_step_velocity(time, dt, v);
         U.add(dt, V);
-        if (!state.particles_follow_fe)
+        if (!state.any_particle_slaved)
           u.add(dt, v);
         else
           for (std::size_t k = 0; k < state.motion.size(); ++k)
-            if (state.motion[k] != Motion::follows_fe)
+            if (state.motion[k] != Motion::slaved)
               u.local_element(k) += dt * v.local_element(k);
         fe.prescribe(time + dt, U, V);
         conditions.prescribe_displacement(time + dt, u);

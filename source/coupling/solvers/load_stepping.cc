@@ -84,8 +84,8 @@ namespace perideal
           constrained[k % nc] += 1.;
         }
     // Particle rotations the FE field lacks follow 1/2 curl of the FE displacement where
-    // particles follow it: the FE conditions that hold the translations hold them too.
-    if (state.particles_follow_fe && fe.has_mesh())
+    // particles are slaved to it: the FE conditions that hold the translations hold them too.
+    if (state.any_particle_slaved && fe.has_mesh())
       for (unsigned int c = n_fe; c < nc; ++c)
         constrained[c] += 1.;
     // A component no displacement condition holds leaves a rigid mode free: the static system

@@ -117,7 +117,7 @@ namespace perideal
   {
     planar = planar_;
     prm.enter_subsection("Elasticity");
-    const bool shared = prm.get_bool("Same material as the particles");
+    shared = prm.get_bool("Same material as the particles");
     if (!shared)
       material.parse_parameters(prm, "Finite elements/Elasticity");
     prm.leave_subsection();
@@ -138,21 +138,19 @@ namespace perideal
                                "model with the FE side's material entries (anisotropic bond "
                                "based, anisotropic plane stress), or false and the constants in "
                                "<Finite elements/Elasticity>."));
-        // A polycrystal's grains (anisotropic bond based) are a particle feature: the FE
-        // region needs the homogenized constants, which are not the crystal's.
-        AssertThrow(model != "anisotropic bond based" || prm.get("Grains file").empty(),
-                    ExcMessage("<Finite elements/Elasticity/Same material as the particles> = "
-                               "true, but <Material/" +
-                               model +
-                               "/Grains file> makes the particles a polycrystal, whose "
-                               "homogenized stiffness is not the crystal's; accepted: false and "
-                               "the homogenized constants in <Finite elements/Elasticity>."));
         material.parse_parameters(prm, "Material/" + model);
         prm.leave_subsection();
         prm.leave_subsection();
         prm.enter_subsection("Finite elements");
       }
     C = material.tensor<dim>(planar);
+  }
+
+  template <int dim>
+  bool
+  LinearElasticity<dim>::shares_particle_material() const
+  {
+    return shared;
   }
 
   template <int dim>

@@ -14,8 +14,8 @@ namespace perideal
    *
    * The strain energy is the coupled system's, each part of the body counted once, as the
    * coupling method reports it (CouplingMethod::strain_energy()) from the FE field and the
-   * particles' energy. Explicit runs: kinetic energy (FE lumped masses, particles that do not
-   * follow the FE field), strain energy (the particles' from the model's energy density), the
+   * particles' energy. Explicit runs: kinetic energy (FE lumped masses, particles not
+   * slaved to the FE field), strain energy (the particles' from the model's energy density), the
    * work of the loads and the energy error KE + SE + D - W - E_0 (EnergyBalance, which also
    * stops a run whose energy grows without bound). Quasi-static runs: the strain energy with
    * the particles' in the coupling method's model of equilibrium, the work of the loads and the
@@ -25,7 +25,7 @@ namespace perideal
    * start (CoupledState::dissipated_energy()): per force evaluation that broke bonds, the drop
    * of the model's energy at the displacement of that evaluation, E(u, bonds before) - E(u,
    * bonds after) (MaterialModel::released_energy(): for a bond-based model the energy
-   * k s^2 |xi| / 2 of each broken bond, k = c G beta V_i V_j with its surface-correction,
+   * k s^2 |xi| / 2 of each broken bond, k = c G chi V_i V_j with its surface-correction,
    * partial-volume and blending weights; for LPS the change of the dilatation terms of both
    * ends as well). An explicit run then closes KE + SE + D = W + E_0 to the time-integration
    * error. A quasi-static run breaks bonds at a converged state and solves again at the same

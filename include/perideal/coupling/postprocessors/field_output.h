@@ -15,7 +15,7 @@ namespace perideal
   /**
    * @brief The fields of both regions at the output steps, in <Output/Directory>: the particles
    * (<Output/Base name>.xdmf + .h5, and .pvd + .vtu with <Output/Write VTU>): displacement,
-   * velocity (particles that follow the FE field: its velocity), force density, damage and
+   * velocity (particles slaved to the FE field: its velocity), force density, damage and
    * strain-energy density; the FE region (solution.xdmf + .h5: the FE region's fields,
    * FERegion::write_output()) with <Output/Write HDF5>.
    *

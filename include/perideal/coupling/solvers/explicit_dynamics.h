@@ -17,13 +17,13 @@ namespace perideal
    *
    * The stable step is the smaller of the FE region's (Gershgorin bound of M^-1 K with the full
    * coupled mass) and the particles'; a requested step above it is refused. Per step: half a
-   * step of the velocities, the positions (particles that follow the FE field from it, by the
+   * step of the velocities, the positions (particles slaved to the FE field from it, by the
    * method's P), the forces of both regions (their forces to the FE dofs by the method's P^T)
    * and the energy of the bonds they broke (CoupledState::accumulate_dissipated_energy()), the
    * second half step, the work of the loads. The
    * acceleration works on contiguous arrays: per particle component the factor from force
    * density to acceleration is V_i / m_i where the component moves by its acceleration and 0
-   * where it follows the FE field or is prescribed, so the pass has no branches.
+   * where it is slaved to the FE field or prescribed, so the pass has no branches.
    *
    * With an adaptive PD region (CoupledState::adapt_regions), every check step computes the
    * energies, lets the region grow and, if it did, renews the masses and factors (the step stays;
@@ -61,7 +61,7 @@ namespace perideal
 
     /**
      * @brief Forces and accelerations of both regions at @p time (the method's P U into the
-     * particles that follow the FE field first); the particles' energy density only if @p
+     * particles slaved to the FE field first); the particles' energy density only if @p
      * with_energy.
      */
     void

@@ -125,8 +125,8 @@ namespace perideal
                              const ExcNotConverged &failure) const;
 
     /// The prescribed values and the loads at End time (particles, FE dofs).
-    ParticleVector                       target, full_load;
-    typename CoupledState<dim>::FEVector fe_target, fe_full_load;
+    ParticleVector target, full_load;
+    FEVector       fe_target, fe_full_load;
   };
 } // namespace perideal
 

@@ -58,9 +58,14 @@ namespace perideal
     const dealii::SymmetricTensor<4, dim> &
     elasticity_tensor() const;
 
+    /// @brief <Elasticity/Same material as the particles>.
+    bool
+    shares_particle_material() const override;
+
   private:
     PlanarAssumption                planar = PlanarAssumption::three_dimensional;
     ElasticMaterial                 material;
+    bool                            shared = false;
     dealii::SymmetricTensor<4, dim> C;
   };
 } // namespace perideal
