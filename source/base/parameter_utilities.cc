@@ -174,9 +174,8 @@ namespace perideal
               {
                 const std::string included = resolve_path(rest, filename);
                 AssertThrow(std::filesystem::exists(included),
-                            dealii::ExcMessage("Line " + std::to_string(first_line) +
-                                               " of file <" + filename + ">: the included file <" +
-                                               rest +
+                            dealii::ExcMessage("Line " + std::to_string(first_line) + " of file <" +
+                                               filename + ">: the included file <" + rest +
                                                "> exists neither in the folder of this file nor "
                                                "in the working directory."));
                 expand(included, text, origin, sections, depth + 1);
@@ -187,8 +186,7 @@ namespace perideal
               sections.push_back(rest);
             else if ((statement == "end" || statement == "END") && !sections.empty())
               sections.pop_back();
-            else if (match_keyword(statement, "set", rest) &&
-                     rest.find('=') != std::string::npos)
+            else if (match_keyword(statement, "set", rest) && rest.find('=') != std::string::npos)
               {
                 const std::string name  = dealii::Utilities::trim(rest.substr(0, rest.find('=')));
                 const std::string value = dealii::Utilities::trim(rest.substr(rest.find('=') + 1));
@@ -229,17 +227,17 @@ namespace perideal
             const auto        start  = message.find(prefix);
             if (start == std::string::npos)
               throw;
-            const unsigned int n = std::stoul(message.substr(start + prefix.size()));
+            const unsigned int n         = std::stoul(message.substr(start + prefix.size()));
             const std::string  file_text = "of file <" + filename;
             auto               end       = message.find(file_text, start);
             if (n == 0 || n > origin.size() || end == std::string::npos)
               throw;
-            end = message.find_first_not_of(">:", end + file_text.size());
+            end                      = message.find_first_not_of(">:", end + file_text.size());
             const SourceLine &source = origin[n - 1];
             const std::string where =
               "line " + std::to_string(source.line) + " of <" + source.file + ">";
-            const std::string pattern_text = "does not match the given pattern:";
-            const auto        pattern      = message.find(pattern_text);
+            const std::string  pattern_text = "does not match the given pattern:";
+            const auto         pattern      = message.find(pattern_text);
             std::istringstream statement(text.str());
             std::string        line;
             for (unsigned int k = 0; k < n; ++k)
@@ -251,15 +249,13 @@ namespace perideal
               {
                 const std::string name  = dealii::Utilities::trim(rest.substr(0, equals));
                 const std::string value = dealii::Utilities::trim(rest.substr(equals + 1));
-                AssertThrow(false,
-                            dealii::ExcMessage(
-                              "The parameter <" +
-                              (source.section.empty() ? name : source.section + "/" + name) +
-                              "> = <" + value + "> (" + where +
-                              ") does not match its pattern; accepted: " +
-                              dealii::Utilities::trim(
-                                message.substr(pattern + pattern_text.size())) +
-                              "."));
+                AssertThrow(
+                  false,
+                  dealii::ExcMessage(
+                    "The parameter <" +
+                    (source.section.empty() ? name : source.section + "/" + name) + "> = <" +
+                    value + "> (" + where + ") does not match its pattern; accepted: " +
+                    dealii::Utilities::trim(message.substr(pattern + pattern_text.size())) + "."));
               }
             message = dealii::Utilities::trim(message.substr(end));
             AssertThrow(false,

@@ -6,9 +6,9 @@
 #include <perideal/base/revision.h>
 #include <perideal/base/version.h>
 
-#include <mpi.h>
-
 #include <string>
+
+#include <mpi.h>
 
 namespace perideal
 {
