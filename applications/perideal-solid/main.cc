@@ -7,6 +7,7 @@
 
 #include <perideal/base/parameter_utilities.h>
 #include <perideal/base/region.h>
+#include <perideal/base/version.h>
 #include <perideal/coupling/coupled_problem.h>
 #include <perideal/pd/boundary_conditions.h>
 
@@ -23,11 +24,15 @@ namespace
     std::cout
       << "Usage: perideal-solid [--validate | --restart] FILE.prm\n"
          "       perideal-solid --print-parameters [2|3]\n"
+         "       perideal-solid --version | --help\n"
          "  FILE.prm              run the problem described in FILE.prm: particles "
          "(<Discretization/Body>),\n"
          "                        an FE mesh (<Finite elements>), or both joined through an "
          "overlap\n"
-         "  --validate FILE.prm   check every entry of FILE.prm and exit (0: valid)\n"
+         "  --validate FILE.prm   make every check of a run's set-up short of the solver's "
+         "matrices\n"
+         "                        (entries, mesh, particles, model, coupling) and exit (0: "
+         "valid)\n"
          "  --restart FILE.prm    continue the run of FILE.prm from its newest checkpoint\n"
          "                        (<Output/Directory>/checkpoint, written by <Output/"
          "Checkpoint interval>\n"
@@ -41,7 +46,12 @@ namespace
          "                        a bar clamped in its FE part and pulled at its PD end (regions "
          "'body'\n"
          "                        and 'edge', particle condition 'support', FE condition "
-         "'clamp')\n";
+         "'clamp'),\n"
+         "                        in 2 (default) or 3 dimensions\n"
+         "  --version             print the PeriDeal version, its git revision and the deal.II,\n"
+         "                        Trilinos and MPI versions (the first line of every run's "
+         "log)\n"
+         "  --help, -h            print this text\n";
   }
 
   template <int dim>
@@ -68,6 +78,7 @@ namespace
     problem.parse_parameters(prm);
     if (validate_only)
       {
+        problem.check();
         if (dealii::Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0)
           std::cout << file << ": valid" << std::endl;
         return;
@@ -154,9 +165,23 @@ main(int argc, char **argv)
           print_usage();
           return args.empty() ? 1 : 0;
         }
+      const bool is_root = dealii::Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0;
+      if (args[0] == "--version")
+        {
+          AssertThrow(args.size() == 1, dealii::ExcMessage("--version takes no argument."));
+          if (is_root)
+            std::cout << perideal::version_line() << std::endl;
+          return 0;
+        }
       if (args[0] == "--print-parameters")
         {
-          if (args.size() > 1 && args[1] == "3")
+          const std::string dimension = args.size() > 1 ? args[1] : "2";
+          AssertThrow(args.size() <= 2 && (dimension == "2" || dimension == "3"),
+                      dealii::ExcMessage("--print-parameters takes the dimension 2 or 3 "
+                                         "(default 2), not <" +
+                                         (args.size() > 2 ? args[1] + " " + args[2] : dimension) +
+                                         ">."));
+          if (dimension == "3")
             print_parameters<3>();
           else
             print_parameters<2>();
@@ -165,7 +190,14 @@ main(int argc, char **argv)
       const bool validate = (args[0] == "--validate"), restart = (args[0] == "--restart");
       AssertThrow(!(validate || restart) || args.size() == 2,
                   dealii::ExcMessage(args[0] + " takes exactly one parameter file."));
+      AssertThrow(validate || restart || (args.size() == 1 && args[0].rfind("-", 0) != 0),
+                  dealii::ExcMessage("Unknown option or extra argument in <" + args[0] +
+                                     (args.size() > 1 ? " " + args[1] : std::string()) +
+                                     ">; perideal-solid --help lists the accepted ones."));
       const std::string file = (validate || restart) ? args[1] : args[0];
+      // A run's log names the build first (a validation prints its verdict only).
+      if (!validate && is_root)
+        std::cout << perideal::version_line() << std::endl;
 
       dealii::ParameterHandler dimension_only;
       dimension_only.declare_entry("Dimension", "2", dealii::Patterns::Integer(2, 3), "");

@@ -403,7 +403,7 @@ namespace perideal
 
   template <int dim>
   void
-  CoupledProblem<dim>::setup()
+  CoupledProblem<dim>::check()
   {
     fe.setup([this](const Point<dim> &x) { return method->fe_weight(blending(x)); });
     setup_particles();
@@ -430,9 +430,17 @@ namespace perideal
         precrack_damage = damage_index(pd.particles());
       }
     method->initialize(coupled_regions());
-
     state = std::make_unique<CoupledState<dim>>(comm, log, settings, layout, pd, fe, *method);
     state->setup();
+    solver = create_solver<dim>(settings.solver_type, control);
+    solver->check(*state);
+  }
+
+  template <int dim>
+  void
+  CoupledProblem<dim>::setup()
+  {
+    check();
     const std::string fe_summary = fe.summary(), coupling_summary = method->summary();
     if (is_root && fe.has_mesh())
       log << fe_summary << std::endl;
@@ -445,7 +453,6 @@ namespace perideal
         };
         state->adaptation_interval = adaptive.check_interval();
       }
-    solver = create_solver<dim>(settings.solver_type, control);
     solver->setup(*state);
 
     std::vector<std::unique_ptr<Postprocessor<dim>>> list;

@@ -98,11 +98,12 @@ namespace
     coupling_tests::write_file(
       specimen,
       coupling_tests::substitute(coupling_tests::read_text(benchmark + "specimen.prm"),
-                                 {{"RATIO", ratio},
+                                 {{"fracture energy ratio = 1\n",
+                                   "fracture energy ratio = " + ratio + "\n"},
                                   {"= grains.txt", "= " + benchmark + "grains.txt"}}));
     const std::string text =
       coupling_tests::substitute(coupling_tests::read_text(benchmark + name + ".prm"),
-                                 {{"RATIO", ratio},
+                                 {{"ratio_1\n", "ratio_" + ratio + "\n"},
                                   {"include specimen.prm", "include " + specimen},
                                   {"../../../meshes/", "meshes/"}}) +
       "subsection Output\n"

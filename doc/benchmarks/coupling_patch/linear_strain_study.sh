@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Static linear-strain patch tests of the blended coupling: the plate of static_template.prm with
+# Static linear-strain patch tests of the blended coupling: the plate of static.prm.template with
 # every FE boundary held to the quadratic field u = a (x^2 + x y, (2 x^2 + y^2) / 2), a = 1e-3 1/m,
 # and the constant body force b = -div sigma = -a (2 lambda + 4 mu, 2 lambda + 5 mu) of
 # <Body force/Function> (weighted by 1 - beta on the FE region, beta on the particles). Prints
@@ -17,7 +17,7 @@ field='1e-3*(x^2 + x*y); 1e-3*(2*x^2 + y^2)/2'
 echo "| model | FE | W [mm] | dx [mm] | h [mm] | error FE nodes | error particles | ghost force / FE force scale | applied load x [N] |"
 echo "|---|---|---|---|---|---|---|---|---|"
 run() { # model degree W dx ncells
-  /usr/bin/python3 - "$here/static_template.prm" "$work/p.prm" "$field" "$@" <<'PY'
+  /usr/bin/python3 - "$here/static.prm.template" "$work/p.prm" "$field" "$@" <<'PY'
 import sys
 src, dst, field, model, degree, W, dx, n = sys.argv[1:]
 text = open(src).read()

@@ -54,7 +54,7 @@ run() { # name W dx ncells
   else
     bcs="$shear_bcs"; exact="1e-4*y; 1e-4*x"; reaction="bottom"; energy=1.5e-2
   fi
-  /usr/bin/python3 - "$here/static_template.prm" "$work/p.prm" "$bcs" "$exact" "$2" "$3" "$4" <<'PY'
+  /usr/bin/python3 - "$here/static.prm.template" "$work/p.prm" "$bcs" "$exact" "$2" "$3" "$4" <<'PY'
 import sys
 src, dst, bcs, exact, W, dx, n = sys.argv[1:]
 text = open(src).read().replace("@BCS@", bcs).replace("@EXACT@", exact)

@@ -13,7 +13,7 @@ echo "| state | W [mm] | dx [mm] | h [mm] | max residual [N] | relative to the F
 echo "|---|---|---|---|---|---|"
 run() { # name ux uy W dx ncells
   sed "s|UX|$2|g; s|UY|$3|g; s|/ W|/ $4|g; s|= DX|= $5|; s|NCELLS|$6|g" \
-    "$here/patch_template.prm" > "$work/p.prm"
+    "$here/patch.prm.template" > "$work/p.prm"
   line=$(cd "$work" && "$solver" p.prm | grep "Force residual")
   abs=$(echo "$line" | sed 's/.*t = 0: \([^ ]*\) N.*/\1/')
   rel=$(echo "$line" | sed 's/.*scale: //')

@@ -37,7 +37,7 @@ scale=$("$python" -c "print(max(1, round(1e-3 / float('$dx'))))")
 for name in kalthoff_hole_adaptive kalthoff_hole_pd; do
   results=$results_top/$name
   mkdir -p "$results"
-  # The case's file (paths relative to the top directory, where the run starts) with the
+  # The case's file (its paths relative to itself) with the
   # resolution and the output directory of this run.
   cat > "$results/run.prm" <<PRM
 include $here/$name.prm

@@ -68,17 +68,11 @@ for prm in "${prms[@]}"; do
   results=$results_top/$name
   mkdir -p "$results"
   cd "$results"
-  # A parameter file that includes the benchmark's and overrides what depends on where it runs
-  # (the mesh path, relative to the source tree) and, with --dx, the resolution.
+  # A parameter file that includes the benchmark's (whose mesh path is relative to it) and
+  # overrides, with --dx, the resolution.
   scale=$("$python" -c "print(max(1, round(1e-3 / float('${dx:-1e-3}'))))")
   {
     echo "include $prm"
-    mesh=$(sed -n 's/^ *set Mesh file *= *//p' "$prm" | head -1)
-    if [ -n "$mesh" ]; then
-      echo "subsection Finite elements"
-      echo "  set Mesh file = $top/$mesh"
-      echo "end"
-    fi
     if [ -n "$dx" ]; then
       echo "subsection Discretization"
       echo "  set Lattice spacing = $dx"

@@ -17,12 +17,13 @@ cd "$here"
 ratios=${PC_RATIOS:-0.3 0.5 0.75 1 1.5 2}
 for ratio in $ratios; do
   mkdir -p results
-  sed "s/RATIO/$ratio/g" specimen.prm > "results/specimen_$ratio.prm"
+  sed "s/\(Grain boundary fracture energy ratio *= *\).*/\1$ratio/" specimen.prm \
+    > "results/specimen_$ratio.prm"
   for run in polycrystal coupled; do
     directory=results/ratio_$ratio
     [ "$run" = coupled ] && directory=results/coupled_ratio_$ratio
     mkdir -p "$directory"
-    sed -e "s/RATIO/$ratio/g" -e "s|include specimen.prm|include results/specimen_$ratio.prm|" \
+    sed -e "s|ratio_1$|ratio_$ratio|" -e "s|include specimen.prm|include results/specimen_$ratio.prm|" \
       "$run.prm" > "$directory/run.prm"
     start=$(date +%s.%N)
     "$build/bin/perideal-solid" "$directory/run.prm" > "$directory/run.log"

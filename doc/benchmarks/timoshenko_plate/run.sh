@@ -19,8 +19,27 @@ mkdir -p "$results"
 cd "$results"
 strain=$(awk 'BEGIN {print 2e8 / 1.92e11}')
 case_run() { # name model nu calibration surface-correction-method hold
-  sed -e "s|MODEL|$2|" -e "s|CALIBRATION|$4|" -e "s|METHOD|$5|" -e "s|HOLD|$6|" -e "s|NU|$3|g" \
-      -e "s|DIRECTORY|$1|" "$here/timoshenko_plate.prm" > "$1.prm"
+  cat > "$1.prm" <<PRM
+include $here/timoshenko_plate.prm
+subsection Discretization
+  set Surface correction method = $5
+end
+subsection Material
+  set Model = $2
+  subsection timoshenko bond based
+    set Poisson's ratio = $3
+    set Calibration     = $4
+  end
+end
+subsection Boundary conditions
+  subsection hold
+    set Function = $6
+  end
+end
+subsection Output
+  set Directory = $1
+end
+PRM
   mpirun -np 2 "$build/bin/perideal-solid" "$1.prm" > "$1.log"
   echo "$1: done"
 }

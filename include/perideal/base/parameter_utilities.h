@@ -116,7 +116,8 @@ namespace perideal
     require_positive(const double value, const std::string &entry);
 
     /**
-     * @brief Read only the entries declared by @p declare from @p filename, ignoring all others.
+     * @brief Read only the entries declared in @p prm from @p filename, ignoring all others
+     * (otherwise as parse_file()).
      *
      * Used for the first pass over a parameter file: the dimension and the lists of names that
      * decide which subsections exist are read before the full declaration.
@@ -125,7 +126,14 @@ namespace perideal
     parse_partially(dealii::ParameterHandler &prm, const std::string &filename);
 
     /**
-     * @brief Parse @p filename into @p prm (fully declared); errors name the file and entry.
+     * @brief Parse @p filename into @p prm (fully declared) with deal.II's parser, after two
+     * steps of ours: an <tt>include</tt> and the value of an entry whose name ends in "file"
+     * (<Finite elements/Mesh file>, a region's <Mesh file>, <Grains file>) that are relative
+     * paths are taken relative to the folder of the file that names them if they exist there,
+     * else relative to the working directory (as a script that copies a file elsewhere
+     * expects). Errors name the file, its line and the entry with its section, e.g. "The
+     * parameter <Material/antiplane state based/Stabilization> = <x> (line 12 of a.prm) does
+     * not match its pattern ...", also where deal.II's pattern check refuses a value.
      */
     void
     parse_file(dealii::ParameterHandler &prm, const std::string &filename);

@@ -63,12 +63,27 @@ namespace perideal
                        const std::vector<std::string> &condition_names,
                        const std::vector<std::string> &fe_condition_names);
 
-    /// Read and check every entry (what --validate does); creates nothing on disk.
+    /// Read and check every entry on its own; creates nothing on disk.
     void
     parse_parameters(dealii::ParameterHandler &prm);
 
-    /// Both regions, the method, the state, the solver and the postprocessors (with every
-    /// check they make); writes nothing on disk.
+    /**
+     * @brief Every check that needs the entries, the mesh and the regions' geometry but no
+     * state, solver or output (what perideal-solid --validate runs after parse_parameters(),
+     * and what setup() starts with): the FE mesh and its dofs (a held point inside the mesh),
+     * the particles, their bonds and the model's calibration (the model's limits, e.g. the
+     * Poisson ratio of timoshenko bond based, the Cauchy relations and the fracture energy
+     * interpolation of anisotropic bond based, a twist axis inside the section), beta in
+     * [0, 1], the adaptive region's seeds and the coupling method's overlap (a ramp at least a
+     * horizon wide), the state (no condition on particles that follow the FE field) and the
+     * solver's checks (Solver::check(): conditions it can apply, rigid motions held). Builds
+     * no matrix and writes nothing on disk.
+     */
+    void
+    check();
+
+    /// check(), then the solver's set-up (its matrices) and the postprocessors, with every
+    /// check they make; writes nothing on disk.
     void
     setup();
 

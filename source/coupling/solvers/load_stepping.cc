@@ -14,6 +14,22 @@ namespace perideal
 {
   using namespace dealii;
 
+  namespace
+  {
+    // The names of the FE and the particle boundary conditions of @p state, separated by ', '.
+    template <int dim>
+    std::string
+    condition_names(const CoupledState<dim> &state)
+    {
+      std::string names;
+      for (const auto &c : state.fe.conditions())
+        names += (names.empty() ? "" : ", ") + c.name;
+      for (const auto &name : state.pd.boundary_conditions().names())
+        names += (names.empty() ? "" : ", ") + name;
+      return names;
+    }
+  } // namespace
+
   template <int dim>
   LoadStepping<dim>::LoadStepping(const SolverType type, const QuasiStaticControl &control)
     : type(type)
@@ -24,7 +40,7 @@ namespace perideal
 
   template <int dim>
   void
-  LoadStepping<dim>::setup(CoupledState<dim> &state)
+  LoadStepping<dim>::check(const CoupledState<dim> &state) const
   {
     using Motion                  = typename CoupledState<dim>::Motion;
     const auto        &fe         = state.fe;
@@ -32,12 +48,8 @@ namespace perideal
     const unsigned int nc         = state.n_components();
 
     // Conditions a static solve cannot apply, and components no condition holds.
-    const auto  rates = conditions.names_of(Quantity::rate);
-    std::string condition_list;
-    for (const auto &c : fe.conditions())
-      condition_list += (condition_list.empty() ? "" : ", ") + c.name;
-    for (const auto &name : conditions.names())
-      condition_list += (condition_list.empty() ? "" : ", ") + name;
+    const auto        rates          = conditions.names_of(Quantity::rate);
+    const std::string condition_list = condition_names(state);
     for (const auto &c : fe.conditions())
       AssertThrow(c.type != Quantity::rate,
                   ExcMessage("The FE boundary condition <" + c.name + "> is of type '" +
@@ -63,12 +75,6 @@ namespace perideal
                 ExcMessage("<Solver/Control/Load history> = time evaluates the conditions at t = "
                            "load factor x <Time stepping/End time>, which is 0: set End time > 0 "
                            "(the t at which the last load step ends)."));
-    state.pd.particles().reinit_vector(prescribed, nc);
-    // The conditions at one time (conditions_at()).
-    state.pd.particles().reinit_vector(target, nc);
-    state.pd.particles().reinit_vector(full_load, nc);
-    fe.initialize_vector(fe_target);
-    fe.initialize_vector(fe_full_load);
     // The FE dofs held: those of value conditions and a held point (FEPhysics::held_point()).
     std::vector<double> constrained(nc, 0.);
     const auto         &held = fe.prescribed_mask();
@@ -79,10 +85,7 @@ namespace perideal
         constrained[c] += (held[k] && of[c][k]) ? 1. : 0.;
     for (std::size_t k = 0; k < state.motion.size(); ++k)
       if (state.motion[k] == Motion::prescribed)
-        {
-          prescribed.local_element(k) = 1.;
-          constrained[k % nc] += 1.;
-        }
+        constrained[k % nc] += 1.;
     // Particle rotations the FE field lacks follow 1/2 curl of the FE displacement where
     // particles are slaved to it: the FE conditions that hold the translations hold them too.
     if (state.any_particle_slaved && fe.has_mesh())
@@ -124,6 +127,25 @@ namespace perideal
                            ") needs at least one displacement condition" + conditions_named +
                            ": without one every rigid motion is free. Prescribe one " + where +
                            "."));
+  }
+
+  template <int dim>
+  void
+  LoadStepping<dim>::setup(CoupledState<dim> &state)
+  {
+    using Motion = typename CoupledState<dim>::Motion;
+    this->check(state);
+    const auto        &fe = state.fe;
+    const unsigned int nc = state.n_components();
+    state.pd.particles().reinit_vector(prescribed, nc);
+    // The conditions at one time (conditions_at()).
+    state.pd.particles().reinit_vector(target, nc);
+    state.pd.particles().reinit_vector(full_load, nc);
+    fe.initialize_vector(fe_target);
+    fe.initialize_vector(fe_full_load);
+    for (std::size_t k = 0; k < state.motion.size(); ++k)
+      if (state.motion[k] == Motion::prescribed)
+        prescribed.local_element(k) = 1.;
 
     const auto              &settings = state.settings;
     EquilibriumSettings<dim> equilibrium;
@@ -135,7 +157,8 @@ namespace perideal
     equilibrium.relaxation.max_iterations = settings.max_iterations;
     equilibrium.relaxation.length_scale   = state.pd.discretization().horizon;
     equilibrium.relaxation_safety         = settings.density_safety_factor;
-    state.method.initialize_equilibrium(prescribed, equilibrium, condition_list);
+    state.method.initialize_equilibrium(prescribed, equilibrium, condition_names(state));
+    const bool relax = (type == SolverType::adaptive_dynamic_relaxation);
     if (state.is_root)
       state.log << (relax ? "Adaptive dynamic relaxation: " : "Static solve: ")
                 << state.method.n_unknowns() << " unknowns ("

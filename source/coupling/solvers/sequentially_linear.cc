@@ -24,7 +24,7 @@ namespace perideal
 
   template <int dim>
   void
-  SequentiallyLinear<dim>::setup(CoupledState<dim> &state)
+  SequentiallyLinear<dim>::check(const CoupledState<dim> &state) const
   {
     const std::string method = "<Solver/Control/Method> = sequentially linear";
     AssertThrow(state.pd.has_body(),
@@ -42,6 +42,13 @@ namespace perideal
     AssertThrow(std::isfinite(state.pd.critical_stretch()),
                 ExcMessage(method + " needs bonds that break: <Material/Damage model> = none; use "
                                     "'critical stretch'."));
+    LoadStepping<dim>::check(state);
+  }
+
+  template <int dim>
+  void
+  SequentiallyLinear<dim>::setup(CoupledState<dim> &state)
+  {
     LoadStepping<dim>::setup(state);
     measures.initialize(state, this->control);
     bond_factor.assign(state.pd.particles().bonds().size(), 0.);

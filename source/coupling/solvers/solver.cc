@@ -9,6 +9,11 @@
 namespace perideal
 {
   template <int dim>
+  void
+  Solver<dim>::check(const CoupledState<dim> &) const
+  {}
+
+  template <int dim>
   std::unique_ptr<Solver<dim>>
   create_solver(const SolverType type, const QuasiStaticControl &control)
   {
@@ -19,6 +24,8 @@ namespace perideal
     return std::make_unique<LoadStepping<dim>>(type, control);
   }
 
+  template class Solver<2>;
+  template class Solver<3>;
   template std::unique_ptr<Solver<2>>
   create_solver<2>(const SolverType, const QuasiStaticControl &);
   template std::unique_ptr<Solver<3>>

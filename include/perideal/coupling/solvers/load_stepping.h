@@ -46,6 +46,9 @@ namespace perideal
     LoadStepping(const SolverType type, const QuasiStaticControl &control);
 
     void
+    check(const CoupledState<dim> &state) const override;
+
+    void
     setup(CoupledState<dim> &state) override;
 
     void

@@ -48,6 +48,9 @@ namespace perideal
     explicit SequentiallyLinear(const QuasiStaticControl &control);
 
     void
+    check(const CoupledState<dim> &state) const override;
+
+    void
     setup(CoupledState<dim> &state) override;
 
     void

@@ -28,6 +28,15 @@ namespace perideal
     virtual ~Solver() = default;
 
     /**
+     * @brief The checks of setup() that need no matrix and write nothing (the boundary
+     * conditions against what the solver can apply, the rigid motions they leave free), after
+     * CoupledState::setup(); CoupledProblem::check() runs them, so perideal-solid --validate
+     * does too. setup() runs them first. None by default.
+     */
+    virtual void
+    check(const CoupledState<dim> &state) const;
+
+    /**
      * @brief What the solver needs from the set-up (masses, time step, checks of the boundary
      * conditions against what the solver can apply), after CoupledState::setup(); stops with a
      * message naming the entry to fix before anything is written.

@@ -1,0 +1,52 @@
+#!/bin/bash
+# The command line of perideal-solid as a new user tries it: --version prints one line naming
+# the build (PeriDeal version, git revision, deal.II, Trilinos and MPI versions) and every run's
+# log starts with that line; --help and -h print the usage and exit 0; --print-parameters takes
+# the dimension 2 or 3 only (4 and x are refused naming them) and prints a file that validates;
+# an unknown option is refused. Usage: command_line.sh PERIDEAL-SOLID
+solver=$1
+work=$(mktemp -d)
+trap 'rm -rf "$work"' EXIT
+cd "$work" || exit 1
+failures=0
+fail() { echo "FAILED: $*"; failures=$((failures + 1)); }
+
+version=$("$solver" --version) || fail "--version exits non-zero"
+[[ $version =~ ^PeriDeal\ [0-9]+\.[0-9]+\.[0-9]+\ \(git\ [^\)]+\),\ deal\.II\ [0-9.]+,\ Trilinos\ [0-9]+\.[0-9]+\.[0-9]+,\ MPI\ [0-9]+\.[0-9]+\ \(.+\)$ ]] ||
+  fail "--version prints <$version>"
+[ "$(echo "$version" | wc -l)" = 1 ] || fail "--version prints more than one line"
+
+for option in --help -h; do
+  out=$("$solver" $option 2>&1) || fail "$option exits non-zero"
+  [[ $out == "Usage: perideal-solid"* ]] || fail "$option does not print the usage"
+  [[ $out == *"--version"* && $out == *"--print-parameters"* && $out == *"--validate"* ]] ||
+    fail "$option does not list every option"
+done
+"$solver" > out.txt 2>&1 && fail "no argument exits 0"
+grep -q "^Usage: perideal-solid" out.txt || fail "no argument does not print the usage"
+
+for dimension in 4 x "2 3"; do
+  "$solver" --print-parameters $dimension > out.txt 2> err.txt &&
+    fail "--print-parameters $dimension exits 0"
+  grep -q "takes the dimension 2 or 3" err.txt || fail "--print-parameters $dimension: $(cat err.txt)"
+  [ -s out.txt ] && fail "--print-parameters $dimension prints a template"
+done
+for dimension in "" 2 3; do
+  "$solver" --print-parameters $dimension > template.prm || fail "--print-parameters $dimension"
+  grep -q "set Dimension *= *${dimension:-2}" template.prm ||
+    fail "--print-parameters $dimension: not the ${dimension:-2}D template"
+  "$solver" --validate template.prm > out.txt 2>&1 ||
+    fail "the template of --print-parameters $dimension does not validate: $(cat out.txt)"
+done
+
+for arguments in "--frobnicate" "--validate" "--validate a.prm b.prm" "a.prm b.prm"; do
+  "$solver" $arguments > out.txt 2>&1 && fail "<$arguments> exits 0"
+done
+
+# A run (the 2D template, 2 us of explicit dynamics): its log starts with the version line.
+"$solver" --print-parameters 2 > template.prm
+"$solver" template.prm > run.log 2>&1 || fail "the 2D template does not run: $(tail -3 run.log)"
+[ "$(head -n 1 run.log)" = "$version" ] || fail "the run's log starts with <$(head -n 1 run.log)>"
+
+[ $failures = 0 ] && echo "command line: all checks passed"
+exit $failures

@@ -1,0 +1,25 @@
+#!/bin/bash
+# Every parameter file the repository ships (doc/ and tests/app-solid/, with the .prm.in
+# templates of tests/app-solid as configured in the build tree) validates as shipped, from a
+# working directory that is not its own folder: relative includes, meshes and grain files are
+# found from the file that names them. Usage: validate_shipped.sh SOURCE-DIR BINARY-DIR
+# PERIDEAL-SOLID
+source_dir=$1 binary_dir=$2 solver=$3
+work=$(mktemp -d)
+trap 'rm -rf "$work"' EXIT
+cd "$work" || exit 1
+files=()
+while IFS= read -r file; do files+=("$file"); done < <(
+  find "$source_dir/doc" "$source_dir/tests/app-solid" -name '*.prm' | sort
+  find "$binary_dir/tests/app-solid" -maxdepth 1 -name '*.prm' | sort)
+failed=()
+for file in "${files[@]}"; do
+  if ! "$solver" --validate "$file" > out.txt 2>&1; then
+    failed+=("$file")
+    echo "FAILED: $file"
+    sed 's/^/    /' out.txt
+  fi
+  rm -rf ./*
+done
+echo "${#files[@]} files, $((${#files[@]} - ${#failed[@]})) valid, ${#failed[@]} refused"
+[ ${#failed[@]} = 0 ]
