@@ -53,7 +53,9 @@ namespace perideal
   class CoupledStaticSolver
   {
   public:
+    /// The vectors of the FE region's unknowns.
     using FEVector = dealii::LinearAlgebra::distributed::Vector<double>;
+    /// The linear solver, as the PD static solver's.
     using Settings = typename StaticSolver<dim>::Settings;
 
     /**

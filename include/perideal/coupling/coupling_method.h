@@ -32,8 +32,11 @@ namespace perideal
   {
     /// The FE region (a method may prescribe interior dofs, FERegion::set_interior_values()).
     FERegion<dim>       *fe        = nullptr;
+    /// The particles and their material model.
+    ///@{
     ParticleSystem<dim> *particles = nullptr;
     MaterialModel<dim>  *material  = nullptr;
+    ///@}
     /// The particles' mass density [kg/m^3].
     double density = 0.;
     /// The particles' unknowns: the FE region's, or those followed by rotations.
@@ -97,6 +100,7 @@ namespace perideal
   class CouplingMethod
   {
   public:
+    /// The vectors of the FE region's unknowns.
     using FEVector = dealii::LinearAlgebra::distributed::Vector<double>;
 
     virtual ~CouplingMethod() = default;

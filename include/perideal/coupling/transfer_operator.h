@@ -36,6 +36,7 @@ namespace perideal
   class TransferOperator
   {
   public:
+    /// The vectors of the FE region's unknowns.
     using FEVector = dealii::LinearAlgebra::distributed::Vector<double>;
 
     /**
