@@ -5,6 +5,7 @@
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/parameter_handler.h>
 
+#include <perideal/base/parameter_reference.h>
 #include <perideal/base/parameter_utilities.h>
 #include <perideal/base/region.h>
 #include <perideal/coupling/coupled_problem.h>
@@ -23,6 +24,7 @@ namespace
     std::cout
       << "Usage: perideal-solid [--validate | --restart] FILE.prm\n"
          "       perideal-solid --print-parameters [2|3]\n"
+         "       perideal-solid --print-parameter-reference 2|3\n"
          "  FILE.prm              run the problem described in FILE.prm: particles "
          "(<Discretization/Body>),\n"
          "                        an FE mesh (<Finite elements>), or both joined through an "
@@ -41,7 +43,11 @@ namespace
          "                        a bar clamped in its FE part and pulled at its PD end (regions "
          "'body'\n"
          "                        and 'edge', particle condition 'support', FE condition "
-         "'clamp')\n";
+         "'clamp')\n"
+         "  --print-parameter-reference\n"
+         "                        print every entry with its default, pattern, unit and "
+         "documentation\n"
+         "                        as Markdown (doc/parameters/<dim>d.md)\n";
   }
 
   template <int dim>
@@ -140,6 +146,19 @@ namespace
     set_example<dim>(prm);
     prm.print_parameters(std::cout, dealii::ParameterHandler::PRM);
   }
+
+  /**
+   * The parameter reference doc/parameters/<dim>d.md: every entry that a file of this
+   * dimension may hold, with "<name>" for the names of regions and boundary conditions.
+   */
+  template <int dim>
+  void
+  print_parameter_reference()
+  {
+    dealii::ParameterHandler prm;
+    perideal::CoupledProblem<dim>::declare_parameters(prm, {"<name>"}, {"<name>"}, {"<name>"});
+    perideal::write_parameter_reference(prm, dim, std::cout);
+  }
 } // namespace
 
 int
@@ -153,6 +172,17 @@ main(int argc, char **argv)
         {
           print_usage();
           return args.empty() ? 1 : 0;
+        }
+      if (args[0] == "--print-parameter-reference")
+        {
+          AssertThrow(args.size() == 2 && (args[1] == "2" || args[1] == "3"),
+                      dealii::ExcMessage(
+                        "--print-parameter-reference takes the dimension: 2 or 3."));
+          if (args[1] == "2")
+            print_parameter_reference<2>();
+          else
+            print_parameter_reference<3>();
+          return 0;
         }
       if (args[0] == "--print-parameters")
         {
