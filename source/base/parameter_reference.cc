@@ -3,11 +3,11 @@
 // ---------------------------------------------------------------------
 #include <perideal/base/parameter_reference.h>
 
-#include <boost/property_tree/json_parser.hpp>
-#include <boost/property_tree/ptree.hpp>
-
 #include <regex>
 #include <sstream>
+
+#include <boost/property_tree/json_parser.hpp>
+#include <boost/property_tree/ptree.hpp>
 
 namespace perideal
 {
@@ -44,9 +44,9 @@ namespace perideal
 
     /**
      * The unit of an entry with pattern description @p pattern: none for a choice, a switch or a
-     * file name; else the first bracket of @p documentation that holds a unit: letters, digits, '^', '/', '*',
-     * '.', '-' and blanks with at least one letter, not a number or an interval ("[0, 1]");
-     * "[-]" is dimensionless.
+     * file name; else the first bracket of @p documentation that holds a unit: letters, digits,
+     * '^', '/', '*', '.', '-' and blanks with at least one letter, not a number or an interval
+     * ("[0, 1]"); "[-]" is dimensionless.
      */
     std::string
     unit_of(const std::string &pattern, const std::string &documentation)
@@ -96,8 +96,7 @@ namespace perideal
                 << "  - Default: " << code(node.get<std::string>("default_value")) << "\n"
                 << "  - Pattern: " << code(pattern) << "\n"
                 << "  - Unit: " << unit_of(pattern, documentation) << "\n"
-                << "  - " << (documentation.empty() ? "(no documentation)" : documentation)
-                << "\n";
+                << "  - " << (documentation.empty() ? "(no documentation)" : documentation) << "\n";
           }
       for (const auto &[mangled, node] : section)
         if (!is_entry(node))

@@ -31,7 +31,7 @@ namespace perideal
   struct CoupledRegions
   {
     /// The FE region (a method may prescribe interior dofs, FERegion::set_interior_values()).
-    FERegion<dim>       *fe        = nullptr;
+    FERegion<dim> *fe = nullptr;
     /// The particles and their material model.
     ///@{
     ParticleSystem<dim> *particles = nullptr;

@@ -32,16 +32,16 @@ namespace perideal
    *
    * Parameter (in the model's subsection): the entry named by the caller (e.g. <Shear moduli by
    * region>), 'region: modulus' items separated by ';' (e.g. 'upper: 6e6'), empty for one
-   * material. Every modulus must be positive
-   * (checked when read) and every region must exist (checked by resolve()).
+   * material. Every modulus must be positive (checked when read) and every region must exist
+   * (checked by resolve()).
    */
   template <int dim>
   class RegionModuli
   {
   public:
     /**
-     * @brief Declare the entry @p entry_name (empty default) in the current subsection; @p unit is the
-     * modulus' unit for the documentation.
+     * @brief Declare the entry @p entry_name (empty default) in the current subsection; @p unit is
+     * the modulus' unit for the documentation.
      */
     static void
     declare_parameters(dealii::ParameterHandler &prm,
@@ -49,9 +49,9 @@ namespace perideal
                        const std::string        &unit);
 
     /**
-     * @brief Read the entry @p entry_name of the current subsection; @p path is the subsection's path
-     * for messages (e.g. "Material/antiplane bond based"). Throws, naming the entry, for an item
-     * that is not 'region: number' or a modulus that is not positive.
+     * @brief Read the entry @p entry_name of the current subsection; @p path is the subsection's
+     * path for messages (e.g. "Material/antiplane bond based"). Throws, naming the entry, for an
+     * item that is not 'region: number' or a modulus that is not positive.
      */
     void
     parse_parameters(dealii::ParameterHandler &prm,
