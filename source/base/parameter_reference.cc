@@ -78,6 +78,19 @@ namespace perideal
       return fence + text + close;
     }
 
+    /**
+     * @p text as Markdown text: the angle brackets of the <Section/Entry> names as entities (a
+     * Markdown renderer takes <Regions> for an HTML tag and drops it), asterisks escaped.
+     */
+    std::string
+    markdown_text(const std::string &text)
+    {
+      std::string result;
+      for (const char c : text)
+        result += c == '<' ? "&lt;" : c == '>' ? "&gt;" : c == '*' ? "\\*" : std::string(1, c);
+      return result;
+    }
+
     void
     write_section(const Tree &section, const std::string &path, std::ostream &out)
     {
@@ -96,7 +109,9 @@ namespace perideal
                 << "  - Default: " << code(node.get<std::string>("default_value")) << "\n"
                 << "  - Pattern: " << code(pattern) << "\n"
                 << "  - Unit: " << unit_of(pattern, documentation) << "\n"
-                << "  - " << (documentation.empty() ? "(no documentation)" : documentation) << "\n";
+                << "  - "
+                << (documentation.empty() ? "(no documentation)" : markdown_text(documentation))
+                << "\n";
           }
       for (const auto &[mangled, node] : section)
         if (!is_entry(node))
