@@ -5,6 +5,7 @@
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/parameter_handler.h>
 
+#include <perideal/base/parameter_reference.h>
 #include <perideal/base/parameter_utilities.h>
 #include <perideal/base/region.h>
 #include <perideal/base/version.h>
@@ -25,6 +26,7 @@ namespace
       << "Usage: perideal-solid [--validate | --restart] FILE.prm\n"
          "       perideal-solid --print-parameters [2|3]\n"
          "       perideal-solid --version | --help\n"
+         "       perideal-solid --print-parameter-reference 2|3\n"
          "  FILE.prm              run the problem described in FILE.prm: particles "
          "(<Discretization/Body>),\n"
          "                        an FE mesh (<Finite elements>), or both joined through an "
@@ -51,6 +53,10 @@ namespace
          "  --version             print the PeriDeal version, its git revision and the deal.II,\n"
          "                        Trilinos and MPI versions (the first line of every run's "
          "log)\n"
+         "  --print-parameter-reference 2|3\n"
+         "                        print every entry with its default, pattern, unit and "
+         "documentation\n"
+         "                        as Markdown (doc/parameters/<dim>d.md)\n"
          "  --help, -h            print this text\n";
   }
 
@@ -151,6 +157,19 @@ namespace
     set_example<dim>(prm);
     prm.print_parameters(std::cout, dealii::ParameterHandler::PRM);
   }
+
+  /**
+   * The parameter reference doc/parameters/<dim>d.md: every entry that a file of this
+   * dimension may hold, with "<name>" for the names of regions and boundary conditions.
+   */
+  template <int dim>
+  void
+  print_parameter_reference()
+  {
+    dealii::ParameterHandler prm;
+    perideal::CoupledProblem<dim>::declare_parameters(prm, {"<name>"}, {"<name>"}, {"<name>"});
+    perideal::write_parameter_reference(prm, dim, std::cout);
+  }
 } // namespace
 
 int
@@ -171,6 +190,17 @@ main(int argc, char **argv)
           AssertThrow(args.size() == 1, dealii::ExcMessage("--version takes no argument."));
           if (is_root)
             std::cout << perideal::version_line() << std::endl;
+          return 0;
+        }
+      if (args[0] == "--print-parameter-reference")
+        {
+          AssertThrow(args.size() == 2 && (args[1] == "2" || args[1] == "3"),
+                      dealii::ExcMessage(
+                        "--print-parameter-reference takes the dimension: 2 or 3."));
+          if (args[1] == "2")
+            print_parameter_reference<2>();
+          else
+            print_parameter_reference<3>();
           return 0;
         }
       if (args[0] == "--print-parameters")

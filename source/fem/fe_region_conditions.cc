@@ -70,9 +70,9 @@ namespace perideal
         prm.declare_entry("Function",
                           "0",
                           Patterns::Anything(),
-                          "One expression of x, y, (z) and t [s] per listed component (all "
-                          "components for traction and flux), separated by ';'; a single 0 is "
-                          "zero for all.");
+                          "One expression of x, y, (z) and the time t (s) per listed component "
+                          "(all components for traction and flux), in the unit of its Type, "
+                          "separated by ';'; a single 0 is zero for all.");
         prm.leave_subsection();
       }
   }

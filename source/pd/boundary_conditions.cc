@@ -105,9 +105,9 @@ namespace perideal
         prm.declare_entry("Function",
                           "0",
                           Patterns::Anything(),
-                          "One expression of x, y, (z) and t [s] per prescribed component "
-                          "(for a load: per component of its kind), separated by ';'; a single "
-                          "0 is zero for all.");
+                          "One expression of x, y, (z) and the time t (s) per prescribed "
+                          "component (for a load: per component of its kind), in the unit of its "
+                          "Type, separated by ';'; a single 0 is zero for all.");
         prm.declare_entry("Layer thickness",
                           "0",
                           Patterns::Double(0.),

@@ -24,10 +24,10 @@ namespace perideal
                       "",
                       Patterns::Anything(),
                       std::string("A polycrystal: a text file with one grain per line, the seed "
-                                  "point's coordinates [m] and the grain's orientation (") +
+                                  "point's coordinates (m) and the grain's orientation (") +
                         (dim == 3 ? "z-x-z Euler angles phi, theta, psi" :
                                     "phi, a rotation about z") +
-                        " [degrees]), '#' starts a comment; relative to the working directory. "
+                        " in degrees), '#' starts a comment; relative to the working directory. "
                         "A particle belongs to the grain of its nearest seed (Voronoi cells); "
                         "a grain's material axes are the material's (Orientation) rotated by "
                         "the grain's angles about the global axes. Empty: one grain.");

@@ -89,7 +89,7 @@ namespace perideal
                         "'geometric' (the same factor with the family extended to delta + dx/2, "
                         "the cells the horizon cuts: right bulk stiffness without surface "
                         "correction, but an effective Poisson ratio 5 % low at delta = 3.015 dx). "
-                        "See doc/architecture.md.");
+                        "See doc/architecture/14_decisions.md.");
       prm.declare_entry("Lattice perturbation",
                         "0",
                         Patterns::Double(0., 0.5),

@@ -43,8 +43,9 @@ namespace perideal
     prm.declare_entry("Rotational inertia factor",
                       "0.0833333333333333",
                       Patterns::Double(),
-                      "j > 0 in the rotational inertia J = j rho dx^2 per unit volume [kg/m]; "
-                      "1/12 is rho I / A of a bond with a square section of side dx. It changes "
+                      "The factor j > 0 [-] of the rotational inertia per unit volume "
+                      "J = j rho dx^2 [kg/m]; 1/12 is rho I / A of a bond with a square section "
+                      "of side dx. It changes "
                       "dynamics and the stable time step, never a static solution.");
     prm.declare_entry("Failure law",
                       "brittle",

@@ -4,7 +4,7 @@
 # one-rank runs are pinned to core 0 (taskset), so that both codes run on the same core.
 # usage: compare_lammps.sh BUILD_DIR BENCH_DIR [REPEATS]
 #   BUILD_DIR: PeriDeal build (bin/perideal-solid); BENCH_DIR: directory with lammps_rate.sh and
-#   lammps_{pmb,lps}_41.in (shared/bench).
+#   lammps_{pmb,lps}_41.in (doc/benchmarks/performance/lammps).
 set -eu
 # Open MPI refuses to run as root unless told (containers, CI): the two-rank line needs it.
 if [ "$(id -u)" = 0 ]; then

@@ -136,10 +136,13 @@ namespace perideal
      */
     bool
     is_isotropic() const;
+    /// @brief Young's modulus E [Pa] and Poisson's ratio nu of an isotropic material.
+    ///@{
     double
     youngs_modulus() const;
     double
     poisson_ratio() const;
+    ///@}
 
     /**
      * @brief One line describing the material, for the log.

@@ -32,10 +32,14 @@ namespace perideal
    */
   struct FieldComponent
   {
+    /// Its kind, its name and its axis.
+    ///@{
     ComponentKind kind = ComponentKind::translation;
     std::string   name;
     unsigned int  axis = 0;
+    ///@}
 
+    /// @brief Equal kind, name and axis.
     bool
     operator==(const FieldComponent &other) const
     {
@@ -143,12 +147,14 @@ namespace perideal
     std::string
     free_motions() const;
 
+    /// @brief The same components in the same order.
     bool
     operator==(const FieldLayout &other) const
     {
       return components == other.components;
     }
 
+    /// @brief Not operator==().
     bool
     operator!=(const FieldLayout &other) const
     {

@@ -24,6 +24,7 @@ namespace perideal
    */
   using FEVector = dealii::LinearAlgebra::distributed::Vector<double>;
 
+  /// The owned and ghost particles (or dofs) of a ParticleVector.
   using Partitioner = dealii::Utilities::MPI::Partitioner;
 
   /// A distributed sparse matrix (Trilinos Epetra), rows partitioned like the particle dofs.

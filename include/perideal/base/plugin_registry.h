@@ -26,14 +26,21 @@ namespace perideal
   class PluginRegistry
   {
   public:
-    using Factory           = std::function<std::unique_ptr<InterfaceType>()>;
+    /// Creates a plugin.
+    using Factory = std::function<std::unique_ptr<InterfaceType>()>;
+    /// Declares a plugin's entries in the current subsection of a ParameterHandler.
     using ParameterDeclarer = std::function<void(dealii::ParameterHandler &)>;
 
+    /// What a plugin registers besides its name.
     struct Entry
     {
+      /// Its description (listed in the documentation of the entry that chooses it), the
+      /// declaration of its subsection and its factory.
+      ///@{
       std::string       description;
       ParameterDeclarer declare_parameters;
       Factory           factory;
+      ///@}
     };
 
     /**

@@ -88,29 +88,44 @@ namespace perideal
     double
     solution_accuracy() const;
 
-    // <Solver>
+    /// The entries of subsection <Solver>: type, load steps, tolerance, iterations, density
+    /// safety factor of adaptive dynamic relaxation, linear solver.
+    ///@{
     SolverType       solver_type           = SolverType::explicit_dynamics;
     unsigned int     load_steps            = 1;
     double           tolerance             = 1e-8;
     unsigned int     max_iterations        = 100000;
     double           density_safety_factor = 1.;
     LinearSolverType linear_solver         = LinearSolverType::cg_amg;
+    ///@}
 
-    // <Time stepping>
+    /// The entries of subsection <Time stepping>: end time and time step [s], safety factor of
+    /// the stable step, mass-proportional damping [1/s].
+    ///@{
     double end_time = 0., time_step = 0., safety_factor = 0.8, damping = 0.;
+    ///@}
 
-    // <Initial conditions>: one expression per component, or "0".
+    /// <Initial conditions>: one expression per component, or "0".
+    ///@{
     std::string initial_displacement = "0", initial_velocity = "0";
+    ///@}
 
-    // <Body force/Function>: one expression per component, or "0".
+    /// <Body force/Function>: one expression per component, or "0".
     std::string body_force = "0";
 
-    // <Output>
+    /// The entries of subsection <Output>: directory, base name, intervals of field output,
+    /// statistics and checkpoints (in steps), formats, progress report.
+    ///@{
     std::string  output_directory = "output", base_name = "particles";
     unsigned int output_interval = 0, statistics_interval = 10, checkpoint_interval = 0;
+    ///@}
     /// <Checkpoint time interval>: simulated time [s] (explicit) or load factor (quasi-static).
-    double                          checkpoint_time_interval = 0.;
-    bool                            write_hdf5 = true, write_vtu = false, show_progress = true;
+    double checkpoint_time_interval = 0.;
+    /// <Write HDF5>, <Write VTU>, <Progress>.
+    ///@{
+    bool write_hdf5 = true, write_vtu = false, show_progress = true;
+    ///@}
+    /// <Probe points>: the points whose displacements the statistics list [m].
     std::vector<dealii::Point<dim>> probe_points;
   };
 } // namespace perideal

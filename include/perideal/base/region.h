@@ -30,6 +30,7 @@ namespace perideal
   class Region
   {
   public:
+    /// The shapes a region may have (its entry <Shape>).
     enum class Shape
     {
       box,

@@ -55,8 +55,15 @@ namespace perideal
   class CoupledProblem
   {
   public:
+    /// @brief A problem on the ranks of @p comm that writes its log to @p log (on rank 0).
     CoupledProblem(const MPI_Comm comm, std::ostream &log);
 
+    /**
+     * @brief Declare every entry of a parameter file: the problem's settings, the particle
+     * region with the regions @p region_names and the particle boundary conditions
+     * @p condition_names, the FE region with its boundary conditions @p fe_condition_names, the
+     * coupling and every registered plugin's subsection.
+     */
     static void
     declare_parameters(dealii::ParameterHandler       &prm,
                        const std::vector<std::string> &region_names,

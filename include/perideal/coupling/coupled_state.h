@@ -126,7 +126,10 @@ namespace perideal
     /// Kinetic energy of an explicit run, and the part of it on prescribed dofs and components.
     struct KineticEnergy
     {
+      /// The whole kinetic energy and its part on prescribed dofs and components [J].
+      ///@{
       double total = 0., prescribed = 0.;
+      ///@}
     };
 
     /**
@@ -178,12 +181,16 @@ namespace perideal
     struct StoredParts
     {
       /// Every particle vector, and the particles' strain-energy density.
+      ///@{
       std::vector<ParticleVector *> particle_vectors;
       std::vector<double>          *energy_density;
+      ///@}
       /// Every FE vector.
       std::vector<FEVector *> fe_vectors;
       /// This rank's sums of the work of the loads and of the dissipated energy.
+      ///@{
       double *work, *dissipated;
+      ///@}
     };
 
     /**
@@ -195,7 +202,9 @@ namespace perideal
     StoredParts
     stored_parts();
 
-    // The problem.
+    /// The problem: its communicator, its log (written on rank 0, is_root), its settings, its
+    /// particle and FE regions and its coupling method.
+    ///@{
     const MPI_Comm              comm;
     std::ostream               &log;
     const bool                  is_root;
@@ -203,17 +212,20 @@ namespace perideal
     ParticleRegion<dim>        &pd;
     FERegion<dim>              &fe;
     CouplingMethod<dim>        &method;
+    ///@}
     /// The particles' unknowns (the FE nodes' are its first components: FERegion::field_layout()).
     const FieldLayout layout;
 
-    // What the set-up derives, per owned particle component.
+    /// What the set-up derives: the motion of each owned particle component.
     std::vector<Motion> motion;
     /// Whether any particle (on any rank) is slaved to the FE field.
     bool any_particle_slaved = false;
     /// Factors from the internal and the applied force density to the load that does work:
     /// -V_i and 0 on prescribed components (the support balances the internal force), 0 and
     /// V_i on the others (particles slaved to the FE field too: they move with it).
+    ///@{
     std::vector<double> internal_work_factor, applied_work_factor;
+    ///@}
     /// The particles' masses of explicit runs (per owned particle; for free particles).
     std::vector<double> particle_mass;
     /// Per component of the layout: its inertia over the mass (1 for translations and scalars;
@@ -225,14 +237,20 @@ namespace perideal
     FEVector mass;
     /// The stable explicit time step of the coupled system and the one taken [s] (explicit
     /// runs).
+    ///@{
     double stable_dt = 0., time_step = 0.;
+    ///@}
 
-    // FE region: displacement, velocity, acceleration; the external load; the residual
-    // f_ext - K U + P^T f (explicit) or K U - f - P^T f (quasi-static); the loads that do work
-    // (fe_load); the force of the supports on prescribed dofs (fe_support, for the reactions).
+    /// FE region: displacement, velocity, acceleration; the external load; the residual
+    /// f_ext - K U + P^T f (explicit) or K U - f - P^T f (quasi-static); the loads that do work
+    /// (fe_load); the force of the supports on prescribed dofs (fe_support, for the reactions).
+    ///@{
     FEVector U, V, A, f_ext, residual, fe_load, fe_support;
-    // Particles: displacement, velocity, acceleration, internal and applied force density.
+    ///@}
+    /// Particles: displacement, velocity, acceleration, internal and applied force density.
+    ///@{
     ParticleVector u, v, a, internal_force, external_force;
+    ///@}
     /// The particles' strain-energy density (per owned particle) [J/m^3].
     std::vector<double> energy_density;
 
@@ -244,7 +262,8 @@ namespace perideal
      * solver renews what it derives from them: masses, forces, the previous state of the work).
      */
     std::function<bool(unsigned int, double)> adapt_regions;
-    unsigned int                              adaptation_interval = 0;
+    /// The steps between two calls of adapt_regions (Coupling/Adaptive region/Check interval).
+    unsigned int adaptation_interval = 0;
     /// The change of kinetic plus strain energy at the conversions so far (summed) [J].
     double conversion_energy = 0.;
 

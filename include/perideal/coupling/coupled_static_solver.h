@@ -57,6 +57,7 @@ namespace perideal
   class CoupledStaticSolver
   {
   public:
+    /// The linear solver, as the PD static solver's.
     using Settings = typename StaticSolver<dim>::Settings;
 
     /**

@@ -32,9 +32,12 @@ namespace perideal
   struct CoupledRegions
   {
     /// The FE region (a method may prescribe interior dofs, FERegion::set_interior_values()).
-    FERegion<dim>       *fe        = nullptr;
+    FERegion<dim> *fe = nullptr;
+    /// The particles and their material model.
+    ///@{
     ParticleSystem<dim> *particles = nullptr;
     MaterialModel<dim>  *material  = nullptr;
+    ///@}
     /// The particles' mass density [kg/m^3].
     double density = 0.;
     /// The particles' unknowns: the FE region's, or those followed by rotations.

@@ -30,6 +30,7 @@ namespace perideal
   class FractureMeasures
   {
   public:
+    /// The measures of one state.
     struct Values
     {
       /// The reaction of the load point [N].

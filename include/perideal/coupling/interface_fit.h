@@ -42,9 +42,12 @@ namespace perideal
     /// An owned FE dof to fit: its global index, vector component and support point.
     struct Node
     {
+      /// Its global index, its vector component, its support point.
+      ///@{
       dealii::types::global_dof_index dof;
       unsigned int                    component;
       dealii::Point<dim>              location;
+      ///@}
     };
 
     /**

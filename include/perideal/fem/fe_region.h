@@ -69,17 +69,23 @@ namespace perideal
     /// A boundary condition on a set of boundary ids.
     struct Condition
     {
+      /// Its name in <Finite elements/Boundary conditions/Names> and its <Boundary ids>.
+      ///@{
       std::string                          name;
       std::set<dealii::types::boundary_id> boundary_ids;
+      ///@}
       /// value (displacement, value), rate (velocity, rate) or load (traction, flux).
-      Quantity                               type = Quantity::value;
-      std::vector<unsigned int>              components;
+      Quantity type = Quantity::value;
+      /// The components of the layout it acts on.
+      std::vector<unsigned int> components;
+      /// Its <Function>, one component per entry of components.
       std::shared_ptr<dealii::Function<dim>> function;
     };
 
     /// The weight 1 - beta(x) of the FE energy; cells where it is 0 everywhere are FE_Nothing.
     using WeightFunction = std::function<double(const dealii::Point<dim> &)>;
 
+    /// @brief An empty region on the ranks of @p comm; parse_parameters() and setup() fill it.
     explicit FERegion(const MPI_Comm comm);
 
     /**
@@ -200,10 +206,12 @@ namespace perideal
      * or velocity (value or rate) condition of (K u - f) (the force the support exerts, per
      * component c of the layout in entry c).
      */
+    ///@{
     double
     strain_energy(const FEVector &u) const;
     std::vector<std::vector<double>>
     reactions(const FEVector &residual) const;
+    ///@}
 
     /**
      * @brief The physics' section integrals (FEPhysics::integral_names(), e.g. the torque and
@@ -269,7 +277,9 @@ namespace perideal
     std::string
     summary() const;
 
-    // Accessors.
+    /// @brief The mesh, the dofs, the elements {FE_Q(p)^n, FE_Nothing^n}, the weighted
+    /// stiffness K (unconstrained) and the lumped mass.
+    ///@{
     const dealii::parallel::distributed::Triangulation<dim> &
     get_triangulation() const;
     const dealii::DoFHandler<dim> &
@@ -280,14 +290,17 @@ namespace perideal
     stiffness_matrix() const;
     const FEVector &
     lumped_mass() const;
+    ///@}
     /// The physics (after parse_parameters()).
     const FEPhysics<dim> &
     physics() const;
     /// The unknowns of a node: the physics' layout.
     const FieldLayout &
     field_layout() const;
+    /// <Finite elements/Density> [kg/m^3].
     double
     get_density() const;
+    /// The boundary conditions, in the order of their names.
     const std::vector<Condition> &
     conditions() const;
     /// The weight 1 - beta at @p p (1 without coupling).

@@ -37,6 +37,7 @@ namespace perideal
   class AdaptiveDynamicRelaxation
   {
   public:
+    /// What the solver asks of the problem: its residual and its prescribed components.
     struct Operations
     {
       /// F = internal + external force density for u, zero on prescribed components; must import
@@ -48,6 +49,7 @@ namespace perideal
       std::function<void(ParticleVector &v)> clear_prescribed;
     };
 
+    /// How a solve stops.
     struct Settings
     {
       /// Relative residual at which the iteration stops.
@@ -67,6 +69,7 @@ namespace perideal
     /// What a solve did.
     struct Result
     {
+      /// The iterations it took.
       unsigned int iterations = 0;
       /// ||F||_2 / scale at the end.
       double relative_residual = 0.;

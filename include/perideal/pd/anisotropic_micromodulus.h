@@ -79,8 +79,11 @@ namespace perideal
      */
     struct CauchyRelation
     {
+      /// The relation and the difference of its sides.
+      ///@{
       std::string relation;
       double      difference;
+      ///@}
     };
 
     /**
@@ -114,8 +117,11 @@ namespace perideal
     template <int dim>
     struct Family
     {
+      /// The bond vectors xi [m] and their weights beta V_j [m^3].
+      ///@{
       std::vector<dealii::Tensor<1, dim>> xi;
       std::vector<double>                 weight;
+      ///@}
     };
 
     /// The 3D family.
@@ -179,9 +185,12 @@ namespace perideal
     template <int dim>
     struct DirectionScanOf
     {
+      /// The fraction where c(n) < 0, the smallest c(n) and its direction n.
+      ///@{
       double                 negative_fraction = 0.;
       double                 minimum           = 0.;
       dealii::Tensor<1, dim> minimum_direction;
+      ///@}
     };
 
     /// The 3D scan.
@@ -203,8 +212,11 @@ namespace perideal
     template <int dim>
     struct SymbolScanOf
     {
+      /// The smallest eigenvalue relative to the largest, and its wave vector [1/m].
+      ///@{
       double                 relative_minimum = 0.;
       dealii::Tensor<1, dim> wave_vector;
+      ///@}
     };
 
     /// The 3D scan.

@@ -71,6 +71,7 @@ namespace perideal
     void
     initialize(ParticleSystem<2> &particles, const ModelContext &context) override;
 
+    /// @brief The two passes through the bonds: A_i, then the pair forces with beta A.
     void
     compute_forces(ParticleSystem<2>    &particles,
                    const ParticleVector &u,

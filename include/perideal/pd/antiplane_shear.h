@@ -147,10 +147,14 @@ namespace perideal
     std::vector<double>
     twist_fields(const ParticleSystem<dim> &particles) const;
 
+    /// <Shear modulus> [Pa], <Shear moduli by region>, the twist entries of Saint-Venant
+    /// torsion and what initialize() was given.
+    ///@{
     double            mu = 0.;
     RegionModuli<dim> region_moduli;
     Torsion           twist;
     ModelContext      context;
+    ///@}
   };
 } // namespace perideal
 

@@ -98,6 +98,7 @@ namespace perideal
   class BondBlocks
   {
   public:
+    /// The lanes of a block: the SIMD width of the kernels.
     static constexpr unsigned int width = bond_simd::width;
 
     /// A kernel-order field or per-lane array (64-byte aligned, so that the particle side of a
@@ -107,9 +108,12 @@ namespace perideal
     /// A lattice vector of the family: its components, length and inverse length.
     struct BondClass
     {
+      /// The lattice vector [m], its length [m] and inverse length [1/m].
+      ///@{
       std::array<double, dim> xi;
       double                  length;
       double                  inverse_length;
+      ///@}
     };
 
     /// The reference bonds of a block's lanes on a perturbed lattice: the bond vector from the
@@ -117,9 +121,12 @@ namespace perideal
     /// hold the class's).
     struct LaneBond
     {
+      /// The bond vector [m], its length [m] and inverse length [1/m] per lane.
+      ///@{
       bond_simd::Vector xi[dim];
       bond_simd::Vector length;
       bond_simd::Vector inverse_length;
+      ///@}
     };
 
     /// The per-lane reference bonds: a pointer to each of the dim + 1 per-lane arrays (xi's

@@ -223,9 +223,12 @@ namespace perideal
   template <int dim>
   struct DeformedBond
   {
+    /// r, rho and s per lane.
+    ///@{
     bond_simd::Vector r[dim];
     bond_simd::Vector rho;
     bond_simd::Vector stretch;
+    ///@}
   };
 
   /**
@@ -290,7 +293,10 @@ namespace perideal
    */
   struct BondSlope
   {
+    /// r and |r| per lane.
+    ///@{
     bond_simd::Vector value, stretch;
+    ///@}
   };
 
   /**
@@ -304,8 +310,10 @@ namespace perideal
   template <int dim, bool with_energy>
   struct SlopePairLaw
   {
-    static constexpr unsigned int n_outputs    = 1 + (with_energy ? 1 : 0);
-    static constexpr bool         breaks_bonds = true;
+    /// The outputs: the force density and, if with_energy, the energy density.
+    static constexpr unsigned int n_outputs = 1 + (with_energy ? 1 : 0);
+    /// A bond breaks where its slope exceeds the critical slope.
+    static constexpr bool breaks_bonds = true;
     /// k per lane.
     const double *coefficient;
 

@@ -139,9 +139,13 @@ namespace perideal
    */
   struct DerivedParticleField
   {
+    /// Its name in the output, its number of components and its values per owned particle
+    /// (component c of particle i at i * n_components + c).
+    ///@{
     std::string         name;
     unsigned int        n_components = 1;
     std::vector<double> values;
+    ///@}
   };
 
   /**

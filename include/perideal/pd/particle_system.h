@@ -100,6 +100,7 @@ namespace perideal
   class ParticleSystem
   {
   public:
+    /// The parameters of the lattice (subsection <Discretization>).
     struct Settings
     {
       /// Lattice spacing dx [m].

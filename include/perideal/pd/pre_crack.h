@@ -18,6 +18,7 @@ namespace perideal
   template <int dim>
   struct PreCrack
   {
+    /// Its end points (2D) or corners (3D) [m].
     std::array<dealii::Point<dim>, dim> vertices;
 
     /**

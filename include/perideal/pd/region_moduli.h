@@ -30,17 +30,18 @@ namespace perideal
    * change of material to round-off (features thinner than |xi|/16 between two samples of the
    * same material are missed). A bond inside one material has that material's modulus.
    *
-   * Parameter (in the model's subsection): <@p entry_name>, 'region: modulus' items separated
-   * by ';' (e.g. 'upper: 6e6'), empty for one material. Every modulus must be positive
-   * (checked when read) and every region must exist (checked by resolve()).
+   * Parameter (in the model's subsection): the entry named by the caller (e.g. <Shear moduli by
+   * region>), 'region: modulus' items separated by ';' (e.g. 'upper: 6e6'), empty for one
+   * material. Every modulus must be positive (checked when read) and every region must exist
+   * (checked by resolve()).
    */
   template <int dim>
   class RegionModuli
   {
   public:
     /**
-     * @brief Declare <@p entry_name> (empty default) in the current subsection; @p unit is the
-     * modulus' unit for the documentation.
+     * @brief Declare the entry @p entry_name (empty default) in the current subsection; @p unit is
+     * the modulus' unit for the documentation.
      */
     static void
     declare_parameters(dealii::ParameterHandler &prm,
@@ -48,9 +49,9 @@ namespace perideal
                        const std::string        &unit);
 
     /**
-     * @brief Read <@p entry_name> of the current subsection; @p path is the subsection's path
-     * for messages (e.g. "Material/antiplane bond based"). Throws, naming the entry, for an item
-     * that is not 'region: number' or a modulus that is not positive.
+     * @brief Read the entry @p entry_name of the current subsection; @p path is the subsection's
+     * path for messages (e.g. "Material/antiplane bond based"). Throws, naming the entry, for an
+     * item that is not 'region: number' or a modulus that is not positive.
      */
     void
     parse_parameters(dealii::ParameterHandler &prm,

@@ -48,6 +48,7 @@ namespace perideal
 
     struct Settings
     {
+      /// <Solver/Linear solver>.
       LinearSolverType linear_solver = LinearSolverType::cg_amg;
       /// Relative residual ||K u - F|| / ||F|| of CG.
       double tolerance = 1e-10;

@@ -23,14 +23,21 @@ namespace perideal
   struct StiffnessFitReport
   {
     /// The factor of the interior, the model's C_1111 over the lattice's.
-    double        interior_scale  = 1.;
-    double        largest_before  = 0.;
-    double        largest_after   = 0.;
-    double        rms_before      = 0.;
-    double        rms_after       = 0.;
-    double        smallest_factor = 1.;
-    double        largest_factor  = 1.;
-    unsigned long held            = 0;
+    double interior_scale = 1.;
+    /// The largest and the root-mean-square deviation before and after the fit.
+    ///@{
+    double largest_before = 0.;
+    double largest_after  = 0.;
+    double rms_before     = 0.;
+    double rms_after      = 0.;
+    ///@}
+    /// The smallest and the largest bond factor.
+    ///@{
+    double smallest_factor = 1.;
+    double largest_factor  = 1.;
+    ///@}
+    /// The bonds held at a bound of the factors.
+    unsigned long held = 0;
 
     /// One line for a model's summary.
     std::string

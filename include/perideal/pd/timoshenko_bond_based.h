@@ -45,9 +45,12 @@ namespace perideal
     /// The bond stiffnesses [C_N in N/m^6, C_theta and C_B in N/m^4].
     struct Stiffness
     {
+      /// C_N, C_theta and C_B.
+      ///@{
       double normal  = 0.;
       double shear   = 0.;
       double bending = 0.;
+      ///@}
       /// The paper's C_M = (C_B + 3 C_theta) / 4.
       double
       paper_bending() const

@@ -25,17 +25,23 @@ namespace perideal
     /// Whether the run is quasi-static (load steps) rather than explicit dynamics.
     bool quasi_static = false;
     /// Whether to write a row of statistics.csv, and whether it is the last row.
+    ///@{
     bool write_statistics = false, final_row = false;
+    ///@}
     /// Whether to write the particle and FE fields, and the index of that output.
+    ///@{
     bool         write_fields = false;
     unsigned int output_index = 0;
+    ///@}
     /// Quasi-static: the step stopped without convergence; the fields written are of its last
     /// iterate, to files of their own (FieldOutput); no statistics row, no summary.
     bool not_converged = false;
     /// Quasi-static: iterations of the step's solves, and the particles' strain energy in the
     /// coupling method's model of equilibrium (CouplingMethod::equilibrium_forces()) [J].
+    ///@{
     unsigned int iterations = 0;
     double       pd_energy  = 0.;
+    ///@}
   };
 
   /**

@@ -107,8 +107,11 @@ namespace perideal
     static std::string
     failure_text(const ExcNotConverged &failure);
 
+    /// <Solver/Type> (static or adaptive dynamic relaxation) and <Solver/Control>.
+    ///@{
     SolverType         type;
     QuasiStaticControl control;
+    ///@}
     /// 1 on the prescribed components of owned free particles.
     ParticleVector prescribed;
 

@@ -46,8 +46,11 @@ namespace perideal
     void
     parse_parameters(dealii::ParameterHandler &prm);
 
+    /// <Method> and <Load history>.
+    ///@{
     LoadControl method  = LoadControl::load_steps;
     LoadHistory history = LoadHistory::proportional;
+    ///@}
     /// The displacement condition (particle or FE) whose reaction is the load; empty: none.
     std::string load_point;
     /// The component (layout name) of the load and the load-point displacement.
