@@ -94,7 +94,7 @@ namespace perideal
             prescribed[next]       = particle_prescribed.local_element(i * nc + c) != 0.;
           }
 
-    // T: rows of P for particles that follow the FE field, the identity for free ones.
+    // T: rows of P for particles slaved to the FE field, the identity for free ones.
     {
       DynamicSparsityPattern dsp(particle_rows.size(), n_total, particle_rows);
       for_each_local_row(transfer_operator.matrix(),

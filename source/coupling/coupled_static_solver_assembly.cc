@@ -228,7 +228,7 @@ namespace perideal
         " free (to be held by displacement conditions, 'value' for a scalar field), or broken "
         "bonds may have split off free pieces of the PD region.");
 
-    // Back to the FE dofs and the particles (those that follow the FE field through P).
+    // Back to the FE dofs and the particles (those slaved to the FE field through P).
     ParticleVector solution;
     reinit_unknowns(solution);
     for (std::size_t k = 0; k < n_local; ++k)
@@ -276,7 +276,7 @@ namespace perideal
                                       const ParticleVector &nodal_force,
                                       FEVector             &fe_residual) const
   {
-    // K_FE U - f_FE - P^T (nodal force) of the particles that follow the FE field:
+    // K_FE U - f_FE - P^T (nodal force) of the particles slaved to the FE field:
     // -(f_FE - K_FE U + P^T f).
     fe->stiffness_matrix().vmult(fe_residual, U);
     fe_residual.sadd(-1., 1., f_fe);

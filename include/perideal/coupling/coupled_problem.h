@@ -82,7 +82,7 @@ namespace perideal
      * Poisson ratio of timoshenko bond based, the Cauchy relations and the fracture energy
      * interpolation of anisotropic bond based, a twist axis inside the section), beta in
      * [0, 1], the adaptive region's seeds and the coupling method's overlap (a ramp at least a
-     * horizon wide), the state (no condition on particles that follow the FE field) and the
+     * horizon wide), the state (no condition on particles slaved to the FE field) and the
      * solver's checks (Solver::check(): conditions it can apply, rigid motions held). Builds
      * no matrix and writes nothing on disk.
      */

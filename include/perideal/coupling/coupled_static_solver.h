@@ -29,7 +29,7 @@ namespace perideal
    *
    * Unknowns z = (U, u_free): the FE dofs and the components of the particles in FE_Nothing
    * cells. The particle displacements are u = T z with T = [P for the particles that
-   * follow the FE field; identity for the free ones] (P from TransferOperator). The energy of
+   * are slaved to the FE field; identity for the free ones] (P from TransferOperator). The energy of
    * the coupling (the blended energy of doc/theory/coupling.md; for a region alone, that
    * region's own energy), linearized,
    *
@@ -69,7 +69,7 @@ namespace perideal
      * @brief Number the unknowns, build T and the FE part of K for the FE region @p fe and the
      * @p particles joined by @p transfer. The prescribed FE dofs are FERegion::prescribed_mask();
      * @p particle_prescribed holds 1 on the prescribed components of owned free particles
-     * (owned entries; particles that follow the FE field cannot be prescribed).
+     * (owned entries; particles slaved to the FE field cannot be prescribed).
      */
     void
     reinit(const FERegion<dim>         &fe,
@@ -88,7 +88,7 @@ namespace perideal
     /**
      * @brief assemble(), then solve K z = F. On entry @p U and @p u hold the prescribed values
      * (owned entries; others are ignored); on exit the solution with ghost values, u = P U of the
-     * particles that follow the FE field included. @p f_fe is the FE load
+     * particles slaved to the FE field included. @p f_fe is the FE load
      * (FERegion::assemble_load()), @p f_pd the particle force density [N/m^3] (owned entries).
      * Returns the number of CG iterations (0 for the direct solver).
      */
@@ -130,7 +130,7 @@ namespace perideal
     /**
      * @brief @p fe_residual = K_FE @p U - @p f_fe - P^T @p nodal_force: the FE part of the
      * forces of forces(), for the particles' unbalanced forces @p nodal_force [N] (internal plus
-     * applied; only the rows of P^T of the particles that follow the FE field contribute).
+     * applied; only the rows of P^T of the particles slaved to the FE field contribute).
      */
     void
     fe_forces(const FEVector       &U,
@@ -148,7 +148,7 @@ namespace perideal
 
     /**
      * @brief The FE dofs @p U and the particle displacements @p u (free ones from @p z, those
-     * that follow the FE field u = P U) of the unknowns @p z, with ghost values.
+     * slaved to the FE field u = P U) of the unknowns @p z, with ghost values.
      */
     void
     from_unknowns(const ParticleVector &z, FEVector &U, ParticleVector &u) const;
