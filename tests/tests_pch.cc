@@ -1,4 +1,5 @@
-// The program that builds the precompiled header shared by the test programs (tests/CMakeLists.txt).
+// The program that builds the precompiled header shared by the test programs
+// (tests/CMakeLists.txt).
 int
 main()
 {

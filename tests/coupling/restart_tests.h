@@ -1,8 +1,9 @@
 // ---------------------------------------------------------------------
 // The harness of the restart tests (restart_01: runs without softening bonds, restart_03: with
-// softening Timoshenko bonds). Checkpoint and restart (<Output/Checkpoint interval>, CoupledProblem::restart_from_checkpoint()):
-// a run stopped after the checkpoint of step K and restarted from it ends with the numbers of the
-// run that did not stop. Three runs, each with bonds or an FE region in its state:
+// softening Timoshenko bonds). Checkpoint and restart (<Output/Checkpoint interval>,
+// CoupledProblem::restart_from_checkpoint()): a run stopped after the checkpoint of step K and
+// restarted from it ends with the numbers of the run that did not stop. Three runs, each with bonds
+// or an FE region in its state:
 //  - explicit dynamics with bond breaking: the PMB plate of app-solid/plate_2d_pmb pulled by its
 //    grips, a pre-crack and a critical stretch of 1e-3 (the grips start at 10 m/s: 3588 bonds
 //    are broken after step K = 5 of 80, 3740 from step 9 on);
