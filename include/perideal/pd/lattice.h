@@ -34,6 +34,7 @@ namespace perideal
     /// A hash of Key, for unordered containers.
     struct KeyHash
     {
+      /// The hash of @p key.
       std::size_t
       operator()(const Key &key) const
       {

@@ -13,18 +13,33 @@
 
 namespace perideal
 {
+  /**
+   * @brief The force kernel of TimoshenkoBondBased: its bond blocks, the per-lane coefficients
+   * and softening histories, and the fields in kernel order that one force_loop() reads and writes.
+   */
   template <int dim>
   struct TimoshenkoBondBased<dim>::Kernel
   {
     /// Translations and rotations (one rotation in 2D, three in 3D).
-    static constexpr unsigned int   n_components = dim + (dim == 2 ? 1 : 3);
-    BondBlocks<dim>                 blocks;
+    static constexpr unsigned int n_components = dim + (dim == 2 ? 1 : 3);
+    /// The bonds in lanes of the kernel's order.
+    BondBlocks<dim> blocks;
+    /// Per lane the pair coefficient k = G chi V_i V_j.
     typename BondBlocks<dim>::Array lane_coefficient;
+    /// The unknowns, the forces and moments, and the pair energies, in kernel order.
+    ///@{
     typename BondBlocks<dim>::Array u_field, f_field, w_field;
+    ///@}
     /// Softening: per lane the histories and factors of the three modes, and the dissipated
     /// energy (lanes of bonds to ghosts count on both ranks).
+    ///@{
     typename BondBlocks<dim>::Array history[3], factor[3], dissipated;
-    double                          dissipated_reported = 0., largest_growth = 0.;
+    ///@}
+    /// The dissipated energy reported so far, and the largest growth of a history in the last
+    /// committed pass.
+    ///@{
+    double dissipated_reported = 0., largest_growth = 0.;
+    ///@}
 
     /**
      * @brief One pass of the pair law @p law (the TimoshenkoPairLaw of
