@@ -29,8 +29,8 @@ namespace perideal
    *
    * Unknowns z = (U, u_free): the FE dofs and the components of the particles in FE_Nothing
    * cells. The particle displacements are u = T z with T = [P for the particles that
-   * are slaved to the FE field; identity for the free ones] (P from TransferOperator). The energy of
-   * the coupling (the blended energy of doc/theory/coupling.md; for a region alone, that
+   * are slaved to the FE field; identity for the free ones] (P from TransferOperator). The energy
+   * of the coupling (the blended energy of doc/theory/coupling.md; for a region alone, that
    * region's own energy), linearized,
    *
    *   E(z) = 1/2 U^T K_FE U + 1/2 (G T z)^T diag(w) (G T z) - F^T z,

@@ -29,9 +29,9 @@ namespace perideal
    * Weighted volume: m_i is the discrete sum over the actual family, with or without surface
    * correction, so theta is exact for any isotropic expansion at every particle and the force
    * is minus the gradient of the energy (with the continuum m of a full horizon it is not at
-   * particles near a surface; doc/theory/models.md). Critical stretch from the fracture energy G0 for the inverse-distance
-   * influence function (Madenci & Oterkus 2014, Peridynamic Theory and Its Applications,
-   * ordinary state-based critical stretch, 2D and 3D):
+   * particles near a surface; doc/theory/models.md). Critical stretch from the fracture energy G0
+   * for the inverse-distance influence function (Madenci & Oterkus 2014, Peridynamic Theory and
+   * Its Applications, ordinary state-based critical stretch, 2D and 3D):
    * 3D s0 = sqrt(G0 / ((3 mu + (3/4)^4 (K - 5 mu / 3)) delta)),
    * 2D s0 = sqrt(G0 / ((6 mu / pi + 16 / (9 pi^2) (k - 2 mu)) delta)).
    */
