@@ -3,7 +3,7 @@
 
 usage: compare.py [--build BUILD_DIR] [--work WORK_DIR] [--quick]
 
-Runs every case of this directory's templates (*.prm.in) with `Coupling/Method = blended` and
+Runs every case of this directory's parameter files (*.prm, changed by contrib/prm_fill.py) with `Coupling/Method = blended` and
 `overlapping schwarz` (serial, one rank each), measures the wall time of each run, reads from the
 printed summary the displacement error against the exact field, the residual of the exact field
 (the ghost force) and the Schwarz iterations, compares the cracked plates with the full-PD
@@ -38,30 +38,29 @@ import matplotlib.pyplot as plt  # noqa: E402
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 ROOT = os.path.abspath(os.path.join(HERE, "..", ".."))
+sys.path.insert(0, os.path.join(ROOT, "contrib"))
+import prm_fill  # noqa: E402
 METHODS = ["blended", "overlapping schwarz"]
 SHORT = {"blended": "blended", "overlapping schwarz": "schwarz"}
 
-# Models of the 2D patch tests (entries of the template's @...@ fields).
-PMB = {
-    "MODEL_NAME": "bond based",
-    "MODEL_ENTRIES": "    set Young's modulus = 200e9",
-    "FE_PHYSICS": "linear elasticity",
-    "FE_ENTRIES": "  subsection Elasticity\n    set Young's modulus = 200e9\n"
-    "    set Poisson's ratio = 0.3333333333333333\n  end",
-}
-LPS = {
-    "MODEL_NAME": "linear peridynamic solid",
-    "MODEL_ENTRIES": "    set Young's modulus = 200e9\n    set Poisson's ratio = 0.3",
-    "FE_PHYSICS": "linear elasticity",
-    "FE_ENTRIES": "  subsection Elasticity\n    set Young's modulus = 200e9\n"
-    "    set Poisson's ratio = 0.3\n  end",
-}
-ANTIPLANE = {
-    "MODEL_NAME": "antiplane bond based",
-    "MODEL_ENTRIES": "    set Shear modulus = 26e9",
-    "FE_PHYSICS": "scalar laplace",
-    "FE_ENTRIES": "  subsection scalar laplace\n    set Coefficient = 26e9\n  end",
-}
+
+
+def model(name, entries, physics, fe_entries):
+    """The @MATERIAL@ and @FE_MATERIAL@ blocks of patch_2d.prm for a PD model and FE physics."""
+    return {"MATERIAL": f"  set Model   = {name}\n  subsection {name}\n{entries}\n  end",
+            "FE_MATERIAL": f"  set Physics = {physics}\n{fe_entries}"}
+
+
+# Models of the 2D patch tests.
+PMB = model("bond based", "    set Young's modulus = 200e9", "linear elasticity",
+            "  subsection Elasticity\n    set Young's modulus = 200e9\n"
+            "    set Poisson's ratio = 0.3333333333333333\n  end")
+LPS = model("linear peridynamic solid",
+            "    set Young's modulus = 200e9\n    set Poisson's ratio = 0.3", "linear elasticity",
+            "  subsection Elasticity\n    set Young's modulus = 200e9\n"
+            "    set Poisson's ratio = 0.3\n  end")
+ANTIPLANE = model("antiplane bond based", "    set Shear modulus = 26e9", "scalar laplace",
+                  "  subsection scalar laplace\n    set Coefficient = 26e9\n  end")
 TRANSLATION = "1e-5; -2e-5"
 ROTATION = "-1e-4*y; 1e-4*x"
 UNIFORM = "1e-4*x + 2e-5*y; 3e-5*x - 5e-5*y"
@@ -90,8 +89,21 @@ PATCH_CASES = [
      dict(ANTIPLANE, EXACT="1e-3*(x^2 + y^2)", BODY_FORCE="-4e-3*26e9"), False),
     ("PMB 3D uniform strain", "patch_3d", dict(EXACT=UNIFORM_3D), True),
 ]
-PATCH_W = {"patch_2d": dict(W="0.01", LO="0.03", HI="0.07", RELAXATION="aitken"),
-           "patch_3d": dict(W="0.005")}
+
+
+def box_ramp(dim, lo, hi, width):
+    """The blending function: 0 outside (lo, hi)^dim, linear ramps of the given width inside."""
+    ramp = None
+    for x in "xyz"[:dim]:
+        term = f"min(({x} - {lo}) / {width}, ({hi} - {x}) / {width})"
+        ramp = term if ramp is None else f"min({ramp}, {term})"
+    return f"min(1, max(0, {ramp}))"
+
+
+# The overlap of each patch test: its width W [m] and the fields it sets.
+PATCH_W = {"patch_2d": dict(W="0.01", BLENDING=box_ramp(2, "0.03", "0.07", "0.01"),
+                            RELAXATION="aitken"),
+           "patch_3d": dict(W="0.005", BLENDING=box_ramp(3, "0.006", "0.018", "0.005"))}
 # Overlap sweep: PMB uniform strain in 2D, beta = 1 on [40, 60]^2 mm, ramps of width W [mm]
 # outside it (beta > 0 on (40 mm - W, 60 mm + W)^2). Below 8 mm Schwarz refuses the set-up (an
 # interface dof's nearest particle in the volume constraint).
@@ -99,7 +111,7 @@ SWEEP_W = [8, 10, 12, 16, 20]
 SWEEP_METHODS = [("blended", "aitken"), ("overlapping schwarz", "aitken"),
                  ("overlapping schwarz", "none")]
 
-# Cracked plates (cracked_plate_*.prm.in): lattice, plate, crack centre, beta = 1 core and
+# Cracked plates (cracked_plate_*.prm): lattice, plate, crack centre, beta = 1 core and
 # beta > 0 support of the coupled runs (boxes in x and y; through the thickness in 3D).
 DX = 1e-3
 PLATES = [
@@ -119,15 +131,9 @@ RE_PARTICLES = re.compile(r"^Particles: (\d+)", re.M)
 RE_DOFS = re.compile(r"FE region: .* (\d+) dofs")
 
 
-def fill(template, fields, path):
-    text = open(os.path.join(HERE, template + ".prm.in")).read()
-    for key, value in fields.items():
-        text = text.replace("@" + key + "@", value)
-    left = re.findall(r"@[A-Z_]+@", text)
-    if left:
-        raise SystemExit(f"{template}.prm.in: fields left unfilled: {left}")
-    with open(path, "w") as f:
-        f.write(text)
+def fill(name, fields, path):
+    """Write this directory's name.prm with the marked fields changed to path."""
+    prm_fill.fill(os.path.join(HERE, name + ".prm"), fields, path)
 
 
 def run(solver, prm, log):
@@ -160,7 +166,8 @@ def patch_run(solver, work, name, template, fields, method, geometry):
     directory = os.path.join(work, tag)
     os.makedirs(directory, exist_ok=True)
     prm = os.path.join(directory, "run.prm")
-    fill(template, dict(fields, METHOD=method, DIRECTORY="results", **geometry), prm)
+    changed = {key: value for key, value in geometry.items() if key != "W"}
+    fill(template, dict(fields, METHOD=method, DIRECTORY="results", **changed), prm)
     out, wall = run(solver, prm, os.path.join(directory, "output.txt"))
     log = os.path.join(directory, "output.txt")
     e = need(RE_ERROR, out, "Displacement error", log)
@@ -495,7 +502,8 @@ def main():
     print("== overlap sweep (PMB 2D uniform strain)")
     sweep_rows = []
     for W in SWEEP_W:
-        geometry = dict(W=f"{W * 1e-3:g}", LO=f"{0.04 - W * 1e-3:g}", HI=f"{0.06 + W * 1e-3:g}")
+        geometry = dict(W=f"{W * 1e-3:g}", BLENDING=box_ramp(2, f"{0.04 - W * 1e-3:g}",
+                                                             f"{0.06 + W * 1e-3:g}", f"{W * 1e-3:g}"))
         for method, relaxation in SWEEP_METHODS:
             sweep_rows.append(patch_run(solver, work, "sweep PMB 2D uniform strain", "patch_2d",
                                         dict(PMB, EXACT=UNIFORM, BODY_FORCE="0; 0"), method,

@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Static linear-strain patch tests of the blended coupling: the plate of static.prm.template with
+# Static linear-strain patch tests of the blended coupling: the plate of static.prm with
 # every FE boundary held to the quadratic field u = a (x^2 + x y, (2 x^2 + y^2) / 2), a = 1e-3 1/m,
 # and the constant body force b = -div sigma = -a (2 lambda + 4 mu, 2 lambda + 5 mu) of
 # <Body force/Function> (weighted by 1 - beta on the FE region, beta on the particles). Prints
@@ -17,37 +17,31 @@ field='1e-3*(x^2 + x*y); 1e-3*(2*x^2 + y^2)/2'
 echo "| model | FE | W [mm] | dx [mm] | h [mm] | error FE nodes | error particles | ghost force / FE force scale | applied load x [N] |"
 echo "|---|---|---|---|---|---|---|---|---|"
 run() { # model degree W dx ncells
-  /usr/bin/python3 - "$here/static.prm.template" "$work/p.prm" "$field" "$@" <<'PY'
+  /usr/bin/python3 - "$here" "$work/p.prm" "$field" "$@" <<'PY'
 import sys
-src, dst, field, model, degree, W, dx, n = sys.argv[1:]
-text = open(src).read()
-bcs = f"""    set Names = boundary
-    subsection boundary
-      set Boundary ids = 0, 1, 2, 3
-      set Function     = {field}
-    end"""
+here, dst, field, model, degree, W, dx, n = sys.argv[1:]
+sys.path.insert(0, here + "/../../../contrib")
+import prm_fill
+fields = {
+    "BOUNDARY_CONDITIONS": "\n".join([
+        "    set Names = boundary", "    subsection boundary",
+        "      set Boundary ids = 0, 1, 2, 3", f"      set Function     = {field}", "    end"]),
+    "EXACT": field, "DEGREE": degree, "DX": dx,
+    "GENERATOR_ARGUMENTS": f"{n}, {n} : 0, 0 : 0.1, 0.1 : true",
+    "BLENDING": f"min(1, max(0, min(min((x - 0.03) / {W}, (0.07 - x) / {W}), "
+                f"min((y - 0.03) / {W}, (0.07 - y) / {W}))))"}
 if model == "PMB":
     # plane stress, nu = 1/3: lambda* = mu = 75 GPa
-    body = "-1e-3*(2*75e9 + 4*75e9); -1e-3*(2*75e9 + 5*75e9)"
+    fields["BODY_FORCE"] = "-1e-3*(2*75e9 + 4*75e9); -1e-3*(2*75e9 + 5*75e9)"
 else:
     # plane stress, nu = 0.3: lambda* = E nu / (1 - nu^2), mu = E / (2 (1 + nu))
-    body = "-1e-3*(2*200e9*0.3/0.91 + 4*200e9/2.6); -1e-3*(2*200e9*0.3/0.91 + 5*200e9/2.6)"
-    text = text.replace("""  set Model   = bond based
-  set Density = 7800
-  subsection bond based
-    set Young's modulus = 200e9
-  end""", """  set Model   = linear peridynamic solid
-  set Density = 7800
-  subsection linear peridynamic solid
-    set Young's modulus = 200e9
-    set Poisson's ratio = 0.3
-  end""").replace("0.3333333333333333", "0.3")
-text = text.replace("subsection Finite elements\n",
-                    f"subsection Body force\n  set Function = {body}\nend\n"
-                    f"subsection Finite elements\n  set Polynomial degree = {degree}\n")
-text = text.replace("@BCS@", bcs).replace("@EXACT@", field)
-text = text.replace("/ W", "/ " + W).replace("= DX", "= " + dx).replace("NCELLS", n)
-open(dst, "w").write(text)
+    fields["BODY_FORCE"] = ("-1e-3*(2*200e9*0.3/0.91 + 4*200e9/2.6); "
+                            "-1e-3*(2*200e9*0.3/0.91 + 5*200e9/2.6)")
+    fields["MATERIAL"] = "\n".join([
+        "  set Model   = linear peridynamic solid", "  subsection linear peridynamic solid",
+        "    set Young's modulus = 200e9", "    set Poisson's ratio = 0.3", "  end"])
+    fields["POISSON_RATIO"] = "0.3"
+prm_fill.fill(here + "/static.prm", fields, dst)
 PY
   out=$(cd "$work" && "$solver" p.prm)
   errors=$(echo "$out" | sed -n 's/.*FE nodes \([^,]*\), particles \(.*\)/\1 | \2/p')

@@ -54,13 +54,10 @@ run() { # name W dx ncells
   else
     bcs="$shear_bcs"; exact="1e-4*y; 1e-4*x"; reaction="bottom"; energy=1.5e-2
   fi
-  /usr/bin/python3 - "$here/static.prm.template" "$work/p.prm" "$bcs" "$exact" "$2" "$3" "$4" <<'PY'
-import sys
-src, dst, bcs, exact, W, dx, n = sys.argv[1:]
-text = open(src).read().replace("@BCS@", bcs).replace("@EXACT@", exact)
-text = text.replace("/ W", "/ " + W).replace("= DX", "= " + dx).replace("NCELLS", n)
-open(dst, "w").write(text)
-PY
+  /usr/bin/python3 "$here/../../../contrib/prm_fill.py" "$here/static.prm" "$work/p.prm" \
+    "BOUNDARY_CONDITIONS=$bcs" "EXACT=$exact" "DX=$3" \
+    "GENERATOR_ARGUMENTS=$4, $4 : 0, 0 : 0.1, 0.1 : true" \
+    "BLENDING=min(1, max(0, min(min((x - 0.03) / $2, (0.07 - x) / $2), min((y - 0.03) / $2, (0.07 - y) / $2))))"
   out=$(cd "$work" && "$solver" p.prm)
   errors=$(echo "$out" | sed -n 's/.*FE nodes \([^,]*\), particles \(.*\)/\1 | \2/p')
   r=$(echo "$out" | sed -n "s/^Reaction $reaction: \([^ ]*\) \([^ ]*\) N/\1/p")

@@ -12,8 +12,9 @@ export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1
 echo "| state | W [mm] | dx [mm] | h [mm] | max residual [N] | relative to the FE force scale |"
 echo "|---|---|---|---|---|---|"
 run() { # name ux uy W dx ncells
-  sed "s|UX|$2|g; s|UY|$3|g; s|/ W|/ $4|g; s|= DX|= $5|; s|NCELLS|$6|g" \
-    "$here/patch.prm.template" > "$work/p.prm"
+  /usr/bin/python3 "$here/../../../contrib/prm_fill.py" "$here/patch.prm" "$work/p.prm" \
+    "DISPLACEMENT=$2; $3" "DX=$5" "GENERATOR_ARGUMENTS=$6, $6 : 0, 0 : 0.1, 0.1 : true" \
+    "BLENDING=min(1, max(0, min(min((x - 0.03) / $4, (0.07 - x) / $4), min((y - 0.03) / $4, (0.07 - y) / $4))))"
   line=$(cd "$work" && "$solver" p.prm | grep "Force residual")
   abs=$(echo "$line" | sed 's/.*t = 0: \([^ ]*\) N.*/\1/')
   rel=$(echo "$line" | sed 's/.*scale: //')
