@@ -36,6 +36,18 @@ namespace perideal
 
   template <int dim>
   void
+  CoupledStaticSolver<dim>::check_mesh(const FERegion<dim> &fe_region)
+  {
+    // T = [P; I] acts on the raw FE dofs: hanging-node constraints would have to enter it.
+    AssertThrow(!fe_region.has_hanging_nodes(),
+                ExcMessage("The FE mesh of <Finite elements> has hanging nodes, which the "
+                           "quasi-static solve (<Solver/Type> = static or adaptive dynamic "
+                           "relaxation) does not support; "
+                           "use a conforming mesh (global refinement only)."));
+  }
+
+  template <int dim>
+  void
   CoupledStaticSolver<dim>::reinit(const FERegion<dim>         &fe_region,
                                    const ParticleSystem<dim>   &particle_system,
                                    const TransferOperator<dim> &transfer_operator,
@@ -46,11 +58,7 @@ namespace perideal
     transfer  = &transfer_operator;
     comm      = particle_system.get_communicator();
 
-    // T = [P; I] acts on the raw FE dofs: hanging-node constraints would have to enter it.
-    AssertThrow(!fe_region.has_hanging_nodes(),
-                ExcMessage("The FE mesh of <Finite elements> has hanging nodes, which the "
-                           "static coupled solve (<Solver/Type> = static) does not support; "
-                           "use a conforming mesh (global refinement only)."));
+    check_mesh(fe_region);
     fe_owned = fe_region.get_dof_handler().locally_owned_dofs();
     AssertThrow(fe_owned.is_contiguous(),
                 ExcInternalError("The owned FE dofs are not contiguous."));

@@ -66,6 +66,14 @@ namespace perideal
     explicit CoupledStaticSolver(const Settings &settings);
 
     /**
+     * @brief Stop with a message naming <Solver/Type> if the mesh of @p fe has hanging nodes,
+     * which T = [P; I] on the raw FE dofs cannot carry. The quasi-static solvers' check() calls
+     * it, so --validate finds it; reinit() too.
+     */
+    static void
+    check_mesh(const FERegion<dim> &fe);
+
+    /**
      * @brief Number the unknowns, build T and the FE part of K for the FE region @p fe and the
      * @p particles joined by @p transfer. The prescribed FE dofs are FERegion::prescribed_mask();
      * @p particle_prescribed holds 1 on the prescribed components of owned free particles

@@ -1,6 +1,7 @@
 // ---------------------------------------------------------------------
 // PeriDeal: quasi-static load stepping with bond breaking.
 // ---------------------------------------------------------------------
+#include <perideal/coupling/coupled_static_solver.h>
 #include <perideal/coupling/solvers/load_stepping.h>
 #include <perideal/pd/damage_model.h>
 
@@ -46,6 +47,8 @@ namespace perideal
     const auto        &fe         = state.fe;
     const auto        &conditions = state.pd.boundary_conditions();
     const unsigned int nc         = state.n_components();
+
+    CoupledStaticSolver<dim>::check_mesh(fe);
 
     // Conditions a static solve cannot apply, and components no condition holds.
     const auto        rates          = conditions.names_of(Quantity::rate);
