@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
-# The test command of the README: install dependencies (as root), build the library and the test
-# programs, run the ctest suite, print the ten slowest cases and fail if a case ran past its
-# tier's budget (tests/CMakeLists.txt: PERIDEAL_TEST_BUDGET, PERIDEAL_LONG_TEST_BUDGET).
+# The test command of the README: install the build and test dependencies (as root), build the
+# library and the test programs, run the ctest suite, print the ten slowest cases and fail if a
+# case ran past its tier's budget (tests/CMakeLists.txt: PERIDEAL_TEST_BUDGET,
+# PERIDEAL_LONG_TEST_BUDGET).
 # The tests labelled "long" (perideal_label_long_tests) are left out; `--long` runs only them,
 # `--all` everything. Other arguments go to ctest.
 set -euo pipefail
@@ -12,7 +13,7 @@ case "${1:-}" in
 esac
 top=$(cd "$(dirname "$0")/.." && pwd)
 if [ "$(id -u)" -eq 0 ]; then
-  "$top/contrib/install_dependencies.sh"
+  "$top/contrib/install_dependencies.sh" --tests
   # Open MPI refuses to start as root unless told so explicitly.
   export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1
 fi
