@@ -97,9 +97,7 @@ namespace perideal
     std::vector<double> density;
     particles.reinit_vector(force, field_layout().n_components());
     const auto energy = [&](const std::uint8_t state) {
-      for (const unsigned int b : bonds.newly_broken)
-        bonds.intact[b] = state;
-      ++bonds.revision;
+      bonds.set_state_of(bonds.newly_broken, state);
       compute_forces(particles, u, force, &density, std::numeric_limits<double>::infinity());
       double sum = 0.;
       for (unsigned int i = 0; i < particles.n_owned(); ++i)

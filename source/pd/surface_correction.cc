@@ -40,8 +40,7 @@ namespace perideal
     std::fill(bonds.surface_factor.begin(), bonds.surface_factor.end(), 1.);
     // Pre-cracked bonds take part: the correction describes the uncracked geometry.
     const std::vector<std::uint8_t> intact = bonds.intact;
-    std::fill(bonds.intact.begin(), bonds.intact.end(), 1);
-    ++bonds.revision;
+    bonds.set_states(std::vector<std::uint8_t>(bonds.size(), 1));
 
     ParticleVector u, factors;
     particles.reinit_vector(u, nc);
@@ -59,8 +58,7 @@ namespace perideal
         for (unsigned int i = 0; i < particles.n_owned(); ++i)
           factors.local_element(i * dim + a) = classical / energy[i];
       }
-    bonds.intact = intact;
-    ++bonds.revision;
+    bonds.set_states(intact);
     factors.update_ghost_values();
 
     for (unsigned int i = 0; i < particles.n_owned(); ++i)

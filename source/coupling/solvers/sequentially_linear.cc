@@ -120,11 +120,7 @@ namespace perideal
     auto &bonds = state.pd.particles().bonds();
     for (std::size_t b = 0; b < bonds.size(); ++b)
       if (bonds.intact[b] == 1 && bond_factor[b] <= limit)
-        {
-          bonds.intact[b] = 0;
-          bonds.newly_broken.push_back(static_cast<unsigned int>(b));
-        }
-    ++bonds.revision;
+        bonds.break_bond(static_cast<unsigned int>(b), true);
   }
 
   template <int dim>
