@@ -129,6 +129,9 @@ namespace perideal
     std::string
     summary() const override;
 
+    std::unique_ptr<SurfaceCorrectionLaw<2>>
+    surface_correction_law(ParticleSystem<2> &particles) override;
+
     /**
      * @brief The relative error |M_lattice X - target| / |target| of the continuum calibration
      * on this lattice, the largest over lambda_0 and lambda_2 (after initialize()).

@@ -3,10 +3,8 @@
 // ---------------------------------------------------------------------
 #include <perideal/base/parameter_utilities.h>
 #include <perideal/coupling/solvers/sequentially_linear.h>
-#include <perideal/pd/anisotropic_bond_based.h>
-#include <perideal/pd/bond_based.h>
 #include <perideal/pd/damage_model.h>
-#include <perideal/pd/linear_peridynamic_solid.h>
+#include <perideal/pd/material_model.h>
 
 #include <algorithm>
 #include <cmath>
@@ -31,14 +29,13 @@ namespace perideal
                 ExcMessage(method + " needs particles (<Discretization/Body>): bonds are what "
                                     "breaks."));
     const auto &material = state.pd.material();
-    AssertThrow(dynamic_cast<const BondBased<dim> *>(&material) != nullptr ||
-                  dynamic_cast<const LinearPeridynamicSolid<dim> *>(&material) != nullptr ||
-                  dynamic_cast<const AnisotropicBondBased<dim> *>(&material) != nullptr,
+    AssertThrow(material.capabilities().sequentially_linear,
                 ExcMessage(method +
                            " breaks bonds by the linearized stretch of a displacement field "
                            "(times each bond's breaking factor) against the critical stretch; "
-                           "<Material/Model> accepted: bond based, linear peridynamic solid, "
-                           "anisotropic bond based."));
+                           "<Material/Model> accepted: " +
+                           material_models_with<dim>(&ModelCapabilities::sequentially_linear) +
+                           "."));
     AssertThrow(std::isfinite(state.pd.critical_stretch()),
                 ExcMessage(method + " needs bonds that break: <Material/Damage model> = none; use "
                                     "'critical stretch'."));
