@@ -2,6 +2,7 @@
 // PeriDeal: quasi-static fracture event by event (sequentially linear control).
 // ---------------------------------------------------------------------
 #include <perideal/base/parameter_utilities.h>
+#include <perideal/coupling/solvers/run_control.h>
 #include <perideal/coupling/solvers/sequentially_linear.h>
 #include <perideal/pd/damage_model.h>
 #include <perideal/pd/material_model.h>
@@ -139,11 +140,8 @@ namespace perideal
     const auto   number   = [](const double x) { return ParameterUtilities::format_number(x); };
     this->conditions_at(state, settings.end_time);
 
-    StepData data;
-    data.quasi_static     = true;
-    data.write_statistics = true;
-    state.start_work();
-    postprocessors.execute(state, data);
+    RunControl<dim> run(state, postprocessors, checkpoint, true);
+    run.start("sequentially linear", this->control.max_events, [&]() { state.start_work(); });
     double       peak = 0., peak_factor = 0.;
     unsigned int peak_event = 0;
     for (unsigned int event = 1;; ++event)
@@ -218,14 +216,12 @@ namespace perideal
           state.log << "Event " << event << ": load factor " << factor << ", load " << values.load
                     << " N, " << values.broken_bonds << " broken bonds, " << iterations
                     << " CG iterations" << std::endl;
-        data.step         = event;
-        data.time         = factor;
-        data.final_row    = !reason.empty();
+        // Fields after the last event only (no checkpoints: run.checkpoint() is not called).
+        StepData data     = run.plan(event, factor, !reason.empty());
         data.write_fields = data.final_row;
-        data.output_index = event;
         data.iterations   = iterations;
         data.pd_energy    = pd_energy;
-        postprocessors.execute(state, data);
+        run.write(data);
         if (data.final_row)
           {
             if (state.is_root)
