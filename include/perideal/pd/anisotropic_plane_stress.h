@@ -129,6 +129,10 @@ namespace perideal
     std::string
     summary() const override;
 
+    /**
+     * @brief The energy method on the whole model (B_i corrected) with the reduced stiffness
+     * C'_aaaa of the uniaxial test fields (elastic_surface_correction_law()).
+     */
     std::unique_ptr<SurfaceCorrectionLaw<2>>
     surface_correction_law(ParticleSystem<2> &particles) override;
 
