@@ -300,8 +300,7 @@ namespace perideal
     *parts.work       = kept.work;
     *parts.dissipated = kept.dissipated;
     BondList &bonds   = state.pd.particles().bonds();
-    bonds.intact      = kept.intact;
-    ++bonds.revision;
+    bonds.set_states(kept.intact);
     if (history_values(state) > 0)
       state.pd.material().set_bond_history(state.pd.particles(), kept.history);
     return kept.position;
@@ -640,11 +639,10 @@ namespace perideal
                                  broken.end(),
                                  std::array<std::uint64_t, 2>{{std::min(p, q), std::max(p, q)}}))
             {
-              bonds.intact[b] = 0;
+              bonds.break_bond(b);
               matched += ps.bond_share(b);
             }
         }
-    ++bonds.revision;
     AssertThrow(std::llround(Utilities::MPI::sum(matched, comm)) == std::int64_t(n_broken),
                 ExcMessage(name + " is from another problem: " + std::to_string(n_broken) +
                            " broken bonds, of which " +

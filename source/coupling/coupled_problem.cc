@@ -3,14 +3,6 @@
 // ---------------------------------------------------------------------
 #include <perideal/base/parameter_utilities.h>
 #include <perideal/coupling/coupled_problem.h>
-#include <perideal/coupling/postprocessors/displacement_statistics.h>
-#include <perideal/coupling/postprocessors/energy_statistics.h>
-#include <perideal/coupling/postprocessors/exact_error.h>
-#include <perideal/coupling/postprocessors/field_output.h>
-#include <perideal/coupling/postprocessors/fracture_statistics.h>
-#include <perideal/coupling/postprocessors/probes.h>
-#include <perideal/coupling/postprocessors/reactions.h>
-#include <perideal/coupling/postprocessors/section_integrals.h>
 #include <perideal/pd/antiplane_torsion.h>
 #include <perideal/pd/damage_model.h>
 #include <perideal/pd/lattice.h>
@@ -102,6 +94,7 @@ namespace perideal
                       "Static runs with <Exact displacement>: the summary states whether both "
                       "relative errors are below this value (0: no verdict).");
     prm.leave_subsection();
+    Postprocessors<dim>::declare_parameters(prm);
   }
 
   template <int dim>
@@ -110,6 +103,7 @@ namespace perideal
   {
     settings.parse_parameters(prm);
     control.parse_parameters(prm);
+    postprocessor_names = Postprocessors<dim>::parse_parameters(prm);
     AssertThrow(control.method == LoadControl::load_steps ||
                   settings.solver_type == SolverType::static_linear,
                 ExcMessage("<Solver/Control/Method> = sequentially linear needs <Solver/Type> = "
@@ -455,17 +449,11 @@ namespace perideal
       }
     solver->setup(*state);
 
-    std::vector<std::unique_ptr<Postprocessor<dim>>> list;
-    list.push_back(std::make_unique<EnergyStatistics<dim>>());
-    list.push_back(std::make_unique<DisplacementStatistics<dim>>());
-    list.push_back(std::make_unique<Reactions<dim>>());
-    list.push_back(std::make_unique<FractureStatistics<dim>>(control));
-    list.push_back(std::make_unique<SectionIntegrals<dim>>());
-    if (exact_displacement)
-      list.push_back(std::make_unique<ExactError<dim>>(exact_displacement, exact_tolerance));
-    list.push_back(std::make_unique<Probes<dim>>());
-    list.push_back(std::make_unique<FieldOutput<dim>>());
-    postprocessors = std::make_unique<Postprocessors<dim>>(std::move(list));
+    PostprocessorInputs<dim> inputs;
+    inputs.control            = control;
+    inputs.exact_displacement = exact_displacement;
+    inputs.exact_tolerance    = exact_tolerance;
+    postprocessors            = std::make_unique<Postprocessors<dim>>(postprocessor_names, inputs);
     postprocessors->initialize(*state);
   }
 

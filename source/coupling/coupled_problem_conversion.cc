@@ -116,8 +116,7 @@ namespace perideal
         for (unsigned int b = bonds.row_start[i]; b < bonds.row_start[i + 1]; ++b)
           if (bonds.intact[b] != 0 &&
               broken.count({lattice.key(y[i]), lattice.key(y[bonds.neighbor[b]])}))
-            bonds.intact[b] = 0;
-      ++bonds.revision;
+            bonds.break_bond(b);
     }
 
     // The FE space without the cells that became PD only, the coupling and the state.

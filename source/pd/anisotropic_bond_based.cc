@@ -334,32 +334,25 @@ namespace perideal
           }
       k.blocks.to_lanes(factor, k.lane_break_factor);
     }
-    if (context.surface_correction && context.stiffness_fit)
-      {
-        // Per end and unit chi V_i V_j, c(n) |xi| (n.e.n)^2 / 4 under a homogeneous strain (one
-        // grain: has_stiffness_fit()).
-        const auto law = [this](const Tensor<1, dim> &xi, double &axial, double &shear) {
-          const double length = xi.norm();
-          axial               = 0.5 * bond_modulus(0, 0, xi / length) * length;
-          shear               = 0.;
-        };
-        fit_report = apply_stiffness_fit<dim>(particles, law, elasticity_tensor()[0][0][0][0]);
-      }
-    else if (context.surface_correction)
-      {
-        ParticleVector force;
-        particles.reinit_vector(force, dim);
-        set_bond_coefficients(particles, false);
-        const auto energy = [&](const ParticleVector &u, std::vector<double> &w) {
-          compute_forces(particles, u, force, &w, std::numeric_limits<double>::infinity());
-        };
-        const auto              C_tensor = elasticity_tensor();
-        std::array<double, dim> modulus;
-        for (unsigned int a = 0; a < dim; ++a)
-          modulus[a] = C_tensor[a][a][a][a];
-        apply_energy_surface_correction<dim>(particles, this->field_layout(), modulus, energy);
-      }
+    fit_report = apply_surface_correction<dim>(*this, particles, context);
     set_bond_coefficients(particles, true);
+  }
+
+  template <int dim>
+  std::unique_ptr<SurfaceCorrectionLaw<dim>>
+  AnisotropicBondBased<dim>::surface_correction_law(ParticleSystem<dim> &particles)
+  {
+    auto law = elastic_surface_correction_law<dim>(*this, particles, [this, &particles]() {
+      set_bond_coefficients(particles, false);
+    });
+    // Per end and unit chi V_i V_j, c(n) |xi| (n.e.n)^2 / 4 under a homogeneous strain (one
+    // grain: capabilities()).
+    law->stiffness = [this](const Tensor<1, dim> &xi, double &axial, double &shear) {
+      const double length = xi.norm();
+      axial               = 0.5 * bond_modulus(0, 0, xi / length) * length;
+      shear               = 0.;
+    };
+    return law;
   }
 
   template <int dim>
@@ -380,10 +373,13 @@ namespace perideal
   }
 
   template <int dim>
-  bool
-  AnisotropicBondBased<dim>::has_stiffness_fit() const
+  ModelCapabilities
+  AnisotropicBondBased<dim>::capabilities() const
   {
-    return grains.size() <= 1;
+    ModelCapabilities capabilities;
+    capabilities.stiffness_fit       = grains.size() <= 1;
+    capabilities.sequentially_linear = true;
+    return capabilities;
   }
 
   template <int dim>

@@ -442,21 +442,16 @@ namespace perideal
 
     // The bond term near surfaces: the energy method on the whole model (B_i corrected), with
     // the reduced stiffness C'_aaaa of the uniaxial test fields; its factors scale k_b.
-    if (context.surface_correction)
-      {
-        set_bond_coefficients(particles, false);
-        ParticleVector force;
-        particles.reinit_vector(force, 2);
-        const auto energy = [&](const ParticleVector &u, std::vector<double> &w) {
-          compute_forces(particles, u, force, &w, std::numeric_limits<double>::infinity());
-        };
-        const auto C_reduced = elasticity_tensor();
-        apply_energy_surface_correction<2>(particles,
-                                           field_layout(),
-                                           {{C_reduced[0][0][0][0], C_reduced[1][1][1][1]}},
-                                           energy);
-      }
+    apply_surface_correction<2>(*this, particles, context);
     set_bond_coefficients(particles, true);
+  }
+
+  std::unique_ptr<SurfaceCorrectionLaw<2>>
+  AnisotropicPlaneStress::surface_correction_law(ParticleSystem<2> &particles)
+  {
+    return elastic_surface_correction_law<2>(*this, particles, [this, &particles]() {
+      set_bond_coefficients(particles, false);
+    });
   }
 
   void

@@ -100,24 +100,26 @@ namespace perideal
     blocks.reinit_field(kernel->w_field, 1);
     blocks.reinit_field(kernel->f_field, 1);
     blocks.reinit_field(kernel->e_field, 1);
-    if (context.surface_correction)
-      {
-        ParticleVector force;
-        particles.reinit_vector(force, 1);
-        set_bond_coefficients(particles, false);
-        const auto energy = [&](const ParticleVector &w, std::vector<double> &density) {
-          compute_forces(particles, w, force, &density, std::numeric_limits<double>::infinity());
-        };
-        std::array<double, dim> modulus;
-        modulus.fill(mu);
-        apply_energy_surface_correction<dim>(particles, this->field_layout(), modulus, energy);
-      }
+    apply_surface_correction<dim>(*this, particles, context);
     set_bond_coefficients(particles, true);
     if (twist.active())
       {
         blocks.reinit_field(kernel->twist_field, 2);
         blocks.gather(twist_values.data(), 2, kernel->twist_field);
       }
+  }
+
+  template <int dim>
+  std::unique_ptr<SurfaceCorrectionLaw<dim>>
+  AntiplaneBondBased<dim>::surface_correction_law(ParticleSystem<dim> &particles)
+  {
+    auto law                      = std::make_unique<SurfaceCorrectionLaw<dim>>();
+    law->uncorrected_coefficients = [this, &particles]() {
+      set_bond_coefficients(particles, false);
+    };
+    law->energy_density = model_energy_density<dim>(*this, particles);
+    law->modulus.fill(mu);
+    return law;
   }
 
   template <int dim>

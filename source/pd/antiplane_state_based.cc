@@ -328,23 +328,9 @@ namespace perideal
           angle_factor[q] = 1. / sum[q];
       }
 
-    // The bond-based term: the energy method of AntiplaneBondBased on its own energy (pass 2
-    // with s = 0 and the full micromodulus), then its fraction alpha.
-    if (alpha > 0. && context.surface_correction)
-      {
-        set_bond_coefficients(particles, c, false);
-        const auto energy = [&](const ParticleVector &w, std::vector<double> &density) {
-          k.blocks.sync_state(particles.bonds());
-          k.blocks.gather(w.begin(), 1, k.w_field);
-          std::fill(k.s_field.begin(), k.s_field.end(), 0.);
-          k.template force_loop<true>(particles.bonds());
-          density.resize(n_owned);
-          k.blocks.scatter_owned(k.e_field, 1, volume.data(), density.data());
-        };
-        std::array<double, dim> modulus;
-        modulus.fill(mu);
-        apply_energy_surface_correction<dim>(particles, this->field_layout(), modulus, energy);
-      }
+    // The bond-based term: the shared surface correction (surface_correction_law()), then its
+    // fraction alpha.
+    apply_surface_correction<dim>(*this, particles, context);
     set_bond_coefficients(particles, alpha * c, true);
     // The twist enters after the surface correction, which describes the untwisted geometry.
     if (twist.active())
@@ -352,6 +338,33 @@ namespace perideal
         k.blocks.reinit_field(k.twist_field, 2);
         k.blocks.gather(twist_values.data(), 2, k.twist_field);
       }
+  }
+
+  template <int dim>
+  std::unique_ptr<SurfaceCorrectionLaw<dim>>
+  AntiplaneStateBased<dim>::surface_correction_law(ParticleSystem<dim> &particles)
+  {
+    // The bond-based term only (the state term has its per-point correction): the energy
+    // method of AntiplaneBondBased on its own energy (pass 2 with s = 0 and the full
+    // micromodulus); the model then takes its fraction alpha.
+    if (!(alpha > 0.))
+      return nullptr;
+    auto law                      = std::make_unique<SurfaceCorrectionLaw<dim>>();
+    law->uncorrected_coefficients = [this, &particles]() {
+      set_bond_coefficients(particles, c, false);
+    };
+    law->energy_density = [this, &particles](const ParticleVector &w,
+                                             std::vector<double>  &density) {
+      Kernel &k = *kernel;
+      k.blocks.sync_state(particles.bonds());
+      k.blocks.gather(w.begin(), 1, k.w_field);
+      std::fill(k.s_field.begin(), k.s_field.end(), 0.);
+      k.template force_loop<true>(particles.bonds());
+      density.resize(particles.n_owned());
+      k.blocks.scatter_owned(k.e_field, 1, particles.volumes().data(), density.data());
+    };
+    law->modulus.fill(mu);
+    return law;
   }
 
   template <int dim>

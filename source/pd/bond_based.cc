@@ -161,35 +161,24 @@ namespace perideal
     blocks.reinit_field(kernel->u_field, dim);
     blocks.reinit_field(kernel->f_field, dim);
     blocks.reinit_field(kernel->w_field, 1);
-    if (context.surface_correction)
-      {
-        ParticleVector force;
-        particles.reinit_vector(force, dim);
-        set_bond_coefficients(particles, false);
-        const auto energy = [&](const ParticleVector &u, std::vector<double> &w) {
-          compute_forces(particles, u, force, &w, std::numeric_limits<double>::infinity());
-        };
-        if (context.stiffness_fit)
-          {
-            // Per end and unit chi V_i V_j, c |xi| (n.e.n)^2 / 4 under a homogeneous strain.
-            const double micromodulus = c;
-            const auto   law =
-              [micromodulus](const Tensor<1, dim> &xi, double &axial, double &shear) {
-                axial = 0.5 * micromodulus * xi.norm();
-                shear = 0.;
-              };
-            fit_report = apply_stiffness_fit<dim>(particles, law, elasticity_tensor()[0][0][0][0]);
-          }
-        else
-          {
-            const auto              C = elasticity_tensor();
-            std::array<double, dim> modulus;
-            for (unsigned int a = 0; a < dim; ++a)
-              modulus[a] = C[a][a][a][a];
-            apply_energy_surface_correction<dim>(particles, this->field_layout(), modulus, energy);
-          }
-      }
+    fit_report = apply_surface_correction<dim>(*this, particles, context);
     set_bond_coefficients(particles, true);
+  }
+
+  template <int dim>
+  std::unique_ptr<SurfaceCorrectionLaw<dim>>
+  BondBased<dim>::surface_correction_law(ParticleSystem<dim> &particles)
+  {
+    auto law = elastic_surface_correction_law<dim>(*this, particles, [this, &particles]() {
+      set_bond_coefficients(particles, false);
+    });
+    // Per end and unit chi V_i V_j, c |xi| (n.e.n)^2 / 4 under a homogeneous strain.
+    const double micromodulus = c;
+    law->stiffness = [micromodulus](const Tensor<1, dim> &xi, double &axial, double &shear) {
+      axial = 0.5 * micromodulus * xi.norm();
+      shear = 0.;
+    };
+    return law;
   }
 
   template <int dim>
@@ -275,10 +264,13 @@ namespace perideal
   }
 
   template <int dim>
-  bool
-  BondBased<dim>::has_stiffness_fit() const
+  ModelCapabilities
+  BondBased<dim>::capabilities() const
   {
-    return true;
+    ModelCapabilities capabilities;
+    capabilities.stiffness_fit       = true;
+    capabilities.sequentially_linear = true;
+    return capabilities;
   }
 
   template <int dim>

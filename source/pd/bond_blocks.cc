@@ -170,7 +170,7 @@ namespace perideal
               }
       }
     lane_state.assign(lane_bond.size(), 0);
-    synced_revision = bonds.revision + 1;
+    synced_revision = bonds.revision() + 1;
     sync_state(bonds);
   }
 
@@ -196,12 +196,12 @@ namespace perideal
   void
   BondBlocks<dim>::sync_state(const BondList &bonds)
   {
-    if (bonds.revision == synced_revision)
+    if (bonds.revision() == synced_revision)
       return;
     for (std::size_t l = 0; l < lane_bond.size(); ++l)
       lane_state[l] =
         (lane_bond[l] == numbers::invalid_unsigned_int ? 0 : bonds.intact[lane_bond[l]]);
-    synced_revision = bonds.revision;
+    synced_revision = bonds.revision();
   }
 
   template <int dim>

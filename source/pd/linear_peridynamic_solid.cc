@@ -372,6 +372,15 @@ namespace perideal
     return theta;
   }
 
+  template <int dim>
+  ModelCapabilities
+  LinearPeridynamicSolid<dim>::capabilities() const
+  {
+    ModelCapabilities capabilities;
+    capabilities.sequentially_linear = true;
+    return capabilities;
+  }
+
   template class LinearPeridynamicSolid<2>;
   template class LinearPeridynamicSolid<3>;
 } // namespace perideal

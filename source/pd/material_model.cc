@@ -3,9 +3,11 @@
 // ---------------------------------------------------------------------
 #include <perideal/pd/material_model.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <limits>
+#include <string>
 
 namespace perideal
 {
@@ -97,9 +99,7 @@ namespace perideal
     std::vector<double> density;
     particles.reinit_vector(force, field_layout().n_components());
     const auto energy = [&](const std::uint8_t state) {
-      for (const unsigned int b : bonds.newly_broken)
-        bonds.intact[b] = state;
-      ++bonds.revision;
+      bonds.set_state_of(bonds.newly_broken, state);
       compute_forces(particles, u, force, &density, std::numeric_limits<double>::infinity());
       double sum = 0.;
       for (unsigned int i = 0; i < particles.n_owned(); ++i)
@@ -223,10 +223,17 @@ namespace perideal
   }
 
   template <int dim>
-  bool
-  MaterialModel<dim>::has_stiffness_fit() const
+  ModelCapabilities
+  MaterialModel<dim>::capabilities() const
   {
-    return false;
+    return {};
+  }
+
+  template <int dim>
+  std::unique_ptr<SurfaceCorrectionLaw<dim>>
+  MaterialModel<dim>::surface_correction_law(ParticleSystem<dim> &)
+  {
+    return nullptr;
   }
 
   template <int dim>
@@ -291,6 +298,28 @@ namespace perideal
       per_particle[k] = bound[k / n_components];
   }
 
+  template <int dim>
+  std::string
+  material_models_with(bool ModelCapabilities::*capability)
+  {
+    std::string       names;
+    const std::string all = PluginRegistry<MaterialModel<dim>>::pattern_string();
+    for (std::size_t start = 0; start < all.size();)
+      {
+        const std::size_t end  = std::min(all.find('|', start), all.size());
+        const std::string name = all.substr(start, end - start);
+        if (PluginRegistry<MaterialModel<dim>>::create(name, "Material/Model")->capabilities().*
+            capability)
+          names += (names.empty() ? "" : ", ") + name;
+        start = end + 1;
+      }
+    return names;
+  }
+
+  template std::string
+  material_models_with<2>(bool ModelCapabilities::*);
+  template std::string
+  material_models_with<3>(bool ModelCapabilities::*);
   template void
   bond_pair_coefficients<2>(const ParticleSystem<2> &, double, bool, std::vector<double> &);
   template void

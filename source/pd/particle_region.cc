@@ -231,11 +231,11 @@ namespace perideal
           model->parse_parameters(prm);
           prm.leave_subsection();
           model->resolve_regions(regions);
-          AssertThrow(!(surface_correction && stiffness_fit) || model->has_stiffness_fit(),
+          AssertThrow(!(surface_correction && stiffness_fit) || model->capabilities().stiffness_fit,
                       ExcMessage("<Discretization/Surface correction method> = stiffness fit is "
-                                 "available for <Material/Model> = bond based, timoshenko bond "
-                                 "based and anisotropic bond based without a Grains file, not '" +
-                                 model_name +
+                                 "available for <Material/Model> = " +
+                                 material_models_with<dim>(&ModelCapabilities::stiffness_fit) +
+                                 " (as their parameters allow), not '" + model_name +
                                  "' as set up here; accepted for it: energy (the model's own "
                                  "method)."));
         }

@@ -1,5 +1,6 @@
 // ---------------------------------------------------------------------
-// PeriDeal: the energy method of surface correction for bond-based models.
+// PeriDeal: the surface correction of the PD models: the energy method, and the one dispatch
+// between it and the stiffness fit from the law a model supplies.
 // ---------------------------------------------------------------------
 #include <deal.II/base/exceptions.h>
 
@@ -8,6 +9,8 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <limits>
+#include <memory>
 
 namespace perideal
 {
@@ -40,8 +43,7 @@ namespace perideal
     std::fill(bonds.surface_factor.begin(), bonds.surface_factor.end(), 1.);
     // Pre-cracked bonds take part: the correction describes the uncracked geometry.
     const std::vector<std::uint8_t> intact = bonds.intact;
-    std::fill(bonds.intact.begin(), bonds.intact.end(), 1);
-    ++bonds.revision;
+    bonds.set_states(std::vector<std::uint8_t>(bonds.size(), 1));
 
     ParticleVector u, factors;
     particles.reinit_vector(u, nc);
@@ -59,8 +61,7 @@ namespace perideal
         for (unsigned int i = 0; i < particles.n_owned(); ++i)
           factors.local_element(i * dim + a) = classical / energy[i];
       }
-    bonds.intact = intact;
-    ++bonds.revision;
+    bonds.set_states(intact);
     factors.update_ghost_values();
 
     for (unsigned int i = 0; i < particles.n_owned(); ++i)
@@ -79,6 +80,78 @@ namespace perideal
           bonds.surface_factor[b] = 1. / std::sqrt(sum);
         }
   }
+
+  template <int dim>
+  StiffnessFitReport
+  apply_surface_correction(MaterialModel<dim>  &model,
+                           ParticleSystem<dim> &particles,
+                           const ModelContext  &context)
+  {
+    StiffnessFitReport report;
+    if (!context.surface_correction)
+      return report;
+    const auto law = model.surface_correction_law(particles);
+    if (!law)
+      return report;
+    if (context.stiffness_fit)
+      {
+        Assert(law->stiffness, dealii::ExcMessage("The model has no stiffness fit."));
+        report = apply_stiffness_fit<dim>(particles, law->stiffness, law->stiffness_modulus);
+      }
+    else
+      {
+        law->uncorrected_coefficients();
+        apply_energy_surface_correction<dim>(particles,
+                                             model.field_layout(),
+                                             law->modulus,
+                                             law->energy_density);
+      }
+    return report;
+  }
+
+  template <int dim>
+  std::function<void(const ParticleVector &, std::vector<double> &)>
+  model_energy_density(MaterialModel<dim> &model, ParticleSystem<dim> &particles)
+  {
+    auto force = std::make_shared<ParticleVector>();
+    particles.reinit_vector(*force, model.field_layout().n_components());
+    return [&model, &particles, force](const ParticleVector &u, std::vector<double> &density) {
+      model.compute_forces(particles, u, *force, &density, std::numeric_limits<double>::infinity());
+    };
+  }
+
+  template <int dim>
+  std::unique_ptr<SurfaceCorrectionLaw<dim>>
+  elastic_surface_correction_law(MaterialModel<dim>          &model,
+                                 ParticleSystem<dim>         &particles,
+                                 const std::function<void()> &uncorrected_coefficients)
+  {
+    auto law                      = std::make_unique<SurfaceCorrectionLaw<dim>>();
+    law->uncorrected_coefficients = uncorrected_coefficients;
+    law->energy_density           = model_energy_density<dim>(model, particles);
+    const auto C                  = model.elasticity_tensor();
+    for (unsigned int a = 0; a < dim; ++a)
+      law->modulus[a] = C[a][a][a][a];
+    law->stiffness_modulus = C[0][0][0][0];
+    return law;
+  }
+
+  template std::unique_ptr<SurfaceCorrectionLaw<2>>
+  elastic_surface_correction_law<2>(MaterialModel<2> &,
+                                    ParticleSystem<2> &,
+                                    const std::function<void()> &);
+  template std::unique_ptr<SurfaceCorrectionLaw<3>>
+  elastic_surface_correction_law<3>(MaterialModel<3> &,
+                                    ParticleSystem<3> &,
+                                    const std::function<void()> &);
+  template StiffnessFitReport
+  apply_surface_correction<2>(MaterialModel<2> &, ParticleSystem<2> &, const ModelContext &);
+  template StiffnessFitReport
+  apply_surface_correction<3>(MaterialModel<3> &, ParticleSystem<3> &, const ModelContext &);
+  template std::function<void(const ParticleVector &, std::vector<double> &)>
+  model_energy_density<2>(MaterialModel<2> &, ParticleSystem<2> &);
+  template std::function<void(const ParticleVector &, std::vector<double> &)>
+  model_energy_density<3>(MaterialModel<3> &, ParticleSystem<3> &);
 
   template void
   apply_energy_surface_correction<2>(

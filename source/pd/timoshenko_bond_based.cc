@@ -403,10 +403,12 @@ namespace perideal
   }
 
   template <int dim>
-  bool
-  TimoshenkoBondBased<dim>::has_stiffness_fit() const
+  ModelCapabilities
+  TimoshenkoBondBased<dim>::capabilities() const
   {
-    return true;
+    ModelCapabilities capabilities;
+    capabilities.stiffness_fit = true;
+    return capabilities;
   }
 
   template class TimoshenkoBondBased<2>;

@@ -167,35 +167,31 @@ namespace perideal
         k.blocks.to_lanes(zero, k.dissipated);
         k.dissipated_reported = 0.;
       }
-    if (context.surface_correction)
-      {
-        ParticleVector force;
-        particles.reinit_vector(force, Kernel::n_components);
-        set_bond_coefficients(particles, false);
-        const auto energy = [&](const ParticleVector &u, std::vector<double> &w) {
-          compute_forces(particles, u, force, &w, std::numeric_limits<double>::infinity());
-        };
-        if (context.stiffness_fit)
-          {
-            // Per end and unit chi V_i V_j, w / 2 = [C_N |xi| (n.e.n)^2 / 2 + 6 C_theta
-            // (|e.n|^2 - (n.e.n)^2) / |xi|] / 2 under a homogeneous strain, theta its rotation.
-            const double C_N = bond_stiffness.normal, C_theta = bond_stiffness.shear;
-            const auto   law = [C_N,
-                              C_theta](const Tensor<1, dim> &xi, double &axial, double &shear) {
-              const double l = xi.norm();
-              axial          = 0.5 * (C_N * l - 12. * C_theta / l);
-              shear          = 6. * C_theta / l;
-            };
-            fit_report = apply_stiffness_fit<dim>(particles, law, D[0]);
-          }
-        else
-          {
-            std::array<double, dim> modulus;
-            modulus.fill(D[0]);
-            apply_energy_surface_correction<dim>(particles, field_layout(), modulus, energy);
-          }
-      }
+    fit_report = apply_surface_correction<dim>(*this, particles, context);
     set_bond_coefficients(particles, true);
+  }
+
+  template <int dim>
+  std::unique_ptr<SurfaceCorrectionLaw<dim>>
+  TimoshenkoBondBased<dim>::surface_correction_law(ParticleSystem<dim> &particles)
+  {
+    auto law                      = std::make_unique<SurfaceCorrectionLaw<dim>>();
+    law->uncorrected_coefficients = [this, &particles]() {
+      set_bond_coefficients(particles, false);
+    };
+    law->energy_density = model_energy_density<dim>(*this, particles);
+    const auto D        = Timoshenko::target_moduli(youngs_modulus, poisson_ratio, context.planar);
+    law->modulus.fill(D[0]);
+    // Per end and unit chi V_i V_j, w / 2 = [C_N |xi| (n.e.n)^2 / 2 + 6 C_theta
+    // (|e.n|^2 - (n.e.n)^2) / |xi|] / 2 under a homogeneous strain, theta its rotation.
+    const double C_N = bond_stiffness.normal, C_theta = bond_stiffness.shear;
+    law->stiffness = [C_N, C_theta](const Tensor<1, dim> &xi, double &axial, double &shear) {
+      const double l = xi.norm();
+      axial          = 0.5 * (C_N * l - 12. * C_theta / l);
+      shear          = 6. * C_theta / l;
+    };
+    law->stiffness_modulus = D[0];
+    return law;
   }
 
   template <int dim>
@@ -232,6 +228,10 @@ namespace perideal
   TimoshenkoBondBased<2>::initialize(ParticleSystem<2> &, const ModelContext &);
   template void
   TimoshenkoBondBased<3>::initialize(ParticleSystem<3> &, const ModelContext &);
+  template std::unique_ptr<SurfaceCorrectionLaw<2>>
+  TimoshenkoBondBased<2>::surface_correction_law(ParticleSystem<2> &);
+  template std::unique_ptr<SurfaceCorrectionLaw<3>>
+  TimoshenkoBondBased<3>::surface_correction_law(ParticleSystem<3> &);
   template std::string
   TimoshenkoBondBased<2>::summary() const;
   template std::string

@@ -84,7 +84,7 @@ namespace
           pd_tests::Body<dim> body(n, dx, 3.015, partial_volume, 1e-3);
           Model               model;
           pd_tests::parse_model(model, entries);
-          if (correction == "stiffness fit" && !model.has_stiffness_fit())
+          if (correction == "stiffness fit" && !model.capabilities().stiffness_fit)
             continue;
           auto context = pd_tests::model_context(body.delta, 1e-3, planar, correction != "off");
           context.stiffness_fit = (correction == "stiffness fit");

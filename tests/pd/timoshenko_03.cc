@@ -132,8 +132,7 @@ namespace
                 << ok(std::abs(released / promised - 1.) < 1e-5)
                 << ", the bond broken: " << ok(perideal::n_broken_bonds(ps) == 1) << std::endl;
         // Restore the bond for the next mode.
-        ps.bonds().intact.assign(ps.bonds().size(), 1);
-        ++ps.bonds().revision;
+        ps.bonds().set_states(std::vector<std::uint8_t>(ps.bonds().size(), 1));
       }
   }
 

@@ -198,6 +198,8 @@ namespace perideal
     std::unique_ptr<dealii::FunctionParser<dim>> beta;
     std::shared_ptr<dealii::FunctionParser<dim>> exact_displacement;
     double                                       exact_tolerance = 0.;
+    /// <Postprocess/List>, with the mandatory postprocessor (Postprocessors::parse_parameters()).
+    std::vector<std::string> postprocessor_names;
 
     /// The fingerprint's lines of the models (Checkpoint).
     std::string  model_lines;

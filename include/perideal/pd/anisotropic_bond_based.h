@@ -98,7 +98,7 @@ namespace perideal
 
     /**
      * @brief Gershgorin bound with |k_b| (negative direction factors count with their size);
-     * defined in source/pd/model_linearization.cc.
+     * defined in source/pd/anisotropic_bond_based_linearization.cc.
      */
     void
     stiffness_bound(const ParticleSystem<dim> &particles,
@@ -106,7 +106,7 @@ namespace perideal
 
     /**
      * @brief One row n_b . (u_j - u_i) per intact bond with weight k_b / |xi| (the model is
-     * linear); defined in source/pd/model_linearization.cc.
+     * linear); defined in source/pd/anisotropic_bond_based_linearization.cc.
      */
     void
     linearize(const ParticleSystem<dim> &particles, LinearizedModel &linearized) const override;
@@ -140,8 +140,11 @@ namespace perideal
     summary() const override;
 
     /// The stiffness fit is offered for one grain (the fit's target is one interior tensor).
-    bool
-    has_stiffness_fit() const override;
+    ModelCapabilities
+    capabilities() const override;
+
+    std::unique_ptr<SurfaceCorrectionLaw<dim>>
+    surface_correction_law(ParticleSystem<dim> &particles) override;
 
     /// With a <Grains file>: "<Material/anisotropic bond based/Grains file> makes the
     /// particles a polycrystal".

@@ -130,6 +130,13 @@ namespace perideal
     summary() const override;
 
     /**
+     * @brief The energy method on the whole model (B_i corrected) with the reduced stiffness
+     * C'_aaaa of the uniaxial test fields (elastic_surface_correction_law()).
+     */
+    std::unique_ptr<SurfaceCorrectionLaw<2>>
+    surface_correction_law(ParticleSystem<2> &particles) override;
+
+    /**
      * @brief The relative error |M_lattice X - target| / |target| of the continuum calibration
      * on this lattice, the largest over lambda_0 and lambda_2 (after initialize()).
      */

@@ -80,7 +80,7 @@ namespace perideal
 
     /**
      * @brief Gershgorin bound (bond_pair_stiffness_bound()); defined in
-     * source/pd/model_linearization.cc.
+     * source/pd/antiplane_bond_based_linearization.cc.
      */
     void
     stiffness_bound(const ParticleSystem<dim> &particles,
@@ -88,13 +88,16 @@ namespace perideal
 
     /**
      * @brief One row (w_j - w_i) per intact bond with weight c G chi V_i V_j / |xi|; defined
-     * in source/pd/model_linearization.cc.
+     * in source/pd/antiplane_bond_based_linearization.cc.
      */
     void
     linearize(const ParticleSystem<dim> &particles, LinearizedModel &linearized) const override;
 
     std::string
     summary() const override;
+
+    std::unique_ptr<SurfaceCorrectionLaw<dim>>
+    surface_correction_law(ParticleSystem<dim> &particles) override;
 
     /**
      * @brief The micromodulus c [N/m^6].

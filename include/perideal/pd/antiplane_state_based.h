@@ -96,7 +96,7 @@ namespace perideal
 
     /**
      * @brief Gershgorin bound of the linearized operator (that of linearize()'s rows) plus the
-     * bond-based term's; defined in source/pd/model_linearization.cc.
+     * bond-based term's; defined in source/pd/antiplane_state_based_linearization.cc.
      */
     void
     stiffness_bound(const ParticleSystem<dim> &particles,
@@ -105,13 +105,17 @@ namespace perideal
     /**
      * @brief Per owned particle and direction a the row r_i,a (weight (1 - alpha) mu beta_i V_i,
      * beta_i the energy weight), and per intact bond the row w_j - w_i of the bond-based term
-     * (weight alpha c G chi V_i V_j / |xi|); defined in source/pd/model_linearization.cc.
+     * (weight alpha c G chi V_i V_j / |xi|); defined in
+     * source/pd/antiplane_state_based_linearization.cc.
      */
     void
     linearize(const ParticleSystem<dim> &particles, LinearizedModel &linearized) const override;
 
     std::string
     summary() const override;
+
+    std::unique_ptr<SurfaceCorrectionLaw<dim>>
+    surface_correction_law(ParticleSystem<dim> &particles) override;
 
     /**
      * @brief 2: the force uses the neighbours' states.

@@ -70,7 +70,7 @@ namespace perideal
 
     /**
      * @brief Gershgorin bound (see MaterialModel::stiffness_bound()); defined in
-     * source/pd/model_linearization.cc.
+     * source/pd/bond_based_linearization.cc.
      */
     void
     stiffness_bound(const ParticleSystem<dim> &particles,
@@ -78,7 +78,7 @@ namespace perideal
 
     /**
      * @brief Linearization (see MaterialModel::linearize()); defined in
-     * source/pd/model_linearization.cc.
+     * source/pd/bond_based_linearization.cc.
      */
     void
     linearize(const ParticleSystem<dim> &particles, LinearizedModel &linearized) const override;
@@ -92,8 +92,11 @@ namespace perideal
     std::string
     summary() const override;
 
-    bool
-    has_stiffness_fit() const override;
+    ModelCapabilities
+    capabilities() const override;
+
+    std::unique_ptr<SurfaceCorrectionLaw<dim>>
+    surface_correction_law(ParticleSystem<dim> &particles) override;
 
     /**
      * @brief The micromodulus c [N/m^6].

@@ -71,7 +71,7 @@ namespace perideal
 
     /**
      * @brief Gershgorin bound (see MaterialModel::stiffness_bound()); defined in
-     * source/pd/model_linearization.cc.
+     * source/pd/linear_peridynamic_solid_linearization.cc.
      */
     void
     stiffness_bound(const ParticleSystem<dim> &particles,
@@ -79,7 +79,7 @@ namespace perideal
 
     /**
      * @brief Linearization (see MaterialModel::linearize()); defined in
-     * source/pd/model_linearization.cc.
+     * source/pd/linear_peridynamic_solid_linearization.cc.
      */
     void
     linearize(const ParticleSystem<dim> &particles, LinearizedModel &linearized) const override;
@@ -92,6 +92,9 @@ namespace perideal
 
     std::string
     summary() const override;
+
+    ModelCapabilities
+    capabilities() const override;
 
     /**
      * @brief 2: the force uses the neighbours' states.

@@ -14,7 +14,11 @@
 #include <perideal/base/region.h>
 #include <perideal/base/torsion.h>
 #include <perideal/pd/particle_system.h>
+#include <perideal/pd/stiffness_fit.h>
 
+#include <array>
+#include <functional>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -34,8 +38,47 @@ namespace perideal
     /// Whether to apply the model's surface correction.
     bool surface_correction = true;
     /// With it, the stiffness fit (apply_stiffness_fit()) instead of the energy method, for a
-    /// model that has_stiffness_fit().
+    /// model whose capabilities() say stiffness_fit.
     bool stiffness_fit = false;
+  };
+
+  /**
+   * @brief What a model can do beyond its forces (MaterialModel::capabilities()): the
+   * libraries ask these, never the model's name or class.
+   */
+  struct ModelCapabilities
+  {
+    /// Its surface_correction_law() has a bond stiffness law, so <Discretization/Surface
+    /// correction method> = stiffness fit applies to it.
+    bool stiffness_fit = false;
+    /// Its bonds break by the linearized stretch n . (u_j - u_i) / |xi| of the displacement
+    /// (times its breaking_factors()) and it linearizes itself: the sequentially linear control
+    /// (<Solver/Control/Method> = sequentially linear) can break them event by event.
+    bool sequentially_linear = false;
+  };
+
+  /**
+   * @brief What the shared surface correction (apply_surface_correction()) needs of a model:
+   * its optional law, given by MaterialModel::surface_correction_law().
+   */
+  template <int dim>
+  struct SurfaceCorrectionLaw
+  {
+    /// The energy method: set the model's bond coefficients without surface factors and energy
+    /// weights, the state in which @p energy_density measures the model's energy.
+    std::function<void()> uncorrected_coefficients;
+    /// The energy method: the strain-energy density of the owned particles for a field of the
+    /// model's layout (apply_energy_surface_correction()).
+    std::function<void(const ParticleVector &, std::vector<double> &)> energy_density;
+    /// The energy method: the classical modulus of the test field along each axis (C_aaaa of
+    /// the target elasticity tensor, the shear modulus of antiplane shear).
+    std::array<double, dim> modulus{};
+    /// The stiffness fit: the bond's energy under a homogeneous strain (empty: the model has no
+    /// stiffness fit), and the target C_1111 (apply_stiffness_fit()).
+    ///@{
+    BondStiffnessLaw<dim> stiffness;
+    double                stiffness_modulus = 0.;
+    ///@}
   };
 
   /**
@@ -372,13 +415,19 @@ namespace perideal
     breaking_factors(const ParticleSystem<dim> &particles) const;
 
     /**
-     * @brief Whether the model offers the stiffness fit as its surface correction
-     * (<Discretization/Surface correction method> = stiffness fit): false by default; the
-     * bond-based models whose bond energy is axial and transverse terms ('bond based',
-     * 'timoshenko bond based', 'anisotropic bond based' with one grain).
+     * @brief What the model can do beyond its forces (ModelCapabilities): nothing by default.
+     * Asked after parse_parameters().
      */
-    virtual bool
-    has_stiffness_fit() const;
+    virtual ModelCapabilities
+    capabilities() const;
+
+    /**
+     * @brief The model's law for the shared surface correction (SurfaceCorrectionLaw), or
+     * nullptr (the default) if it takes none. Called by apply_surface_correction() from the
+     * model's initialize(), once its constants are set.
+     */
+    virtual std::unique_ptr<SurfaceCorrectionLaw<dim>>
+    surface_correction_law(ParticleSystem<dim> &particles);
 
     /**
      * @brief How far, in horizons, the force on a particle depends on the field: 1 for
@@ -395,6 +444,15 @@ namespace perideal
     virtual std::string
     summary() const = 0;
   };
+
+  /**
+   * @brief The names of the registered material models whose default capabilities() have
+   * @p capability, separated by commas: the accepted values of a message that refuses a model
+   * without it.
+   */
+  template <int dim>
+  std::string
+  material_models_with(bool ModelCapabilities::*capability);
 
   /**
    * @brief The pair coefficients k_b = c G chi V_i V_j of the bonds of a bond-based model with

@@ -47,11 +47,10 @@ namespace perideal
     /// modulus by it).
     std::vector<double> energy_weight;
     /// 1 while the bond carries force, 0 once broken (pre-cracks start at 0), 2 for a bond that
-    /// never breaks (it touches a no-fail region).
+    /// never breaks (it touches a no-fail region). Read it freely; outside the force kernels
+    /// (which keep their lane copy in step themselves, BondBlocks::break_lanes()) change it only
+    /// through break_bond(), set_states() and set_state_of(), which bump revision().
     std::vector<std::uint8_t> intact;
-    /// Incremented by every change of @p intact outside the force kernels, so that the kernels'
-    /// copy of the states (BondBlocks::sync_state()) follows.
-    std::uint64_t revision = 0;
     /// The bonds the force kernels broke (BondBlocks::break_lanes()) since the list was last
     /// cleared: MaterialModel::released_energy() takes their energy and clears it.
     std::vector<unsigned int> newly_broken;
@@ -62,6 +61,55 @@ namespace perideal
     {
       return neighbor.size();
     }
+
+    /**
+     * @brief The number of changes of @p intact made outside the force kernels so far: the
+     * kernels' copy of the states (BondBlocks::sync_state()) re-reads them when it changed.
+     */
+    std::uint64_t
+    revision() const
+    {
+      return n_changes;
+    }
+
+    /**
+     * @brief Break bond @p b (state 0) outside the force kernels; with @p released, list it in
+     * @p newly_broken, so that MaterialModel::released_energy() takes its energy.
+     */
+    void
+    break_bond(const unsigned int b, const bool released = false)
+    {
+      intact[b] = 0;
+      if (released)
+        newly_broken.push_back(b);
+      ++n_changes;
+    }
+
+    /**
+     * @brief Replace every bond's state by @p states (a copy of @p intact kept before, or all
+     * intact).
+     */
+    void
+    set_states(const std::vector<std::uint8_t> &states)
+    {
+      intact = states;
+      ++n_changes;
+    }
+
+    /**
+     * @brief Give the bonds @p bond_indices the state @p state.
+     */
+    void
+    set_state_of(const std::vector<unsigned int> &bond_indices, const std::uint8_t state)
+    {
+      for (const unsigned int b : bond_indices)
+        intact[b] = state;
+      ++n_changes;
+    }
+
+  private:
+    /// Incremented by every function above that changes @p intact.
+    std::uint64_t n_changes = 0;
   };
 
   /**

@@ -1,5 +1,6 @@
 // ---------------------------------------------------------------------
-// PeriDeal: the energy method of surface correction for bond-based models.
+// PeriDeal: the surface correction of the PD models: the energy method, and the one dispatch
+// between it and the stiffness fit from the law a model supplies.
 // ---------------------------------------------------------------------
 #ifndef perideal_pd_surface_correction_h
 #define perideal_pd_surface_correction_h
@@ -8,7 +9,9 @@
 
 #include <perideal/base/field_layout.h>
 #include <perideal/base/linear_algebra.h>
+#include <perideal/pd/material_model.h>
 #include <perideal/pd/particle_system.h>
+#include <perideal/pd/stiffness_fit.h>
 
 #include <array>
 #include <functional>
@@ -38,6 +41,43 @@ namespace perideal
     const FieldLayout                                                        &layout,
     const std::array<double, dim>                                            &modulus,
     const std::function<void(const ParticleVector &, std::vector<double> &)> &energy_density);
+
+  /**
+   * @brief The surface correction of @p model, the one place that chooses the method: nothing
+   * unless @p context asks for a correction and the model supplies a law
+   * (MaterialModel::surface_correction_law()); then the stiffness fit (apply_stiffness_fit(),
+   * if @p context says so: the parameters checked that the law has one) or the energy method
+   * (apply_energy_surface_correction(), with the model's coefficients set uncorrected first).
+   * It sets BondList::surface_factor; the model then sets its coefficients with the factors.
+   * Called by the model's initialize() once its constants are set. Returns the fit's report
+   * (the default one without a fit).
+   */
+  template <int dim>
+  StiffnessFitReport
+  apply_surface_correction(MaterialModel<dim>  &model,
+                           ParticleSystem<dim> &particles,
+                           const ModelContext  &context);
+
+  /**
+   * @brief The energy density of the energy method by @p model's own force evaluation
+   * (MaterialModel::compute_forces() with no bond breaking, a force vector of its own): the
+   * SurfaceCorrectionLaw::energy_density of a model whose forces give its whole energy.
+   */
+  template <int dim>
+  std::function<void(const ParticleVector &, std::vector<double> &)>
+  model_energy_density(MaterialModel<dim> &model, ParticleSystem<dim> &particles);
+
+  /**
+   * @brief The law of an elastic displacement model: its own energy
+   * (model_energy_density()), the moduli C_aaaa of its elasticity_tensor() along the axes (and
+   * C_1111 as the stiffness fit's target) and @p uncorrected_coefficients; the model adds its
+   * bond stiffness law if it has a stiffness fit.
+   */
+  template <int dim>
+  std::unique_ptr<SurfaceCorrectionLaw<dim>>
+  elastic_surface_correction_law(MaterialModel<dim>          &model,
+                                 ParticleSystem<dim>         &particles,
+                                 const std::function<void()> &uncorrected_coefficients);
 } // namespace perideal
 
 #endif

@@ -267,8 +267,11 @@ namespace perideal
     std::string
     summary() const override;
 
-    bool
-    has_stiffness_fit() const override;
+    ModelCapabilities
+    capabilities() const override;
+
+    std::unique_ptr<SurfaceCorrectionLaw<dim>>
+    surface_correction_law(ParticleSystem<dim> &particles) override;
 
     /// The bond stiffnesses in use.
     const Timoshenko::Stiffness &

@@ -43,3 +43,7 @@ namespace perideal
   template class DisplacementStatistics<2>;
   template class DisplacementStatistics<3>;
 } // namespace perideal
+
+PERIDEAL_REGISTER_POSTPROCESSOR(perideal::DisplacementStatistics,
+                                "displacement statistics",
+                                "the broken bonds and the largest displacements.")

@@ -129,3 +129,8 @@ namespace perideal
   template class EnergyStatistics<2>;
   template class EnergyStatistics<3>;
 } // namespace perideal
+
+PERIDEAL_REGISTER_POSTPROCESSOR(
+  perideal::EnergyStatistics,
+  "energy statistics",
+  "kinetic and strain energies, the work of the loads, the dissipated energy, the energy error and its instability stop (always run).")

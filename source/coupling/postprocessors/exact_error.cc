@@ -14,16 +14,18 @@ namespace perideal
   using namespace dealii;
 
   template <int dim>
-  ExactError<dim>::ExactError(std::shared_ptr<const Function<dim>> exact, const double tolerance)
-    : exact(std::move(exact))
-    , tolerance(tolerance)
-  {}
+  void
+  ExactError<dim>::set_inputs(const PostprocessorInputs<dim> &inputs)
+  {
+    exact     = inputs.exact_displacement;
+    tolerance = inputs.exact_tolerance;
+  }
 
   template <int dim>
   void
   ExactError<dim>::execute(const CoupledState<dim> &state, const StepData &data, StatisticsFile &)
   {
-    if (!data.final_row)
+    if (!exact || !data.final_row)
       return;
     using Motion               = typename CoupledState<dim>::Motion;
     const auto        &ps      = state.pd.particles();
@@ -109,3 +111,8 @@ namespace perideal
   template class ExactError<2>;
   template class ExactError<3>;
 } // namespace perideal
+
+PERIDEAL_REGISTER_POSTPROCESSOR(
+  perideal::ExactError,
+  "exact error",
+  "quasi-static runs with <Coupling/Exact displacement>: the errors against it and its force residual, in the summary.")

@@ -154,3 +154,8 @@ namespace perideal
   template class FieldOutput<2>;
   template class FieldOutput<3>;
 } // namespace perideal
+
+PERIDEAL_REGISTER_POSTPROCESSOR(
+  perideal::FieldOutput,
+  "field output",
+  "the particle and FE fields every <Output/Output interval> steps and after the last.")

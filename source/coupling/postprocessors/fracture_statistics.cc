@@ -9,9 +9,11 @@
 namespace perideal
 {
   template <int dim>
-  FractureStatistics<dim>::FractureStatistics(const QuasiStaticControl &control)
-    : control(control)
-  {}
+  void
+  FractureStatistics<dim>::set_inputs(const PostprocessorInputs<dim> &inputs)
+  {
+    control = inputs.control;
+  }
 
   template <int dim>
   void
@@ -51,3 +53,8 @@ namespace perideal
   template class FractureStatistics<2>;
   template class FractureStatistics<3>;
 } // namespace perideal
+
+PERIDEAL_REGISTER_POSTPROCESSOR(
+  perideal::FractureStatistics,
+  "fracture statistics",
+  "quasi-static runs with a <Solver/Control/Load point>: columns load, load_point_displacement, crack_length.")

@@ -3,6 +3,7 @@
 // ---------------------------------------------------------------------
 #include <perideal/coupling/postprocessors/postprocessor.h>
 
+#include <algorithm>
 #include <filesystem>
 #include <iomanip>
 
@@ -13,11 +14,61 @@ namespace perideal
 {
   using namespace dealii;
 
+  namespace
+  {
+    // Today's set, in its order: every file without a <Postprocess> section runs unchanged.
+    const char *default_list = "energy statistics, displacement statistics, reactions, "
+                               "fracture statistics, section integrals, exact error, probes, "
+                               "field output";
+  } // namespace
+
   template <int dim>
-  Postprocessors<dim>::Postprocessors(
-    std::vector<std::unique_ptr<Postprocessor<dim>>> postprocessors)
-    : postprocessors(std::move(postprocessors))
-  {}
+  void
+  Postprocessors<dim>::declare_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Postprocess");
+    prm.declare_entry(
+      "List",
+      default_list,
+      Patterns::MultipleSelection(PluginRegistry<Postprocessor<dim>>::pattern_string()),
+      "The postprocessors of the run, executed in this order after the steps the solver "
+      "chooses (their columns of statistics.csv and lines of the summary follow it). '" +
+        std::string(mandatory) +
+        "' always runs, first if it is not listed: its energy balance stops an unstable "
+        "explicit run. Without 'field output' no fields are written (nor the last iterate of a "
+        "quasi-static step that does not converge). " +
+        PluginRegistry<Postprocessor<dim>>::documentation());
+    prm.leave_subsection();
+  }
+
+  template <int dim>
+  std::vector<std::string>
+  Postprocessors<dim>::parse_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Postprocess");
+    std::vector<std::string> names = Utilities::split_string_list(prm.get("List"));
+    prm.leave_subsection();
+    for (auto name = names.begin(); name != names.end(); ++name)
+      AssertThrow(std::find(names.begin(), name, *name) == name,
+                  ExcMessage("<Postprocess/List> names '" + *name +
+                             "' twice; accepted values, each once: " +
+                             PluginRegistry<Postprocessor<dim>>::pattern_string() + "."));
+    if (std::find(names.begin(), names.end(), mandatory) == names.end())
+      names.insert(names.begin(), mandatory);
+    return names;
+  }
+
+  template <int dim>
+  Postprocessors<dim>::Postprocessors(const std::vector<std::string> &names,
+                                      const PostprocessorInputs<dim> &inputs)
+  {
+    for (const auto &name : names)
+      {
+        postprocessors.push_back(
+          PluginRegistry<Postprocessor<dim>>::create(name, "Postprocess/List"));
+        postprocessors.back()->set_inputs(inputs);
+      }
+  }
 
   template <int dim>
   void

@@ -121,3 +121,7 @@ namespace perideal
   template class Probes<2>;
   template class Probes<3>;
 } // namespace perideal
+
+PERIDEAL_REGISTER_POSTPROCESSOR(perideal::Probes,
+                                "probes",
+                                "the field at <Output/Probe points>: columns probe<k>_<component>.")

@@ -155,3 +155,8 @@ namespace perideal
   template class Reactions<2>;
   template class Reactions<3>;
 } // namespace perideal
+
+PERIDEAL_REGISTER_POSTPROCESSOR(
+  perideal::Reactions,
+  "reactions",
+  "the reactions per condition and component; quasi-static: the applied load and the force balance.")

@@ -64,3 +64,8 @@ namespace perideal
   template class SectionIntegrals<2>;
   template class SectionIntegrals<3>;
 } // namespace perideal
+
+PERIDEAL_REGISTER_POSTPROCESSOR(
+  perideal::SectionIntegrals,
+  "section integrals",
+  "quasi-static: the section integrals of the FE physics and the particle model (the torque of torsion).")

@@ -7,6 +7,7 @@
 #include <perideal/base/parameter_utilities.h>
 #include <perideal/base/progress_reporter.h>
 #include <perideal/coupling/solvers/explicit_dynamics.h>
+#include <perideal/coupling/solvers/run_control.h>
 
 #include <algorithm>
 #include <chrono>
@@ -228,39 +229,29 @@ namespace perideal
     std::ostringstream run_description;
     run_description << "explicit dynamics, " << n_steps << " steps of " << std::setprecision(17)
                     << dt << " s";
-    checkpoint.set_run(run_description.str(), n_steps);
 
-    auto       &fe         = state.fe;
-    auto       &conditions = state.pd.boundary_conditions();
-    auto       &U = state.U, &V = state.V, &A = state.A;
-    auto       &u = state.u, &v = state.v, &a = state.a;
-    StepData    data;
-    RunPosition start;
-    if (checkpoint.restarting())
-      start = checkpoint.load(state, postprocessors);
-    else
-      {
-        state.apply_initial_conditions();
-        fe.prescribe(0., U, V);
-        conditions.prescribe_displacement(0., u);
-        compute_acceleration(state, 0., true);
-        if (state.is_coupled())
-          report_initial_residual(state);
-        state.start_work();
-
-        data.write_statistics = true;
-        data.write_fields     = true;
-        state.fe_support.equ(-1., state.residual);
-        postprocessors.execute(state, data);
-      }
+    auto             &fe         = state.fe;
+    auto             &conditions = state.pd.boundary_conditions();
+    auto             &U = state.U, &V = state.V, &A = state.A;
+    auto             &u = state.u, &v = state.v, &a = state.a;
+    RunControl<dim>   run(state, postprocessors, checkpoint, false);
+    const RunPosition start = run.start(run_description.str(), n_steps, [&]() {
+      state.apply_initial_conditions();
+      fe.prescribe(0., U, V);
+      conditions.prescribe_displacement(0., u);
+      compute_acceleration(state, 0., true);
+      if (state.is_coupled())
+        report_initial_residual(state);
+      state.start_work();
+      state.fe_support.equ(-1., state.residual);
+    });
 
     ProgressReporter progress(state.comm,
                               state.log,
                               n_steps,
                               settings.end_time,
                               settings.show_progress && state.is_root);
-    unsigned int     output_index = start.next_output;
-    const auto       start_time   = std::chrono::steady_clock::now();
+    const auto       start_time = std::chrono::steady_clock::now();
     for (unsigned int step = start.step + 1; step <= n_steps; ++step)
       {
         const double time = (step - 1) * dt;
@@ -281,12 +272,7 @@ namespace perideal
         conditions.prescribe_displacement(time + dt, u);
         U.update_ghost_values();
 
-        data.step             = step;
-        data.time             = step * dt;
-        data.final_row        = (step == n_steps);
-        data.write_statistics = (step % settings.statistics_interval == 0 || data.final_row);
-        data.write_fields =
-          data.final_row || (settings.output_interval > 0 && step % settings.output_interval == 0);
+        StepData   data = run.plan(step, step * dt, step == n_steps);
         const bool check_regions =
           state.adapt_regions && !data.final_row && step % state.adaptation_interval == 0;
         compute_acceleration(state,
@@ -300,15 +286,13 @@ namespace perideal
 
         state.accumulate_work();
 
-        if (data.write_fields)
-          data.output_index = output_index++;
         if (data.write_statistics)
           state.fe_support.equ(-1., state.residual);
-        postprocessors.execute(state, data);
+        run.write(data);
         if (check_regions)
           adapt_regions(state, step, data.time);
         progress.update(step, data.time);
-        if (checkpoint.after_step(state, postprocessors, {step, data.time, output_index}))
+        if (run.checkpoint(data))
           return;
       }
     const double seconds =

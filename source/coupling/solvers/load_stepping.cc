@@ -3,6 +3,7 @@
 // ---------------------------------------------------------------------
 #include <perideal/coupling/coupled_static_solver.h>
 #include <perideal/coupling/solvers/load_stepping.h>
+#include <perideal/coupling/solvers/run_control.h>
 #include <perideal/pd/damage_model.h>
 
 #include <algorithm>
@@ -262,21 +263,13 @@ namespace perideal
 
     // What a restart must keep: the solver and its load steps (not its tolerance, iterations or
     // linear solver, which a restart after a step that did not converge may change).
-    checkpoint.set_run(std::string(relax ? "adaptive dynamic relaxation" : "static") + ", " +
-                         std::to_string(n_steps) + " load steps" +
-                         (control.history == LoadHistory::time ? ", time history" : ""),
-                       n_steps);
-    StepData data;
-    data.quasi_static     = true;
-    data.write_statistics = true;
-    RunPosition start;
-    if (checkpoint.restarting())
-      start = checkpoint.load(state, postprocessors);
-    else
-      {
-        state.start_work();
-        postprocessors.execute(state, data);
-      }
+    RunControl<dim>   run(state, postprocessors, checkpoint, true);
+    const RunPosition start =
+      run.start(std::string(relax ? "adaptive dynamic relaxation" : "static") + ", " +
+                  std::to_string(n_steps) + " load steps" +
+                  (control.history == LoadHistory::time ? ", time history" : ""),
+                n_steps,
+                [&]() { state.start_work(); });
     // Without cutting, step k applies k/N; with cutting the load factor advances by increment.
     const double nominal   = 1. / n_steps;
     double       increment = nominal, reached = start.time;
@@ -355,16 +348,11 @@ namespace perideal
               state.log << ", " << iterations << (relax ? " relaxation" : " CG") << " iterations";
             state.log << std::endl;
           }
-        data.step      = step;
-        data.time      = factor;
-        data.final_row = cutting ? factor >= 1. : (step == n_steps);
-        data.write_fields =
-          data.final_row || (settings.output_interval > 0 && step % settings.output_interval == 0);
-        data.output_index = step;
-        data.iterations   = iterations;
-        data.pd_energy    = pd_energy;
-        postprocessors.execute(state, data);
-        if (checkpoint.after_step(state, postprocessors, {step, factor, step + 1}))
+        StepData data   = run.plan(step, factor, cutting ? factor >= 1. : (step == n_steps));
+        data.iterations = iterations;
+        data.pd_energy  = pd_energy;
+        run.write(data);
+        if (run.checkpoint(data))
           return;
         reached = factor;
         if (cutting && 2 * broken_in_step <= control.cut_threshold)

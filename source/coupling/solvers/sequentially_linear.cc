@@ -2,11 +2,10 @@
 // PeriDeal: quasi-static fracture event by event (sequentially linear control).
 // ---------------------------------------------------------------------
 #include <perideal/base/parameter_utilities.h>
+#include <perideal/coupling/solvers/run_control.h>
 #include <perideal/coupling/solvers/sequentially_linear.h>
-#include <perideal/pd/anisotropic_bond_based.h>
-#include <perideal/pd/bond_based.h>
 #include <perideal/pd/damage_model.h>
-#include <perideal/pd/linear_peridynamic_solid.h>
+#include <perideal/pd/material_model.h>
 
 #include <algorithm>
 #include <cmath>
@@ -31,14 +30,13 @@ namespace perideal
                 ExcMessage(method + " needs particles (<Discretization/Body>): bonds are what "
                                     "breaks."));
     const auto &material = state.pd.material();
-    AssertThrow(dynamic_cast<const BondBased<dim> *>(&material) != nullptr ||
-                  dynamic_cast<const LinearPeridynamicSolid<dim> *>(&material) != nullptr ||
-                  dynamic_cast<const AnisotropicBondBased<dim> *>(&material) != nullptr,
+    AssertThrow(material.capabilities().sequentially_linear,
                 ExcMessage(method +
                            " breaks bonds by the linearized stretch of a displacement field "
                            "(times each bond's breaking factor) against the critical stretch; "
-                           "<Material/Model> accepted: bond based, linear peridynamic solid, "
-                           "anisotropic bond based."));
+                           "<Material/Model> accepted: " +
+                           material_models_with<dim>(&ModelCapabilities::sequentially_linear) +
+                           "."));
     AssertThrow(std::isfinite(state.pd.critical_stretch()),
                 ExcMessage(method + " needs bonds that break: <Material/Damage model> = none; use "
                                     "'critical stretch'."));
@@ -120,11 +118,7 @@ namespace perideal
     auto &bonds = state.pd.particles().bonds();
     for (std::size_t b = 0; b < bonds.size(); ++b)
       if (bonds.intact[b] == 1 && bond_factor[b] <= limit)
-        {
-          bonds.intact[b] = 0;
-          bonds.newly_broken.push_back(static_cast<unsigned int>(b));
-        }
-    ++bonds.revision;
+        bonds.break_bond(static_cast<unsigned int>(b), true);
   }
 
   template <int dim>
@@ -146,11 +140,8 @@ namespace perideal
     const auto   number   = [](const double x) { return ParameterUtilities::format_number(x); };
     this->conditions_at(state, settings.end_time);
 
-    StepData data;
-    data.quasi_static     = true;
-    data.write_statistics = true;
-    state.start_work();
-    postprocessors.execute(state, data);
+    RunControl<dim> run(state, postprocessors, checkpoint, true);
+    run.start("sequentially linear", this->control.max_events, [&]() { state.start_work(); });
     double       peak = 0., peak_factor = 0.;
     unsigned int peak_event = 0;
     for (unsigned int event = 1;; ++event)
@@ -225,14 +216,12 @@ namespace perideal
           state.log << "Event " << event << ": load factor " << factor << ", load " << values.load
                     << " N, " << values.broken_bonds << " broken bonds, " << iterations
                     << " CG iterations" << std::endl;
-        data.step         = event;
-        data.time         = factor;
-        data.final_row    = !reason.empty();
+        // Fields after the last event only (no checkpoints: run.checkpoint() is not called).
+        StepData data     = run.plan(event, factor, !reason.empty());
         data.write_fields = data.final_row;
-        data.output_index = event;
         data.iterations   = iterations;
         data.pd_energy    = pd_energy;
-        postprocessors.execute(state, data);
+        run.write(data);
         if (data.final_row)
           {
             if (state.is_root)

@@ -24,8 +24,10 @@ namespace perideal
   class ExactError : public Postprocessor<dim>
   {
   public:
-    /// Compare with @p exact (one component per field component); no verdict if @p tolerance is 0.
-    ExactError(std::shared_ptr<const dealii::Function<dim>> exact, const double tolerance);
+    /// Compare with @p inputs.exact_displacement (one component per field component; nothing
+    /// without it); no verdict if @p inputs.exact_tolerance is 0.
+    void
+    set_inputs(const PostprocessorInputs<dim> &inputs) override;
 
     void
     execute(const CoupledState<dim> &state,
@@ -34,7 +36,7 @@ namespace perideal
 
   private:
     std::shared_ptr<const dealii::Function<dim>> exact;
-    double                                       tolerance;
+    double                                       tolerance = 0.;
   };
 } // namespace perideal
 

@@ -19,8 +19,9 @@ namespace perideal
   class FractureStatistics : public Postprocessor<dim>
   {
   public:
-    /// The statistics of the load point of @p control.
-    explicit FractureStatistics(const QuasiStaticControl &control);
+    /// The statistics of the load point of @p inputs.control.
+    void
+    set_inputs(const PostprocessorInputs<dim> &inputs) override;
 
     void
     initialize(const CoupledState<dim> &state) override;

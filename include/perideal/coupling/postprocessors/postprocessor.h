@@ -4,8 +4,13 @@
 #ifndef perideal_coupling_postprocessors_postprocessor_h
 #define perideal_coupling_postprocessors_postprocessor_h
 
+#include <deal.II/base/function.h>
+#include <deal.II/base/parameter_handler.h>
+
+#include <perideal/base/plugin_registry.h>
 #include <perideal/base/statistics_file.h>
 #include <perideal/coupling/coupled_state.h>
+#include <perideal/coupling/solvers/quasi_static_control.h>
 
 #include <memory>
 #include <string>
@@ -45,15 +50,49 @@ namespace perideal
   };
 
   /**
+   * @brief What a postprocessor may read of the problem's entries besides the state, given to
+   * it before initialize() (Postprocessor::set_inputs()).
+   */
+  template <int dim>
+  struct PostprocessorInputs
+  {
+    /// <Solver/Control>: its load point (FractureStatistics).
+    QuasiStaticControl control;
+    /// <Coupling/Exact displacement> (nullptr if not given) and <Coupling/Exact displacement
+    /// tolerance> (ExactError).
+    ///@{
+    std::shared_ptr<const dealii::Function<dim>> exact_displacement;
+    double                                       exact_tolerance = 0.;
+    ///@}
+  };
+
+  /**
    * @brief A postprocessor of a run (in the manner of ASPECT's Postprocess::Interface): it
    * reads the state after a step and adds its columns to the one statistics table, its lines to
-   * the final summary, or its files to the output directory.
+   * the final summary, or its files to the output directory. A plugin
+   * (PERIDEAL_REGISTER_POSTPROCESSOR): <Postprocess/List> names the ones a run executes.
    */
   template <int dim>
   class Postprocessor
   {
   public:
     virtual ~Postprocessor() = default;
+
+    /**
+     * @brief Declare the postprocessor's own entries: none by default (the registry's
+     * interface; the shipped ones read the entries of PostprocessorInputs).
+     */
+    static void
+    declare_parameters(dealii::ParameterHandler &)
+    {}
+
+    /**
+     * @brief Take what the postprocessor reads of the problem's entries (before initialize());
+     * nothing by default.
+     */
+    virtual void
+    set_inputs(const PostprocessorInputs<dim> &)
+    {}
 
     /**
      * @brief Once at the end of the set-up, before anything is written: checks (stopping with
@@ -92,8 +131,9 @@ namespace perideal
   };
 
   /**
-   * @brief The postprocessors of a run, executed in order: energies, displacements, reactions,
-   * the error against an exact field, probes, field output. They share the statistics table
+   * @brief The postprocessors of a run, executed in the order of <Postprocess/List> (by default
+   * energies, displacements, reactions, fracture statistics, section integrals, the error
+   * against an exact field, probes, field output). They share the statistics table
    * <Output/Directory>/statistics.csv, whose rows start with the step and the time (or the load
    * factor and the iterations), and the final summary, which starts with the time or the load
    * factor.
@@ -102,8 +142,28 @@ namespace perideal
   class Postprocessors
   {
   public:
-    /// The set of @p postprocessors (executed in this order).
-    explicit Postprocessors(std::vector<std::unique_ptr<Postprocessor<dim>>> postprocessors);
+    /// The name of the postprocessor every run executes, first if <Postprocess/List> omits it:
+    /// its energy balance stops an unstable explicit run.
+    static constexpr const char *mandatory = "energy statistics";
+
+    /**
+     * @brief Declare <Postprocess/List> (in the current section: the problem's top level).
+     */
+    static void
+    declare_parameters(dealii::ParameterHandler &prm);
+
+    /**
+     * @brief The names of <Postprocess/List>, in order, with the mandatory one first if it is
+     * not listed; a name listed twice stops, naming the entry. Unknown names are refused by the
+     * entry's pattern, which lists the registered ones.
+     */
+    static std::vector<std::string>
+    parse_parameters(dealii::ParameterHandler &prm);
+
+    /**
+     * @brief The registered postprocessors @p names, in this order, each given @p inputs.
+     */
+    Postprocessors(const std::vector<std::string> &names, const PostprocessorInputs<dim> &inputs);
 
     /**
      * @brief Initialize every postprocessor (their checks, nothing on disk). Collective.
@@ -142,5 +202,13 @@ namespace perideal
     std::unique_ptr<StatisticsFile>                  statistics;
   };
 } // namespace perideal
+
+/**
+ * Register class @p classname (a Postprocessor<dim> for dim = 2 and 3) as a value of
+ * <Postprocess/List> named @p name.
+ */
+#define PERIDEAL_REGISTER_POSTPROCESSOR(classname, name, description)                     \
+  PERIDEAL_REGISTER_PLUGIN(::perideal::Postprocessor<2>, classname<2>, name, description) \
+  PERIDEAL_REGISTER_PLUGIN(::perideal::Postprocessor<3>, classname<3>, name, description)
 
 #endif
