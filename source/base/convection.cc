@@ -18,7 +18,7 @@ namespace perideal
                       "0",
                       Patterns::Double(0.),
                       "Type 'convection' (a temperature): the heat transfer coefficient h "
-                      "[W/(m^2 K)] of the heat flux h (T_inf - T) into the body; > 0.");
+                      "[W/m^2/K] of the heat flux h (T_inf - T) into the body; > 0.");
     prm.declare_entry("Ambient temperature",
                       "",
                       Patterns::Anything(),

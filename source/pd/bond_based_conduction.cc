@@ -58,13 +58,13 @@ namespace perideal
     prm.declare_entry("Conductivity",
                       "0",
                       Patterns::Double(),
-                      "The thermal conductivity k [W/(m K)]; > 0.");
+                      "The thermal conductivity k [W/m/K]; > 0.");
     prm.declare_entry("Specific heat",
                       "0",
                       Patterns::Double(),
-                      "The specific heat c [J/(kg K)] (the heat capacity per volume is rho c "
+                      "The specific heat c [J/kg/K] (the heat capacity per volume is rho c "
                       "with <Material/Density>); > 0.");
-    RegionModuli<dim>::declare_parameters(prm, "Conductivities by region", "W/(m K)");
+    RegionModuli<dim>::declare_parameters(prm, "Conductivities by region", "W/m/K");
   }
 
   template <int dim>
