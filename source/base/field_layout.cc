@@ -47,6 +47,12 @@ namespace perideal
     return FieldLayout({{ComponentKind::scalar, name, 0}});
   }
 
+  FieldLayout
+  FieldLayout::temperature()
+  {
+    return FieldLayout({{ComponentKind::temperature, "T", 0}});
+  }
+
   unsigned int
   FieldLayout::n_components(const ComponentKind kind) const
   {
@@ -104,8 +110,10 @@ namespace perideal
   FieldLayout::description() const
   {
     std::string result;
-    for (const ComponentKind kind :
-         {ComponentKind::translation, ComponentKind::rotation, ComponentKind::scalar})
+    for (const ComponentKind kind : {ComponentKind::translation,
+                                     ComponentKind::rotation,
+                                     ComponentKind::scalar,
+                                     ComponentKind::temperature})
       {
         std::string names_of_kind;
         for (const auto &component : components)
@@ -116,7 +124,8 @@ namespace perideal
         const bool  several = n_components(kind) > 1;
         const char *word    = kind == ComponentKind::translation ? "translation" :
                               kind == ComponentKind::rotation    ? "rotation" :
-                                                                   "scalar";
+                              kind == ComponentKind::scalar      ? "scalar" :
+                                                                   "temperature";
         result +=
           (result.empty() ? "" : "; ") + std::string(word) + (several ? "s " : " ") + names_of_kind;
       }
@@ -126,7 +135,8 @@ namespace perideal
   std::string
   FieldLayout::free_motions() const
   {
-    if (n_components(ComponentKind::scalar) == n_components())
+    if (n_components(ComponentKind::scalar) + n_components(ComponentKind::temperature) ==
+        n_components())
       return std::string(n_components() > 1 ? "constants " : "a constant ") + names();
     return "rigid-body motions (2D: 3, 3D: 6)";
   }
@@ -148,7 +158,28 @@ namespace perideal
           return quantity == Quantity::value ? "value" :
                  quantity == Quantity::rate  ? "rate" :
                                                "flux";
+        case ComponentKind::temperature:
+          return quantity == Quantity::value ? "temperature" :
+                 quantity == Quantity::rate  ? "temperature rate" :
+                                               "heat flux";
       }
     return "";
+  }
+
+  std::array<std::string, 3>
+  output_names(const FieldComponent &component)
+  {
+    switch (component.kind)
+      {
+        case ComponentKind::translation:
+          return {{"displacement", "velocity", "force_density"}};
+        case ComponentKind::rotation:
+          return {{"rotation", "angular_velocity", "moment_density"}};
+        case ComponentKind::scalar:
+          return {{component.name, component.name + "_rate", component.name + "_load"}};
+        case ComponentKind::temperature:
+          return {{"temperature", "temperature_rate", "heat_source"}};
+      }
+    return {};
   }
 } // namespace perideal

@@ -42,12 +42,14 @@ namespace perideal
                       Patterns::Anything(),
                       "Initial value of the field: one expression of x, y(, z) per component "
                       "(the displacement u(x) [m] of a solid, rotations [rad] after it for "
-                      "micropolar models), separated by ';'; a single 0 is zero for all.");
+                      "micropolar models, the temperature T(x) [K] of a conduction model), "
+                      "separated by ';'; a single 0 is zero for all.");
     prm.declare_entry("Velocity",
                       "0",
                       Patterns::Anything(),
                       "Initial rate of the field (velocity v(x) [m/s]), one expression per "
-                      "component; a single 0 is zero for all.");
+                      "component; a single 0 is zero for all. Not read for a temperature (first "
+                      "order in time: its rate follows from the heat flows).");
     prm.leave_subsection();
 
     prm.enter_subsection("Body force");
@@ -55,7 +57,8 @@ namespace perideal
                       "0",
                       Patterns::Anything(),
                       "Body force density b(x, t) [N/m^3] on the whole body (a body couple "
-                      "density [N m/m^3] for rotations, a source for a scalar field), one "
+                      "density [N m/m^3] for rotations, a source for a scalar field, a heat "
+                      "source [W/m^3] for a temperature), one "
                       "expression of x, y(, z) and t per component of the field, separated by "
                       "';'; a single 0 is zero for all. Coupled problems weight it like the "
                       "energies: 1 - beta on the FE region, beta on the particles.");

@@ -21,18 +21,21 @@ namespace perideal
 
   namespace
   {
-    // The condition types of a component kind, by quantity: value, rate, load.
-    std::array<std::string, 3>
+    // The condition types of a component kind, by quantity: value, rate, load (a temperature:
+    // no rate; its loads are 'flux' and 'convection', listed after the three).
+    std::vector<std::string>
     type_names(const ComponentKind kind)
     {
       switch (kind)
         {
           case ComponentKind::translation:
-            return {{"displacement", "velocity", "traction"}};
+            return {"displacement", "velocity", "traction"};
           case ComponentKind::rotation:
-            return {{"rotation", "angular velocity", "moment"}};
+            return {"rotation", "angular velocity", "moment"};
           case ComponentKind::scalar:
-            return {{"value", "rate", "flux"}};
+            return {"value", "rate", "flux"};
+          case ComponentKind::temperature:
+            return {"value", "", "flux", "convection"};
         }
       return {};
     }
@@ -53,14 +56,16 @@ namespace perideal
         prm.declare_entry(
           "Type",
           "value",
-          Patterns::Selection("value|displacement|velocity|traction|rate|flux"),
+          Patterns::Selection("value|displacement|velocity|traction|rate|flux|convection"),
           "What it prescribes. 'value' (the default, accepted by every physics): the value of "
           "the listed components of the field, the displacement of translations. On "
           "translations (linear elasticity): 'displacement' [m] (the same as 'value') or "
           "'velocity' [m/s, explicit dynamics only] of the listed components, or 'traction' "
           "[Pa] (all components). On a scalar field w (scalar laplace): 'value' [w] or 'rate' "
           "[w/s, explicit dynamics only], or 'flux' (the normal flux k dw/dn [k w/m] into the "
-          "body).");
+          "body). On a temperature T: 'value' [K], 'flux' (the heat flux into the body "
+          "[W/m^2]) or 'convection' (the heat flux h (T_inf - T) of <Heat transfer "
+          "coefficient> and <Ambient temperature>).");
         prm.declare_entry("Components",
                           "",
                           Patterns::Anything(),
@@ -73,6 +78,7 @@ namespace perideal
                           "One expression of x, y, (z) and the time t (s) per listed component "
                           "(all components for traction and flux), in the unit of its Type, "
                           "separated by ';'; a single 0 is zero for all.");
+        Convection<dim>::declare_parameters(prm);
         prm.leave_subsection();
       }
   }
@@ -100,16 +106,21 @@ namespace perideal
         const auto        names_of_kind = type_names(layout.kind(0));
         const std::string type          = prm.get("Type");
         const auto        found = std::find(names_of_kind.begin(), names_of_kind.end(), type);
+        std::string       accepted;
+        for (const auto &name : names_of_kind)
+          if (!name.empty())
+            accepted += (accepted.empty() ? "" : ", ") + name;
         AssertThrow(found != names_of_kind.end() || type == "value",
                     ExcMessage("The parameter <" + prefix + "Type> = <" + type +
                                "> is not a condition on the field of <" + section +
                                "/Physics> = <" + physics_name + "> (" + layout.description() +
-                               "): accepted values are " + names_of_kind[0] +
-                               (names_of_kind[0] == "value" ? "" : " (or value)") + ", " +
-                               names_of_kind[1] + ", " + names_of_kind[2] + "."));
-        c.type =
-          (found == names_of_kind.end() ? Quantity::value :
-                                          static_cast<Quantity>(found - names_of_kind.begin()));
+                               "): accepted values are " + accepted +
+                               (names_of_kind[0] == "value" ? "" : " (or value)") + "."));
+        const auto index = found - names_of_kind.begin();
+        c.type           = (found == names_of_kind.end() ? Quantity::value :
+                                                           static_cast<Quantity>(std::min<long>(index, 2)));
+        if (type == "convection")
+          c.convection = Convection<dim>::parse(prm, prefix);
         const auto listed = Utilities::split_string_list(prm.get("Components"), ',');
         for (unsigned int k = 0; k < layout.n_components(); ++k)
           if (c.type == Quantity::load || listed.empty())

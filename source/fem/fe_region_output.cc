@@ -95,13 +95,14 @@ namespace perideal
         ActiveCellIterator next(cell);
         return next_selected(tria, ++next);
       });
-    // The translations as the vector 'displacement', every other component by its name.
+    // The translations as the vector 'displacement', every other component by its name
+    // (output_names(): a temperature as 'temperature').
     std::vector<std::string>                                              names;
     std::vector<DataComponentInterpretation::DataComponentInterpretation> interpretation;
     for (unsigned int c = 0; c < layout.n_components(); ++c)
       {
         const bool translation = layout.kind(c) == ComponentKind::translation;
-        names.push_back(translation ? "displacement" : layout.name(c));
+        names.push_back(output_names(layout[c])[0]);
         interpretation.push_back(translation ?
                                    DataComponentInterpretation::component_is_part_of_vector :
                                    DataComponentInterpretation::component_is_scalar);

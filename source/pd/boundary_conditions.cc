@@ -42,16 +42,30 @@ namespace perideal
       {"moment", ComponentKind::rotation, Quantity::load},
       {"value", ComponentKind::scalar, Quantity::value, true},
       {"rate", ComponentKind::scalar, Quantity::rate},
-      {"flux", ComponentKind::scalar, Quantity::load}};
+      {"flux", ComponentKind::scalar, Quantity::load},
+      {"flux", ComponentKind::temperature, Quantity::load},
+      {"convection", ComponentKind::temperature, Quantity::load}};
 
-    /// The types that act on the components of @p layout, separated by @p separator.
+    /// Whether a field of @p layout has components that @p type acts on.
+    bool
+    acts_on_layout(const ConditionType &type, const FieldLayout &layout)
+    {
+      return type.any_kind || layout.n_components(type.kind) > 0;
+    }
+
+    /// The types (each name once) that act on the components of @p layout (all types without
+    /// a layout), separated by @p separator.
     std::string
     type_names(const FieldLayout *layout, const std::string &separator)
     {
-      std::string result;
+      std::vector<std::string> names;
       for (const auto &type : condition_types)
-        if (!layout || type.any_kind || layout->n_components(type.kind) > 0)
-          result += (result.empty() ? "" : separator) + type.name;
+        if ((!layout || acts_on_layout(type, *layout)) &&
+            std::find(names.begin(), names.end(), type.name) == names.end())
+          names.emplace_back(type.name);
+      std::string result;
+      for (const auto &name : names)
+        result += (result.empty() ? "" : separator) + name;
       return result;
     }
   } // namespace
@@ -91,17 +105,21 @@ namespace perideal
                           "'traction' [Pa] on all; rotations (micropolar models): 'rotation' "
                           "[rad] or 'angular velocity' [rad/s] of the listed components, "
                           "'moment' [N m/m^2] on all; a scalar field: 'value' or 'rate' of it, "
-                          "'flux' (load per area). A load ('traction', 'moment', 'flux') acts as "
-                          "a force density in the region, a surface layer of thickness 'Layer "
-                          "thickness'.");
-        prm.declare_entry("Components",
-                          "",
-                          Patterns::Anything(),
-                          "The prescribed components (values and rates), by the names of the "
-                          "field's components, separated by ',': x, y, z (translations); rx, ry, "
-                          "rz (rotations; rz only in 2D); w (the scalar field of antiplane "
-                          "models). Empty: all components of the kind the type acts on (all "
-                          "components for 'value'). Loads act on all of them.");
+                          "'flux' (load per area); a temperature (conduction models): 'value' "
+                          "[K], 'flux' (a heat flux into the body [W/m^2]) or 'convection' (the "
+                          "heat flux h (T_inf - T) of <Heat transfer coefficient> and <Ambient "
+                          "temperature>). A load ('traction', 'moment', 'flux', 'convection') "
+                          "acts as a force (heat source) density in the region, a surface layer "
+                          "of thickness 'Layer thickness'.");
+        prm.declare_entry(
+          "Components",
+          "",
+          Patterns::Anything(),
+          "The prescribed components (values and rates), by the names of the "
+          "field's components, separated by ',': x, y, z (translations); rx, ry, "
+          "rz (rotations; rz only in 2D); w (the scalar field of antiplane "
+          "models); T (a temperature). Empty: all components of the kind the type acts on (all "
+          "components for 'value'). Loads act on all of them.");
         prm.declare_entry("Function",
                           "0",
                           Patterns::Anything(),
@@ -111,14 +129,15 @@ namespace perideal
         prm.declare_entry("Layer thickness",
                           "0",
                           Patterns::Double(0.),
-                          "A load ('traction', 'moment', 'flux'): the thickness of the loaded "
-                          "layer [m] (the region's extent normal to the surface; required). A "
-                          "value or rate: 0 (the default) for a hold of any shape; > 0 declares "
-                          "the region a fictitious layer of that depth beyond a face of the body, "
-                          "checked against the depth the model's force reaches: delta - dx/2 "
-                          "for bond-based models (3 lattice layers at delta = 3.015 dx), 2 delta "
-                          "- dx/2 for state-based ones (6 layers), whose forces use the "
-                          "neighbours' families.");
+                          "A load ('traction', 'moment', 'flux', 'convection'): the thickness "
+                          "of the loaded layer [m] (the region's extent normal to the surface; "
+                          "required). A value or rate: 0 (the default) for a hold of any shape; "
+                          "> 0 declares the region a fictitious layer of that depth beyond a "
+                          "face of the body, checked against the depth the model's force "
+                          "reaches: delta - dx/2 for bond-based models (3 lattice layers at "
+                          "delta = 3.015 dx), 2 delta - dx/2 for state-based ones (6 layers), "
+                          "whose forces use the neighbours' families.");
+        Convection<dim>::declare_parameters(prm);
         prm.leave_subsection();
       }
     prm.leave_subsection();
@@ -146,15 +165,23 @@ namespace perideal
         const std::string prefix = "Boundary conditions/" + name + "/";
         prm.enter_subsection(name);
         Condition c;
-        c.name                  = name;
-        c.region_name           = prm.get("Region");
-        c.region                = &regions.get(c.region_name, prefix + "Region");
-        const std::string t     = prm.get("Type");
-        const auto        found = std::find_if(std::begin(condition_types),
-                                        std::end(condition_types),
-                                        [&](const auto &type) { return t == type.name; });
+        c.name              = name;
+        c.region_name       = prm.get("Region");
+        c.region            = &regions.get(c.region_name, prefix + "Region");
+        const std::string t = prm.get("Type");
+        // The type of that name that acts on this field (a name may act on several kinds:
+        // 'flux' on a scalar and on a temperature), else the first of that name (refused).
+        auto found = std::find_if(std::begin(condition_types),
+                                  std::end(condition_types),
+                                  [&](const auto &type) {
+                                    return t == type.name && acts_on_layout(type, layout);
+                                  });
+        if (found == std::end(condition_types))
+          found = std::find_if(std::begin(condition_types),
+                               std::end(condition_types),
+                               [&](const auto &type) { return t == type.name; });
         Assert(found != std::end(condition_types), ExcInternalError());
-        AssertThrow(found->any_kind || layout.n_components(found->kind) > 0,
+        AssertThrow(acts_on_layout(*found, layout),
                     ExcMessage("The parameter <" + prefix + "Type> is '" + t +
                                "', which acts on components the field of this problem (" +
                                layout.description() + ") does not have; accepted types: " +
@@ -183,6 +210,8 @@ namespace perideal
         c.layer_thickness = prm.get_double("Layer thickness");
         if (c.quantity == Quantity::load)
           ParameterUtilities::require_positive(c.layer_thickness, prefix + "Layer thickness");
+        if (t == "convection")
+          c.convection = Convection<dim>::parse(prm, prefix);
         c.function = ParameterUtilities::make_function<dim>(prm.get("Function"),
                                                             c.components.size(),
                                                             prefix + "Function");
@@ -328,7 +357,7 @@ namespace perideal
     const auto        &x  = particle_system->positions();
     const unsigned int nc = layout.n_components();
     for (const auto &c : conditions)
-      if (c.quantity == Quantity::load)
+      if (c.quantity == Quantity::load && !c.convection)
         {
           c.function->set_time(time);
           for (const unsigned int i : c.particles)
@@ -344,6 +373,45 @@ namespace perideal
           for (unsigned int k = 0; k < nc; ++k)
             force.local_element(i * nc + k) += weight[i] * body_force->value(x[i], k);
       }
+  }
+
+  template <int dim>
+  bool
+  BoundaryConditions<dim>::has_convection() const
+  {
+    return std::any_of(conditions.begin(), conditions.end(), [](const auto &c) {
+      return c.convection.has_value();
+    });
+  }
+
+  template <int dim>
+  double
+  BoundaryConditions<dim>::convection_bound() const
+  {
+    double bound = 0.;
+    for (const auto &c : conditions)
+      if (c.convection)
+        bound = std::max(bound, c.convection->coefficient / c.layer_thickness);
+    return bound;
+  }
+
+  template <int dim>
+  void
+  BoundaryConditions<dim>::add_convection(const double          time,
+                                          const ParticleVector &field,
+                                          ParticleVector       &force) const
+  {
+    const auto        &x  = particle_system->positions();
+    const unsigned int nc = layout.n_components();
+    for (const auto &c : conditions)
+      if (c.convection)
+        {
+          c.convection->ambient->set_time(time);
+          for (const unsigned int i : c.particles)
+            for (const unsigned int k : c.components)
+              force.local_element(i * nc + k) +=
+                c.convection->flux(x[i], field.local_element(i * nc + k)) / c.layer_thickness;
+        }
   }
 
   template <int dim>

@@ -4,6 +4,7 @@
 #ifndef perideal_base_field_layout_h
 #define perideal_base_field_layout_h
 
+#include <array>
 #include <string>
 #include <vector>
 
@@ -18,12 +19,17 @@ namespace perideal
    *   rotation, angular velocity and moment (density); its inertia is a rotational inertia;
    * - scalar: a field that is not a vector component (the antiplane displacement, a warping
    *   function); its conditions are value, rate and flux (source); its inertia is the mass.
+   * - temperature: the temperature [K] of heat conduction, first order in time (forward Euler
+   *   of rho c dT/dt = q, no velocity); its conditions are value (the temperature), flux (a heat
+   *   flux into the body [W/m^2]) and convection (h (T_inf - T) [W/m^2]); its capacity is
+   *   rho c.
    */
   enum class ComponentKind
   {
     translation,
     rotation,
-    scalar
+    scalar,
+    temperature
   };
 
   /**
@@ -77,6 +83,17 @@ namespace perideal
     /// One scalar field called @p name.
     static FieldLayout
     scalar(const std::string &name = "w");
+
+    /// @brief One temperature "T" [K] (heat conduction).
+    static FieldLayout
+    temperature();
+
+    /// @brief Whether some component is of the first-order kind temperature.
+    bool
+    has_temperature() const
+    {
+      return n_components(ComponentKind::temperature) > 0;
+    }
 
     /// A layout of the given components (names must differ).
     explicit FieldLayout(const std::vector<FieldComponent> &components);
@@ -142,7 +159,8 @@ namespace perideal
 
     /**
      * @brief The motions without energy that conditions must hold in a static solve, for
-     * messages: "rigid-body motions (2D: 3, 3D: 6)", or "a constant w" for scalar fields.
+     * messages: "rigid-body motions (2D: 3, 3D: 6)", or "a constant w" for scalar fields and
+     * "a constant T" for a temperature.
      */
     std::string
     free_motions() const;
@@ -178,9 +196,21 @@ namespace perideal
     load
   };
 
-  /// The name of @p quantity of a component of kind @p kind ("displacement", "moment", ...).
+  /**
+   * @brief The name of @p quantity of a component of kind @p kind ("displacement", "moment",
+   * "temperature", "heat flux", ...).
+   */
   std::string
   quantity_name(const ComponentKind kind, const Quantity quantity);
+
+  /**
+   * @brief The names of the output fields of @p component's value, rate and load (density):
+   * displacement, velocity, force_density (translations); rotation, angular_velocity,
+   * moment_density (rotations); w, w_rate, w_load (a scalar w); temperature, temperature_rate,
+   * heat_source (a temperature).
+   */
+  std::array<std::string, 3>
+  output_names(const FieldComponent &component);
 } // namespace perideal
 
 #endif

@@ -17,6 +17,7 @@
 #include <deal.II/lac/full_matrix.h>
 #include <deal.II/lac/vector.h>
 
+#include <perideal/base/convection.h>
 #include <perideal/base/elasticity.h>
 #include <perideal/base/field_layout.h>
 #include <perideal/base/linear_algebra.h>
@@ -74,12 +75,15 @@ namespace perideal
       std::string                          name;
       std::set<dealii::types::boundary_id> boundary_ids;
       ///@}
-      /// value (displacement, value), rate (velocity, rate) or load (traction, flux).
+      /// value (displacement, value), rate (velocity, rate) or load (traction, flux,
+      /// convection).
       Quantity type = Quantity::value;
       /// The components of the layout it acts on.
       std::vector<unsigned int> components;
       /// Its <Function>, one component per entry of components.
       std::shared_ptr<dealii::Function<dim>> function;
+      /// A convection's coefficient and ambient temperature (<Type> 'convection', a load).
+      std::optional<Convection<dim>> convection;
     };
 
     /// The weight 1 - beta(x) of the FE energy; cells where it is 0 everywhere are FE_Nothing.

@@ -7,12 +7,14 @@
 #include <deal.II/base/function_parser.h>
 #include <deal.II/base/parameter_handler.h>
 
+#include <perideal/base/convection.h>
 #include <perideal/base/field_layout.h>
 #include <perideal/base/linear_algebra.h>
 #include <perideal/base/region.h>
 #include <perideal/pd/particle_system.h>
 
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -26,9 +28,11 @@ namespace perideal
    *   'traction' [Pa] (all translations);
    * - rotations (micropolar models): 'rotation' [rad] or 'angular velocity' [rad/s] of the
    *   listed components, or 'moment' [N m/m^2] (all rotations);
-   * - a scalar field: 'value' or 'rate' of it, or 'flux' (its load per unit area).
-   * A load ('traction', 'moment', 'flux') T(x, t) acts as the force density T / d on the
-   * particles of the region, a layer of thickness d ('Layer thickness') at the loaded surface;
+   * - a scalar field: 'value' or 'rate' of it, or 'flux' (its load per unit area);
+   * - a temperature: 'value' [K], 'flux' (a heat flux into the body [W/m^2]) or 'convection'
+   *   (the heat flux h (T_inf - T), Convection).
+   * A load ('traction', 'moment', 'flux', 'convection') T(x, t) acts as the force density T / d on
+   * the particles of the region, a layer of thickness d ('Layer thickness') at the loaded surface;
    * the resultant is T times the area of the layer's face, to within the lattice resolution.
    * Functions are deal.II FunctionParser expressions of x, y, (z) and t, one per listed
    * component. A component may be prescribed by one condition only.
@@ -95,9 +99,25 @@ namespace perideal
     bool
     has_loads() const;
     /// Add the body force (times the energy weights) and the loads of the conditions at @p time
-    /// to the force density @p force.
+    /// (convection aside: add_convection()) to the force density @p force.
     void
     add_loads(const double time, ParticleVector &force) const;
+    /// @brief Whether a condition is a convection (its load depends on the temperature).
+    bool
+    has_convection() const;
+    /**
+     * @brief The largest h / d of the convection conditions [W/(m^3 K)] (0 without one): what
+     * a convection adds to the Gershgorin bound of the particles of its layer (the stable step,
+     * ExplicitDynamics).
+     */
+    double
+    convection_bound() const;
+    /**
+     * @brief Add the heat source density h (T_inf(x, @p time) - T) / d of the convection
+     * conditions (d the <Layer thickness>) at the temperature @p field to @p force.
+     */
+    void
+    add_convection(const double time, const ParticleVector &field, ParticleVector &force) const;
     /// Whether component @p c of owned particle @p i is prescribed.
     bool
     is_prescribed(const unsigned int i, const unsigned int c) const
@@ -137,7 +157,9 @@ namespace perideal
       std::vector<unsigned int>                    kind_components;
       double                                       layer_thickness = 0.;
       std::unique_ptr<dealii::FunctionParser<dim>> function;
-      std::vector<unsigned int>                    particles;
+      /// A convection's coefficient and ambient temperature (its type is 'convection').
+      std::optional<Convection<dim>> convection;
+      std::vector<unsigned int>      particles;
     };
     FieldLayout                            layout;
     std::vector<Condition>                 conditions;

@@ -6,6 +6,7 @@
 #include <perideal/coupling/postprocessors/field_output.h>
 #include <perideal/pd/damage_model.h>
 
+#include <algorithm>
 #include <array>
 #include <string>
 #include <vector>
@@ -43,24 +44,28 @@ namespace perideal
         state.method.interpolate_to_particles(state.V, velocity);
         writer->clear_fields();
         writer->set_points(std::vector<Point<dim>>(x.begin(), x.begin() + n_owned));
-        // The fields of each group of components: displacement, velocity and force_density of
-        // the translations; rotation, angular_velocity, moment_density of the rotations; w,
-        // w_rate, w_load of a scalar w.
+        // The fields of each group of components (output_names()): displacement, velocity and
+        // force_density of the translations; rotation, angular_velocity, moment_density of the
+        // rotations; w, w_rate, w_load of a scalar w; temperature, temperature_rate,
+        // heat_source of a temperature.
         struct Group
         {
           std::vector<unsigned int>  components;
           std::array<std::string, 3> names;
         };
         const FieldLayout &layout = state.layout;
-        std::vector<Group> groups(2);
-        groups[0].names = {{"displacement", "velocity", "force_density"}};
-        groups[1].names = {{"rotation", "angular_velocity", "moment_density"}};
+        std::vector<Group> groups;
         for (unsigned int c = 0; c < nc; ++c)
-          if (layout.kind(c) == ComponentKind::scalar)
-            groups.push_back(
-              Group{{c}, {{layout.name(c), layout.name(c) + "_rate", layout.name(c) + "_load"}}});
-          else
-            groups[layout.kind(c) == ComponentKind::translation ? 0 : 1].components.push_back(c);
+          {
+            const auto names = output_names(layout[c]);
+            const auto group = std::find_if(groups.begin(), groups.end(), [&](const Group &g) {
+              return g.names == names;
+            });
+            if (group == groups.end())
+              groups.push_back(Group{{c}, names});
+            else
+              group->components.push_back(c);
+          }
         for (const auto &group : groups)
           if (!group.components.empty())
             {

@@ -91,7 +91,7 @@ namespace perideal
           values[p * nc + c] = state.u.local_element(probe_local_index[p] * nc + c);
     Utilities::MPI::sum(values, state.comm, values);
     const FieldLayout &layout = state.layout;
-    // Every statistics row: the values in SI units (m, rad).
+    // Every statistics row: the values in SI units (m, rad, K).
     if (data.write_statistics)
       for (unsigned int p = 0; p < points.size(); ++p)
         for (unsigned int c = 0; c < nc; ++c)
@@ -99,19 +99,23 @@ namespace perideal
                                values[p * nc + c]);
     if (!data.final_row || !state.is_root)
       return;
-    // The summary: translations and scalars in micrometres, rotations in microradians.
-    const std::string label = layout.n_components(ComponentKind::translation) == nc ?
-                                "displacement [um]" :
-                                "field (" + layout.names() + ") [um, urad]";
-    std::ostream     &log   = state.log;
-    const auto        flags = log.flags();
+    // The summary: translations and scalars in micrometres, rotations in microradians, a
+    // temperature in kelvin.
+    const bool        temperature = layout.n_components(ComponentKind::temperature) == nc;
+    const std::string label       = temperature ? "temperature [K]" :
+                                    layout.n_components(ComponentKind::translation) == nc ?
+                                                  "displacement [um]" :
+                                                  "field (" + layout.names() + ") [um, urad]";
+    const double      scale       = temperature ? 1. : 1e6;
+    std::ostream     &log         = state.log;
+    const auto        flags       = log.flags();
     for (unsigned int p = 0; p < points.size(); ++p)
       {
         log << std::defaultfloat << "Probe " << p + 1 << " (" << points[p] << "): particle at ("
             << probe_particles[p] << "), " << label << ":" << std::scientific
             << std::setprecision(6);
         for (unsigned int c = 0; c < nc; ++c)
-          log << ' ' << 1e6 * values[p * nc + c];
+          log << ' ' << scale * values[p * nc + c];
         log << '\n';
       }
     log << std::flush;

@@ -115,13 +115,15 @@ namespace perideal
     log << std::scientific << std::setprecision(6);
     for (unsigned int k = 0; k < pd_reactions.size(); ++k)
       {
-        // Forces [N], moments [N m]; a 'value' condition on a micropolar field reports both.
+        // Forces [N], moments [N m]; a 'value' condition on a micropolar field reports both; the
+        // heat flow [W] into the held particles of a temperature.
         unsigned int n_rotations = 0;
         for (const unsigned int c : pd_conditions.reaction_components(k))
           n_rotations += (layout.kind(c) == ComponentKind::rotation);
         log << "Reaction " << pd_names[k] << ": ";
         print_without_round_off(log, pd_reactions[k], floor);
-        log << (n_rotations == 0                      ? " N\n" :
+        log << (layout.has_temperature()              ? " W\n" :
+                n_rotations == 0                      ? " N\n" :
                 n_rotations == pd_reactions[k].size() ? " N m\n" :
                                                         " N (N m for rotations)\n");
       }
@@ -130,7 +132,7 @@ namespace perideal
         {
           log << "Reaction " << fe_conditions[k].name << ": ";
           print_without_round_off(log, fe_reactions[k], floor);
-          log << " N\n";
+          log << (layout.has_temperature() ? " W\n" : " N\n");
         }
     if (data.quasi_static)
       {

@@ -62,6 +62,14 @@ namespace perideal
                              "dynamic relaxation) cannot apply; use '" +
                              quantity_name(state.layout.kind(c.components[0]), Quantity::value) +
                              "' (scaled by the load factor) instead."));
+    // A convection's heat flux depends on the temperature: the static path has no matrix term
+    // for it.
+    for (unsigned int k = 0; k < conditions.names().size(); ++k)
+      AssertThrow(conditions.type_name(k) != "convection",
+                  ExcMessage("The boundary condition <" + conditions.names()[k] +
+                             "> is of type 'convection', which a quasi-static solve (<Solver/Type> "
+                             "= static or adaptive dynamic relaxation) cannot apply yet; accepted "
+                             "there: 'value' and 'flux' (or <Solver/Type> = explicit dynamics)."));
     for (unsigned int k = 0; k < conditions.names().size(); ++k)
       AssertThrow(std::find(rates.begin(), rates.end(), conditions.names()[k]) == rates.end(),
                   ExcMessage("The boundary condition <" + conditions.names()[k] + "> is of type '" +
