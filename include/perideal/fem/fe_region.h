@@ -378,6 +378,14 @@ namespace perideal
                        dealii::FEValues<dim>                                        &fe_values,
                        dealii::FEFaceValues<dim>                                    &fe_face_values,
                        dealii::Vector<double> &cell_rhs) const;
+    /**
+     * @brief Add h sum_q w_q phi_i phi_j of the convection (Robin) conditions on the boundary
+     * faces of @p cell to @p cell_matrix: the part h T of their heat flux h (T_inf - T).
+     */
+    void
+    add_convection_stiffness(const typename dealii::DoFHandler<dim>::active_cell_iterator &cell,
+                             dealii::FEFaceValues<dim>  &face_values,
+                             dealii::FullMatrix<double> &cell_matrix) const;
     /// The weighted stiffness and the lumped mass (unconstrained).
     void
     assemble_matrices();

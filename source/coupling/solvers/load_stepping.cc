@@ -91,6 +91,11 @@ namespace perideal
     for (unsigned int c = 0; c < n_fe && fe.n_dofs() > 0; ++c)
       for (std::size_t k = 0; k < held.size(); ++k)
         constrained[c] += (held[k] && of[c][k]) ? 1. : 0.;
+    // A convection condition holds a temperature (its h T is in the FE stiffness).
+    for (const auto &c : fe.conditions())
+      if (c.convection)
+        for (const unsigned int component : c.components)
+          constrained[component] += 1.;
     for (std::size_t k = 0; k < state.motion.size(); ++k)
       if (state.motion[k] == Motion::prescribed)
         constrained[k % nc] += 1.;
