@@ -33,6 +33,8 @@ using namespace dealii;
 
 namespace
 {
+  using fem_tests::number;
+
   const double L = 0.2, H = 0.05, t = 0.01, k = 45., T0 = 300.;
 
   // The temperature as a deal.II function.
@@ -53,15 +55,6 @@ namespace
   private:
     std::function<double(const Point<dim> &)> f;
   };
-
-  std::string
-  number(const double value)
-  {
-    std::ostringstream out;
-    out.precision(17);
-    out << value;
-    return out.str();
-  }
 
   // The largest |T_h - T| at the quadrature points of Q(3) relative to max |T|.
   template <int dim>
@@ -143,25 +136,12 @@ namespace
     for (unsigned int d = 0; d < dim; ++d)
       gradient[d] = b[d];
     const Tensor<1, dim> expected = -(physics.conductivity() * gradient);
-    const auto           output   = physics.postprocessor();
-    const auto          &fe       = problem.fe_region();
-    FEValues<dim>        values(fe.get_fe_collection()[0],
-                         QGauss<dim>(1),
-                         update_gradients | update_quadrature_points);
-    double               largest = 0.;
-    for (const auto &cell : fe.get_dof_handler().active_cell_iterators())
-      if (cell->is_locally_owned())
-        {
-          values.reinit(cell);
-          DataPostprocessorInputs::Scalar<dim> inputs;
-          inputs.solution_gradients.resize(1);
-          values.get_function_gradients(solution, inputs.solution_gradients);
-          std::vector<dealii::Vector<double>> computed(1, dealii::Vector<double>(dim));
-          output->evaluate_scalar_field(inputs, computed);
-          for (unsigned int d = 0; d < dim; ++d)
-            largest = std::max(largest, std::abs(computed[0][d] - expected[d]));
-        }
-    largest = Utilities::MPI::max(largest, MPI_COMM_WORLD);
+    const double         largest  = fem_tests::output_error(
+      problem.fe_region(),
+      solution,
+      QGauss<dim>(1),
+      [](const auto &) { return true; },
+      expected);
     deallog << "  heat flux -K b = (";
     for (unsigned int d = 0; d < dim; ++d)
       deallog << (d > 0 ? ", " : "") << std::fixed << std::setprecision(4) << expected[d];

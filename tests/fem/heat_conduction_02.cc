@@ -29,17 +29,10 @@ using namespace dealii;
 
 namespace
 {
+  using fem_tests::number;
+
   const double A[3][3] = {{30., 12., -8.}, {12., -10., 6.}, {-8., 6., 15.}};
   const double b[3]    = {4., -3., 2.};
-
-  std::string
-  number(const double value)
-  {
-    std::ostringstream out;
-    out.precision(17);
-    out << value;
-    return out.str();
-  }
 
   // The rotation by @p degrees about the axis @p axis.
   Tensor<2, 3>
@@ -182,24 +175,12 @@ namespace
     for (unsigned int d = 0; d < dim; ++d)
       centre[d] = 0.5;
     const Tensor<1, dim> expected = -(K * exact.gradient(centre));
-    double               largest  = 0.;
-    const auto           output   = physics.postprocessor();
-    FEValues<dim>        values(fe.get_fe_collection()[0],
-                         Quadrature<dim>(std::vector<Point<dim>>{Point<dim>()}),
-                         update_gradients | update_quadrature_points);
-    for (const auto &cell : fe.get_dof_handler().active_cell_iterators())
-      if (cell->is_locally_owned() && cell->vertex(0).distance(centre) < 1e-12)
-        {
-          values.reinit(cell);
-          DataPostprocessorInputs::Scalar<dim> inputs;
-          inputs.solution_gradients.resize(1);
-          values.get_function_gradients(solution, inputs.solution_gradients);
-          std::vector<dealii::Vector<double>> computed(1, dealii::Vector<double>(dim));
-          output->evaluate_scalar_field(inputs, computed);
-          for (unsigned int d = 0; d < dim; ++d)
-            largest = std::max(largest, std::abs(computed[0][d] - expected[d]));
-        }
-    largest = Utilities::MPI::max(largest, MPI_COMM_WORLD);
+    const double         largest  = fem_tests::output_error(
+      fe,
+      solution,
+      Quadrature<dim>(std::vector<Point<dim>>{Point<dim>()}),
+      [&](const auto &cell) { return cell->vertex(0).distance(centre) < 1e-12; },
+      expected);
     deallog << "  heat flux at the centre -K grad T = (";
     for (unsigned int d = 0; d < dim; ++d)
       deallog << (d > 0 ? ", " : "") << expected[d];

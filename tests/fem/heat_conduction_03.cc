@@ -28,17 +28,10 @@ using namespace dealii;
 
 namespace
 {
+  using fem_tests::number;
+
   const double L = 0.1, k = 50., rho = 7800., c = 500., T0 = 100., end_time = 40.;
   const double alpha = k / (rho * c), lambda = alpha * numbers::PI * numbers::PI / (L * L);
-
-  std::string
-  number(const double value)
-  {
-    std::ostringstream out;
-    out.precision(17);
-    out << value;
-    return out.str();
-  }
 
   class Sine : public Function<2>
   {
@@ -80,60 +73,20 @@ namespace
   Result
   run(const unsigned int n, const double dt, const double theta)
   {
-    const std::string text = "set Dimension = 2\n"
-                             "subsection Discretization\n"
-                             "  set Thickness = 0.01\n"
-                             "end\n"
-                             "subsection Initial conditions\n"
-                             "  set Displacement = " +
-                             number(T0) + "*sin(pi*x/" + number(L) +
-                             ")\n"
-                             "end\n"
-                             "subsection Solver\n"
-                             "  set Type      = implicit\n"
-                             "  set Tolerance = 1e-12\n"
-                             "end\n"
-                             "subsection Time stepping\n"
-                             "  set End time  = " +
-                             number(end_time) +
-                             "\n"
-                             "  set Time step = " +
-                             number(dt) +
-                             "\n"
-                             "  set Theta     = " +
-                             number(theta) +
-                             "\n"
-                             "end\n"
-                             "subsection Output\n"
-                             "  set Directory  = results\n"
-                             "  set Write HDF5 = false\n"
-                             "  set Progress   = false\n"
-                             "end\n"
-                             "subsection Finite elements\n"
-                             "  set Physics = heat\n"
-                             "  set Density = " +
-                             number(rho) +
-                             "\n"
-                             "  set Generator = subdivided_hyper_rectangle\n"
-                             "  set Generator arguments = " +
-                             std::to_string(n) + ", 1 : 0, 0 : " + number(L) + ", " +
-                             number(L / n) +
-                             " : true\n"
-                             "  subsection heat\n"
-                             "    set Conductivity  = " +
-                             number(k) +
-                             "\n"
-                             "    set Specific heat = " +
-                             number(c) +
-                             "\n"
-                             "  end\n"
-                             "  subsection Boundary conditions\n"
-                             "    set Names = ends\n"
-                             "    subsection ends\n"
-                             "      set Boundary ids = 0, 1\n"
-                             "    end\n"
-                             "  end\n"
-                             "end\n";
+    const std::string           text = fem_tests::heat_strip("implicit",
+                                                   n,
+                                                   L,
+                                                   number(T0) + "*sin(pi*x/" + number(L) + ")",
+                                                   end_time,
+                                                   dt,
+                                                   theta,
+                                                   k,
+                                                   rho,
+                                                   c,
+                                                   "    set Names = ends\n"
+                                                             "    subsection ends\n"
+                                                             "      set Boundary ids = 0, 1\n"
+                                                             "    end\n");
     std::ostringstream          log;
     perideal::CoupledProblem<2> problem(MPI_COMM_WORLD, log);
     const auto                  T        = fem_tests::solve(problem, text);

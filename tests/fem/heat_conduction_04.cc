@@ -25,17 +25,10 @@ using namespace dealii;
 
 namespace
 {
+  using fem_tests::number;
+
   const double L = 0.02, k = 20., rho = 8000., c = 500., h = 1000., T_i = 500., T_inf = 300.;
   const double alpha = k / (rho * c), Bi = h * L / k, end_time = 0.5 * L * L / alpha;
-
-  std::string
-  number(const double value)
-  {
-    std::ostringstream out;
-    out.precision(17);
-    out << value;
-    return out.str();
-  }
 
   // The series solution at x / L = @p xi and Fourier number @p Fo.
   double
@@ -76,67 +69,24 @@ namespace
   std::pair<double, double>
   run(const std::string &solver, const unsigned int n, const double dt)
   {
-    const std::string text = "set Dimension = 2\n"
-                             "subsection Discretization\n"
-                             "  set Thickness = 0.01\n"
-                             "end\n"
-                             "subsection Initial conditions\n"
-                             "  set Displacement = " +
-                             number(T_i) +
-                             "\n"
-                             "end\n"
-                             "subsection Solver\n"
-                             "  set Type      = " +
-                             solver +
-                             "\n"
-                             "  set Tolerance = 1e-12\n"
-                             "end\n"
-                             "subsection Time stepping\n"
-                             "  set End time  = " +
-                             number(end_time) +
-                             "\n"
-                             "  set Time step = " +
-                             number(dt) +
-                             "\n"
-                             "  set Theta     = 0.5\n"
-                             "end\n"
-                             "subsection Output\n"
-                             "  set Directory  = results\n"
-                             "  set Write HDF5 = false\n"
-                             "  set Progress   = false\n"
-                             "end\n"
-                             "subsection Finite elements\n"
-                             "  set Physics = heat\n"
-                             "  set Density = " +
-                             number(rho) +
-                             "\n"
-                             "  set Generator = subdivided_hyper_rectangle\n"
-                             "  set Generator arguments = " +
-                             std::to_string(n) + ", 1 : 0, 0 : " + number(L) + ", " +
-                             number(L / n) +
-                             " : true\n"
-                             "  subsection heat\n"
-                             "    set Conductivity  = " +
-                             number(k) +
-                             "\n"
-                             "    set Specific heat = " +
-                             number(c) +
-                             "\n"
-                             "  end\n"
-                             "  subsection Boundary conditions\n"
-                             "    set Names = cooled\n"
-                             "    subsection cooled\n"
-                             "      set Boundary ids = 1\n"
-                             "      set Type = convection\n"
-                             "      set Heat transfer coefficient = " +
-                             number(h) +
-                             "\n"
-                             "      set Ambient temperature = " +
-                             number(T_inf) +
-                             "\n"
-                             "    end\n"
-                             "  end\n"
-                             "end\n";
+    const std::string text =
+      fem_tests::heat_strip(solver,
+                            n,
+                            L,
+                            number(T_i),
+                            end_time,
+                            dt,
+                            0.5,
+                            k,
+                            rho,
+                            c,
+                            "    set Names = cooled\n"
+                            "    subsection cooled\n"
+                            "      set Boundary ids = 1\n"
+                            "      set Type = convection\n"
+                            "      set Heat transfer coefficient = " +
+                              number(h) + "\n      set Ambient temperature = " + number(T_inf) +
+                              "\n    end\n");
     std::ostringstream          log;
     perideal::CoupledProblem<2> problem(MPI_COMM_WORLD, log);
     const auto                  T  = fem_tests::solve(problem, text);

@@ -1,6 +1,7 @@
 // ---------------------------------------------------------------------
 // PeriDeal: quasi-static load stepping with bond breaking.
 // ---------------------------------------------------------------------
+#include <perideal/coupling/solvers/equilibrium_state.h>
 #include <perideal/coupling/solvers/load_stepping.h>
 #include <perideal/pd/damage_model.h>
 
@@ -13,22 +14,6 @@
 namespace perideal
 {
   using namespace dealii;
-
-  namespace
-  {
-    // The names of the FE and the particle boundary conditions of @p state, separated by ', '.
-    template <int dim>
-    std::string
-    condition_names(const CoupledState<dim> &state)
-    {
-      std::string names;
-      for (const auto &c : state.fe.conditions())
-        names += (names.empty() ? "" : ", ") + c.name;
-      for (const auto &name : state.pd.boundary_conditions().names())
-        names += (names.empty() ? "" : ", ") + name;
-      return names;
-    }
-  } // namespace
 
   template <int dim>
   LoadStepping<dim>::LoadStepping(const SolverType type, const QuasiStaticControl &control)
@@ -220,28 +205,6 @@ namespace perideal
   {
     state.f_ext.equ(factor, fe_full_load);
     state.external_force.equ(factor, full_load);
-  }
-
-  template <int dim>
-  double
-  LoadStepping<dim>::equilibrium_state(CoupledState<dim> &state) const
-  {
-    const double pd_energy = state.method.equilibrium_forces(state.U,
-                                                             state.u,
-                                                             state.f_ext,
-                                                             state.external_force,
-                                                             state.residual,
-                                                             state.internal_force);
-
-    // The loads that do work: the applied ones, and on prescribed components the support
-    // forces (the FE residual K z - F there; minus the internal force on particles).
-    const auto &mask = state.fe.prescribed_mask();
-    for (unsigned int k = 0; k < state.U.locally_owned_size(); ++k)
-      state.fe_load.local_element(k) =
-        state.f_ext.local_element(k) + (mask[k] ? state.residual.local_element(k) : 0.);
-    state.accumulate_work();
-    state.fe_support = state.residual;
-    return pd_energy;
   }
 
   template <int dim>

@@ -2,6 +2,7 @@
 // PeriDeal: implicit theta-scheme time steps of a first-order field (heat conduction).
 // ---------------------------------------------------------------------
 #include <perideal/base/parameter_utilities.h>
+#include <perideal/coupling/solvers/equilibrium_state.h>
 #include <perideal/coupling/solvers/theta_scheme.h>
 
 #include <iomanip>
@@ -46,12 +47,7 @@ namespace perideal
     equilibrium.linear.linear_solver  = settings.linear_solver;
     equilibrium.linear.tolerance      = settings.tolerance;
     equilibrium.linear.max_iterations = settings.max_iterations;
-    std::string names;
-    for (const auto &c : state.fe.conditions())
-      names += (names.empty() ? "" : ", ") + c.name;
-    for (const auto &name : state.pd.boundary_conditions().names())
-      names += (names.empty() ? "" : ", ") + name;
-    state.method.initialize_equilibrium(prescribed, equilibrium, names);
+    state.method.initialize_equilibrium(prescribed, equilibrium, condition_names(state));
 
     // D = C / (theta dt), C the lumped capacity: the method's lumped masses times the
     // components' inertia ratio (the specific heat of a temperature) on the particles; the FE
@@ -92,19 +88,7 @@ namespace perideal
     state.external_force = 0.;
     state.fe.assemble_load(time, state.f_ext);
     state.pd.boundary_conditions().add_loads(time, state.external_force);
-    state.method.equilibrium_forces(state.U,
-                                    state.u,
-                                    state.f_ext,
-                                    state.external_force,
-                                    state.residual,
-                                    state.internal_force);
-    // The heat the loads and, on prescribed dofs, the supports bring in.
-    const auto &mask = state.fe.prescribed_mask();
-    for (unsigned int k = 0; k < state.U.locally_owned_size(); ++k)
-      state.fe_load.local_element(k) =
-        state.f_ext.local_element(k) + (mask[k] ? state.residual.local_element(k) : 0.);
-    state.accumulate_work();
-    state.fe_support = state.residual;
+    equilibrium_state(state);
   }
 
   template <int dim>

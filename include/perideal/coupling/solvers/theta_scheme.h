@@ -52,8 +52,8 @@ namespace perideal
   private:
     /**
      * @brief The forces of the state at @p time: the loads (state.f_ext, state.external_force)
-     * and the method's equilibrium forces (state.residual = K U - Q on the FE dofs,
-     * state.internal_force), and the work of the loads.
+     * and equilibrium_state() (state.residual = K U - Q on the FE dofs, state.internal_force,
+     * the work of the loads).
      */
     void
     forces_at(CoupledState<dim> &state, const double time);
