@@ -79,6 +79,20 @@ namespace perideal
         internal_work_factor[k] = -volume[k / nc];
       else
         applied_work_factor[k] = volume[k / nc];
+    // A temperature's heat flows are no work: its factors move to the heat factors.
+    internal_heat_factor.clear();
+    applied_heat_factor.clear();
+    if (layout.has_temperature())
+      {
+        internal_heat_factor.assign(motion.size(), 0.);
+        applied_heat_factor.assign(motion.size(), 0.);
+        for (std::size_t k = 0; k < motion.size(); ++k)
+          if (layout.kind(k % nc) == ComponentKind::temperature)
+            {
+              std::swap(internal_heat_factor[k], internal_work_factor[k]);
+              std::swap(applied_heat_factor[k], applied_work_factor[k]);
+            }
+      }
 
     for (ParticleVector *vec :
          {&u, &v, &a, &internal_force, &external_force, &previous_u, &previous_load})
@@ -144,6 +158,9 @@ namespace perideal
   {
     local_work       = 0.;
     local_dissipated = 0.;
+    local_heat_in    = 0.;
+    if (layout.has_temperature())
+      stored_heat_at_start = stored_heat();
     pd.particles().bonds().newly_broken.clear();
     carry_work();
   }
@@ -214,6 +231,37 @@ namespace perideal
   CoupledState<dim>::dissipated_energy() const
   {
     return Utilities::MPI::sum(local_dissipated, comm);
+  }
+
+  template <int dim>
+  void
+  CoupledState<dim>::accumulate_heat(const double dt)
+  {
+    const double *internal = internal_force.begin(), *applied = external_force.begin();
+    double        heat = 0.;
+    for (std::size_t k = 0; k < internal_heat_factor.size(); ++k)
+      heat += internal_heat_factor[k] * internal[k] + applied_heat_factor[k] * applied[k];
+    local_heat_in += dt * heat;
+  }
+
+  template <int dim>
+  double
+  CoupledState<dim>::heat_in() const
+  {
+    return Utilities::MPI::sum(local_heat_in, comm);
+  }
+
+  template <int dim>
+  double
+  CoupledState<dim>::stored_heat() const
+  {
+    const unsigned int nc   = n_components();
+    double             heat = 0.;
+    // Explicit runs only: quasi-static runs have no masses.
+    for (std::size_t k = 0; k < (particle_mass.empty() ? 0 : motion.size()); ++k)
+      if (motion[k] == Motion::moves && layout.kind(k % nc) == ComponentKind::temperature)
+        heat += particle_mass[k / nc] * inertia_ratio[k % nc] * u.local_element(k);
+    return Utilities::MPI::sum(heat, comm);
   }
 
   template <int dim>

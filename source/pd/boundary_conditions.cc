@@ -129,14 +129,15 @@ namespace perideal
         prm.declare_entry("Layer thickness",
                           "0",
                           Patterns::Double(0.),
-                          "A load ('traction', 'moment', 'flux'): the thickness of the loaded "
-                          "layer [m] (the region's extent normal to the surface; required). A "
-                          "value or rate: 0 (the default) for a hold of any shape; > 0 declares "
-                          "the region a fictitious layer of that depth beyond a face of the body, "
-                          "checked against the depth the model's force reaches: delta - dx/2 "
-                          "for bond-based models (3 lattice layers at delta = 3.015 dx), 2 delta "
-                          "- dx/2 for state-based ones (6 layers), whose forces use the "
-                          "neighbours' families.");
+                          "A load ('traction', 'moment', 'flux', 'convection'): the thickness "
+                          "of the loaded layer [m] (the region's extent normal to the surface; "
+                          "required). A value or rate: 0 (the default) for a hold of any shape; "
+                          "> 0 declares the region a fictitious layer of that depth beyond a "
+                          "face of the body, checked against the depth the model's force "
+                          "reaches: delta - dx/2 for bond-based models (3 lattice layers at "
+                          "delta = 3.015 dx), 2 delta - dx/2 for state-based ones (6 layers), "
+                          "whose forces use the neighbours' families.");
+        Convection<dim>::declare_parameters(prm);
         prm.leave_subsection();
       }
     prm.leave_subsection();
@@ -381,6 +382,17 @@ namespace perideal
     return std::any_of(conditions.begin(), conditions.end(), [](const auto &c) {
       return c.convection.has_value();
     });
+  }
+
+  template <int dim>
+  double
+  BoundaryConditions<dim>::convection_bound() const
+  {
+    double bound = 0.;
+    for (const auto &c : conditions)
+      if (c.convection)
+        bound = std::max(bound, c.convection->coefficient / c.layer_thickness);
+    return bound;
   }
 
   template <int dim>

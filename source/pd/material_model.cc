@@ -77,11 +77,18 @@ namespace perideal
     std::vector<double> bound;
     stiffness_bound(particles, bound);
     const std::vector<double> inertia = inertia_densities(density);
+    const FieldLayout         layout  = field_layout();
     const std::size_t         nc      = inertia.size();
     double                    dt      = std::numeric_limits<double>::max();
+    // Velocity Verlet of a second-order component: sqrt(4 rho / B); forward Euler of a
+    // temperature, rho c dT/dt = -K T + q: 2 rho c / B (every eigenvalue of K / (rho c) at most
+    // B / (rho c), and forward Euler is stable for dt lambda <= 2).
     for (std::size_t k = 0; k < bound.size(); ++k)
       if (bound[k] > 0.)
-        dt = std::min(dt, std::sqrt(4. * inertia[k % nc] / bound[k]));
+        dt = std::min(dt,
+                      layout.kind(k % nc) == ComponentKind::temperature ?
+                        2. * inertia[k % nc] / bound[k] :
+                        std::sqrt(4. * inertia[k % nc] / bound[k]));
     return dealii::Utilities::MPI::min(dt, particles.get_communicator());
   }
 

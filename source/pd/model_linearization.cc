@@ -6,6 +6,7 @@
 #include <perideal/pd/antiplane_bond_based.h>
 #include <perideal/pd/antiplane_state_based.h>
 #include <perideal/pd/bond_based.h>
+#include <perideal/pd/bond_based_conduction.h>
 #include <perideal/pd/linear_peridynamic_solid.h>
 
 #include <algorithm>
@@ -192,6 +193,29 @@ namespace perideal
   {
     const BondList &bonds = particles.bonds();
     linearized.reinit(this->field_layout().n_components(), particles.n_owned());
+    add_bond_rows(particles,
+                  intact_bond_stiffness(bonds, bond_coefficient),
+                  slope_row(bonds),
+                  linearized);
+  }
+
+  // Conduction: the bond b couples T_i and T_j through k_b = kappa G chi V_j / |xi| as the
+  // antiplane bonds do w, hence the same bound and rows (the conductance matrix of K T = Q).
+  template <int dim>
+  void
+  BondBasedConduction<dim>::stiffness_bound(const ParticleSystem<dim> &particles,
+                                            std::vector<double>       &per_particle) const
+  {
+    bond_pair_stiffness_bound(particles, bond_coefficient, 1, per_particle);
+  }
+
+  template <int dim>
+  void
+  BondBasedConduction<dim>::linearize(const ParticleSystem<dim> &particles,
+                                      LinearizedModel           &linearized) const
+  {
+    const BondList &bonds = particles.bonds();
+    linearized.reinit(1, particles.n_owned());
     add_bond_rows(particles,
                   intact_bond_stiffness(bonds, bond_coefficient),
                   slope_row(bonds),
@@ -432,6 +456,14 @@ namespace perideal
   AntiplaneBondBased<2>::linearize(const ParticleSystem<2> &, LinearizedModel &) const;
   template void
   AntiplaneBondBased<3>::linearize(const ParticleSystem<3> &, LinearizedModel &) const;
+  template void
+  BondBasedConduction<2>::stiffness_bound(const ParticleSystem<2> &, std::vector<double> &) const;
+  template void
+  BondBasedConduction<3>::stiffness_bound(const ParticleSystem<3> &, std::vector<double> &) const;
+  template void
+  BondBasedConduction<2>::linearize(const ParticleSystem<2> &, LinearizedModel &) const;
+  template void
+  BondBasedConduction<3>::linearize(const ParticleSystem<3> &, LinearizedModel &) const;
   template void
   AntiplaneStateBased<2>::stiffness_bound(const ParticleSystem<2> &, std::vector<double> &) const;
   template void

@@ -20,15 +20,20 @@ namespace perideal
     const std::function<void(const ParticleVector &, std::vector<double> &)> &energy_density)
   {
     // The component that carries the test field of direction a.
-    const unsigned int nc     = layout.n_components();
-    const bool         scalar = layout.n_components(ComponentKind::scalar) == 1;
+    const unsigned int nc = layout.n_components();
+    // A scalar field or a temperature: the one component carries every test field.
+    const auto is_scalar = [&](const unsigned int c) {
+      return layout.kind(c) == ComponentKind::scalar ||
+             layout.kind(c) == ComponentKind::temperature;
+    };
+    const bool scalar = nc == 1 && is_scalar(0);
     AssertThrow(scalar || layout.n_components(ComponentKind::translation) == dim,
                 dealii::ExcMessage("The energy method of surface correction takes a scalar "
-                                   "field or dim translations, not " +
+                                   "field, a temperature or dim translations, not " +
                                    layout.description() + "."));
     const auto component = [&](const unsigned int a) {
       for (unsigned int c = 0; c < nc; ++c)
-        if (scalar ? layout.kind(c) == ComponentKind::scalar :
+        if (scalar ? is_scalar(c) :
                      (layout.kind(c) == ComponentKind::translation && layout[c].axis == a))
           return c;
       return nc;

@@ -57,9 +57,20 @@ end
 void
 check(const std::string &name, const std::string &changes)
 {
-  pd_tests::check_bad_input(name, base + changes, {"plate", "top"}, {"pull", "hold"}, false);
+  pd_tests::check_bad_input(name,
+                            base + changes,
+                            {"plate", "top"},
+                            {"pull", "hold", "cool"},
+                            false);
   deallog << "  output written: " << std::filesystem::exists("output-bad-input") << std::endl;
 }
+
+// The plate as a conduction problem: conductivity and specific heat, the top held at 300 K.
+const std::string conduction =
+  "subsection Material\n set Model = bond based conduction\n subsection bond based "
+  "conduction\n set Conductivity = 45\n set Specific heat = 460\n end\nend\n"
+  "subsection Boundary conditions\n subsection pull\n set Type = value\n set Components =\n "
+  "set Function = 300\n end\nend\n";
 
 int
 main(int argc, char **argv)
@@ -100,4 +111,21 @@ main(int argc, char **argv)
         "subsection Discretization\n set Surface correction method = stiffness fit\nend\n"
         "subsection Material\n set Model = linear peridynamic solid\n subsection linear "
         "peridynamic solid\n set Young's modulus = 200e9\n end\nend\n");
+  check("conductivity not positive",
+        conduction + "subsection Material\n subsection bond based conduction\n set "
+                     "Conductivity = 0\n end\nend\n");
+  check("specific heat not positive",
+        conduction + "subsection Material\n subsection bond based conduction\n set Specific "
+                     "heat = -1\n end\nend\n");
+  check("convection without ambient temperature",
+        conduction + "subsection Boundary conditions\n set Names = pull, cool\n subsection "
+                     "cool\n set Region = plate\n set Type = convection\n set Layer thickness "
+                     "= 1e-3\n set Heat transfer coefficient = 10\n end\nend\n");
+  check("thermal time step above the stable one",
+        conduction + "subsection Time stepping\n set Time step = 1\n set End time = 10\nend\n");
+  check("temperature condition on a displacement",
+        "subsection Boundary conditions\n subsection pull\n set Type = convection\n end\nend\n");
+  check("mechanical condition on a temperature",
+        conduction + "subsection Boundary conditions\n subsection pull\n set Type = "
+                     "traction\n set Layer thickness = 1e-3\n end\nend\n");
 }

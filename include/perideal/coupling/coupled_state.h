@@ -123,6 +123,33 @@ namespace perideal
     double
     dissipated_energy() const;
 
+    /**
+     * @brief Add the heat that enters the particles' temperature components over a forward-Euler
+     * step @p dt from the current heat flows: dt sum (V_i q_ext on the free components, -V_i
+     * q_int on the held ones, i.e. what their conditions supply), exactly the change of the
+     * stored heat of the free components that the step makes. Nothing without a temperature.
+     */
+    void
+    accumulate_heat(const double dt);
+
+    /// The heat in through the conditions since start_work(), summed over the ranks [J].
+    double
+    heat_in() const;
+
+    /**
+     * @brief The heat stored in the free particle temperature components, sum rho c V_i T_i,
+     * summed over the ranks [J] (0 without a temperature or without masses: quasi-static).
+     */
+    double
+    stored_heat() const;
+
+    /// @brief stored_heat() at the last start_work() [J].
+    double
+    initial_stored_heat() const
+    {
+      return stored_heat_at_start;
+    }
+
     /// Kinetic energy of an explicit run, and the part of it on prescribed dofs and components.
     struct KineticEnergy
     {
@@ -222,9 +249,12 @@ namespace perideal
     bool any_particle_slaved = false;
     /// Factors from the internal and the applied force density to the load that does work:
     /// -V_i and 0 on prescribed components (the support balances the internal force), 0 and
-    /// V_i on the others (particles slaved to the FE field too: they move with it).
+    /// V_i on the others (particles slaved to the FE field too: they move with it); 0 on
+    /// temperature components, whose heat flows the heat factors take instead (empty without a
+    /// temperature).
     ///@{
     std::vector<double> internal_work_factor, applied_work_factor;
+    std::vector<double> internal_heat_factor, applied_heat_factor;
     ///@}
     /// The particles' masses of explicit runs (per owned particle; for free particles).
     std::vector<double> particle_mass;
@@ -274,6 +304,9 @@ namespace perideal
     double         local_work = 0.;
     // The energy released by the bonds broken on this rank since start_work().
     double local_dissipated = 0.;
+    // The heat in through the conditions on this rank since start_work(), and the stored heat
+    // then.
+    double local_heat_in = 0., stored_heat_at_start = 0.;
   };
 } // namespace perideal
 

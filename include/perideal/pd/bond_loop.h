@@ -367,6 +367,20 @@ namespace perideal
   };
 
   /**
+   * @brief The pair law of bond-based heat conduction (BondBasedConduction): SlopePairLaw on
+   * the temperature, whose pair "force" k (T_b - T_a)/|xi| is the heat flow of the bond into
+   * the particle side (k = kappa G chi V_i V_j) and whose energy is the functional of the
+   * calibration; bonds do not break by the temperature (only a broken bond, a pre-crack,
+   * stops conducting: the loop's inactive lanes).
+   */
+  template <int dim, bool with_energy>
+  struct ConductionPairLaw : SlopePairLaw<dim, with_energy>
+  {
+    /// No bond breaks by its temperature slope.
+    static constexpr bool breaks_bonds = false;
+  };
+
+  /**
    * @brief The bond-based pair law of the warping w of Saint-Venant torsion (seed note 000,
    * sec. 4.5): SlopePairLaw with the twisted slope
    *   r = (w_b - w_a + p_a xi_y - q_a xi_x) / |xi|,  p = psi (x - x0), q = psi (y - y0),

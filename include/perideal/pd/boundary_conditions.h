@@ -106,6 +106,13 @@ namespace perideal
     bool
     has_convection() const;
     /**
+     * @brief The largest h / d of the convection conditions [W/(m^3 K)] (0 without one): what
+     * a convection adds to the Gershgorin bound of the particles of its layer (the stable step,
+     * ExplicitDynamics).
+     */
+    double
+    convection_bound() const;
+    /**
      * @brief Add the heat source density h (T_inf(x, @p time) - T) / d of the convection
      * conditions (d the <Layer thickness>) at the temperature @p field to @p force.
      */

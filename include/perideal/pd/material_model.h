@@ -271,7 +271,9 @@ namespace perideal
      * Silling–Askari bound dt = min_i sqrt(2 rho / sum_j V_j C_ij) (Silling & Askari 2005,
      * Comput. Struct. 83, eq. 31) with the model's bond stiffness C_ij, i.e.
      * min_(i,c) sqrt(4 rho_c / stiffness_bound_(i,c)) with rho_c the inertia density of
-     * component c (inertia_densities(): a rotational inertia enters here). Same on every rank.
+     * component c (inertia_densities(): a rotational inertia enters here); for a temperature
+     * (first order, forward Euler) 2 rho_c / stiffness_bound_(i,c) with rho_c = rho c the heat
+     * capacity per volume (doc/theory/heat_conduction.md). Same on every rank.
      */
     double
     stable_time_step(const ParticleSystem<dim> &particles, const double density) const;

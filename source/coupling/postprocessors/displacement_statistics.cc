@@ -5,6 +5,7 @@
 #include <perideal/pd/damage_model.h>
 
 #include <iomanip>
+#include <string>
 
 namespace perideal
 {
@@ -20,13 +21,17 @@ namespace perideal
     const double max_u     = state.max_particle_displacement();
     const double max_fe_u  = state.U.linfty_norm();
     const bool   particles = state.has_particles(), fe = state.fe.n_dofs() > 0;
+    // A temperature field: the largest |T| [K] under its own name.
+    const bool        temperature = state.layout.has_temperature();
+    const std::string name        = temperature ? "temperature" : "displacement";
+    const std::string unit        = temperature ? " K" : " m";
     if (particles)
       {
         statistics.add_value("broken_bonds", broken);
-        statistics.add_value("max_particle_displacement", max_u);
+        statistics.add_value("max_particle_" + name, max_u);
       }
     if (fe)
-      statistics.add_value("max_fe_displacement", max_fe_u);
+      statistics.add_value("max_fe_" + name, max_fe_u);
     if (!state.is_root || !data.final_row)
       return;
     std::ostream &log   = state.log;
@@ -34,9 +39,9 @@ namespace perideal
     log << std::scientific << std::setprecision(6);
     if (particles)
       log << "Broken bonds: " << broken << "\n"
-          << "Max particle displacement: " << max_u << " m\n";
+          << "Max particle " << name << ": " << max_u << unit << "\n";
     if (fe)
-      log << "Max FE displacement: " << max_fe_u << " m (largest nodal component)\n";
+      log << "Max FE " << name << ": " << max_fe_u << unit << " (largest nodal component)\n";
     log.flags(flags);
   }
 

@@ -72,6 +72,21 @@ namespace perideal
               }
           }
       }
+    else if (state.layout.has_temperature())
+      {
+        // The thermal balance of forward Euler: the change of the stored heat of the free
+        // particles against the heat in through the conditions (CoupledState::accumulate_heat()),
+        // equal to round-off.
+        const double stored = state.stored_heat() - state.initial_stored_heat();
+        const double heat   = state.heat_in();
+        statistics.add_value("stored_heat", stored);
+        statistics.add_value("heat_in", heat);
+        statistics.add_value("heat_error", stored - heat);
+        if (state.is_root && data.final_row)
+          log << "Stored heat (change): " << stored << " J\n"
+              << "Heat in through the conditions: " << heat << " J\n"
+              << "Heat error: " << stored - heat << " J\n";
+      }
     else
       {
         // Kinetic energy of the FE dofs and the components not slaved to the FE field;

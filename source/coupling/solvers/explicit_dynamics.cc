@@ -23,7 +23,12 @@ namespace perideal
   ExplicitDynamics<dim>::setup(CoupledState<dim> &state)
   {
     derive_from_regions(state);
-    const auto &ps  = state.pd.particles();
+    const auto &ps = state.pd.particles();
+    AssertThrow(!state.layout.has_temperature() || state.settings.damping == 0.,
+                ExcMessage("The parameter <Time stepping/Damping> is " +
+                           ParameterUtilities::format_number(state.settings.damping) +
+                           ", but the field of this problem is a temperature (first order in "
+                           "time, no velocity to damp): accepted value 0."));
     state.time_step = ParameterUtilities::choose_time_step(state.settings.time_step,
                                                            state.settings.safety_factor,
                                                            state.stable_dt);
@@ -53,14 +58,29 @@ namespace perideal
     // move by their acceleration, 0 on the others.
     const auto &volume = ps.volumes();
     acceleration_factor.assign(state.motion.size(), 0.);
+    first_order_components.clear();
     for (std::size_t k = 0; k < state.motion.size(); ++k)
       if (state.motion[k] == Motion::moves)
-        acceleration_factor[k] =
-          volume[k / nc] / (state.particle_mass[k / nc] * state.inertia_ratio[k % nc]);
+        {
+          acceleration_factor[k] =
+            volume[k / nc] / (state.particle_mass[k / nc] * state.inertia_ratio[k % nc]);
+          if (state.layout.kind(k % nc) == ComponentKind::temperature)
+            first_order_components.push_back(k);
+        }
+    // The FE dofs carry the problem's field: a temperature moves by forward Euler.
+    fe_first_order = state.layout.has_temperature();
 
     // The stable step: the smaller of the two regions'.
-    fe_dt           = state.fe.stable_time_step(&state.mass);
-    pd_dt           = state.pd.stable_time_step();
+    fe_dt = state.fe.stable_time_step(&state.mass);
+    pd_dt = state.pd.stable_time_step();
+    // A convection h (T_inf - T) / d adds h / d to the bound B of its layer's particles:
+    // dt <= 2 rho c / (B + h / d) >= 1 / (1 / dt_B + h / (2 rho c d)) (conservative).
+    const double convection = state.pd.boundary_conditions().convection_bound();
+    if (convection > 0.)
+      for (unsigned int c = 0; c < nc; ++c)
+        if (state.layout.kind(c) == ComponentKind::temperature)
+          pd_dt =
+            1. / (1. / pd_dt + convection / (2. * state.pd.density() * state.inertia_ratio[c]));
     state.stable_dt = std::min(fe_dt, pd_dt);
   }
 
@@ -121,6 +141,8 @@ namespace perideal
       {
         state.external_force = 0.;
         pd.boundary_conditions().add_loads(time, state.external_force);
+        if (pd.boundary_conditions().has_convection())
+          pd.boundary_conditions().add_convection(time, state.u, state.external_force);
       }
     // Particles: a = f V / m on the components that move by it (one pass, no branches); the
     // nodal forces f V only if some particle is slaved to the FE field (zero otherwise).
@@ -166,6 +188,21 @@ namespace perideal
           state.fe_load.local_element(k) = state.f_ext.local_element(k);
           state.A.local_element(k) = state.residual.local_element(k) / state.mass.local_element(k);
         }
+  }
+
+  template <int dim>
+  void
+  ExplicitDynamics<dim>::set_first_order_rates(CoupledState<dim> &state) const
+  {
+    for (const std::size_t k : first_order_components)
+      state.v.local_element(k) = state.a.local_element(k);
+    if (fe_first_order)
+      {
+        const auto &mask = state.fe.prescribed_mask();
+        for (unsigned int k = 0; k < state.U.locally_owned_size(); ++k)
+          if (!mask[k])
+            state.V.local_element(k) = state.A.local_element(k);
+      }
   }
 
   template <int dim>
@@ -244,6 +281,7 @@ namespace perideal
         fe.prescribe(0., U, V);
         conditions.prescribe_displacement(0., u);
         compute_acceleration(state, 0., true);
+        set_first_order_rates(state);
         if (state.is_coupled())
           report_initial_residual(state);
         state.start_work();
@@ -264,10 +302,14 @@ namespace perideal
     for (unsigned int step = start.step + 1; step <= n_steps; ++step)
       {
         const double time = (step - 1) * dt;
+        // The heat in over the step from the heat flows at its start (forward Euler).
+        state.accumulate_heat(dt);
 
-        // Half step of the velocities, prescribed velocities over the step, positions.
+        // Half step of the velocities (first-order unknowns: their rate at the start of the
+        // step), prescribed velocities over the step, positions.
         V.add(0.5 * dt, A);
         v.add(0.5 * dt, a);
+        set_first_order_rates(state);
         fe.prescribe(time + 0.5 * dt, U, V);
         conditions.prescribe_step_velocity(time, dt, v);
         U.add(dt, V);
@@ -296,6 +338,7 @@ namespace perideal
           add_damping(state);
         V.add(0.5 * dt, A);
         v.add(0.5 * dt, a);
+        set_first_order_rates(state);
         fe.prescribe(time + dt, U, V);
 
         state.accumulate_work();

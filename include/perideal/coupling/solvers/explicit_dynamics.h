@@ -81,8 +81,22 @@ namespace perideal
     void
     report_initial_residual(const CoupledState<dim> &state) const;
 
+    /**
+     * @brief The rate of the first-order (temperature) unknowns that move: V = A and v = a
+     * (forward Euler, T += dt dT/dt with dT/dt at the start of the step), after every update
+     * of the velocities by velocity Verlet's half steps; nothing without a temperature.
+     */
+    void
+    set_first_order_rates(CoupledState<dim> &state) const;
+
     /// Per owned particle component: force density to acceleration.
     std::vector<double> acceleration_factor;
+    /// The moving particle components of the temperature kind (first order in time), and
+    /// whether the FE dofs are (a problem whose field is a temperature).
+    ///@{
+    std::vector<std::size_t> first_order_components;
+    bool                     fe_first_order = false;
+    ///@}
     /// The particles' nodal forces V_i f_i that the method's P^T carries to the FE dofs.
     ParticleVector nodal_force;
     /// The stable steps of the FE region and of the particles [s].
