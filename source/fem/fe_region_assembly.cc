@@ -227,7 +227,11 @@ namespace perideal
       if (m.local_element(k) > 0.)
         bound = std::max(bound, sums[k] / m.local_element(k));
     bound = Utilities::MPI::max(bound, comm);
-    return bound > 0. ? 2. / std::sqrt(bound) : std::numeric_limits<double>::max();
+    if (bound == 0.)
+      return std::numeric_limits<double>::max();
+    // Forward Euler of a first-order field is stable for dt lambda_max <= 2, velocity Verlet
+    // for dt sqrt(lambda_max) <= 2.
+    return layout.has_temperature() ? 2. / bound : 2. / std::sqrt(bound);
   }
 
   template <int dim>

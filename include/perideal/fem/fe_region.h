@@ -190,9 +190,11 @@ namespace perideal
     prescribed_mask() const;
 
     /**
-     * @brief The largest stable explicit time step 2 / sqrt(lambda_max(M^-1 K)), with the
-     * Gershgorin bound lambda_max <= max_i sum_j |K_ij| / M_i, for the lumped mass or
-     * @p mass (e.g. with the particles' masses added in a coupled problem).
+     * @brief The largest stable explicit time step: 2 / sqrt(lambda_max(M^-1 K)) of velocity
+     * Verlet, or 2 / lambda_max(M^-1 K) of forward Euler for a first-order field (a
+     * temperature, M the heat capacity), with the Gershgorin bound lambda_max <= max_i sum_j
+     * |K_ij| / M_i, for the lumped mass or @p mass (e.g. with the particles' masses added in a
+     * coupled problem).
      */
     double
     stable_time_step(const FEVector *mass = nullptr) const;
