@@ -19,11 +19,13 @@ namespace perideal
     static const std::map<std::string, SolverType> types = {
       {"explicit", SolverType::explicit_dynamics},
       {"adaptive dynamic relaxation", SolverType::adaptive_dynamic_relaxation},
-      {"static", SolverType::static_linear}};
+      {"static", SolverType::static_linear},
+      {"implicit", SolverType::implicit}};
     const auto found = types.find(name);
     AssertThrow(found != types.end(),
                 ExcMessage("The parameter <Solver/Type> is <" + name +
-                           ">; accepted: explicit, adaptive dynamic relaxation, static."));
+                           ">; accepted: explicit, adaptive dynamic relaxation, static, "
+                           "implicit."));
     return found->second;
   }
 
@@ -75,6 +77,13 @@ namespace perideal
                       "0.8",
                       Patterns::Double(0.),
                       "Fraction of the stable time step used when 'Time step' is 0, in (0, 1].");
+    prm.declare_entry("Theta",
+                      "1",
+                      Patterns::Double(),
+                      "<Solver/Type> = implicit: the weight theta of the new state in "
+                      "(C/dt + theta K) T_new = (C/dt - (1 - theta) K) T_old + theta Q_new + "
+                      "(1 - theta) Q_old, in [0.5, 1]: 1 backward Euler (first order, damps "
+                      "every mode), 0.5 Crank-Nicolson (second order).");
     prm.declare_entry("Damping",
                       "0",
                       Patterns::Double(0.),
@@ -85,13 +94,16 @@ namespace perideal
     prm.enter_subsection("Solver");
     prm.declare_entry("Type",
                       "explicit",
-                      Patterns::Selection("explicit|adaptive dynamic relaxation|static"),
+                      Patterns::Selection("explicit|adaptive dynamic relaxation|static|implicit"),
                       "'explicit': velocity-Verlet dynamics to <Time stepping/End time>; "
                       "'adaptive dynamic relaxation': quasi-static equilibrium (Kilic & Madenci "
                       "2010) in load steps with bond breaking; 'static': the model linearized "
                       "about the reference configuration, a sparse linear solve per load step. "
                       "Quasi-static runs evaluate the boundary-condition functions at t = End "
-                      "time and scale them by the load factor.");
+                      "time and scale them by the load factor. 'implicit': the theta scheme "
+                      "(<Time stepping/Theta>) of a first-order field (a temperature) in steps "
+                      "of <Time stepping/Time step> to End time, one linear solve per step, "
+                      "unconditionally stable.");
     prm.declare_entry("Load steps",
                       "1",
                       Patterns::Integer(1),
@@ -199,8 +211,19 @@ namespace perideal
     safety_factor = prm.get_double("Safety factor");
     AssertThrow(safety_factor > 0. && safety_factor <= 1.,
                 ExcMessage("The parameter <Time stepping/Safety factor> must lie in (0, 1]."));
-    if (solver_type == SolverType::explicit_dynamics)
+    if (solver_type == SolverType::explicit_dynamics || solver_type == SolverType::implicit)
       ParameterUtilities::require_positive(end_time, "Time stepping/End time");
+    theta = prm.get_double("Theta");
+    AssertThrow(theta >= 0.5 && theta <= 1.,
+                ExcMessage("The parameter <Time stepping/Theta> is " +
+                           ParameterUtilities::format_number(theta) +
+                           "; accepted values are in [0.5, 1] (below 1/2 the scheme is not "
+                           "unconditionally stable)."));
+    if (solver_type == SolverType::implicit)
+      AssertThrow(time_step > 0.,
+                  ExcMessage("The parameter <Time stepping/Time step> is 0; <Solver/Type> = "
+                             "implicit has no stable limit to choose it from: accepted values "
+                             "are > 0."));
     damping = prm.get_double("Damping");
     prm.leave_subsection();
 

@@ -195,6 +195,15 @@ namespace perideal
   }
 
   template <int dim>
+  void
+  BlendedCoupling<dim>::set_equilibrium_diagonal(const FEVector       &fe_diagonal,
+                                                 const ParticleVector &particle_diagonal)
+  {
+    Assert(static_solver, ExcMessage("Call initialize_equilibrium() first."));
+    static_solver->set_diagonal(fe_diagonal, particle_diagonal);
+  }
+
+  template <int dim>
   unsigned int
   BlendedCoupling<dim>::solve_equilibrium(const FEVector       &f_fe,
                                           const ParticleVector &f_pd,

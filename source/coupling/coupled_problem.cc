@@ -125,12 +125,14 @@ namespace perideal
                            "<Discretization/Body> (the regions filled with particles), "
                            "<Finite elements/Mesh file> or <Finite elements/Generator> (the FE "
                            "mesh), or both (a coupled problem)."));
-    AssertThrow(settings.solver_type != SolverType::explicit_dynamics || !fe.has_mesh() ||
-                  fe.get_density() > 0.,
+    AssertThrow((settings.solver_type != SolverType::explicit_dynamics &&
+                 settings.solver_type != SolverType::implicit) ||
+                  !fe.has_mesh() || fe.get_density() > 0.,
                 ExcMessage("The parameter <Finite elements/Density> is " +
                            ParameterUtilities::format_number(fe.get_density()) +
-                           "; explicit dynamics (<Solver/Type> = explicit) needs the FE mass: "
-                           "accepted values are > 0."));
+                           "; explicit dynamics and implicit time steps (<Solver/Type> = "
+                           "explicit, implicit) need the FE mass (the heat capacity rho c of a "
+                           "temperature): accepted values are > 0."));
     AssertThrow(!pd.has_body() || !pd.material().has_prestrain() ||
                   settings.solver_type != SolverType::static_linear,
                 ExcMessage("<Material/Model> = <" + prm.get({"Material"}, "Model") +
@@ -210,7 +212,8 @@ namespace perideal
                 ExcMessage("<Coupling/Exact displacement tolerance> is set, but <Coupling/Exact "
                            "displacement> is empty: give the exact field or remove the "
                            "tolerance."));
-    AssertThrow(!exact_displacement || settings.solver_type != SolverType::explicit_dynamics,
+    AssertThrow(!exact_displacement || (settings.solver_type != SolverType::explicit_dynamics &&
+                                        settings.solver_type != SolverType::implicit),
                 ExcMessage("<Coupling/Exact displacement> is compared in quasi-static runs only "
                            "(<Solver/Type> = static or adaptive dynamic relaxation); remove it or "
                            "change the solver type."));

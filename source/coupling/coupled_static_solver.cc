@@ -90,6 +90,7 @@ namespace perideal
 
     particle_z.assign(std::size_t(n_owned) * nc, numbers::invalid_dof_index);
     prescribed.assign(n_local, false);
+    added_diagonal.clear();
     const auto &fe_mask = fe_region.prescribed_mask();
     for (types::global_dof_index k = 0; k < n_fe_owned; ++k)
       prescribed[k] = fe_mask[k];
@@ -172,6 +173,17 @@ namespace perideal
     auto *values = result.begin();
     for (std::size_t k = 0; k < particle_rows.n_elements(); ++k)
       values[k] = u.local_element(k);
+  }
+
+  template <int dim>
+  void
+  CoupledStaticSolver<dim>::set_diagonal(const FEVector       &fe_diagonal,
+                                         const ParticleVector &particle_diagonal)
+  {
+    ParticleVector z;
+    reinit_unknowns(z);
+    to_unknowns(fe_diagonal, particle_diagonal, z);
+    added_diagonal.assign(z.begin(), z.end());
   }
 
   template <int dim>

@@ -81,8 +81,8 @@ namespace perideal
     G.mmult(GT, T_free);
     weighted_gram(GT, weights, z_owned, comm, pd_part);
 
-    // K = E_f^T K_FE E_f + (G T_f)^T diag(w) (G T_f) + s on the prescribed diagonal, summed
-    // row by row (both parts have the rows of z).
+    // K = E_f^T K_FE E_f + (G T_f)^T diag(w) (G T_f) + D on the free and s on the prescribed
+    // diagonal, summed row by row (both parts have the rows of z).
     std::vector<double> diagonal(n_local, 0.);
     {
       DynamicSparsityPattern dsp(z_owned.size(), z_owned.size(), z_owned);
@@ -101,7 +101,15 @@ namespace perideal
       for_each_local_row(*part, [&](const auto row, const auto &columns, const double *values) {
         system_matrix.add(row, columns.size(), columns.data(), values, false, false);
       });
-    double diagonal_sum = 0., n_free = 0.;
+    // The added diagonal D (set_diagonal()) on the free rows: a capacity holds every mode.
+    double diagonal_sum = 0., n_free = 0., n_held = 0.;
+    for (std::size_t k = 0; k < added_diagonal.size(); ++k)
+      if (!prescribed[k] && added_diagonal[k] > 0.)
+        {
+          system_matrix.add(z_first + k, z_first + k, added_diagonal[k]);
+          diagonal[k] += added_diagonal[k];
+          n_held += 1.;
+        }
     for (std::size_t k = 0; k < n_local; ++k)
       if (!prescribed[k])
         {
@@ -111,16 +119,18 @@ namespace perideal
     diagonal_sum     = Utilities::MPI::sum(diagonal_sum, comm);
     n_free           = Utilities::MPI::sum(n_free, comm);
     prescribed_scale = (n_free > 0. && diagonal_sum > 0.) ? diagonal_sum / n_free : 1.;
-    double n_p       = 0.;
     for (std::size_t k = 0; k < n_local; ++k)
       if (prescribed[k])
         {
           system_matrix.add(z_first + k, z_first + k, prescribed_scale);
-          n_p += 1.;
+          n_held += 1.;
         }
     system_matrix.compress(VectorOperation::add);
     linear_system.clear();
-    AssertThrow(Utilities::MPI::sum(n_p, comm) > 0.,
+    // A convection condition holds a temperature too (its h int phi_i phi_j is in K_FE).
+    for (const auto &c : fe->conditions())
+      n_held += c.convection ? 1. : 0.;
+    AssertThrow(Utilities::MPI::sum(n_held, comm) > 0.,
                 ExcMessage("The coupled static system is singular: no displacement is prescribed "
                            "(boundary conditions: " +
                            (conditions.empty() ? std::string("none") : conditions) +

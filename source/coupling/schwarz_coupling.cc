@@ -67,11 +67,12 @@ namespace perideal
   void
   SchwarzCoupling<dim>::check_solver(const SolverType type) const
   {
-    AssertThrow(type != SolverType::explicit_dynamics,
+    AssertThrow(type != SolverType::explicit_dynamics && type != SolverType::implicit,
                 ExcMessage("<Coupling/Method> = overlapping schwarz alternates equilibrium solves "
-                           "of the FE and PD parts: <Solver/Type> = explicit is not supported; "
-                           "accepted values: static, adaptive dynamic relaxation (or use "
-                           "<Coupling/Method> = blended for explicit dynamics)."));
+                           "of the FE and PD parts: <Solver/Type> = explicit or implicit is not "
+                           "supported; accepted values: static, adaptive dynamic relaxation (or "
+                           "use <Coupling/Method> = blended for explicit dynamics and implicit "
+                           "time steps)."));
   }
 
   template <int dim>

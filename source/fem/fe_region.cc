@@ -88,7 +88,8 @@ namespace perideal
     prm.declare_entry("Density",
                       "0",
                       Patterns::Double(0.),
-                      "Mass density rho [kg/m^3] (the inertia of every component).");
+                      "Mass density rho [kg/m^3] (the inertia of every component; with <Physics> "
+                      "= heat, times <heat/Specific heat>, the heat capacity rho c).");
     using Registry = PluginRegistry<FEPhysics<dim>>;
     prm.declare_entry("Physics",
                       "linear elasticity",

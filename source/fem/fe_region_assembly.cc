@@ -1,9 +1,10 @@
 // ---------------------------------------------------------------------
 // PeriDeal: the assembly of the finite-element region: the weighted stiffness (the physics'
-// bilinear form times 1 - beta, thickness and JxW), the lumped mass (Gauss-Lobatto nodal
-// quadrature), the load of the body force, the physics' own load (the twist of torsion) and the
-// load conditions, and what is computed from the stiffness: the stable explicit step, its row sums
-// and the strain energy.
+// bilinear form times 1 - beta, thickness and JxW, and the h int phi_i phi_j of convection
+// faces), the lumped mass (Gauss-Lobatto nodal quadrature), the load of the body force, the
+// physics' own load (the twist of torsion) and the load conditions (convection: h T_inf), and
+// what is computed from the stiffness: the stable explicit step, its row sums and the strain
+// energy.
 // ---------------------------------------------------------------------
 #include <deal.II/base/quadrature_lib.h>
 #include <deal.II/fe/fe_values.h>
@@ -37,16 +38,22 @@ namespace perideal
                             QGauss<dim>(degree + 1),
                             update_gradients | update_quadrature_points | update_JxW_values);
     // Nodal (Gauss-Lobatto) quadrature: a diagonal, positive mass for every degree.
-    FEValues<dim>                        nodal_values(fe,
+    FEValues<dim> nodal_values(fe,
                                QGaussLobatto<dim>(degree + 1),
                                update_values | update_quadrature_points | update_JxW_values);
+    // Convection (Robin) faces: h int phi_i phi_j ds in the stiffness.
+    FEFaceValues<dim>                    face_values(fe,
+                                  QGauss<dim - 1>(degree + 1),
+                                  update_values | update_quadrature_points | update_JxW_values);
     const unsigned int                   n = fe.n_dofs_per_cell();
     FullMatrix<double>                   cell_matrix(n, n);
     dealii::Vector<double>               cell_mass(n);
     std::vector<types::global_dof_index> dofs(n);
     std::vector<double>                  weights;
-    stiffness = 0.;
-    mass      = 0.;
+    // The lumped mass of the field: rho (inertia), or rho c (heat capacity) for a temperature.
+    const double mass_density = density * physics_model->mass_factor();
+    stiffness                 = 0.;
+    mass                      = 0.;
     for (const auto &cell : dof_handler.active_cell_iterators())
       if (cell->is_locally_owned() && cell->active_fe_index() == 0)
         {
@@ -54,11 +61,13 @@ namespace perideal
           quadrature_weights(fe_values, weights);
           cell_matrix = 0.;
           physics_model->add_cell_stiffness(fe_values, cell->material_id(), weights, cell_matrix);
+          if (cell->at_boundary())
+            add_convection_stiffness(cell, face_values, cell_matrix);
           nodal_values.reinit(cell);
           cell_mass = 0.;
           for (const unsigned int q : nodal_values.quadrature_point_indices())
             {
-              const double w = weight(nodal_values.quadrature_point(q)) * thickness * density *
+              const double w = weight(nodal_values.quadrature_point(q)) * thickness * mass_density *
                                nodal_values.JxW(q);
               for (unsigned int i = 0; i < n; ++i)
                 cell_mass(i) += nodal_values.shape_value(i, q) * w;
@@ -69,6 +78,32 @@ namespace perideal
         }
     stiffness.compress(VectorOperation::add);
     mass.compress(VectorOperation::add);
+  }
+
+  template <int dim>
+  void
+  FERegion<dim>::add_convection_stiffness(
+    const typename DoFHandler<dim>::active_cell_iterator &cell,
+    FEFaceValues<dim>                                    &face_values,
+    FullMatrix<double>                                   &cell_matrix) const
+  {
+    std::vector<double> weights;
+    for (const unsigned int f : cell->face_indices())
+      if (cell->face(f)->at_boundary())
+        for (const auto &c : condition_list)
+          if (c.convection && c.boundary_ids.count(cell->face(f)->boundary_id()) > 0)
+            {
+              face_values.reinit(cell, f);
+              quadrature_weights(face_values, weights);
+              for (const unsigned int q : face_values.quadrature_point_indices())
+                {
+                  const double w = c.convection->coefficient * weights[q];
+                  for (unsigned int i = 0; i < face_values.dofs_per_cell; ++i)
+                    for (unsigned int j = 0; j < face_values.dofs_per_cell; ++j)
+                      cell_matrix(i, j) +=
+                        face_values.shape_value(i, q) * face_values.shape_value(j, q) * w;
+                }
+            }
   }
 
   template <int dim>
@@ -113,13 +148,16 @@ namespace perideal
             if (c.type == Quantity::load && c.boundary_ids.count(id) > 0)
               {
                 fe_face_values.reinit(cell, f);
-                c.function->set_time(time);
+                // A convection's load is h T_inf (its h T is in the stiffness).
+                const auto  &function = c.convection ? c.convection->ambient : c.function;
+                const double factor   = c.convection ? c.convection->coefficient : 1.;
+                function->set_time(time);
                 quadrature_weights(fe_face_values, weights);
-                value.reinit(c.function->n_components);
+                value.reinit(function->n_components);
                 for (const unsigned int q : fe_face_values.quadrature_point_indices())
                   {
-                    const double w = weights[q];
-                    c.function->vector_value(fe_face_values.quadrature_point(q), value);
+                    const double w = factor * weights[q];
+                    function->vector_value(fe_face_values.quadrature_point(q), value);
                     for (unsigned int i = 0; i < n; ++i)
                       {
                         const unsigned int comp = fe.system_to_component_index(i).first;
@@ -189,7 +227,11 @@ namespace perideal
       if (m.local_element(k) > 0.)
         bound = std::max(bound, sums[k] / m.local_element(k));
     bound = Utilities::MPI::max(bound, comm);
-    return bound > 0. ? 2. / std::sqrt(bound) : std::numeric_limits<double>::max();
+    if (bound == 0.)
+      return std::numeric_limits<double>::max();
+    // Forward Euler of a first-order field is stable for dt lambda_max <= 2, velocity Verlet
+    // for dt sqrt(lambda_max) <= 2.
+    return layout.has_temperature() ? 2. / bound : 2. / std::sqrt(bound);
   }
 
   template <int dim>

@@ -19,13 +19,16 @@ namespace perideal
    * - adaptive_dynamic_relaxation: quasi-static equilibrium by adaptive dynamic relaxation, in
    *   load steps, with bond breaking;
    * - static_linear: quasi-static equilibrium of the model linearized about the reference
-   *   configuration (a sparse linear solve), in load steps, with bond breaking.
+   *   configuration (a sparse linear solve), in load steps, with bond breaking;
+   * - implicit: the theta scheme of a first-order field (a temperature) to the end time, a
+   *   sparse linear solve of the linearized model plus the lumped capacity per time step.
    */
   enum class SolverType
   {
     explicit_dynamics,
     adaptive_dynamic_relaxation,
-    static_linear
+    static_linear,
+    implicit
   };
 
   /**
@@ -104,6 +107,10 @@ namespace perideal
     ///@{
     double end_time = 0., time_step = 0., safety_factor = 0.8, damping = 0.;
     ///@}
+
+    /// <Time stepping/Theta>: the weight of the new state in the implicit theta scheme, in
+    /// [1/2, 1] (1: backward Euler, 1/2: Crank-Nicolson).
+    double theta = 1.;
 
     /// <Initial conditions>: one expression per component, or "0".
     ///@{

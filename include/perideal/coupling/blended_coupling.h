@@ -58,6 +58,9 @@ namespace perideal
                            const std::string              &conditions) override;
     dealii::types::global_dof_index
     n_unknowns() const override;
+    void
+    set_equilibrium_diagonal(const FEVector       &fe_diagonal,
+                             const ParticleVector &particle_diagonal) override;
     unsigned int
     solve_equilibrium(const FEVector       &f_fe,
                       const ParticleVector &f_pd,

@@ -86,6 +86,16 @@ namespace perideal
            const ParticleVector        &particle_prescribed);
 
     /**
+     * @brief A diagonal D added to K by the following assemble() calls, so that solve() solves
+     * (D + K) z = F: the lumped capacities over theta dt of an implicit time step (ThetaScheme),
+     * from @p fe_diagonal on the FE dofs and @p particle_diagonal [N per unit of the field] on
+     * the components of the free particles (owned entries). After reinit(); D is 0 until set.
+     * forces() keeps K alone.
+     */
+    void
+    set_diagonal(const FEVector &fe_diagonal, const ParticleVector &particle_diagonal);
+
+    /**
      * @brief Linearize @p material about the reference state (bonds broken since the last call
      * drop out) and build K with the prescribed rows eliminated. @p conditions names the
      * boundary conditions for the error message of a singular system.
@@ -213,6 +223,8 @@ namespace perideal
     std::vector<dealii::types::global_dof_index> particle_z;
     /// Per locally owned z entry: prescribed or not.
     std::vector<bool> prescribed;
+    /// Per locally owned z entry: the diagonal of set_diagonal() (empty: none).
+    std::vector<double> added_diagonal;
     /// The diagonal entry of the prescribed rows: the mean diagonal entry of the free rows.
     double       prescribed_scale = 1.;
     SparseMatrix T, T_free, fe_part, G, system_matrix;

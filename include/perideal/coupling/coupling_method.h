@@ -215,6 +215,18 @@ namespace perideal
                       ParticleVector       &u) = 0;
 
     /**
+     * @brief Implicit time stepping of a first-order field (ThetaScheme): after
+     * initialize_equilibrium(), the diagonal D that the following solve_equilibrium() calls add
+     * to their system, (D + K) z = F: the lumped capacities over theta dt, @p fe_diagonal on the
+     * FE dofs and @p particle_diagonal [N per unit of the field] on the components of the
+     * particles that are not slaved to the FE field (owned entries). equilibrium_forces() keeps
+     * K alone. A method that solves in one linear system supports it; by default the run stops,
+     * naming <Solver/Type> (check_solver() should refuse the type before).
+     */
+    virtual void
+    set_equilibrium_diagonal(const FEVector &fe_diagonal, const ParticleVector &particle_diagonal);
+
+    /**
      * @brief The forces of the state (@p U, @p u) under the loads @p f_fe, @p f_pd, in the
      * method's model of equilibrium: @p fe_residual = K_FE U - f_FE - P^T (particle forces) on
      * the FE dofs (on prescribed dofs the force the supports exert, as FERegion::reactions()
@@ -229,6 +241,16 @@ namespace perideal
                        FEVector             &fe_residual,
                        ParticleVector       &pd_force) = 0;
   };
+
+  template <int dim>
+  void
+  CouplingMethod<dim>::set_equilibrium_diagonal(const FEVector &, const ParticleVector &)
+  {
+    AssertThrow(false,
+                dealii::ExcMessage("<Solver/Type> = implicit needs a coupling method that solves "
+                                   "both regions in one linear system; accepted <Coupling/"
+                                   "Method>: blended."));
+  }
 } // namespace perideal
 
 /**

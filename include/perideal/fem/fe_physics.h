@@ -27,9 +27,9 @@ namespace perideal
    * physics. The region owns the mesh, the FE space (one FE_Q(p) per component of
    * field_layout(), FE_Nothing where the FE weight vanishes), the assembly (it multiplies by
    * the FE weight 1 - beta, the thickness of a 2D problem and JxW), the lumped mass (density of
-   * <Finite elements/Density>), the loads (body source and the load conditions, integrated
-   * against the shape functions of their components), the constraints, the reactions and the
-   * output. The near-null space of AMG is one constant mode per component of the layout (the
+   * <Finite elements/Density> times mass_factor()), the loads (body source and the load conditions,
+   * integrated against the shape functions of their components), the constraints, the reactions and
+   * the output. The near-null space of AMG is one constant mode per component of the layout (the
    * translations of elasticity, the constant of a scalar field).
    *
    * A physics is chosen by <Finite elements/Physics> (registered with
@@ -122,6 +122,14 @@ namespace perideal
                        std::vector<double>             &integrals) const;
 
     /**
+     * @brief The factor of <Finite elements/Density> rho in the lumped mass of the region: 1 by
+     * default (the inertia rho of a displacement); the specific heat c of a temperature field,
+     * whose lumped "mass" is the heat capacity rho c [J/(m^3 K)].
+     */
+    virtual double
+    mass_factor() const;
+
+    /**
      * @brief The derived quantities written with the solution (strains and stresses, fluxes),
      * from the solution's gradients.
      */
@@ -157,6 +165,13 @@ namespace perideal
                                 const std::vector<double> &,
                                 dealii::Vector<double> &) const
   {}
+
+  template <int dim>
+  double
+  FEPhysics<dim>::mass_factor() const
+  {
+    return 1.;
+  }
 
   template <int dim>
   bool

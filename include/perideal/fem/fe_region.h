@@ -190,9 +190,11 @@ namespace perideal
     prescribed_mask() const;
 
     /**
-     * @brief The largest stable explicit time step 2 / sqrt(lambda_max(M^-1 K)), with the
-     * Gershgorin bound lambda_max <= max_i sum_j |K_ij| / M_i, for the lumped mass or
-     * @p mass (e.g. with the particles' masses added in a coupled problem).
+     * @brief The largest stable explicit time step: 2 / sqrt(lambda_max(M^-1 K)) of velocity
+     * Verlet, or 2 / lambda_max(M^-1 K) of forward Euler for a first-order field (a
+     * temperature, M the heat capacity), with the Gershgorin bound lambda_max <= max_i sum_j
+     * |K_ij| / M_i, for the lumped mass or @p mass (e.g. with the particles' masses added in a
+     * coupled problem).
      */
     double
     stable_time_step(const FEVector *mass = nullptr) const;
@@ -378,6 +380,14 @@ namespace perideal
                        dealii::FEValues<dim>                                        &fe_values,
                        dealii::FEFaceValues<dim>                                    &fe_face_values,
                        dealii::Vector<double> &cell_rhs) const;
+    /**
+     * @brief Add h sum_q w_q phi_i phi_j of the convection (Robin) conditions on the boundary
+     * faces of @p cell to @p cell_matrix: the part h T of their heat flux h (T_inf - T).
+     */
+    void
+    add_convection_stiffness(const typename dealii::DoFHandler<dim>::active_cell_iterator &cell,
+                             dealii::FEFaceValues<dim>  &face_values,
+                             dealii::FullMatrix<double> &cell_matrix) const;
     /// The weighted stiffness and the lumped mass (unconstrained).
     void
     assemble_matrices();

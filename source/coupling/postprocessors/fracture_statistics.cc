@@ -19,7 +19,8 @@ namespace perideal
   void
   FractureStatistics<dim>::initialize(const CoupledState<dim> &state)
   {
-    if (state.settings.solver_type != SolverType::explicit_dynamics)
+    if (state.settings.solver_type != SolverType::explicit_dynamics &&
+        state.settings.solver_type != SolverType::implicit)
       measures.initialize(state, control);
   }
 

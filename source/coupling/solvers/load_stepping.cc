@@ -2,6 +2,7 @@
 // PeriDeal: quasi-static load stepping with bond breaking.
 // ---------------------------------------------------------------------
 #include <perideal/coupling/coupled_static_solver.h>
+#include <perideal/coupling/solvers/equilibrium_state.h>
 #include <perideal/coupling/solvers/load_stepping.h>
 #include <perideal/coupling/solvers/run_control.h>
 #include <perideal/pd/damage_model.h>
@@ -15,22 +16,6 @@
 namespace perideal
 {
   using namespace dealii;
-
-  namespace
-  {
-    // The names of the FE and the particle boundary conditions of @p state, separated by ', '.
-    template <int dim>
-    std::string
-    condition_names(const CoupledState<dim> &state)
-    {
-      std::string names;
-      for (const auto &c : state.fe.conditions())
-        names += (names.empty() ? "" : ", ") + c.name;
-      for (const auto &name : state.pd.boundary_conditions().names())
-        names += (names.empty() ? "" : ", ") + name;
-      return names;
-    }
-  } // namespace
 
   template <int dim>
   LoadStepping<dim>::LoadStepping(const SolverType type, const QuasiStaticControl &control)
@@ -95,6 +80,11 @@ namespace perideal
     for (unsigned int c = 0; c < n_fe && fe.n_dofs() > 0; ++c)
       for (std::size_t k = 0; k < held.size(); ++k)
         constrained[c] += (held[k] && of[c][k]) ? 1. : 0.;
+    // A convection condition holds a temperature (its h T is in the FE stiffness).
+    for (const auto &c : fe.conditions())
+      if (c.convection)
+        for (const unsigned int component : c.components)
+          constrained[component] += 1.;
     for (std::size_t k = 0; k < state.motion.size(); ++k)
       if (state.motion[k] == Motion::prescribed)
         constrained[k % nc] += 1.;
@@ -219,28 +209,6 @@ namespace perideal
   {
     state.f_ext.equ(factor, fe_full_load);
     state.external_force.equ(factor, full_load);
-  }
-
-  template <int dim>
-  double
-  LoadStepping<dim>::equilibrium_state(CoupledState<dim> &state) const
-  {
-    const double pd_energy = state.method.equilibrium_forces(state.U,
-                                                             state.u,
-                                                             state.f_ext,
-                                                             state.external_force,
-                                                             state.residual,
-                                                             state.internal_force);
-
-    // The loads that do work: the applied ones, and on prescribed components the support
-    // forces (the FE residual K z - F there; minus the internal force on particles).
-    const auto &mask = state.fe.prescribed_mask();
-    for (unsigned int k = 0; k < state.U.locally_owned_size(); ++k)
-      state.fe_load.local_element(k) =
-        state.f_ext.local_element(k) + (mask[k] ? state.residual.local_element(k) : 0.);
-    state.accumulate_work();
-    state.fe_support = state.residual;
-    return pd_energy;
   }
 
   template <int dim>

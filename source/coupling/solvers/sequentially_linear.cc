@@ -2,6 +2,7 @@
 // PeriDeal: quasi-static fracture event by event (sequentially linear control).
 // ---------------------------------------------------------------------
 #include <perideal/base/parameter_utilities.h>
+#include <perideal/coupling/solvers/equilibrium_state.h>
 #include <perideal/coupling/solvers/run_control.h>
 #include <perideal/coupling/solvers/sequentially_linear.h>
 #include <perideal/pd/damage_model.h>
@@ -183,7 +184,7 @@ namespace perideal
                                      state.internal_force,
                                      &state.energy_density,
                                      infinity);
-        const double pd_energy = this->equilibrium_state(state);
+        const double pd_energy = equilibrium_state(state);
         const auto   values    = measures.measure(state);
         const double load      = std::abs(values.load);
         if (load > peak)

@@ -5,6 +5,7 @@
 #include <perideal/coupling/solvers/load_stepping.h>
 #include <perideal/coupling/solvers/sequentially_linear.h>
 #include <perideal/coupling/solvers/solver.h>
+#include <perideal/coupling/solvers/theta_scheme.h>
 
 namespace perideal
 {
@@ -19,6 +20,8 @@ namespace perideal
   {
     if (type == SolverType::explicit_dynamics)
       return std::make_unique<ExplicitDynamics<dim>>();
+    if (type == SolverType::implicit)
+      return std::make_unique<ThetaScheme<dim>>();
     if (control.method == LoadControl::sequentially_linear)
       return std::make_unique<SequentiallyLinear<dim>>(control);
     return std::make_unique<LoadStepping<dim>>(type, control);

@@ -84,14 +84,6 @@ namespace perideal
     scale_loads(CoupledState<dim> &state, const double factor) const;
 
     /**
-     * @brief After the equilibrium of a step: the method's forces (CouplingMethod::
-     * equilibrium_forces(): reactions, CoupledState::fe_support), the work of the loads; returns
-     * the particles' strain energy. Collective.
-     */
-    double
-    equilibrium_state(CoupledState<dim> &state) const;
-
-    /**
      * @brief The solve of @p what (step @p step, load factor @p factor) did not converge: write
      * its last iterate for inspection (FieldOutput's files *_not_converged, no statistics row),
      * log it and return the files written. Collective.

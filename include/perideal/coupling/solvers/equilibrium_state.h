@@ -1,0 +1,33 @@
+// ---------------------------------------------------------------------
+// PeriDeal: what the solvers that step through the static solve of the coupling method share.
+// ---------------------------------------------------------------------
+#ifndef perideal_coupling_solvers_equilibrium_state_h
+#define perideal_coupling_solvers_equilibrium_state_h
+
+#include <perideal/coupling/coupled_state.h>
+
+#include <string>
+
+namespace perideal
+{
+  /**
+   * @brief The names of the FE and the particle boundary conditions of @p state, separated by
+   * ', ' (for the messages of the static solves).
+   */
+  template <int dim>
+  std::string
+  condition_names(const CoupledState<dim> &state);
+
+  /**
+   * @brief After an equilibrium solve of the coupling method under the loads state.f_ext and
+   * state.external_force: the method's forces of the state (CouplingMethod::
+   * equilibrium_forces(): state.residual, the reactions, state.internal_force,
+   * CoupledState::fe_support) and the work of the loads and supports; returns the particles'
+   * strain energy. Used by the load stepping and the implicit time steps. Collective.
+   */
+  template <int dim>
+  double
+  equilibrium_state(CoupledState<dim> &state);
+} // namespace perideal
+
+#endif

@@ -1,0 +1,184 @@
+// ---------------------------------------------------------------------
+// PeriDeal: implicit theta-scheme time steps of a first-order field (heat conduction).
+// ---------------------------------------------------------------------
+#include <perideal/base/parameter_utilities.h>
+#include <perideal/coupling/solvers/equilibrium_state.h>
+#include <perideal/coupling/solvers/theta_scheme.h>
+
+#include <iomanip>
+#include <sstream>
+#include <string>
+
+namespace perideal
+{
+  using namespace dealii;
+
+  template <int dim>
+  void
+  ThetaScheme<dim>::check(const CoupledState<dim> &state) const
+  {
+    AssertThrow(state.layout.n_components(ComponentKind::temperature) == state.n_components(),
+                ExcMessage("<Solver/Type> = implicit advances a first-order field (a "
+                           "temperature: <Finite elements/Physics> = heat, or a PD conduction "
+                           "model), but the problem's field is " +
+                           state.layout.description() +
+                           ", of second order in time; accepted <Solver/Type> for it: explicit, "
+                           "static, adaptive dynamic relaxation."));
+  }
+
+  template <int dim>
+  void
+  ThetaScheme<dim>::setup(CoupledState<dim> &state)
+  {
+    using Motion = typename CoupledState<dim>::Motion;
+    this->check(state);
+    const unsigned int nc       = state.n_components();
+    const auto        &settings = state.settings;
+    auto              &ps       = state.pd.particles();
+
+    // The solve of the method with the prescribed components of free particles.
+    ParticleVector prescribed;
+    ps.reinit_vector(prescribed, nc);
+    for (std::size_t k = 0; k < state.motion.size(); ++k)
+      if (state.motion[k] == Motion::prescribed)
+        prescribed.local_element(k) = 1.;
+    EquilibriumSettings<dim> equilibrium;
+    equilibrium.type                  = SolverType::static_linear;
+    equilibrium.linear.linear_solver  = settings.linear_solver;
+    equilibrium.linear.tolerance      = settings.tolerance;
+    equilibrium.linear.max_iterations = settings.max_iterations;
+    state.method.initialize_equilibrium(prescribed, equilibrium, condition_names(state));
+
+    // D = C / (theta dt), C the lumped capacity: the method's lumped masses times the
+    // components' inertia ratio (the specific heat of a temperature) on the particles; the FE
+    // lumped mass is rho c already (FEPhysics::mass_factor()).
+    state.time_step = settings.time_step;
+    ParameterUtilities::equal_time_steps(settings.end_time, state.time_step);
+    const double factor = 1. / (settings.theta * state.time_step);
+    state.fe.initialize_vector(state.mass);
+    state.method.lumped_masses(state.mass, state.particle_mass);
+    state.fe.initialize_vector(fe_diagonal);
+    fe_diagonal.equ(factor, state.mass);
+    ParticleVector diagonal;
+    ps.reinit_vector(diagonal, nc);
+    ps.reinit_vector(particle_diagonal, nc);
+    free_factor.assign(state.motion.size(), 0.);
+    const auto &volume = ps.volumes();
+    for (std::size_t k = 0; k < state.motion.size(); ++k)
+      if (state.motion[k] != Motion::slaved)
+        {
+          free_factor[k] = 1.;
+          diagonal.local_element(k) =
+            factor * state.particle_mass[k / nc] * state.inertia_ratio[k % nc];
+          particle_diagonal.local_element(k) = diagonal.local_element(k) / volume[k / nc];
+        }
+    state.method.set_equilibrium_diagonal(fe_diagonal, diagonal);
+    state.fe.initialize_vector(fe_rhs);
+    ps.reinit_vector(pd_rhs, nc);
+    if (state.is_root)
+      state.log << "Implicit theta scheme: theta = " << settings.theta << ", "
+                << state.method.n_unknowns() << " unknowns per step" << std::endl;
+  }
+
+  template <int dim>
+  void
+  ThetaScheme<dim>::forces_at(CoupledState<dim> &state, const double time)
+  {
+    state.f_ext          = 0.;
+    state.external_force = 0.;
+    state.fe.assemble_load(time, state.f_ext);
+    state.pd.boundary_conditions().add_loads(time, state.external_force);
+    equilibrium_state(state);
+  }
+
+  template <int dim>
+  void
+  ThetaScheme<dim>::run(CoupledState<dim>   &state,
+                        Postprocessors<dim> &postprocessors,
+                        Checkpoint<dim>     &checkpoint)
+  {
+    const auto        &settings = state.settings;
+    const double       theta    = settings.theta;
+    double             dt       = settings.time_step;
+    const unsigned int n_steps  = ParameterUtilities::equal_time_steps(settings.end_time, dt);
+    if (state.is_root)
+      state.log << "Time step: " << dt << " s, steps: " << n_steps << std::endl;
+    std::ostringstream run_description;
+    run_description << "implicit, theta " << theta << ", " << n_steps << " steps of "
+                    << std::setprecision(17) << dt << " s";
+    checkpoint.set_run(run_description.str(), n_steps);
+
+    auto       &fe         = state.fe;
+    auto       &conditions = state.pd.boundary_conditions();
+    auto       &U = state.U, &u = state.u;
+    StepData    data;
+    RunPosition start;
+    if (checkpoint.restarting())
+      start = checkpoint.load(state, postprocessors);
+    else
+      {
+        state.apply_initial_conditions();
+        fe.prescribe(0., U, state.V);
+        conditions.prescribe_displacement(0., u);
+        state.start_work();
+      }
+    // The forces of the first state need the method's assembled operator: one solve, whose
+    // solution is discarded, assembles it.
+    {
+      FEVector       U_start(U);
+      ParticleVector u_start(u);
+      fe.assemble_load(start.time, fe_rhs);
+      pd_rhs = 0.;
+      state.method.solve_equilibrium(fe_rhs, pd_rhs, U_start, u_start);
+    }
+    forces_at(state, start.time);
+    if (!checkpoint.restarting())
+      {
+        data.write_statistics = true;
+        data.write_fields     = true;
+        postprocessors.execute(state, data);
+      }
+
+    const double      old_weight   = (1. - theta) / theta;
+    unsigned int      output_index = start.next_output;
+    const std::size_t n_particle   = free_factor.size();
+    for (unsigned int step = start.step + 1; step <= n_steps; ++step)
+      {
+        const double time = step * dt;
+        // D T_n + (1 - theta) / theta (Q_n - K T_n), then the loads at t_{n+1}.
+        for (unsigned int k = 0; k < U.locally_owned_size(); ++k)
+          fe_rhs.local_element(k) = fe_diagonal.local_element(k) * U.local_element(k) -
+                                    old_weight * state.residual.local_element(k);
+        for (std::size_t k = 0; k < n_particle; ++k)
+          pd_rhs.local_element(k) =
+            particle_diagonal.local_element(k) * u.local_element(k) +
+            old_weight * free_factor[k] *
+              (state.internal_force.local_element(k) + state.external_force.local_element(k));
+        state.f_ext          = 0.;
+        state.external_force = 0.;
+        fe.assemble_load(time, state.f_ext);
+        conditions.add_loads(time, state.external_force);
+        fe_rhs += state.f_ext;
+        pd_rhs += state.external_force;
+        fe.prescribe(time, U, state.V);
+        conditions.prescribe_displacement(time, u);
+        data.iterations = state.method.solve_equilibrium(fe_rhs, pd_rhs, U, u);
+        forces_at(state, time);
+
+        data.step             = step;
+        data.time             = time;
+        data.final_row        = (step == n_steps);
+        data.write_statistics = (step % settings.statistics_interval == 0 || data.final_row);
+        data.write_fields =
+          data.final_row || (settings.output_interval > 0 && step % settings.output_interval == 0);
+        if (data.write_fields)
+          data.output_index = output_index++;
+        postprocessors.execute(state, data);
+        if (checkpoint.after_step(state, postprocessors, {step, time, output_index}))
+          return;
+      }
+  }
+
+  template class ThetaScheme<2>;
+  template class ThetaScheme<3>;
+} // namespace perideal
