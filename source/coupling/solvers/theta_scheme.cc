@@ -3,6 +3,7 @@
 // ---------------------------------------------------------------------
 #include <perideal/base/parameter_utilities.h>
 #include <perideal/coupling/solvers/equilibrium_state.h>
+#include <perideal/coupling/solvers/run_control.h>
 #include <perideal/coupling/solvers/theta_scheme.h>
 
 #include <iomanip>
@@ -106,42 +107,34 @@ namespace perideal
     std::ostringstream run_description;
     run_description << "implicit, theta " << theta << ", " << n_steps << " steps of "
                     << std::setprecision(17) << dt << " s";
-    checkpoint.set_run(run_description.str(), n_steps);
 
-    auto       &fe         = state.fe;
-    auto       &conditions = state.pd.boundary_conditions();
-    auto       &U = state.U, &u = state.u;
-    StepData    data;
-    RunPosition start;
-    if (checkpoint.restarting())
-      start = checkpoint.load(state, postprocessors);
-    else
-      {
-        state.apply_initial_conditions();
-        fe.prescribe(0., U, state.V);
-        conditions.prescribe_displacement(0., u);
-        state.start_work();
-      }
+    auto &fe         = state.fe;
+    auto &conditions = state.pd.boundary_conditions();
+    auto &U = state.U, &u = state.u;
     // The forces of the first state need the method's assembled operator: one solve, whose
     // solution is discarded, assembles it.
-    {
+    const auto first_forces = [&](const double time) {
       FEVector       U_start(U);
       ParticleVector u_start(u);
-      fe.assemble_load(start.time, fe_rhs);
+      fe.assemble_load(time, fe_rhs);
       pd_rhs = 0.;
       state.method.solve_equilibrium(fe_rhs, pd_rhs, U_start, u_start);
-    }
-    forces_at(state, start.time);
-    if (!checkpoint.restarting())
-      {
-        data.write_statistics = true;
-        data.write_fields     = true;
-        postprocessors.execute(state, data);
-      }
+      forces_at(state, time);
+    };
+    const bool        restarting = checkpoint.restarting();
+    RunControl<dim>   run(state, postprocessors, checkpoint, false);
+    const RunPosition start = run.start(run_description.str(), n_steps, [&]() {
+      state.apply_initial_conditions();
+      fe.prescribe(0., U, state.V);
+      conditions.prescribe_displacement(0., u);
+      state.start_work();
+      first_forces(0.);
+    });
+    if (restarting)
+      first_forces(start.time);
 
-    const double      old_weight   = (1. - theta) / theta;
-    unsigned int      output_index = start.next_output;
-    const std::size_t n_particle   = free_factor.size();
+    const double      old_weight = (1. - theta) / theta;
+    const std::size_t n_particle = free_factor.size();
     for (unsigned int step = start.step + 1; step <= n_steps; ++step)
       {
         const double time = step * dt;
@@ -162,19 +155,11 @@ namespace perideal
         pd_rhs += state.external_force;
         fe.prescribe(time, U, state.V);
         conditions.prescribe_displacement(time, u);
+        StepData data   = run.plan(step, time, step == n_steps);
         data.iterations = state.method.solve_equilibrium(fe_rhs, pd_rhs, U, u);
         forces_at(state, time);
-
-        data.step             = step;
-        data.time             = time;
-        data.final_row        = (step == n_steps);
-        data.write_statistics = (step % settings.statistics_interval == 0 || data.final_row);
-        data.write_fields =
-          data.final_row || (settings.output_interval > 0 && step % settings.output_interval == 0);
-        if (data.write_fields)
-          data.output_index = output_index++;
-        postprocessors.execute(state, data);
-        if (checkpoint.after_step(state, postprocessors, {step, time, output_index}))
+        run.write(data);
+        if (run.checkpoint(data))
           return;
       }
   }
