@@ -22,4 +22,8 @@ if [ "$(id -u)" -ne 0 ]; then
 fi
 export DEBIAN_FRONTEND=noninteractive
 apt-get update
-apt-get install -y --no-install-recommends "${packages[@]}"
+# dpkg's --force-unsafe-io skips the sync after every unpacked file (as Debian's container images
+# do): the 580 packages of a fresh machine unpacked in 364 s instead of 1078 s (fresh Debian 12
+# minbase chroot, the same machine under the same load). The price: a crash during the install
+# can leave files of the packages being unpacked empty; reinstall them then.
+apt-get install -y --no-install-recommends -o Dpkg::Options::=--force-unsafe-io "${packages[@]}"
