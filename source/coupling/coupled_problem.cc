@@ -431,6 +431,14 @@ namespace perideal
     state->setup();
     solver = create_solver<dim>(settings.solver_type, control);
     solver->check(*state);
+    // The postprocessors' own checks (probe points on particles, the load point and size of the
+    // fracture measures) need only the state: --validate makes them too.
+    PostprocessorInputs<dim> inputs;
+    inputs.control            = control;
+    inputs.exact_displacement = exact_displacement;
+    inputs.exact_tolerance    = exact_tolerance;
+    postprocessors            = std::make_unique<Postprocessors<dim>>(postprocessor_names, inputs);
+    postprocessors->initialize(*state);
   }
 
   template <int dim>
@@ -451,13 +459,6 @@ namespace perideal
         state->adaptation_interval = adaptive.check_interval();
       }
     solver->setup(*state);
-
-    PostprocessorInputs<dim> inputs;
-    inputs.control            = control;
-    inputs.exact_displacement = exact_displacement;
-    inputs.exact_tolerance    = exact_tolerance;
-    postprocessors            = std::make_unique<Postprocessors<dim>>(postprocessor_names, inputs);
-    postprocessors->initialize(*state);
   }
 
   template <int dim>

@@ -83,14 +83,15 @@ namespace perideal
      * interpolation of anisotropic bond based, a twist axis inside the section), beta in
      * [0, 1], the adaptive region's seeds and the coupling method's overlap (a ramp at least a
      * horizon wide), the state (no condition on particles slaved to the FE field) and the
-     * solver's checks (Solver::check(): conditions it can apply, rigid motions held). Builds
-     * no matrix and writes nothing on disk.
+     * solver's checks (Solver::check(): conditions it can apply, rigid motions held, a
+     * conforming mesh for quasi-static solves) and the postprocessors' (probe points on
+     * particles, the fracture measures' load point). Builds no matrix and writes nothing on
+     * disk.
      */
     void
     check();
 
-    /// check(), then the solver's set-up (its matrices) and the postprocessors, with every
-    /// check they make; writes nothing on disk.
+    /// check(), then the solver's set-up (its matrices); writes nothing on disk.
     void
     setup();
 
