@@ -122,6 +122,16 @@ namespace perideal
     particle_mass.assign(n_owned, 0.);
     ParticleVector slaved_mass;
     particles.reinit_vector(slaved_mass, nc);
+    // A temperature's "mass" is the heat capacity rho c V (MaterialModel::inertia_densities()),
+    // as the FE heat physics' lumped capacity is.
+    std::vector<double> capacity_ratio(nc, 1.);
+    if (regions.layout.has_temperature() && regions.density > 0.)
+      {
+        const std::vector<double> inertia = regions.material->inertia_densities(regions.density);
+        for (unsigned int c = 0; c < nc; ++c)
+          if (regions.layout.kind(c) == ComponentKind::temperature)
+            capacity_ratio[c] = inertia[c] / regions.density;
+      }
     for (unsigned int i = 0; i < n_owned; ++i)
       {
         particle_mass[i] = weights[i] * regions.density * volume[i];
@@ -130,7 +140,7 @@ namespace perideal
         if (transfer.is_slaved(i))
           for (unsigned int c = 0; c < nc; ++c)
             if (regions.layout.kind(c) != ComponentKind::rotation)
-              slaved_mass.local_element(i * nc + c) = particle_mass[i];
+              slaved_mass.local_element(i * nc + c) = particle_mass[i] * capacity_ratio[c];
       }
     fe_mass = regions.fe->lumped_mass();
     transfer.add_transpose(slaved_mass, fe_mass);
