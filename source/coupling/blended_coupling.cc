@@ -122,15 +122,15 @@ namespace perideal
     particle_mass.assign(n_owned, 0.);
     ParticleVector slaved_mass;
     particles.reinit_vector(slaved_mass, nc);
-    // A temperature's "mass" is the heat capacity rho c V (MaterialModel::inertia_densities()),
-    // as the FE heat physics' lumped capacity is.
-    std::vector<double> capacity_ratio(nc, 1.);
-    if (regions.layout.has_temperature() && regions.density > 0.)
+    // What a slaved component carries to the FE dofs per unit mass: the model's inertia over
+    // the density (MaterialModel::inertia_densities(): 1 for translations and scalars, the
+    // specific heat c for a temperature, as the FE heat physics' lumped capacity rho c).
+    std::vector<double> inertia_ratio(nc, 1.);
+    if (regions.density > 0.)
       {
-        const std::vector<double> inertia = regions.material->inertia_densities(regions.density);
-        for (unsigned int c = 0; c < nc; ++c)
-          if (regions.layout.kind(c) == ComponentKind::temperature)
-            capacity_ratio[c] = inertia[c] / regions.density;
+        inertia_ratio = regions.material->inertia_densities(regions.density);
+        for (double &ratio : inertia_ratio)
+          ratio /= regions.density;
       }
     for (unsigned int i = 0; i < n_owned; ++i)
       {
@@ -140,7 +140,7 @@ namespace perideal
         if (transfer.is_slaved(i))
           for (unsigned int c = 0; c < nc; ++c)
             if (regions.layout.kind(c) != ComponentKind::rotation)
-              slaved_mass.local_element(i * nc + c) = particle_mass[i] * capacity_ratio[c];
+              slaved_mass.local_element(i * nc + c) = particle_mass[i] * inertia_ratio[c];
       }
     fe_mass = regions.fe->lumped_mass();
     transfer.add_transpose(slaved_mass, fe_mass);
