@@ -223,6 +223,11 @@ namespace perideal
   void
   CoupledState<dim>::accumulate_dissipated_energy()
   {
+    if (broken_bond_record != nullptr)
+      {
+        const auto &broken = pd.particles().bonds().newly_broken;
+        broken_bond_record->insert(broken_bond_record->end(), broken.begin(), broken.end());
+      }
     local_dissipated += pd.material().released_energy(pd.particles(), u);
   }
 
