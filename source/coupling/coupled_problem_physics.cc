@@ -98,6 +98,13 @@ namespace perideal
         Physics<dim> &field = *physics[k];
         if (is_root)
           log << "Physics " << field.name << ":" << std::endl;
+        // An implicit physics takes one step per step of the first physics, as its run will
+        // take it.
+        if (field.settings.solver_type == SolverType::implicit)
+          {
+            field.settings.time_step = state->time_step;
+            ParameterUtilities::equal_time_steps(settings.end_time, field.settings.time_step);
+          }
         field.solver->setup(*field.state);
         postprocessors->add_physics(field.name, *field.state, *field.postprocessors);
         for (unsigned int c = 0; c < field.layout.n_components(); ++c)

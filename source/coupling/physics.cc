@@ -128,6 +128,17 @@ namespace perideal
         ParticleRegion<dim>::declare_physics_parameters(prm, conditions.particles);
         FERegion<dim>::declare_physics_parameters(prm, conditions.fe);
         ProblemSettings<dim>::declare_field_parameters(prm);
+        prm.enter_subsection("Solver");
+        prm.declare_entry("Type",
+                          "explicit",
+                          Patterns::Selection("explicit|implicit"),
+                          "How this physics advances within each step of the first one (operator "
+                          "splitting; the first one's <Solver/Type> is explicit): 'explicit' "
+                          "(forward-Euler sub-steps at its own stable step times <Time "
+                          "stepping/Safety factor>, as many as divide the step), 'implicit' "
+                          "(one theta step of <Time stepping/Theta> per step, with <Solver/Linear "
+                          "solver>).");
+        prm.leave_subsection();
         prm.enter_subsection("Coupling");
         using Methods = PluginRegistry<CouplingMethod<dim>>;
         prm.declare_entry("Method",
@@ -156,6 +167,7 @@ namespace perideal
     settings.solution_name = problem_settings.solution_name + "_" + name;
     prm.enter_subsection(section(name));
     settings.parse_field_parameters(prm);
+    settings.solver_type = solver_type_from_name(prm.get({"Solver"}, "Type"));
     pd.parse_physics_parameters(prm, section(name), first.pd);
     fe.parse_physics_parameters(prm, first.fe);
     parse_field(prm, prefix);

@@ -10,6 +10,8 @@
 //  - no exchange effect (no damage): the mechanics equal the mechanics run alone bit for bit,
 //    the temperatures those of the heat run alone with the sub-step as its time step, to
 //    1e-12 of the largest (the times of the sub-steps differ in the last bit);
+//  - the same with the heat implicit (<Heat/Solver/Type> = implicit: one backward-Euler step
+//    per mechanical step) against the heat run alone, implicit, with the mechanical step;
 //  - the exchange publishes the heat's temperature at the particles;
 //  - a mechanical crack insulates: with a critical stretch of 1e-3 the bonds across x = 10 mm
 //    break in the first step (the halves separate at 40 m/s); the heat in the right half, which
@@ -53,7 +55,11 @@ namespace
   // The plate: the mechanics in the top-level sections, the heat in them (alone) or in
   // <Heat> (both).
   std::string
-  input(const Fields fields, const bool damage, const double end_time, const double heat_step)
+  input(const Fields       fields,
+        const bool         damage,
+        const double       end_time,
+        const double       heat_step,
+        const std::string &heat_solver)
   {
     const std::string mechanics = R"(
 subsection Material
@@ -84,8 +90,12 @@ end
 subsection Initial conditions
   set Displacement = if(x < 0.01, 100, 0)
 end
+subsection Solver
+  set Type = )" + heat_solver +
+                             R"(
+end
 )";
-    std::string       text =
+    std::string text =
       R"(
 set Dimension = 2
 subsection Discretization
@@ -128,19 +138,23 @@ end
     std::vector<double> published;
     // The heat sum V T (rho c = 1) over the particles with x > 10 mm, and over all [J].
     double right_heat = 0., heat = 0.;
-    // The heat's sub-step [s].
-    double heat_step = 0.;
+    // The heat's sub-step and the mechanics' step [s].
+    double heat_step = 0., step = 0.;
   };
 
   Result
-  run(const Fields fields, const bool damage, const double end_time, const double heat_step = 0.)
+  run(const Fields       fields,
+      const bool         damage,
+      const double       end_time,
+      const double       heat_step   = 0.,
+      const std::string &heat_solver = "explicit")
   {
     std::ostringstream                   log;
     perideal::CoupledProblem<2>          problem(MPI_COMM_WORLD, log);
     ParameterHandler                     prm;
     perideal::Physics<2>::ConditionNames none;
     perideal::CoupledProblem<2>::declare_parameters(prm, {"plate"}, {}, {}, {{"heat", none}});
-    prm.parse_input_from_string(input(fields, damage, end_time, heat_step));
+    prm.parse_input_from_string(input(fields, damage, end_time, heat_step, heat_solver));
     problem.parse_parameters(prm);
     problem.setup();
     problem.run();
@@ -170,7 +184,10 @@ end
     result.right_heat = Utilities::MPI::sum(result.right_heat, MPI_COMM_WORLD);
     result.heat       = Utilities::MPI::sum(result.heat, MPI_COMM_WORLD);
     if (fields == Fields::both)
-      result.heat_step = physics[1]->state->time_step;
+      {
+        result.heat_step = physics[1]->state->time_step;
+        result.step      = physics[0]->state->time_step;
+      }
     return result;
   }
 
@@ -197,6 +214,8 @@ main(int argc, char **argv)
 {
   Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
   mpi_initlog();
+  // Not the iterations of the implicit heat's solves.
+  deallog.depth_file(1);
 
   // No exchange effect: each physics as alone.
   const Result both      = run(Fields::both, false, 2e-6);
@@ -208,6 +227,15 @@ main(int argc, char **argv)
   const double heat_difference = difference(both.T, heat.T, 100.);
   verdict("temperature equal to the heat alone to 1e-12", heat_difference <= 1e-12);
   verdict("the exchange publishes the temperature", difference(both.published, both.T, 1.) == 0.);
+
+  // The heat implicit, one theta step (backward Euler) per mechanical step, as alone.
+  const Result implicit_both = run(Fields::both, false, 2e-6, 0., "implicit");
+  const Result implicit_heat = run(Fields::heat, false, 2e-6, implicit_both.step, "implicit");
+  deallog << "implicit heat step: " << implicit_both.heat_step << " s" << std::endl;
+  verdict("implicit heat step equal to the mechanical step",
+          implicit_both.heat_step == implicit_both.step);
+  verdict("implicit temperature equal to the heat alone to 1e-12",
+          difference(implicit_both.T, implicit_heat.T, 100.) <= 1e-12);
 
   // A mechanical crack insulates.
   const Result cracked_1 = run(Fields::both, true, 1e-6), cracked_2 = run(Fields::both, true, 2e-6);
