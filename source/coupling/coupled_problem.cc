@@ -428,6 +428,11 @@ namespace perideal
   void
   CoupledProblem<dim>::restart_from_checkpoint()
   {
+    AssertThrow(physics.size() == 1,
+                ExcMessage("--restart: a checkpoint holds one physics so far, and this problem "
+                           "has <Physics/List> = " +
+                           physics[1]->name + (physics.size() > 2 ? ", ..." : "") +
+                           " besides; run it from its initial conditions."));
     restart = true;
   }
 

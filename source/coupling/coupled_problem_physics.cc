@@ -29,10 +29,23 @@ namespace perideal
                            field +
                            "): with a list they hold the mechanics; accepted there: a "
                            "mechanical model, the conduction model in <Heat/Material/Model>."));
-    AssertThrow(settings.solver_type == SolverType::explicit_dynamics,
-                ExcMessage(entry + ": several physics are advanced together in explicit runs "
-                                   "only so far (doc/architecture/16_multiphysics.md); accepted "
-                                   "<Solver/Type> = explicit."));
+    AssertThrow(settings.solver_type != SolverType::implicit,
+                ExcMessage(entry + ": the first physics is advanced by <Solver/Type> = explicit, "
+                                   "static or adaptive dynamic relaxation, the others within its "
+                                   "steps (doc/architecture/16_multiphysics.md); accepted: "
+                                   "explicit, static, adaptive dynamic relaxation."));
+    if (settings.solver_type != SolverType::explicit_dynamics)
+      {
+        AssertThrow(control.method == LoadControl::load_steps && control.cut_threshold == 0,
+                    ExcMessage(entry + ": a quasi-static run advances the other physics over "
+                                       "each load step, which a sequentially linear control or "
+                                       "cut load steps would undo; accepted: <Solver/Control/"
+                                       "Method> = load steps with <Cut threshold> = 0."));
+        AssertThrow(settings.end_time > 0.,
+                    ExcMessage(entry + ": load step k of N of a quasi-static run ends at the time "
+                                       "k/N <Time stepping/End time>, to which the other physics "
+                                       "advance; <Time stepping/End time> is 0: accepted > 0."));
+      }
     AssertThrow(!adaptive.enabled(),
                 ExcMessage(entry + ": the physics share the particles, which an adaptive PD "
                                    "region does not rebuild for each yet; accepted "
@@ -101,11 +114,18 @@ namespace perideal
         // An implicit physics takes one step per step of the first physics, as its run will
         // take it.
         if (field.settings.solver_type == SolverType::implicit)
-          {
-            field.settings.time_step = state->time_step;
-            ParameterUtilities::equal_time_steps(settings.end_time, field.settings.time_step);
-          }
+          field.settings.time_step = split_step();
         field.solver->setup(*field.state);
+        // The largest step of at most its own (the safety factor times its stable step) that
+        // divides the first physics' step, as its run takes it.
+        const double step_length = split_step();
+        const auto   n           = static_cast<unsigned int>(
+          std::max(1., std::ceil(step_length / field.state->time_step * (1. - 1e-12))));
+        field.state->time_step = step_length / n;
+        sub_steps[k - 1]       = n;
+        if (is_root)
+          log << "  " << n << " step" << (n > 1 ? "s" : "") << " of " << field.state->time_step
+              << " s per step of the first physics" << std::endl;
         postprocessors->add_physics(field.name, *field.state, *field.postprocessors);
         for (unsigned int c = 0; c < field.layout.n_components(); ++c)
           if (field.layout.kind(c) == ComponentKind::temperature)
@@ -128,24 +148,30 @@ namespace perideal
         Physics<dim> &field = *physics[k];
         if (step == 0)
           {
-            // The largest step of at most its own (the safety factor times its stable step)
-            // that divides the first physics' step, as the run takes it.
-            const auto n = static_cast<unsigned int>(
-              std::max(1., std::ceil(state->time_step / field.state->time_step * (1. - 1e-12))));
-            field.state->time_step = state->time_step / n;
-            sub_steps[k - 1]       = n;
-            if (is_root)
-              log << "Physics " << field.name << ": " << n << " step" << (n > 1 ? "s" : "")
-                  << " of " << field.state->time_step << " s per step" << std::endl;
             field.solver->start_state(*field.state);
             continue;
           }
         const unsigned int n     = sub_steps[k - 1];
         const double       dt    = field.state->time_step;
-        const double       start = (step - 1) * state->time_step;
+        const double       start = (step - 1) * split_step();
         for (unsigned int s = 0; s < n; ++s)
           field.solver->advance(*field.state, start + s * dt, dt, with_energy && s + 1 == n);
+        // The force of the supports, for the reactions (explicit runs keep it from the last
+        // step's residual).
+        if (with_energy && field.settings.solver_type == SolverType::explicit_dynamics)
+          field.state->fe_support.equ(-1., field.state->residual);
       }
+  }
+
+  template <int dim>
+  double
+  CoupledProblem<dim>::split_step() const
+  {
+    if (settings.solver_type != SolverType::explicit_dynamics)
+      return settings.end_time / settings.load_steps;
+    double dt = state->time_step;
+    ParameterUtilities::equal_time_steps(settings.end_time, dt);
+    return dt;
   }
 
   template <int dim>
@@ -160,7 +186,8 @@ namespace perideal
   template void CoupledProblem<dim>::check_other_physics();                                 \
   template void CoupledProblem<dim>::setup_other_physics();                                 \
   template void CoupledProblem<dim>::advance_other_physics(const unsigned int, const bool); \
-  template const PhysicsExchange<dim> &CoupledProblem<dim>::get_exchange() const;
+  template const PhysicsExchange<dim> &CoupledProblem<dim>::get_exchange() const;           \
+  template double                      CoupledProblem<dim>::split_step() const;
   PERIDEAL_INSTANTIATE(2)
   PERIDEAL_INSTANTIATE(3)
 #undef PERIDEAL_INSTANTIATE

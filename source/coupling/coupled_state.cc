@@ -150,6 +150,8 @@ namespace perideal
         }
     fe.interpolate(*displacement, U);
     fe.interpolate(*velocity, V);
+    fe.prescribe(0., U, V);
+    pd.boundary_conditions().prescribe_displacement(0., u);
   }
 
   template <int dim>

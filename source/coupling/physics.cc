@@ -133,11 +133,11 @@ namespace perideal
                           "explicit",
                           Patterns::Selection("explicit|implicit"),
                           "How this physics advances within each step of the first one (operator "
-                          "splitting; the first one's <Solver/Type> is explicit): 'explicit' "
-                          "(forward-Euler sub-steps at its own stable step times <Time "
-                          "stepping/Safety factor>, as many as divide the step), 'implicit' "
-                          "(one theta step of <Time stepping/Theta> per step, with <Solver/Linear "
-                          "solver>).");
+                          "splitting; a load step k of N of a quasi-static run ends at k/N <Time "
+                          "stepping/End time>): 'explicit' (forward-Euler sub-steps at its own "
+                          "stable step times <Time stepping/Safety factor>, as many as divide "
+                          "the step), 'implicit' (one theta step of <Time stepping/Theta> per "
+                          "step, with <Solver/Linear solver>).");
         prm.leave_subsection();
         prm.enter_subsection("Coupling");
         using Methods = PluginRegistry<CouplingMethod<dim>>;

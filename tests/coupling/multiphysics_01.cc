@@ -12,6 +12,9 @@
 //    1e-12 of the largest (the times of the sub-steps differ in the last bit);
 //  - the same with the heat implicit (<Heat/Solver/Type> = implicit: one backward-Euler step
 //    per mechanical step) against the heat run alone, implicit, with the mechanical step;
+//  - quasi-static mechanics (2 static load steps of a pull, equal to the mechanics alone bit
+//    for bit) with the heat advanced explicitly to each load step's time before its solve
+//    (equal to the heat alone to 1e-12);
 //  - the exchange publishes the heat's temperature at the particles;
 //  - a mechanical crack insulates: with a critical stretch of 1e-3 the bonds across x = 10 mm
 //    break in the first step (the halves separate at 40 m/s); the heat in the right half, which
@@ -59,7 +62,8 @@ namespace
         const bool         damage,
         const double       end_time,
         const double       heat_step,
-        const std::string &heat_solver)
+        const std::string &heat_solver,
+        const bool         quasi_static)
   {
     const std::string mechanics = R"(
 subsection Material
@@ -77,7 +81,28 @@ end
 subsection Initial conditions
   set Velocity = if(x < 0.01, -20, 20); 0
 end
-)";
+)" +
+                                  std::string(quasi_static ? R"(
+subsection Boundary conditions
+  set Names = hold, pull
+  subsection hold
+    set Region = left
+    set Type   = displacement
+  end
+  subsection pull
+    set Region     = right
+    set Type       = displacement
+    set Components = x
+    set Function   = 2e-6 * t / 2e-6
+  end
+end
+subsection Solver
+  set Type        = static
+  set Load steps  = 2
+  set Linear solver = direct
+end
+)" :
+                                                             "");
     const std::string heat = R"(
 subsection Material
   set Model   = bond based conduction
@@ -104,9 +129,17 @@ subsection Discretization
   set Body            = plate
 end
 subsection Regions
-  set Names = plate
+  set Names = plate, left, right
   subsection plate
     set Lower corner = 0, 0
+    set Upper corner = 0.02, 0.01
+  end
+  subsection left
+    set Lower corner = 0, 0
+    set Upper corner = 0.003, 0.01
+  end
+  subsection right
+    set Lower corner = 0.017, 0
     set Upper corner = 0.02, 0.01
   end
 end
@@ -146,18 +179,27 @@ end
   run(const Fields       fields,
       const bool         damage,
       const double       end_time,
-      const double       heat_step   = 0.,
-      const std::string &heat_solver = "explicit")
+      const double       heat_step    = 0.,
+      const std::string &heat_solver  = "explicit",
+      const bool         quasi_static = false)
   {
     std::ostringstream                   log;
     perideal::CoupledProblem<2>          problem(MPI_COMM_WORLD, log);
     ParameterHandler                     prm;
     perideal::Physics<2>::ConditionNames none;
-    perideal::CoupledProblem<2>::declare_parameters(prm, {"plate"}, {}, {}, {{"heat", none}});
-    prm.parse_input_from_string(input(fields, damage, end_time, heat_step, heat_solver));
+    perideal::CoupledProblem<2>::declare_parameters(prm,
+                                                    {"plate", "left", "right"},
+                                                    {"hold", "pull"},
+                                                    {},
+                                                    {{"heat", none}});
+    prm.parse_input_from_string(
+      input(fields, damage, end_time, heat_step, heat_solver, quasi_static));
     problem.parse_parameters(prm);
+    // Not the iterations of the solves.
+    deallog.push("run");
     problem.setup();
     problem.run();
+    deallog.pop();
     Result                          result;
     const auto                     &ps      = problem.particles();
     const auto                     &physics = problem.get_physics();
@@ -214,7 +256,6 @@ main(int argc, char **argv)
 {
   Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
   mpi_initlog();
-  // Not the iterations of the implicit heat's solves.
   deallog.depth_file(1);
 
   // No exchange effect: each physics as alone.
@@ -236,6 +277,21 @@ main(int argc, char **argv)
           implicit_both.heat_step == implicit_both.step);
   verdict("implicit temperature equal to the heat alone to 1e-12",
           difference(implicit_both.T, implicit_heat.T, 100.) <= 1e-12);
+
+  // Quasi-static mechanics (2 static load steps, the right end pulled by 1 um per step) and
+  // the heat advanced explicitly to each load step's time (k/2 of 2 us) before its solve.
+  const Result static_both      = run(Fields::both, false, 2e-6, 0., "explicit", true);
+  const Result static_mechanics = run(Fields::mechanics, false, 2e-6, 0., "explicit", true);
+  const Result static_heat      = run(Fields::heat, false, 2e-6, static_both.heat_step);
+  double       largest          = 0.;
+  for (const double u : static_both.u)
+    largest = std::max(largest, std::abs(u));
+  deallog << "quasi-static: heat sub-step " << static_both.heat_step << " s, largest displacement "
+          << Utilities::MPI::max(largest, MPI_COMM_WORLD) << " m" << std::endl;
+  verdict("quasi-static mechanics equal to the mechanics alone, bit for bit",
+          difference(static_both.u, static_mechanics.u, 1.) == 0.);
+  verdict("quasi-static: temperature equal to the heat alone to 1e-12",
+          difference(static_both.T, static_heat.T, 100.) <= 1e-12);
 
   // A mechanical crack insulates.
   const Result cracked_1 = run(Fields::both, true, 1e-6), cracked_2 = run(Fields::both, true, 2e-6);

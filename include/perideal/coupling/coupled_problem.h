@@ -201,9 +201,9 @@ namespace perideal
     check_other_physics();
 
     /**
-     * @brief The solvers of the physics of <Physics/List> (their stable steps) and their hook
-     * into the first one's run: their columns in its statistics, their advance after each of
-     * its steps (the sub-steps within one are set at its step 0, once the run fixed its step).
+     * @brief The solvers of the physics of <Physics/List> (their stable steps, their sub-steps
+     * within a step of the first physics) and their hook into the first one's run: their
+     * columns in its statistics, their advance within each of its steps.
      */
     void
     setup_other_physics();
@@ -215,6 +215,14 @@ namespace perideal
      */
     void
     advance_other_physics(const unsigned int step, const bool with_energy);
+
+    /**
+     * @brief The time a step of the first physics spans [s]: its explicit step as its run
+     * takes it (equal steps to the end time), or <Time stepping/End time> over the load steps
+     * of a quasi-static run.
+     */
+    double
+    split_step() const;
 
     /**
      * @brief The adaptive PD region of an explicit run (CoupledState::adapt_regions) after step

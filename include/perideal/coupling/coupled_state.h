@@ -79,7 +79,7 @@ namespace perideal
 
     /**
      * @brief The initial conditions (<Initial conditions>) on both regions: the same function
-     * of x for FE nodes and particles.
+     * of x for FE nodes and particles; then the values the conditions prescribe at t = 0.
      */
     void
     apply_initial_conditions();
@@ -300,10 +300,10 @@ namespace perideal
 
     /**
      * @brief Runs with several physics (<Physics/List>; empty otherwise), set by CoupledProblem
-     * on the first physics' state: its explicit solver calls it with step 0 once the initial
-     * state is set, then after each step with the step and whether the step computes energies
-     * (it writes statistics or fields); it advances the other physics to the end of the step by
-     * operator splitting.
+     * on the first physics' state: its solver calls it with step 0 once the initial state is
+     * set, then with each step and whether the step computes energies (explicit: after the
+     * step, when it writes statistics or fields; quasi-static: before the load step's solve);
+     * it advances the other physics to the end of the step by operator splitting.
      */
     std::function<void(unsigned int, bool)> advance_other_physics;
     /// Runs with several physics: where accumulate_dissipated_energy() records the bonds the

@@ -255,8 +255,6 @@ namespace perideal
   ExplicitDynamics<dim>::start_state(CoupledState<dim> &state)
   {
     state.apply_initial_conditions();
-    state.fe.prescribe(0., state.U, state.V);
-    state.pd.boundary_conditions().prescribe_displacement(0., state.u);
     compute_acceleration(state, 0., true);
     set_first_order_rates(state);
     if (state.is_coupled())

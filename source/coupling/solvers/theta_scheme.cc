@@ -110,8 +110,6 @@ namespace perideal
   ThetaScheme<dim>::start_state(CoupledState<dim> &state)
   {
     state.apply_initial_conditions();
-    state.fe.prescribe(0., state.U, state.V);
-    state.pd.boundary_conditions().prescribe_displacement(0., state.u);
     state.start_work();
     first_forces(state, 0.);
   }
