@@ -13,6 +13,7 @@
 #include <perideal/pd/boundary_conditions.h>
 
 #include <iostream>
+#include <map>
 #include <string>
 #include <utility>
 #include <vector>
@@ -71,13 +72,18 @@ namespace
     RegionCollection<dim>::declare_names(first_pass);
     BoundaryConditions<dim>::declare_names(first_pass);
     FERegion<dim>::declare_names(first_pass);
+    Physics<dim>::declare_names(first_pass);
     ParameterUtilities::parse_partially(first_pass, file);
 
+    std::map<std::string, typename Physics<dim>::ConditionNames> physics_conditions;
+    for (const auto &[name, conditions] : Physics<dim>::parse_names(first_pass))
+      physics_conditions[name] = conditions;
     dealii::ParameterHandler prm;
     CoupledProblem<dim>::declare_parameters(prm,
                                             RegionCollection<dim>::parse_names(first_pass),
                                             BoundaryConditions<dim>::parse_names(first_pass),
-                                            FERegion<dim>::parse_names(first_pass));
+                                            FERegion<dim>::parse_names(first_pass),
+                                            physics_conditions);
     ParameterUtilities::parse_file(prm, file);
 
     CoupledProblem<dim> problem(MPI_COMM_WORLD, std::cout);
@@ -166,8 +172,15 @@ namespace
   void
   print_parameter_reference()
   {
-    dealii::ParameterHandler prm;
-    perideal::CoupledProblem<dim>::declare_parameters(prm, {"<name>"}, {"<name>"}, {"<name>"});
+    dealii::ParameterHandler                                               prm;
+    std::map<std::string, typename perideal::Physics<dim>::ConditionNames> physics_conditions;
+    for (const auto &name : perideal::Physics<dim>::names())
+      physics_conditions[name] = {{"<name>"}, {"<name>"}};
+    perideal::CoupledProblem<dim>::declare_parameters(prm,
+                                                      {"<name>"},
+                                                      {"<name>"},
+                                                      {"<name>"},
+                                                      physics_conditions);
     perideal::write_parameter_reference(prm, dim, std::cout);
   }
 } // namespace

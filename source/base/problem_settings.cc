@@ -38,33 +38,7 @@ namespace perideal
                       Patterns::Integer(2, 3),
                       "2 (in-plane: plane stress or plane strain) or 3. Read first.");
 
-    prm.enter_subsection("Initial conditions");
-    prm.declare_entry("Displacement",
-                      "0",
-                      Patterns::Anything(),
-                      "Initial value of the field: one expression of x, y(, z) per component "
-                      "(the displacement u(x) [m] of a solid, rotations [rad] after it for "
-                      "micropolar models, the temperature T(x) [K] of a conduction model), "
-                      "separated by ';'; a single 0 is zero for all.");
-    prm.declare_entry("Velocity",
-                      "0",
-                      Patterns::Anything(),
-                      "Initial rate of the field (velocity v(x) [m/s]), one expression per "
-                      "component; a single 0 is zero for all. Not read for a temperature (first "
-                      "order in time: its rate follows from the heat flows).");
-    prm.leave_subsection();
-
-    prm.enter_subsection("Body force");
-    prm.declare_entry("Function",
-                      "0",
-                      Patterns::Anything(),
-                      "Body force density b(x, t) [N/m^3] on the whole body (a body couple "
-                      "density [N m/m^3] for rotations, a source for a scalar field, a heat "
-                      "source [W/m^3] for a temperature), one "
-                      "expression of x, y(, z) and t per component of the field, separated by "
-                      "';'; a single 0 is zero for all. Coupled problems weight it like the "
-                      "energies: 1 - beta on the FE region, beta on the particles.");
-    prm.leave_subsection();
+    declare_field_parameters(prm);
 
     prm.enter_subsection("Time stepping");
     prm.declare_entry("End time", "0", Patterns::Double(0.), "Simulated time [s].");
@@ -181,14 +155,7 @@ namespace perideal
   void
   ProblemSettings<dim>::parse_parameters(ParameterHandler &prm)
   {
-    prm.enter_subsection("Initial conditions");
-    initial_displacement = prm.get("Displacement");
-    initial_velocity     = prm.get("Velocity");
-    prm.leave_subsection();
-
-    prm.enter_subsection("Body force");
-    body_force = prm.get("Function");
-    prm.leave_subsection();
+    parse_field_parameters(prm);
 
     prm.enter_subsection("Solver");
     solver_type           = solver_type_from_name(prm.get("Type"));
@@ -277,6 +244,53 @@ namespace perideal
     return solver_type == SolverType::static_linear && linear_solver == LinearSolverType::direct ?
              1e-10 :
              100. * tolerance;
+  }
+
+  template <int dim>
+  void
+  ProblemSettings<dim>::declare_field_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Initial conditions");
+    prm.declare_entry("Displacement",
+                      "0",
+                      Patterns::Anything(),
+                      "Initial value of the field: one expression of x, y(, z) per component "
+                      "(the displacement u(x) [m] of a solid, rotations [rad] after it for "
+                      "micropolar models, the temperature T(x) [K] of a conduction model), "
+                      "separated by ';'; a single 0 is zero for all.");
+    prm.declare_entry("Velocity",
+                      "0",
+                      Patterns::Anything(),
+                      "Initial rate of the field (velocity v(x) [m/s]), one expression per "
+                      "component; a single 0 is zero for all. Not read for a temperature (first "
+                      "order in time: its rate follows from the heat flows).");
+    prm.leave_subsection();
+
+    prm.enter_subsection("Body force");
+    prm.declare_entry("Function",
+                      "0",
+                      Patterns::Anything(),
+                      "Body force density b(x, t) [N/m^3] on the whole body (a body couple "
+                      "density [N m/m^3] for rotations, a source for a scalar field, a heat "
+                      "source [W/m^3] for a temperature), one "
+                      "expression of x, y(, z) and t per component of the field, separated by "
+                      "';'; a single 0 is zero for all. Coupled problems weight it like the "
+                      "energies: 1 - beta on the FE region, beta on the particles.");
+    prm.leave_subsection();
+  }
+
+  template <int dim>
+  void
+  ProblemSettings<dim>::parse_field_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Initial conditions");
+    initial_displacement = prm.get("Displacement");
+    initial_velocity     = prm.get("Velocity");
+    prm.leave_subsection();
+
+    prm.enter_subsection("Body force");
+    body_force = prm.get("Function");
+    prm.leave_subsection();
   }
 
   template struct ProblemSettings<2>;

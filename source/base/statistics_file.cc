@@ -22,8 +22,9 @@ namespace perideal
 
 
   void
-  StatisticsFile::add_value(const std::string &column, const double value)
+  StatisticsFile::add_value(const std::string &name, const double value)
   {
+    const std::string column = column_prefix + name;
     if (std::find(columns.begin(), columns.end(), column) == columns.end())
       {
         AssertThrow(!column.empty() && column.find_first_of(",\"\n\r") == std::string::npos,
@@ -41,6 +42,12 @@ namespace perideal
   }
 
 
+
+  void
+  StatisticsFile::set_column_prefix(const std::string &prefix)
+  {
+    column_prefix = prefix;
+  }
 
   void
   StatisticsFile::end_row()

@@ -26,24 +26,6 @@ namespace perideal
     {
       return std::abs(b) < 1e-10 ? 0. : std::abs(b - 1.) < 1e-10 ? 1. : b;
     }
-
-    // The registered FE physics that can join particles with the unknowns @p layout (the same
-    // or @p layout without its rotations), separated by ', ' ("none").
-    template <int dim>
-    std::string
-    fe_physics_of(const FieldLayout &layout)
-    {
-      using Registry = PluginRegistry<FEPhysics<dim>>;
-      std::string names;
-      for (const auto &name : Utilities::split_string_list(Registry::pattern_string(), '|'))
-        {
-          const FieldLayout fe_layout =
-            Registry::create(name, "Finite elements/Physics")->field_layout();
-          if (fe_layout == layout || layout.extends_by_rotations(fe_layout))
-            names += (names.empty() ? "" : ", ") + name;
-        }
-      return names.empty() ? "none" : names;
-    }
   } // namespace
 
   template <int dim>
@@ -51,16 +33,30 @@ namespace perideal
     : comm(comm)
     , log(log)
     , is_root(Utilities::MPI::this_mpi_process(comm) == 0)
-    , pd(comm, log)
-    , fe(comm)
+    , physics([&]() {
+      std::vector<std::unique_ptr<Physics<dim>>> list;
+      list.push_back(std::make_unique<Physics<dim>>("mechanics", comm, log));
+      return list;
+    }())
+    , settings(physics[0]->settings)
+    , layout(physics[0]->layout)
+    , pd(physics[0]->pd)
+    , fe(physics[0]->fe)
+    , method_name(physics[0]->method_name)
+    , method(physics[0]->method)
+    , state(physics[0]->state)
+    , solver(physics[0]->solver)
+    , postprocessors(physics[0]->postprocessors)
   {}
 
   template <int dim>
   void
-  CoupledProblem<dim>::declare_parameters(ParameterHandler               &prm,
-                                          const std::vector<std::string> &region_names,
-                                          const std::vector<std::string> &condition_names,
-                                          const std::vector<std::string> &fe_condition_names)
+  CoupledProblem<dim>::declare_parameters(
+    ParameterHandler                                                   &prm,
+    const std::vector<std::string>                                     &region_names,
+    const std::vector<std::string>                                     &condition_names,
+    const std::vector<std::string>                                     &fe_condition_names,
+    const std::map<std::string, typename Physics<dim>::ConditionNames> &physics_condition_names)
   {
     ProblemSettings<dim>::declare_parameters(prm);
     QuasiStaticControl::declare_parameters(prm);
@@ -95,6 +91,7 @@ namespace perideal
                       "relative errors are below this value (0: no verdict).");
     prm.leave_subsection();
     Postprocessors<dim>::declare_parameters(prm);
+    Physics<dim>::declare_parameters(prm, physics_condition_names);
   }
 
   template <int dim>
@@ -140,54 +137,9 @@ namespace perideal
                            "which the static linear solve does not assemble: set <Solver/Type> "
                            "= adaptive dynamic relaxation (accepted with a twist), or the "
                            "twist to 0."));
-    // The unknowns: the particles' and the FE region's, the same in a coupled problem, or the
-    // FE translations and the particles' rotations (half the curl of the FE displacement).
-    layout = pd.has_body() ? pd.field_layout() : fe.field_layout();
-    AssertThrow(!pd.has_body() || !fe.has_mesh() || pd.field_layout() == fe.field_layout() ||
-                  pd.field_layout().extends_by_rotations(fe.field_layout()),
-                ExcMessage("<Material/Model> = <" + prm.get({"Material"}, "Model") +
-                           "> has the unknowns " + pd.field_layout().description() +
-                           ", <Finite elements/Physics> = <" +
-                           prm.get({"Finite elements"}, "Physics") + "> has " +
-                           fe.field_layout().description() +
-                           ": a coupled problem needs the same on both sides (the particles "
-                           "may add rotations to FE translations). Accepted values of "
-                           "<Finite elements/Physics> with this material model: " +
-                           fe_physics_of<dim>(pd.field_layout()) + "."));
-    model_lines =
-      "material model = " + (pd.has_body() ? prm.get({"Material"}, "Model") : std::string("none")) +
-      "\nFE physics = " +
-      (fe.has_mesh() ? prm.get({"Finite elements"}, "Physics") : std::string("none")) +
-      "\ncoupling method = " + prm.get({"Coupling"}, "Method") + "\n";
-    // Every expression is parsed here, so that --validate finds a malformed one.
-    const unsigned int n_components = layout.n_components();
-    ParameterUtilities::make_function<dim>(settings.initial_displacement,
-                                           n_components,
-                                           "Initial conditions/Displacement");
-    ParameterUtilities::make_function<dim>(settings.initial_velocity,
-                                           n_components,
-                                           "Initial conditions/Velocity");
-    // One body force for the whole body: the particles take it with their weights beta_i
-    // (BoundaryConditions::add_loads), the FE region with 1 - beta (FERegion's load).
-    std::shared_ptr<Function<dim>> body_force =
-      ParameterUtilities::make_function<dim>(settings.body_force,
-                                             n_components,
-                                             "Body force/Function");
-    const auto parts = Utilities::split_string_list(settings.body_force, ';');
-    if (std::all_of(parts.begin(), parts.end(), [](const std::string &part) {
-          return part == "0";
-        }))
-      body_force.reset();
-    pd.boundary_conditions().set_body_force(body_force);
-    if (body_force)
-      fe.set_body_force(body_force);
+    physics[0]->parse_field(prm, "");
+    physics[0]->parse_method(prm);
     prm.enter_subsection("Coupling");
-    method_name = prm.get("Method");
-    method      = PluginRegistry<CouplingMethod<dim>>::create(method_name, "Coupling/Method");
-    prm.enter_subsection(method_name);
-    method->parse_parameters(prm);
-    prm.leave_subsection();
-    method->check_solver(settings.solver_type);
     // With one region only, beta is fixed: 1 without a mesh, 0 without particles.
     blending_expression = prm.get("Blending function");
     AssertThrow((pd.has_body() && fe.has_mesh()) || blending_expression == "0",
@@ -205,8 +157,9 @@ namespace perideal
     const std::string exact = prm.get("Exact displacement");
     exact_displacement.reset();
     if (!exact.empty())
-      exact_displacement =
-        ParameterUtilities::make_function<dim>(exact, n_components, "Coupling/Exact displacement");
+      exact_displacement = ParameterUtilities::make_function<dim>(exact,
+                                                                  layout.n_components(),
+                                                                  "Coupling/Exact displacement");
     exact_tolerance = prm.get_double("Exact displacement tolerance");
     AssertThrow(exact_tolerance == 0. || exact_displacement,
                 ExcMessage("<Coupling/Exact displacement tolerance> is set, but <Coupling/Exact "
@@ -239,6 +192,14 @@ namespace perideal
                                "> keeps histories per bond, which a conversion does not carry "
                                "over yet; use brittle bonds or the criterion none."));
       }
+    parse_other_physics(prm);
+  }
+
+  template <int dim>
+  const std::vector<std::unique_ptr<Physics<dim>>> &
+  CoupledProblem<dim>::get_physics() const
+  {
+    return physics;
   }
 
   template <int dim>
@@ -383,14 +344,14 @@ namespace perideal
 
   template <int dim>
   CoupledRegions<dim>
-  CoupledProblem<dim>::coupled_regions()
+  CoupledProblem<dim>::coupled_regions(Physics<dim> &field)
   {
     CoupledRegions<dim> regions;
-    regions.fe             = &fe;
-    regions.particles      = &pd.particles();
-    regions.material       = &pd.material();
-    regions.density        = pd.density();
-    regions.layout         = layout;
+    regions.fe             = &field.fe;
+    regions.particles      = &field.pd.particles();
+    regions.material       = &field.pd.material();
+    regions.density        = field.pd.density();
+    regions.layout         = field.layout;
     regions.blending       = [this](const Point<dim> &x) { return blending(x); };
     regions.blending_entry = "<Coupling/Blending function> = <" + blending_expression + ">" +
                              (adaptive.enabled() ? " with <Coupling/Adaptive region>" : "");
@@ -426,7 +387,7 @@ namespace perideal
                                           "With <Coupling/Adaptive region/Initial seeds>");
         precrack_damage = damage_index(pd.particles());
       }
-    method->initialize(coupled_regions());
+    method->initialize(coupled_regions(*physics[0]));
     state = std::make_unique<CoupledState<dim>>(comm, log, settings, layout, pd, fe, *method);
     state->setup();
     solver = create_solver<dim>(settings.solver_type, control);
@@ -439,6 +400,7 @@ namespace perideal
     inputs.exact_tolerance    = exact_tolerance;
     postprocessors            = std::make_unique<Postprocessors<dim>>(postprocessor_names, inputs);
     postprocessors->initialize(*state);
+    check_other_physics();
   }
 
   template <int dim>
@@ -459,12 +421,18 @@ namespace perideal
         state->adaptation_interval = adaptive.check_interval();
       }
     solver->setup(*state);
+    setup_other_physics();
   }
 
   template <int dim>
   void
   CoupledProblem<dim>::restart_from_checkpoint()
   {
+    AssertThrow(physics.size() == 1,
+                ExcMessage("--restart: a checkpoint holds one physics so far, and this problem "
+                           "has <Physics/List> = " +
+                           physics[1]->name + (physics.size() > 2 ? ", ..." : "") +
+                           " besides; run it from its initial conditions."));
     restart = true;
   }
 
@@ -479,7 +447,7 @@ namespace perideal
   void
   CoupledProblem<dim>::run()
   {
-    Checkpoint<dim> checkpoint(settings, model_lines, restart, stop_step);
+    Checkpoint<dim> checkpoint(settings, physics[0]->model_lines, restart, stop_step);
     solver->run(*state, *postprocessors, checkpoint);
   }
 

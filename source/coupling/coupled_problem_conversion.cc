@@ -121,7 +121,7 @@ namespace perideal
 
     // The FE space without the cells that became PD only, the coupling and the state.
     fe.reweight([this](const Point<dim> &p) { return method->fe_weight(blending(p)); });
-    method->initialize(coupled_regions());
+    method->initialize(coupled_regions(*physics[0]));
     state->setup();
     for (unsigned int k = 0; k < std::size_t(ps.n_owned()) * nc; ++k)
       {

@@ -150,6 +150,8 @@ namespace perideal
         }
     fe.interpolate(*displacement, U);
     fe.interpolate(*velocity, V);
+    fe.prescribe(0., U, V);
+    pd.boundary_conditions().prescribe_displacement(0., u);
   }
 
   template <int dim>
@@ -223,6 +225,11 @@ namespace perideal
   void
   CoupledState<dim>::accumulate_dissipated_energy()
   {
+    if (broken_bond_record != nullptr)
+      {
+        const auto &broken = pd.particles().bonds().newly_broken;
+        broken_bond_record->insert(broken_bond_record->end(), broken.begin(), broken.end());
+      }
     local_dissipated += pd.material().released_energy(pd.particles(), u);
   }
 

@@ -41,6 +41,15 @@ namespace perideal
                       "Name of a deal.II GridGenerator function (e.g. hyper_rectangle, "
                       "subdivided_hyper_rectangle, hyper_shell), used when 'Mesh file' is "
                       "empty. Both empty: the problem has no FE region.");
+    prm.leave_subsection();
+    declare_condition_names(prm);
+  }
+
+  template <int dim>
+  void
+  FERegion<dim>::declare_condition_names(ParameterHandler &prm)
+  {
+    prm.enter_subsection(section);
     ParameterUtilities::declare_name_list(prm,
                                           "Boundary conditions",
                                           "Comma-separated names of the FE boundary conditions, "
@@ -85,6 +94,25 @@ namespace perideal
                       "1",
                       Patterns::Integer(1, 4),
                       "Degree p of the FE_Q(p) elements of every component.");
+    prm.leave_subsection();
+    declare_physics_entries(prm, condition_names);
+  }
+
+  template <int dim>
+  void
+  FERegion<dim>::declare_physics_parameters(ParameterHandler               &prm,
+                                            const std::vector<std::string> &condition_names)
+  {
+    declare_condition_names(prm);
+    declare_physics_entries(prm, condition_names);
+  }
+
+  template <int dim>
+  void
+  FERegion<dim>::declare_physics_entries(ParameterHandler               &prm,
+                                         const std::vector<std::string> &condition_names)
+  {
+    prm.enter_subsection(section);
     prm.declare_entry("Density",
                       "0",
                       Patterns::Double(0.),
@@ -116,21 +144,13 @@ namespace perideal
     mesh_file           = prm.get("Mesh file");
     generator           = prm.get("Generator");
     generator_arguments = prm.get("Generator arguments");
-    condition_list.clear();
-    // The physics exists without a mesh too (its layout sizes the empty region's vectors).
-    const std::string physics_name = prm.get("Physics");
-    physics_model = PluginRegistry<FEPhysics<dim>>::create(physics_name, section + "/Physics");
-    layout        = physics_model->field_layout();
-    // No mesh: no FE region, and nothing else of this section is read.
+    planar              = planar_assumption;
+    // No mesh: no FE region, and nothing else of this section is read but the physics (its
+    // layout sizes the empty region's vectors).
     if (!has_mesh())
       {
-        AssertThrow(names.empty(),
-                    ExcMessage("<" + section +
-                               "/Boundary conditions/Names> lists FE boundary conditions, but "
-                               "there is no FE region: give <" +
-                               section + "/Mesh file> or <" + section +
-                               "/Generator>, or remove the conditions."));
         prm.leave_subsection();
+        parse_physics(prm, names);
         return;
       }
     AssertThrow(mesh_file.empty() || std::filesystem::exists(mesh_file),
@@ -138,15 +158,9 @@ namespace perideal
                            "> names no file (paths are relative to the working directory)."));
     global_refinements = prm.get_integer("Global refinements");
     degree             = prm.get_integer("Polynomial degree");
-    density            = prm.get_double("Density");
-    physics_model->parse_parameters(prm, planar_assumption);
-    // The body force is the problem's (<Body force/Function>), set by set_body_force().
-    body_force.reset();
-
-    prm.enter_subsection("Boundary conditions");
-    parse_conditions(prm, names, physics_name);
     prm.leave_subsection();
-
+    parse_physics(prm, names);
+    prm.enter_subsection(section);
     // Circular boundaries, checked here so that a typo stops before any work.
     circular_boundaries.clear();
     for (const auto &item : Utilities::split_string_list(prm.get("Circular boundaries"), ';'))
@@ -159,6 +173,51 @@ namespace perideal
           static_cast<types::boundary_id>(Utilities::string_to_int(parts[0])),
           ParameterUtilities::parse_point<2>(parts[1], section + "/Circular boundaries"));
       }
+    prm.leave_subsection();
+  }
+
+  template <int dim>
+  void
+  FERegion<dim>::parse_physics_parameters(ParameterHandler &prm, const FERegion<dim> &geometry)
+  {
+    thickness           = geometry.thickness;
+    planar              = geometry.planar;
+    mesh_file           = geometry.mesh_file;
+    generator           = geometry.generator;
+    generator_arguments = geometry.generator_arguments;
+    global_refinements  = geometry.global_refinements;
+    degree              = geometry.degree;
+    circular_boundaries = geometry.circular_boundaries;
+    parse_physics(prm, parse_names(prm));
+  }
+
+  template <int dim>
+  void
+  FERegion<dim>::parse_physics(ParameterHandler &prm, const std::vector<std::string> &names)
+  {
+    prm.enter_subsection(section);
+    condition_list.clear();
+    const std::string physics_name = prm.get("Physics");
+    physics_model = PluginRegistry<FEPhysics<dim>>::create(physics_name, section + "/Physics");
+    layout        = physics_model->field_layout();
+    if (!has_mesh())
+      {
+        AssertThrow(names.empty(),
+                    ExcMessage("<" + section +
+                               "/Boundary conditions/Names> lists FE boundary conditions, but "
+                               "there is no FE region: give <" +
+                               section + "/Mesh file> or <" + section +
+                               "/Generator>, or remove the conditions."));
+        prm.leave_subsection();
+        return;
+      }
+    density = prm.get_double("Density");
+    physics_model->parse_parameters(prm, planar);
+    // The body force is the problem's (<Body force/Function>), set by set_body_force().
+    body_force.reset();
+    prm.enter_subsection("Boundary conditions");
+    parse_conditions(prm, names, physics_name);
+    prm.leave_subsection();
     prm.leave_subsection();
   }
 

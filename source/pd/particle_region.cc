@@ -55,7 +55,7 @@ namespace perideal
     : communicator(comm)
     , log(log)
     , is_root(Utilities::MPI::this_mpi_process(comm) == 0)
-    , particle_system(comm)
+    , particle_system(std::make_shared<ParticleSystem<dim>>(comm))
   {}
 
   template <int dim>
@@ -146,17 +146,11 @@ namespace perideal
 
     prm.enter_subsection("Material");
     {
-      prm.declare_entry("Model",
-                        "bond based",
-                        Patterns::Selection(PluginRegistry<MaterialModel<dim>>::pattern_string()),
-                        "The peridynamic material model. " +
-                          PluginRegistry<MaterialModel<dim>>::documentation());
       prm.declare_entry("Planar assumption",
                         "plane stress",
                         Patterns::Selection(
                           ParameterUtilities::selection(planar_assumption_names())),
                         "2D only: the state of the third direction.");
-      prm.declare_entry("Density", "0", Patterns::Double(0.), "Mass density rho [kg/m^3].");
       prm.declare_entry("No-fail regions",
                         "",
                         Patterns::Anything(),
@@ -166,8 +160,26 @@ namespace perideal
                         "none",
                         Patterns::Selection(PluginRegistry<DamageModel<dim>>::pattern_string()),
                         "When bonds break. " + PluginRegistry<DamageModel<dim>>::documentation());
-      PluginRegistry<MaterialModel<dim>>::declare_parameters(prm);
       PluginRegistry<DamageModel<dim>>::declare_parameters(prm);
+    }
+    prm.leave_subsection();
+    declare_physics_parameters(prm, condition_names);
+  }
+
+  template <int dim>
+  void
+  ParticleRegion<dim>::declare_physics_parameters(ParameterHandler               &prm,
+                                                  const std::vector<std::string> &condition_names)
+  {
+    prm.enter_subsection("Material");
+    {
+      prm.declare_entry("Model",
+                        "bond based",
+                        Patterns::Selection(PluginRegistry<MaterialModel<dim>>::pattern_string()),
+                        "The peridynamic material model. " +
+                          PluginRegistry<MaterialModel<dim>>::documentation());
+      prm.declare_entry("Density", "0", Patterns::Double(0.), "Mass density rho [kg/m^3].");
+      PluginRegistry<MaterialModel<dim>>::declare_parameters(prm);
     }
     prm.leave_subsection();
 
@@ -217,48 +229,81 @@ namespace perideal
     pre_cracks = parse_pre_cracks<dim>(prm.get("Cracks"));
     prm.leave_subsection();
 
-    std::string model_name;
+    parse_material(prm, "", true);
+  }
+
+  template <int dim>
+  void
+  ParticleRegion<dim>::parse_physics_parameters(ParameterHandler          &prm,
+                                                const std::string         &section,
+                                                const ParticleRegion<dim> &geometry)
+  {
+    settings           = geometry.settings;
+    horizon_factor     = geometry.horizon_factor;
+    surface_correction = geometry.surface_correction;
+    stiffness_fit      = geometry.stiffness_fit;
+    planar             = geometry.planar;
+    regions            = geometry.regions;
+    body_regions       = geometry.body_regions;
+    body               = geometry.body;
+    pre_cracks         = geometry.pre_cracks;
+    no_fail_regions    = geometry.no_fail_regions;
+    particle_system    = geometry.particle_system;
+    owns_particles     = false;
+    parse_material(prm, section + "/", false);
+  }
+
+  template <int dim>
+  void
+  ParticleRegion<dim>::parse_material(ParameterHandler  &prm,
+                                      const std::string &section,
+                                      const bool         with_geometry)
+  {
     prm.enter_subsection("Material");
     {
-      planar     = planar_assumption_from_name(prm.get("Planar assumption"), dim);
-      rho        = prm.get_double("Density");
-      model_name = prm.get("Model");
-      model      = PluginRegistry<MaterialModel<dim>>::create(model_name, "Material/Model");
+      if (with_geometry)
+        planar = planar_assumption_from_name(prm.get("Planar assumption"), dim);
+      rho                          = prm.get_double("Density");
+      const std::string model_name = prm.get("Model");
+      model = PluginRegistry<MaterialModel<dim>>::create(model_name, section + "Material/Model");
       if (has_body())
         {
-          ParameterUtilities::require_positive(rho, "Material/Density");
+          ParameterUtilities::require_positive(rho, section + "Material/Density");
           prm.enter_subsection(model_name);
           model->parse_parameters(prm);
           prm.leave_subsection();
           model->resolve_regions(regions);
           AssertThrow(!(surface_correction && stiffness_fit) || model->capabilities().stiffness_fit,
                       ExcMessage("<Discretization/Surface correction method> = stiffness fit is "
-                                 "available for <Material/Model> = " +
+                                 "available for <" +
+                                 section + "Material/Model> = " +
                                  material_models_with<dim>(&ModelCapabilities::stiffness_fit) +
                                  " (as their parameters allow), not '" + model_name +
                                  "' as set up here; accepted for it: energy (the model's own "
                                  "method)."));
         }
-      no_fail_regions = ParameterUtilities::split_names(prm.get("No-fail regions"));
-      for (const auto &name : no_fail_regions)
-        regions.get(name, "Material/No-fail regions");
-      const std::string damage_name = prm.get("Damage model");
+      const std::string damage_name = with_geometry ? prm.get("Damage model") : "none";
+      if (with_geometry)
+        {
+          no_fail_regions = ParameterUtilities::split_names(prm.get("No-fail regions"));
+          for (const auto &name : no_fail_regions)
+            regions.get(name, "Material/No-fail regions");
+        }
       damage = PluginRegistry<DamageModel<dim>>::create(damage_name, "Material/Damage model");
-      if (has_body())
+      if (has_body() && with_geometry)
         {
           prm.enter_subsection(damage_name);
           damage->parse_parameters(prm);
           prm.leave_subsection();
         }
+      prm.leave_subsection();
+      conditions.parse_parameters(prm, regions, model->field_layout());
+      if (has_body())
+        conditions.check_layer_depths(settings.horizon,
+                                      settings.spacing,
+                                      model->force_reach(),
+                                      model_name);
     }
-    prm.leave_subsection();
-
-    conditions.parse_parameters(prm, regions, model->field_layout());
-    if (has_body())
-      conditions.check_layer_depths(settings.horizon,
-                                    settings.spacing,
-                                    model->force_reach(),
-                                    model_name);
   }
 
   template <int dim>
@@ -267,28 +312,27 @@ namespace perideal
                              const std::function<double(const Point<dim> &)> &energy_weight,
                              const bool                                       log_summary)
   {
-    if (has_body())
+    ParticleSystem<dim> &ps = *particle_system;
+    // A region sharing another's particles finds them made by the owner's setup().
+    if (owns_particles && has_body())
       {
-        particle_system.generate(settings,
-                                 regions.bounding_box_of(body_regions, "Discretization/Body"),
-                                 keep ? std::function<bool(const Point<dim> &)>(
-                                          [&](const Point<dim> &x) { return keep(x) && body(x); }) :
-                                        body,
-                                 pre_cracks,
-                                 regions.union_of(no_fail_regions, "Material/No-fail regions"));
+        ps.generate(settings,
+                    regions.bounding_box_of(body_regions, "Discretization/Body"),
+                    keep ? std::function<bool(const Point<dim> &)>(
+                             [&](const Point<dim> &x) { return keep(x) && body(x); }) :
+                           body,
+                    pre_cracks,
+                    regions.union_of(no_fail_regions, "Material/No-fail regions"));
         // A coupled problem may leave the PD region empty (beta = 0 on the whole body).
-        AssertThrow(keep || particle_system.n_global() > 0,
+        AssertThrow(keep || ps.n_global() > 0,
                     ExcMessage("The body (<Discretization/Body>) holds no particle: its regions "
                                "are smaller than the lattice spacing or empty."));
       }
-    else
-      particle_system.generate(settings,
-                               BoundingBox<dim>(),
-                               [](const Point<dim> &) { return false; },
-                               {});
+    else if (owns_particles)
+      ps.generate(settings, BoundingBox<dim>(), [](const Point<dim> &) { return false; }, {});
 
-    if (energy_weight)
-      particle_system.set_energy_weights(energy_weight);
+    if (energy_weight && owns_particles)
+      ps.set_energy_weights(energy_weight);
 
     ModelContext context;
     context.horizon            = settings.horizon;
@@ -296,16 +340,16 @@ namespace perideal
     context.planar             = planar;
     context.surface_correction = surface_correction;
     context.stiffness_fit      = stiffness_fit;
-    model->initialize(particle_system, context);
+    model->initialize(ps, context);
     s_critical = damage->critical_stretch(*model);
 
-    conditions.setup(particle_system);
+    conditions.setup(ps);
 
-    stable_dt = model->stable_time_step(particle_system, rho);
+    stable_dt = model->stable_time_step(ps, rho);
 
-    const auto n_bonds = particle_system.n_global_bonds();
+    const auto n_bonds = ps.n_global_bonds();
     if (is_root && has_body() && log_summary)
-      log << "Particles: " << particle_system.n_global() << "\n"
+      log << "Particles: " << ps.n_global() << "\n"
           << "Bonds: " << n_bonds << "\n"
           << "Material: " << model->summary() << "\n"
           << "Critical stretch: " << s_critical << std::endl;
@@ -336,14 +380,14 @@ namespace perideal
   ParticleSystem<dim> &
   ParticleRegion<dim>::particles()
   {
-    return particle_system;
+    return *particle_system;
   }
 
   template <int dim>
   const ParticleSystem<dim> &
   ParticleRegion<dim>::particles() const
   {
-    return particle_system;
+    return *particle_system;
   }
 
   template <int dim>

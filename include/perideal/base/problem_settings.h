@@ -72,6 +72,18 @@ namespace perideal
     declare_parameters(dealii::ParameterHandler &prm);
 
     /**
+     * @brief Declare what each field of a problem has of its own: <Initial conditions> and
+     * <Body force>, in the current subsection (the top level, or a physics' own, e.g.
+     * <Heat>).
+     */
+    static void
+    declare_field_parameters(dealii::ParameterHandler &prm);
+
+    /// @brief Read the entries of declare_field_parameters() in the current subsection.
+    void
+    parse_field_parameters(dealii::ParameterHandler &prm);
+
+    /**
      * @brief Read and check the entries of declare_parameters(). The expressions of the
      * initial conditions and the body force are kept as text: their number of components is
      * the field's (FieldLayout), which the driver knows once the regions are read.
@@ -123,7 +135,11 @@ namespace perideal
     /// The entries of subsection <Output>: directory, base name, intervals of field output,
     /// statistics and checkpoints (in steps), formats, progress report.
     ///@{
-    std::string  output_directory = "output", base_name = "particles";
+    std::string output_directory = "output", base_name = "particles";
+    /// The base name of the FE field output (not an entry): "solution", and
+    /// "solution_<name>" for a physics of <Physics/List>, whose particle output is
+    /// <Base name>_<name>.
+    std::string  solution_name   = "solution";
     unsigned int output_interval = 0, statistics_interval = 10, checkpoint_interval = 0;
     ///@}
     /// <Checkpoint time interval>: simulated time [s] (explicit) or load factor (quasi-static).

@@ -45,6 +45,13 @@ namespace perideal
     add_value(const std::string &column, const double value);
 
     /**
+     * @brief Prefix the names of the columns that add_value() sets from now on with
+     * @p prefix (the columns of a physics of <Physics/List>, e.g. "heat."); "" for none.
+     */
+    void
+    set_column_prefix(const std::string &prefix);
+
+    /**
      * @brief Finish the current row: rank 0 writes it (after the header, on
      * the first call) and flushes the file; then start a new, empty row.
      */
@@ -77,6 +84,8 @@ namespace perideal
   private:
     std::string filename;
     bool        is_root;
+    /// The prefix of set_column_prefix().
+    std::string column_prefix;
 
     /**
      * Column names in first-seen order.

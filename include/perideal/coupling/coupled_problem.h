@@ -12,6 +12,8 @@
 #include <perideal/coupling/checkpoint.h>
 #include <perideal/coupling/coupled_state.h>
 #include <perideal/coupling/coupling_method.h>
+#include <perideal/coupling/physics.h>
+#include <perideal/coupling/physics_exchange.h>
 #include <perideal/coupling/postprocessors/postprocessor.h>
 #include <perideal/coupling/solvers/quasi_static_control.h>
 #include <perideal/coupling/solvers/solver.h>
@@ -19,6 +21,7 @@
 #include <perideal/pd/particle_region.h>
 
 #include <functional>
+#include <map>
 #include <memory>
 #include <ostream>
 #include <string>
@@ -50,6 +53,12 @@ namespace perideal
    * A file without a mesh is the coupled problem with beta = 1 and an FE region without
    * unknowns; a file without <Discretization/Body> is the one without particles
    * (tests/coupling/empty_region_01).
+   *
+   * The problem holds a list of physics (Physics): the first one, of the top-level sections,
+   * and those of <Physics/List> (e.g. heat), which share its particles, their bonds and its
+   * mesh, and are advanced by operator splitting within its steps
+   * (doc/architecture/16_multiphysics.md). A file without <Physics/List> has one physics and
+   * runs as before.
    */
   template <int dim>
   class CoupledProblem
@@ -62,13 +71,16 @@ namespace perideal
      * @brief Declare every entry of a parameter file: the problem's settings, the particle
      * region with the regions @p region_names and the particle boundary conditions
      * @p condition_names, the FE region with its boundary conditions @p fe_condition_names, the
-     * coupling and every registered plugin's subsection.
+     * coupling, every registered plugin's subsection and the subsections of the physics of
+     * <Physics/List> with their boundary conditions @p physics_condition_names.
      */
     static void
     declare_parameters(dealii::ParameterHandler       &prm,
                        const std::vector<std::string> &region_names,
                        const std::vector<std::string> &condition_names,
-                       const std::vector<std::string> &fe_condition_names);
+                       const std::vector<std::string> &fe_condition_names,
+                       const std::map<std::string, typename Physics<dim>::ConditionNames>
+                         &physics_condition_names = {});
 
     /// Read and check every entry on its own; creates nothing on disk.
     void
@@ -133,6 +145,14 @@ namespace perideal
     double
     time_step() const;
 
+    /// The physics of the problem, the first one first (after parse_parameters()).
+    const std::vector<std::unique_ptr<Physics<dim>>> &
+    get_physics() const;
+
+    /// What the physics publish for each other (after check()).
+    const PhysicsExchange<dim> &
+    get_exchange() const;
+
     /// beta at @p x (values within 1e-10 of 0 or 1 snapped to them).
     double
     blending(const dealii::Point<dim> &x) const;
@@ -162,9 +182,47 @@ namespace perideal
     void
     setup_particles(const bool log_summary = true);
 
-    /// What the coupling method works on (CouplingMethod::initialize()).
+    /// What the coupling method of @p field works on (CouplingMethod::initialize()).
     CoupledRegions<dim>
-    coupled_regions();
+    coupled_regions(Physics<dim> &field);
+
+    /**
+     * @brief Read <Physics/List> and every listed physics' subsection, and refuse what the
+     * physics of a list do not support yet (in parse_parameters()).
+     */
+    void
+    parse_other_physics(dealii::ParameterHandler &prm);
+
+    /**
+     * @brief The checks and the state, solver and postprocessors of each physics of
+     * <Physics/List> (in check(), after the first physics').
+     */
+    void
+    check_other_physics();
+
+    /**
+     * @brief The solvers of the physics of <Physics/List> (their stable steps, their sub-steps
+     * within a step of the first physics) and their hook into the first one's run: their
+     * columns in its statistics, their advance within each of its steps.
+     */
+    void
+    setup_other_physics();
+
+    /**
+     * @brief Advance the physics of <Physics/List> by operator splitting to the end of step
+     * @p step of the first physics (step 0: their initial state), their energies computed if
+     * @p with_energy (CoupledState::advance_other_physics).
+     */
+    void
+    advance_other_physics(const unsigned int step, const bool with_energy);
+
+    /**
+     * @brief The time a step of the first physics spans [s]: its explicit step as its run
+     * takes it (equal steps to the end time), or <Time stepping/End time> over the load steps
+     * of a quasi-static run.
+     */
+    double
+    split_step() const;
 
     /**
      * @brief The adaptive PD region of an explicit run (CoupledState::adapt_regions) after step
@@ -181,16 +239,26 @@ namespace perideal
     std::ostream &log;
     bool          is_root;
 
-    ProblemSettings<dim> settings;
+    /// The physics, the first one (of the top-level sections) first.
+    std::vector<std::unique_ptr<Physics<dim>>> physics;
+    /// The first physics' parts: its settings (the problem's), unknowns, regions (which own the
+    /// geometry the other physics share) and coupling method.
+    ///@{
+    ProblemSettings<dim>                 &settings;
+    FieldLayout                          &layout;
+    ParticleRegion<dim>                  &pd;
+    FERegion<dim>                        &fe;
+    std::string                          &method_name;
+    std::unique_ptr<CouplingMethod<dim>> &method;
+    ///@}
     /// <Solver/Control>: how a quasi-static run advances its load, and its load point.
     QuasiStaticControl control;
-    /// The unknowns of a point (the particles' and the FE region's).
-    FieldLayout                          layout;
-    ParticleRegion<dim>                  pd;
-    FERegion<dim>                        fe;
-    std::string                          method_name;
-    std::unique_ptr<CouplingMethod<dim>> method;
-    std::string                          blending_expression;
+    /// Per physics of <Physics/List>: the sub-steps of its explicit step in one step of the
+    /// first physics.
+    std::vector<unsigned int> sub_steps;
+    /// What the physics publish for each other, and the bonds they share.
+    PhysicsExchange<dim> exchange;
+    std::string          blending_expression;
     /// <Coupling/Adaptive region>: where the PD region grows during an explicit run.
     AdaptiveRegion<dim> adaptive;
     /// The damage index of each owned particle with only the pre-cracks' bonds broken (runs
@@ -202,14 +270,15 @@ namespace perideal
     /// <Postprocess/List>, with the mandatory postprocessor (Postprocessors::parse_parameters()).
     std::vector<std::string> postprocessor_names;
 
-    /// The fingerprint's lines of the models (Checkpoint).
-    std::string  model_lines;
     bool         restart   = false;
     unsigned int stop_step = Checkpoint<dim>::no_step;
 
-    std::unique_ptr<CoupledState<dim>>   state;
-    std::unique_ptr<Solver<dim>>         solver;
-    std::unique_ptr<Postprocessors<dim>> postprocessors;
+    /// The first physics' state, solver and postprocessors.
+    ///@{
+    std::unique_ptr<CoupledState<dim>>   &state;
+    std::unique_ptr<Solver<dim>>         &solver;
+    std::unique_ptr<Postprocessors<dim>> &postprocessors;
+    ///@}
   };
 } // namespace perideal
 

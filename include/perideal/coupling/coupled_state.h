@@ -79,7 +79,7 @@ namespace perideal
 
     /**
      * @brief The initial conditions (<Initial conditions>) on both regions: the same function
-     * of x for FE nodes and particles.
+     * of x for FE nodes and particles; then the values the conditions prescribe at t = 0.
      */
     void
     apply_initial_conditions();
@@ -114,7 +114,8 @@ namespace perideal
     /**
      * @brief Add the energy that the bonds broken by the last force evaluation released at the
      * particle displacement u (MaterialModel::released_energy(): nothing to do unless bonds
-     * broke). Call it on every rank after each force evaluation that may break bonds.
+     * broke), recording the bonds in broken_bond_record if set. Call it on every rank after
+     * each force evaluation that may break bonds.
      */
     void
     accumulate_dissipated_energy();
@@ -296,6 +297,18 @@ namespace perideal
     unsigned int adaptation_interval = 0;
     /// The change of kinetic plus strain energy at the conversions so far (summed) [J].
     double conversion_energy = 0.;
+
+    /**
+     * @brief Runs with several physics (<Physics/List>; empty otherwise), set by CoupledProblem
+     * on the first physics' state: its solver calls it with step 0 once the initial state is
+     * set, then with each step and whether the step computes energies (explicit: after the
+     * step, when it writes statistics or fields; quasi-static: before the load step's solve);
+     * it advances the other physics to the end of the step by operator splitting.
+     */
+    std::function<void(unsigned int, bool)> advance_other_physics;
+    /// Runs with several physics: where accumulate_dissipated_energy() records the bonds the
+    /// force evaluation broke, for the physics that share them (PhysicsExchange::record()).
+    std::vector<unsigned int> *broken_bond_record = nullptr;
 
   private:
     // The state at the previous accumulate_work() and the work done so far on this rank.

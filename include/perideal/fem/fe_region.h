@@ -101,10 +101,28 @@ namespace perideal
                        const std::vector<std::string> &condition_names);
 
     /**
-     * @brief Declare only the list of boundary-condition names (for a first pass).
+     * @brief Declare what a physics of its own has of an FE region, in the current subsection
+     * (e.g. <Heat>): <Finite elements> with <Physics>, <Density>, the physics' subsections and
+     * the <Boundary conditions> @p condition_names; the mesh is the first physics'
+     * (parse_physics_parameters()).
+     */
+    static void
+    declare_physics_parameters(dealii::ParameterHandler       &prm,
+                               const std::vector<std::string> &condition_names);
+
+    /**
+     * @brief Declare only the mesh entries and the list of boundary-condition names (for a
+     * first pass).
      */
     static void
     declare_names(dealii::ParameterHandler &prm);
+
+    /**
+     * @brief Declare only <Finite elements/Boundary conditions/Names> in the current
+     * subsection (the first pass of a physics of its own).
+     */
+    static void
+    declare_condition_names(dealii::ParameterHandler &prm);
 
     /**
      * @brief The boundary-condition names listed in a file read after declare_names().
@@ -121,6 +139,14 @@ namespace perideal
     parse_parameters(dealii::ParameterHandler &prm,
                      const PlanarAssumption    planar,
                      const double              thickness);
+
+    /**
+     * @brief Read the entries of declare_physics_parameters() in the current subsection; the
+     * mesh (its entries, the planar assumption and the thickness) is @p geometry's, so that
+     * setup() makes the same cells, partitioned alike, for this physics' own dofs.
+     */
+    void
+    parse_physics_parameters(dealii::ParameterHandler &prm, const FERegion<dim> &geometry);
 
     /**
      * @brief Set the body force (the problem's <Body force/Function>, weighted by 1 - beta
@@ -333,6 +359,20 @@ namespace perideal
     void
     make_mesh();
 
+    /**
+     * @brief Declare the entries of declare_physics_parameters() but the condition names.
+     */
+    static void
+    declare_physics_entries(dealii::ParameterHandler       &prm,
+                            const std::vector<std::string> &condition_names);
+
+    /**
+     * @brief Read <Physics>, and with a mesh <Density>, the physics' entries and the boundary
+     * conditions @p names, in <Finite elements> of the current subsection.
+     */
+    void
+    parse_physics(dealii::ParameterHandler &prm, const std::vector<std::string> &names);
+
     /// The FE space, sparsity, conditions and matrices for the weight @p weight.
     void
     distribute(const WeightFunction &weight);
@@ -399,6 +439,7 @@ namespace perideal
     unsigned int                           global_refinements = 0;
     unsigned int                           degree             = 1;
     double                                 thickness          = 1.;
+    PlanarAssumption                       planar             = PlanarAssumption::three_dimensional;
     double                                 density            = 0.;
     std::unique_ptr<FEPhysics<dim>>        physics_model;
     FieldLayout                            layout;

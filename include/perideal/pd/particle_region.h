@@ -54,10 +54,32 @@ namespace perideal
                        const std::vector<std::string> &condition_names);
 
     /**
+     * @brief Declare what a physics of its own has of a particle region, in the current
+     * subsection (e.g. <Heat>): <Material> (Model, Density and the models' subsections) and the
+     * <Boundary conditions> @p condition_names; its geometry is the first physics'
+     * (parse_physics_parameters()).
+     */
+    static void
+    declare_physics_parameters(dealii::ParameterHandler       &prm,
+                               const std::vector<std::string> &condition_names);
+
+    /**
      * @brief Read and check the region's parameters; creates nothing on disk.
      */
     void
     parse_parameters(dealii::ParameterHandler &prm);
+
+    /**
+     * @brief Read the entries of declare_physics_parameters() in the current subsection
+     * (@p section, e.g. "Heat", names them in messages); the geometry (discretization,
+     * regions, body, pre-cracks, no-fail regions, planar assumption) and the particles with
+     * their one bond list are those of @p geometry: a bond broken there is broken here. Bonds
+     * break by @p geometry's damage model only (this region's is none).
+     */
+    void
+    parse_physics_parameters(dealii::ParameterHandler  &prm,
+                             const std::string         &section,
+                             const ParticleRegion<dim> &geometry);
 
     /**
      * @brief Generate the particles and bonds, initialize the model, find the stable time step.
@@ -66,6 +88,8 @@ namespace perideal
      * particle's energy (ParticleSystem::set_energy_weights()). Writes the summary lines
      * (particles, bonds, material, critical stretch) to the log if @p log_summary. May be called
      * again (a PD region that grew): everything is rebuilt, the bonds intact but pre-cracks.
+     * A region that shares another's particles (parse_physics_parameters()) generates none:
+     * call setup() of the owner first; @p keep and @p energy_weight are the owner's then.
      */
     void
     setup(const std::function<bool(const dealii::Point<dim> &)>   &keep          = {},
@@ -129,6 +153,16 @@ namespace perideal
     planar_assumption() const;
 
   private:
+    /**
+     * @brief Read <Material> (model, density; with @p with_geometry also the planar
+     * assumption, the no-fail regions and the damage model) and <Boundary conditions>;
+     * @p section prefixes the entries in messages ("" or e.g. "Heat/").
+     */
+    void
+    parse_material(dealii::ParameterHandler &prm,
+                   const std::string        &section,
+                   const bool                with_geometry);
+
     MPI_Comm      communicator;
     std::ostream &log;
     bool          is_root;
@@ -150,10 +184,12 @@ namespace perideal
     double                                          rho = 0.;
     BoundaryConditions<dim>                         conditions;
 
-    // What setup() computes.
-    ParticleSystem<dim> particle_system;
-    double              s_critical = 0.;
-    double              stable_dt  = 0.;
+    // What setup() computes: the particles, shared with the physics of
+    // parse_physics_parameters() (owns_particles false there).
+    std::shared_ptr<ParticleSystem<dim>> particle_system;
+    bool                                 owns_particles = true;
+    double                               s_critical     = 0.;
+    double                               stable_dt      = 0.;
   };
 } // namespace perideal
 

@@ -101,7 +101,7 @@ namespace perideal
             state.fe.load_output_records(std::string(none.begin(), none.end()));
           }
         state.fe.write_output(state.settings.output_directory,
-                              "solution" + suffix,
+                              state.settings.solution_name + suffix,
                               data.output_index,
                               data.time,
                               state.U);

@@ -103,8 +103,34 @@ namespace perideal
       }
     for (const auto &postprocessor : postprocessors)
       postprocessor->execute(state, data, *statistics);
+    for (const auto &[name, other_state, others] : physics)
+      {
+        if (data.final_row && state.is_root)
+          state.log << "Physics " << name << ":\n";
+        // The other physics advance in time within the load steps of a quasi-static run (step
+        // k of N ends at k/N of the end time).
+        StepData other_data = data;
+        if (data.quasi_static)
+          {
+            other_data.quasi_static = false;
+            other_data.time         = data.time * other_state->settings.end_time;
+          }
+        statistics->set_column_prefix(name + ".");
+        for (const auto &postprocessor : others->postprocessors)
+          postprocessor->execute(*other_state, other_data, *statistics);
+        statistics->set_column_prefix("");
+      }
     if (data.write_statistics)
       statistics->end_row();
+  }
+
+  template <int dim>
+  void
+  Postprocessors<dim>::add_physics(const std::string       &name,
+                                   const CoupledState<dim> &other_state,
+                                   Postprocessors<dim>     &others)
+  {
+    physics.emplace_back(name, &other_state, &others);
   }
 
   template <int dim>

@@ -252,11 +252,69 @@ namespace perideal
 
   template <int dim>
   void
+  ExplicitDynamics<dim>::start_state(CoupledState<dim> &state)
+  {
+    state.apply_initial_conditions();
+    compute_acceleration(state, 0., true);
+    set_first_order_rates(state);
+    if (state.is_coupled())
+      report_initial_residual(state);
+    state.start_work();
+    state.fe_support.equ(-1., state.residual);
+    if (state.advance_other_physics)
+      state.advance_other_physics(0, true);
+  }
+
+  template <int dim>
+  void
+  ExplicitDynamics<dim>::advance(CoupledState<dim> &state,
+                                 const double       time,
+                                 const double       dt,
+                                 const bool         with_energy)
+  {
+    using Motion     = typename CoupledState<dim>::Motion;
+    auto &fe         = state.fe;
+    auto &conditions = state.pd.boundary_conditions();
+    auto &U = state.U, &V = state.V, &A = state.A;
+    auto &u = state.u, &v = state.v, &a = state.a;
+    // The heat in over the step from the heat flows at its start (forward Euler).
+    state.accumulate_heat(dt);
+
+    // Half step of the velocities (first-order unknowns: their rate at the start of the
+    // step), prescribed velocities over the step, positions.
+    V.add(0.5 * dt, A);
+    v.add(0.5 * dt, a);
+    set_first_order_rates(state);
+    fe.prescribe(time + 0.5 * dt, U, V);
+    conditions.prescribe_step_velocity(time, dt, v);
+    U.add(dt, V);
+    if (!state.any_particle_slaved)
+      u.add(dt, v);
+    else
+      for (std::size_t k = 0; k < state.motion.size(); ++k)
+        if (state.motion[k] != Motion::slaved)
+          u.local_element(k) += dt * v.local_element(k);
+    fe.prescribe(time + dt, U, V);
+    conditions.prescribe_displacement(time + dt, u);
+    U.update_ghost_values();
+
+    compute_acceleration(state, time + dt, with_energy);
+    if (state.settings.damping > 0.)
+      add_damping(state);
+    V.add(0.5 * dt, A);
+    v.add(0.5 * dt, a);
+    set_first_order_rates(state);
+    fe.prescribe(time + dt, U, V);
+
+    state.accumulate_work();
+  }
+
+  template <int dim>
+  void
   ExplicitDynamics<dim>::run(CoupledState<dim>   &state,
                              Postprocessors<dim> &postprocessors,
                              Checkpoint<dim>     &checkpoint)
   {
-    using Motion                = typename CoupledState<dim>::Motion;
     const auto        &settings = state.settings;
     const unsigned int n_steps =
       ParameterUtilities::equal_time_steps(settings.end_time, state.time_step);
@@ -267,22 +325,9 @@ namespace perideal
     run_description << "explicit dynamics, " << n_steps << " steps of " << std::setprecision(17)
                     << dt << " s";
 
-    auto             &fe         = state.fe;
-    auto             &conditions = state.pd.boundary_conditions();
-    auto             &U = state.U, &V = state.V, &A = state.A;
-    auto             &u = state.u, &v = state.v, &a = state.a;
     RunControl<dim>   run(state, postprocessors, checkpoint, false);
-    const RunPosition start = run.start(run_description.str(), n_steps, [&]() {
-      state.apply_initial_conditions();
-      fe.prescribe(0., U, V);
-      conditions.prescribe_displacement(0., u);
-      compute_acceleration(state, 0., true);
-      set_first_order_rates(state);
-      if (state.is_coupled())
-        report_initial_residual(state);
-      state.start_work();
-      state.fe_support.equ(-1., state.residual);
-    });
+    const RunPosition start =
+      run.start(run_description.str(), n_steps, [&]() { start_state(state); });
 
     ProgressReporter progress(state.comm,
                               state.log,
@@ -292,42 +337,15 @@ namespace perideal
     const auto       start_time = std::chrono::steady_clock::now();
     for (unsigned int step = start.step + 1; step <= n_steps; ++step)
       {
-        const double time = (step - 1) * dt;
-        // The heat in over the step from the heat flows at its start (forward Euler).
-        state.accumulate_heat(dt);
-
-        // Half step of the velocities (first-order unknowns: their rate at the start of the
-        // step), prescribed velocities over the step, positions.
-        V.add(0.5 * dt, A);
-        v.add(0.5 * dt, a);
-        set_first_order_rates(state);
-        fe.prescribe(time + 0.5 * dt, U, V);
-        conditions.prescribe_step_velocity(time, dt, v);
-        U.add(dt, V);
-        if (!state.any_particle_slaved)
-          u.add(dt, v);
-        else
-          for (std::size_t k = 0; k < state.motion.size(); ++k)
-            if (state.motion[k] != Motion::slaved)
-              u.local_element(k) += dt * v.local_element(k);
-        fe.prescribe(time + dt, U, V);
-        conditions.prescribe_displacement(time + dt, u);
-        U.update_ghost_values();
-
         StepData   data = run.plan(step, step * dt, step == n_steps);
         const bool check_regions =
           state.adapt_regions && !data.final_row && step % state.adaptation_interval == 0;
-        compute_acceleration(state,
-                             time + dt,
-                             data.write_statistics || data.write_fields || check_regions);
-        if (settings.damping > 0.)
-          add_damping(state);
-        V.add(0.5 * dt, A);
-        v.add(0.5 * dt, a);
-        set_first_order_rates(state);
-        fe.prescribe(time + dt, U, V);
-
-        state.accumulate_work();
+        advance(state,
+                (step - 1) * dt,
+                dt,
+                data.write_statistics || data.write_fields || check_regions);
+        if (state.advance_other_physics)
+          state.advance_other_physics(step, data.write_statistics || data.write_fields);
 
         if (data.write_statistics)
           state.fe_support.equ(-1., state.residual);

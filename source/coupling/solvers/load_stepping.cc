@@ -245,13 +245,20 @@ namespace perideal
                   std::to_string(n_steps) + " load steps" +
                   (control.history == LoadHistory::time ? ", time history" : ""),
                 n_steps,
-                [&]() { state.start_work(); });
+                [&]() {
+                  state.start_work();
+                  if (state.advance_other_physics)
+                    state.advance_other_physics(0, true);
+                });
     // Without cutting, step k applies k/N; with cutting the load factor advances by increment.
     const double nominal   = 1. / n_steps;
     double       increment = nominal, reached = start.time;
     unsigned int cuts = 0;
     for (unsigned int step = start.step + 1; cutting ? reached < 1. : step <= n_steps; ++step)
       {
+        // The other physics of a problem with several (their solve to the step's time first).
+        if (state.advance_other_physics)
+          state.advance_other_physics(step, true);
         // The state after the last converged step, for a checkpoint if this one fails.
         checkpoint.keep(state, postprocessors, {step - 1, reached, step});
         const double factor = cutting ? std::min(1., reached + increment) : double(step) / n_steps;

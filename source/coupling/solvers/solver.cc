@@ -15,6 +15,24 @@ namespace perideal
   {}
 
   template <int dim>
+  void
+  Solver<dim>::start_state(CoupledState<dim> &)
+  {
+    AssertThrow(false,
+                dealii::ExcMessage("This <Solver/Type> cannot advance a physics of "
+                                   "<Physics/List> by operator splitting; accepted: explicit."));
+  }
+
+  template <int dim>
+  void
+  Solver<dim>::advance(CoupledState<dim> &, const double, const double, const bool)
+  {
+    AssertThrow(false,
+                dealii::ExcMessage("This <Solver/Type> cannot advance a physics of "
+                                   "<Physics/List> by operator splitting; accepted: explicit."));
+  }
+
+  template <int dim>
   std::unique_ptr<Solver<dim>>
   create_solver(const SolverType type, const QuasiStaticControl &control)
   {

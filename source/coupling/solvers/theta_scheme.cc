@@ -6,6 +6,7 @@
 #include <perideal/coupling/solvers/run_control.h>
 #include <perideal/coupling/solvers/theta_scheme.h>
 
+#include <cmath>
 #include <iomanip>
 #include <sstream>
 #include <string>
@@ -94,70 +95,98 @@ namespace perideal
 
   template <int dim>
   void
+  ThetaScheme<dim>::first_forces(CoupledState<dim> &state, const double time)
+  {
+    FEVector       U_start(state.U);
+    ParticleVector u_start(state.u);
+    state.fe.assemble_load(time, fe_rhs);
+    pd_rhs = 0.;
+    state.method.solve_equilibrium(fe_rhs, pd_rhs, U_start, u_start);
+    forces_at(state, time);
+  }
+
+  template <int dim>
+  void
+  ThetaScheme<dim>::start_state(CoupledState<dim> &state)
+  {
+    state.apply_initial_conditions();
+    state.start_work();
+    first_forces(state, 0.);
+  }
+
+  template <int dim>
+  void
+  ThetaScheme<dim>::step_to(CoupledState<dim> &state, const double time)
+  {
+    auto             &fe         = state.fe;
+    auto             &conditions = state.pd.boundary_conditions();
+    auto             &U = state.U, &u = state.u;
+    const double      theta      = state.settings.theta;
+    const double      old_weight = (1. - theta) / theta;
+    const std::size_t n_particle = free_factor.size();
+    for (unsigned int k = 0; k < U.locally_owned_size(); ++k)
+      fe_rhs.local_element(k) = fe_diagonal.local_element(k) * U.local_element(k) -
+                                old_weight * state.residual.local_element(k);
+    for (std::size_t k = 0; k < n_particle; ++k)
+      pd_rhs.local_element(k) =
+        particle_diagonal.local_element(k) * u.local_element(k) +
+        old_weight * free_factor[k] *
+          (state.internal_force.local_element(k) + state.external_force.local_element(k));
+    state.f_ext          = 0.;
+    state.external_force = 0.;
+    fe.assemble_load(time, state.f_ext);
+    conditions.add_loads(time, state.external_force);
+    fe_rhs += state.f_ext;
+    pd_rhs += state.external_force;
+    fe.prescribe(time, U, state.V);
+    conditions.prescribe_displacement(time, u);
+    iterations = state.method.solve_equilibrium(fe_rhs, pd_rhs, U, u);
+    forces_at(state, time);
+  }
+
+  template <int dim>
+  void
+  ThetaScheme<dim>::advance(CoupledState<dim> &state,
+                            const double       time,
+                            const double       dt,
+                            const bool)
+  {
+    AssertThrow(std::abs(dt - state.time_step) <= 1e-12 * state.time_step,
+                ExcMessage("The theta scheme's step is " +
+                           ParameterUtilities::format_number(state.time_step) +
+                           " s, which its matrix holds; asked for " +
+                           ParameterUtilities::format_number(dt) + " s."));
+    step_to(state, time + dt);
+  }
+
+  template <int dim>
+  void
   ThetaScheme<dim>::run(CoupledState<dim>   &state,
                         Postprocessors<dim> &postprocessors,
                         Checkpoint<dim>     &checkpoint)
   {
     const auto        &settings = state.settings;
-    const double       theta    = settings.theta;
     double             dt       = settings.time_step;
     const unsigned int n_steps  = ParameterUtilities::equal_time_steps(settings.end_time, dt);
     if (state.is_root)
       state.log << "Time step: " << dt << " s, steps: " << n_steps << std::endl;
     std::ostringstream run_description;
-    run_description << "implicit, theta " << theta << ", " << n_steps << " steps of "
+    run_description << "implicit, theta " << settings.theta << ", " << n_steps << " steps of "
                     << std::setprecision(17) << dt << " s";
 
-    auto &fe         = state.fe;
-    auto &conditions = state.pd.boundary_conditions();
-    auto &U = state.U, &u = state.u;
-    // The forces of the first state need the method's assembled operator: one solve, whose
-    // solution is discarded, assembles it.
-    const auto first_forces = [&](const double time) {
-      FEVector       U_start(U);
-      ParticleVector u_start(u);
-      fe.assemble_load(time, fe_rhs);
-      pd_rhs = 0.;
-      state.method.solve_equilibrium(fe_rhs, pd_rhs, U_start, u_start);
-      forces_at(state, time);
-    };
     const bool        restarting = checkpoint.restarting();
     RunControl<dim>   run(state, postprocessors, checkpoint, false);
-    const RunPosition start = run.start(run_description.str(), n_steps, [&]() {
-      state.apply_initial_conditions();
-      fe.prescribe(0., U, state.V);
-      conditions.prescribe_displacement(0., u);
-      state.start_work();
-      first_forces(0.);
-    });
+    const RunPosition start =
+      run.start(run_description.str(), n_steps, [&]() { start_state(state); });
     if (restarting)
-      first_forces(start.time);
+      first_forces(state, start.time);
 
-    const double      old_weight = (1. - theta) / theta;
-    const std::size_t n_particle = free_factor.size();
     for (unsigned int step = start.step + 1; step <= n_steps; ++step)
       {
         const double time = step * dt;
-        // D T_n + (1 - theta) / theta (Q_n - K T_n), then the loads at t_{n+1}.
-        for (unsigned int k = 0; k < U.locally_owned_size(); ++k)
-          fe_rhs.local_element(k) = fe_diagonal.local_element(k) * U.local_element(k) -
-                                    old_weight * state.residual.local_element(k);
-        for (std::size_t k = 0; k < n_particle; ++k)
-          pd_rhs.local_element(k) =
-            particle_diagonal.local_element(k) * u.local_element(k) +
-            old_weight * free_factor[k] *
-              (state.internal_force.local_element(k) + state.external_force.local_element(k));
-        state.f_ext          = 0.;
-        state.external_force = 0.;
-        fe.assemble_load(time, state.f_ext);
-        conditions.add_loads(time, state.external_force);
-        fe_rhs += state.f_ext;
-        pd_rhs += state.external_force;
-        fe.prescribe(time, U, state.V);
-        conditions.prescribe_displacement(time, u);
-        StepData data   = run.plan(step, time, step == n_steps);
-        data.iterations = state.method.solve_equilibrium(fe_rhs, pd_rhs, U, u);
-        forces_at(state, time);
+        StepData     data = run.plan(step, time, step == n_steps);
+        step_to(state, time);
+        data.iterations = iterations;
         run.write(data);
         if (run.checkpoint(data))
           return;

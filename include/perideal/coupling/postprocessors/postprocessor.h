@@ -14,6 +14,7 @@
 
 #include <memory>
 #include <string>
+#include <tuple>
 #include <vector>
 
 namespace perideal
@@ -179,6 +180,17 @@ namespace perideal
     execute(const CoupledState<dim> &state, const StepData &data);
 
     /**
+     * @brief Execute @p others' postprocessors on @p other_state too, after each execute():
+     * the physics @p name of <Physics/List>, its statistics columns prefixed "<name>." in the
+     * same rows, its summary after a line "Physics <name>:", its fields in files of its own
+     * (ProblemSettings::field_suffix). The objects must outlive this one.
+     */
+    void
+    add_physics(const std::string       &name,
+                const CoupledState<dim> &other_state,
+                Postprocessors<dim>     &others);
+
+    /**
      * @brief The statistics table written so far and every postprocessor's save_state(),
      * packed for a checkpoint (complete on rank 0). Collective.
      */
@@ -200,6 +212,8 @@ namespace perideal
 
     std::vector<std::unique_ptr<Postprocessor<dim>>> postprocessors;
     std::unique_ptr<StatisticsFile>                  statistics;
+    /// The physics of add_physics(): name, state, postprocessors.
+    std::vector<std::tuple<std::string, const CoupledState<dim> *, Postprocessors<dim> *>> physics;
   };
 } // namespace perideal
 

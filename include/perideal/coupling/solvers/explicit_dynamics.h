@@ -43,6 +43,24 @@ namespace perideal
         Postprocessors<dim> &postprocessors,
         Checkpoint<dim>     &checkpoint) override;
 
+    /**
+     * @brief The initial state of a run: the initial conditions, the prescribed values at
+     * t = 0, the forces and rates, the start of the work; then (CoupledState::
+     * advance_other_physics) the initial state of the other physics.
+     */
+    void
+    start_state(CoupledState<dim> &state) override;
+
+    /**
+     * @brief One step @p dt from @p time (velocity Verlet; forward Euler for a temperature),
+     * the particles' energy density computed if @p with_energy, the work of the loads added.
+     */
+    void
+    advance(CoupledState<dim> &state,
+            const double       time,
+            const double       dt,
+            const bool         with_energy) override;
+
   private:
     /**
      * @brief What the step derives from the regions: the masses of the method, the factors from

@@ -49,7 +49,32 @@ namespace perideal
         Postprocessors<dim> &postprocessors,
         Checkpoint<dim>     &checkpoint) override;
 
+    /**
+     * @brief The initial state (initial conditions, prescribed values at t = 0, the start of
+     * the work, the forces of the first step).
+     */
+    void
+    start_state(CoupledState<dim> &state) override;
+
+    /**
+     * @brief One step from @p time to @p time + @p dt; @p dt must be the step of setup()
+     * (CoupledState::time_step: the diagonal D holds it); the energies are always computed.
+     */
+    void
+    advance(CoupledState<dim> &state,
+            const double       time,
+            const double       dt,
+            const bool         with_energy) override;
+
   private:
+    /// The forces of the first step at @p time (after the initial state or a restart).
+    void
+    first_forces(CoupledState<dim> &state, const double time);
+
+    /// The step that ends at @p time, from the state of the previous one.
+    void
+    step_to(CoupledState<dim> &state, const double time);
+
     /**
      * @brief The forces of the state at @p time: the loads (state.f_ext, state.external_force)
      * and equilibrium_state() (state.residual = K U - Q on the FE dofs, state.internal_force,
@@ -69,6 +94,8 @@ namespace perideal
     /// The right-hand side of a step: FE load and particle force density.
     FEVector       fe_rhs;
     ParticleVector pd_rhs;
+    /// The iterations of the last step's solve.
+    unsigned int iterations = 0;
   };
 } // namespace perideal
 

@@ -1,0 +1,194 @@
+// ---------------------------------------------------------------------
+// PeriDeal: the physics of <Physics/List> of a problem, advanced by operator splitting.
+// ---------------------------------------------------------------------
+#include <perideal/base/parameter_utilities.h>
+#include <perideal/coupling/coupled_problem.h>
+
+#include <cmath>
+
+namespace perideal
+{
+  using namespace dealii;
+
+  template <int dim>
+  void
+  CoupledProblem<dim>::parse_other_physics(ParameterHandler &prm)
+  {
+    physics.resize(1);
+    const auto list = Physics<dim>::parse_names(prm);
+    if (list.empty())
+      return;
+    const std::string entry = "<Physics/List> = " + prm.get({"Physics"}, "List");
+    const std::string field =
+      pd.has_body() ? "<Material/Model> = " + prm.get({"Material"}, "Model") :
+                      "<Finite elements/Physics> = " + prm.get({"Finite elements"}, "Physics");
+    AssertThrow(!layout.has_temperature(),
+                ExcMessage(entry +
+                           " adds a temperature, but the top-level sections hold one "
+                           "too (" +
+                           field +
+                           "): with a list they hold the mechanics; accepted there: a "
+                           "mechanical model, the conduction model in <Heat/Material/Model>."));
+    AssertThrow(settings.solver_type != SolverType::implicit,
+                ExcMessage(entry + ": the first physics is advanced by <Solver/Type> = explicit, "
+                                   "static or adaptive dynamic relaxation, the others within its "
+                                   "steps (doc/architecture/16_multiphysics.md); accepted: "
+                                   "explicit, static, adaptive dynamic relaxation."));
+    if (settings.solver_type != SolverType::explicit_dynamics)
+      {
+        AssertThrow(control.method == LoadControl::load_steps && control.cut_threshold == 0,
+                    ExcMessage(entry + ": a quasi-static run advances the other physics over "
+                                       "each load step, which a sequentially linear control or "
+                                       "cut load steps would undo; accepted: <Solver/Control/"
+                                       "Method> = load steps with <Cut threshold> = 0."));
+        AssertThrow(settings.end_time > 0.,
+                    ExcMessage(entry + ": load step k of N of a quasi-static run ends at the time "
+                                       "k/N <Time stepping/End time>, to which the other physics "
+                                       "advance; <Time stepping/End time> is 0: accepted > 0."));
+      }
+    AssertThrow(!adaptive.enabled(),
+                ExcMessage(entry + ": the physics share the particles, which an adaptive PD "
+                                   "region does not rebuild for each yet; accepted "
+                                   "<Coupling/Adaptive region/Criterion> = none."));
+    AssertThrow(settings.checkpoint_interval == 0 && settings.checkpoint_time_interval == 0.,
+                ExcMessage(entry + ": checkpoints hold one physics so far; set <Output/"
+                                   "Checkpoint interval> and <Output/Checkpoint time interval> "
+                                   "to off."));
+    for (const auto &item : list)
+      {
+        physics.push_back(std::make_unique<Physics<dim>>(item.first, comm, log));
+        Physics<dim> &field = *physics.back();
+        field.parse_parameters(prm, settings, *physics[0]);
+        const std::string section = Physics<dim>::section(field.name);
+        AssertThrow(!field.fe.has_mesh() || field.fe.get_density() > 0.,
+                    ExcMessage("The parameter <" + section + "/Finite elements/Density> is " +
+                               ParameterUtilities::format_number(field.fe.get_density()) +
+                               "; explicit steps need the FE heat capacity rho c: accepted "
+                               "values are > 0."));
+      }
+  }
+
+  template <int dim>
+  void
+  CoupledProblem<dim>::check_other_physics()
+  {
+    for (unsigned int k = 1; k < physics.size(); ++k)
+      {
+        Physics<dim> &field = *physics[k];
+        field.fe.setup(
+          [&field, this](const Point<dim> &x) { return field.method->fe_weight(blending(x)); });
+        // The particles are the first physics': only this physics' model is set up on them.
+        field.pd.setup({}, {}, false);
+        if (is_root && field.pd.has_body())
+          log << "Material (" << field.name << "): " << field.pd.material().summary() << std::endl;
+        field.method->initialize(coupled_regions(field));
+        field.state = std::make_unique<CoupledState<dim>>(comm,
+                                                          log,
+                                                          field.settings,
+                                                          field.layout,
+                                                          field.pd,
+                                                          field.fe,
+                                                          *field.method);
+        field.state->setup();
+        field.solver = create_solver<dim>(field.settings.solver_type, control);
+        field.solver->check(*field.state);
+        PostprocessorInputs<dim> inputs;
+        inputs.control       = control;
+        field.postprocessors = std::make_unique<Postprocessors<dim>>(postprocessor_names, inputs);
+        field.postprocessors->initialize(*field.state);
+      }
+  }
+
+  template <int dim>
+  void
+  CoupledProblem<dim>::setup_other_physics()
+  {
+    if (physics.size() == 1)
+      return;
+    sub_steps.assign(physics.size() - 1, 1);
+    for (unsigned int k = 1; k < physics.size(); ++k)
+      {
+        Physics<dim> &field = *physics[k];
+        if (is_root)
+          log << "Physics " << field.name << ":" << std::endl;
+        // An implicit physics takes one step per step of the first physics, as its run will
+        // take it.
+        if (field.settings.solver_type == SolverType::implicit)
+          field.settings.time_step = split_step();
+        field.solver->setup(*field.state);
+        // The largest step of at most its own (the safety factor times its stable step) that
+        // divides the first physics' step, as its run takes it.
+        const double step_length = split_step();
+        const auto   n           = static_cast<unsigned int>(
+          std::max(1., std::ceil(step_length / field.state->time_step * (1. - 1e-12))));
+        field.state->time_step = step_length / n;
+        sub_steps[k - 1]       = n;
+        if (is_root)
+          log << "  " << n << " step" << (n > 1 ? "s" : "") << " of " << field.state->time_step
+              << " s per step of the first physics" << std::endl;
+        postprocessors->add_physics(field.name, *field.state, *field.postprocessors);
+        for (unsigned int c = 0; c < field.layout.n_components(); ++c)
+          if (field.layout.kind(c) == ComponentKind::temperature)
+            exchange.publish("temperature", field.state->u, field.state->U, field.layout, c);
+      }
+    state->broken_bond_record    = &exchange.record();
+    state->advance_other_physics = [this](const unsigned int step, const bool with_energy) {
+      advance_other_physics(step, with_energy);
+    };
+  }
+
+  template <int dim>
+  void
+  CoupledProblem<dim>::advance_other_physics(const unsigned int step, const bool with_energy)
+  {
+    // What the first physics broke in its step is broken for the others before theirs.
+    exchange.share_broken_bonds(pd.particles().bonds());
+    for (unsigned int k = 1; k < physics.size(); ++k)
+      {
+        Physics<dim> &field = *physics[k];
+        if (step == 0)
+          {
+            field.solver->start_state(*field.state);
+            continue;
+          }
+        const unsigned int n     = sub_steps[k - 1];
+        const double       dt    = field.state->time_step;
+        const double       start = (step - 1) * split_step();
+        for (unsigned int s = 0; s < n; ++s)
+          field.solver->advance(*field.state, start + s * dt, dt, with_energy && s + 1 == n);
+        // The force of the supports, for the reactions (explicit runs keep it from the last
+        // step's residual).
+        if (with_energy && field.settings.solver_type == SolverType::explicit_dynamics)
+          field.state->fe_support.equ(-1., field.state->residual);
+      }
+  }
+
+  template <int dim>
+  double
+  CoupledProblem<dim>::split_step() const
+  {
+    if (settings.solver_type != SolverType::explicit_dynamics)
+      return settings.end_time / settings.load_steps;
+    double dt = state->time_step;
+    ParameterUtilities::equal_time_steps(settings.end_time, dt);
+    return dt;
+  }
+
+  template <int dim>
+  const PhysicsExchange<dim> &
+  CoupledProblem<dim>::get_exchange() const
+  {
+    return exchange;
+  }
+
+#define PERIDEAL_INSTANTIATE(dim)                                                           \
+  template void CoupledProblem<dim>::parse_other_physics(ParameterHandler &);               \
+  template void CoupledProblem<dim>::check_other_physics();                                 \
+  template void CoupledProblem<dim>::setup_other_physics();                                 \
+  template void CoupledProblem<dim>::advance_other_physics(const unsigned int, const bool); \
+  template const PhysicsExchange<dim> &CoupledProblem<dim>::get_exchange() const;           \
+  template double                      CoupledProblem<dim>::split_step() const;
+  PERIDEAL_INSTANTIATE(2)
+  PERIDEAL_INSTANTIATE(3)
+#undef PERIDEAL_INSTANTIATE
+} // namespace perideal
