@@ -48,7 +48,8 @@ namespace perideal
   double
   AntiplaneModel<dim>::critical_stretch(const double fracture_energy) const
   {
-    return AntiplaneShear::critical_slope(dim, fracture_energy, mu, context.horizon);
+    return fracture_factor *
+           AntiplaneShear::critical_slope(dim, fracture_energy, mu, context.horizon);
   }
 
   template <int dim>
@@ -154,6 +155,9 @@ namespace perideal
       out << "; by region: " << region_moduli.summary();
     if (twist.active())
       out << "; torsion: twist " << twist.twist() << " rad/m about (" << twist.axis() << ")";
+    if (context.lattice_fracture)
+      out << "; lattice calibration of the fracture energy: critical slope " << fracture_factor
+          << " times the continuum's";
     return out.str();
   }
 

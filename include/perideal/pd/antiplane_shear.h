@@ -155,6 +155,9 @@ namespace perideal
     Torsion           twist;
     ModelContext      context;
     ///@}
+    /// The factor of the lattice calibration on the continuum's critical slope (1 without it,
+    /// ModelContext::lattice_fracture), set by initialize().
+    double fracture_factor = 1.;
   };
 } // namespace perideal
 
