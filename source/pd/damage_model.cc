@@ -47,8 +47,8 @@ namespace perideal
       "How the critical stretch (the critical slope of antiplane shear, each failure mode's "
       "limit of the Timoshenko bond) follows from the Fracture energy: continuum (the model's "
       "closed-form formula, the integral over the horizon's ball) or lattice (the bonds of the "
-      "actual particles that a straight crack cuts, with their partial volumes, surface and "
-      "influence factors, on a regular or perturbed lattice, dissipate exactly the Fracture "
+      "actual particles that a straight crack cuts, with their partial volumes and surface "
+      "factors, on a regular or perturbed lattice, dissipate exactly the Fracture "
       "energy per unit crack area; measured on the interior particles, the crack normal along "
       "the coordinate axes). Not with a Critical stretch given.");
   }
