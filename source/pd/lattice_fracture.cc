@@ -2,12 +2,15 @@
 // PeriDeal: the fracture energy of the particles' actual lattice, for the lattice calibration of
 // the critical stretch.
 // ---------------------------------------------------------------------
+#include <deal.II/base/bounding_box.h>
 #include <deal.II/base/exceptions.h>
 #include <deal.II/base/mpi.h>
 
 #include <perideal/pd/lattice_fracture.h>
 
+#include <algorithm>
 #include <cmath>
+#include <limits>
 #include <numeric>
 
 namespace perideal
@@ -105,10 +108,96 @@ namespace perideal
     return 1. / std::sqrt(lattice_fracture_energy(particles, bond_energy));
   }
 
+  template <int dim>
+  double
+  antiplane_cleave_energy(const typename ParticleSystem<dim>::Settings &settings,
+                          MaterialModel<dim>                           &model,
+                          const ModelContext                           &context,
+                          const double                                  critical_slope,
+                          const MPI_Comm                                communicator)
+  {
+    const double dx = settings.spacing, window = (dim == 2 ? 12. : 4.) * dx;
+    const double side = window + 2. * std::ceil(2. * settings.horizon / dx) * dx;
+    Point<dim>   upper;
+    for (unsigned int d = 0; d < dim; ++d)
+      upper[d] = side;
+    ParticleSystem<dim> particles(communicator);
+    particles.generate(settings,
+                       BoundingBox<dim>(std::make_pair(Point<dim>(), upper)),
+                       [](const Point<dim> &) { return true; },
+                       {});
+    model.initialize(particles, context);
+
+    const auto        &x       = particles.positions();
+    const unsigned int n_owned = particles.n_owned();
+    const double       cut     = 0.5 * side;
+    const auto         across  = [&](const unsigned int i, const unsigned int j) {
+      return (x[i][dim - 1] - cut) * (x[j][dim - 1] - cut) < 0.;
+    };
+    // The jumps at which the bonds across the cut reach the critical slope, binned.
+    BondList           &bonds = particles.bonds();
+    std::vector<double> lengths;
+    for (unsigned int i = 0; i < n_owned; ++i)
+      for (unsigned int b = bonds.row_start[i]; b < bonds.row_start[i + 1]; ++b)
+        if (across(i, bonds.neighbor[b]))
+          lengths.push_back(bonds.length[b]);
+    std::vector<double> all;
+    for (const auto &part : Utilities::MPI::all_gather(communicator, lengths))
+      all.insert(all.end(), part.begin(), part.end());
+    std::sort(all.begin(), all.end());
+    std::vector<double> steps;
+    for (const double length : all)
+      if (steps.empty() || length > steps.back() * (1. + 1e-4))
+        steps.push_back(length);
+      else
+        steps.back() = length;
+
+    ParticleVector u, force;
+    particles.reinit_vector(u, 1);
+    particles.reinit_vector(force, 1);
+    const auto window_energy = [&]() {
+      std::vector<double> w;
+      model.compute_forces(particles, u, force, &w, std::numeric_limits<double>::infinity());
+      double local = 0.;
+      for (unsigned int i = 0; i < n_owned; ++i)
+        {
+          bool inside = true;
+          for (unsigned int a = 0; a + 1 < dim; ++a)
+            inside = inside && std::abs(x[i][a] - cut) < 0.5 * window;
+          if (inside)
+            local += w[i] * particles.volumes()[i];
+        }
+      return Utilities::MPI::sum(local, communicator);
+    };
+    double dissipated = 0.;
+    for (const double length : steps)
+      {
+        const double jump = critical_slope * length * (1. + 1e-9);
+        for (unsigned int i = 0; i < particles.n_local(); ++i)
+          u.local_element(i) = x[i][dim - 1] > cut ? jump : 0.;
+        const double before = window_energy();
+        model.compute_forces(particles, u, force, nullptr, critical_slope);
+        dissipated += before - window_energy();
+      }
+    return dissipated / (std::pow(window, dim - 1) * (dim == 2 ? settings.thickness : 1.));
+  }
+
   template double
   lattice_fracture_energy<2>(const ParticleSystem<2> &, const std::vector<double> &);
   template double
   lattice_fracture_energy<3>(const ParticleSystem<3> &, const std::vector<double> &);
+  template double
+  antiplane_cleave_energy<2>(const ParticleSystem<2>::Settings &,
+                             MaterialModel<2> &,
+                             const ModelContext &,
+                             double,
+                             MPI_Comm);
+  template double
+  antiplane_cleave_energy<3>(const ParticleSystem<3>::Settings &,
+                             MaterialModel<3> &,
+                             const ModelContext &,
+                             double,
+                             MPI_Comm);
   template double
   lattice_fracture_factor<2>(const ParticleSystem<2> &,
                              const std::vector<double> &,

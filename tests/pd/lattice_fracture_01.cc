@@ -15,12 +15,14 @@
 // perturbed one (epsilon = 0.3, the mean of four cuts a quarter dx apart); beside it the
 // continuum calibration's G / G_c, the error the lattice calibration removes.
 #include <perideal/pd/antiplane_bond_based.h>
+#include <perideal/pd/antiplane_state_based.h>
 #include <perideal/pd/bond_based.h>
 #include <perideal/pd/timoshenko_bond_based.h>
 
 #include "../tests.h"
 #include "pd_tests.h"
 
+#include <algorithm>
 #include <functional>
 #include <iomanip>
 #include <limits>
@@ -181,6 +183,90 @@ check(const std::string &name,
     report(3.015, 0.3);
 }
 
+// The state-based antiplane model, whose energy is not a sum of bond energies: a mode III cleave
+// through the kernel with breaking at its critical slope r0. A box 24 dx high (the cut in its
+// middle) and 40 dx wide in 2D, the window the middle 16 dx; in 3D 20 dx wide, the window
+// 4 dx x 4 dx. The upper half jumps by r0 |xi| (1 + 1e-9) for each length |xi| of the lattice's
+// bonds in turn, so every bond across the cut breaks just above its critical slope; the drops of
+// the window's energy at each jump sum to G.
+template <int dim>
+double
+state_based_cleave(const std::string &alpha, const double m, const bool on_lattice)
+{
+  perideal::ParticleSystem<dim>                    ps(MPI_COMM_WORLD);
+  typename perideal::ParticleSystem<dim>::Settings s;
+  s.spacing          = dx;
+  s.horizon          = m * dx;
+  s.thickness        = thickness;
+  const double width = (dim == 2 ? 40. : 20.) * dx, window = (dim == 2 ? 16. : 4.) * dx;
+  Point<dim>   upper;
+  for (unsigned int d = 0; d < dim; ++d)
+    upper[d] = d + 1 < dim ? width : 24. * dx;
+  pd_tests::generate_box<dim>(ps, s, Point<dim>(), upper);
+  perideal::AntiplaneStateBased<dim> model;
+  pd_tests::parse_model(model, {{"Shear modulus", "1e9"}, {"Stabilization", alpha}});
+  auto context             = pd_tests::model_context(m * dx,
+                                         thickness,
+                                         dim == 2 ? perideal::PlanarAssumption::plane_strain :
+                                                                perideal::PlanarAssumption::three_dimensional,
+                                         true);
+  context.lattice_fracture = on_lattice;
+  model.initialize(ps, context);
+  const double             r0 = model.critical_stretch(G0);
+  perideal::ParticleVector u, f;
+  ps.reinit_vector(u, 1);
+  ps.reinit_vector(f, 1);
+  const auto &x             = ps.positions();
+  const auto  window_energy = [&]() {
+    std::vector<double> w;
+    model.compute_forces(ps, u, f, &w, std::numeric_limits<double>::infinity());
+    double local = 0.;
+    for (unsigned int i = 0; i < ps.n_owned(); ++i)
+      {
+        bool inside = true;
+        for (unsigned int a = 0; a + 1 < dim; ++a)
+          inside = inside && std::abs(x[i][a] - 0.5 * width) < 0.5 * window;
+        if (inside)
+          local += w[i] * ps.volumes()[i];
+      }
+    return Utilities::MPI::sum(local, MPI_COMM_WORLD);
+  };
+  std::vector<Tensor<1, dim>> xi;
+  std::vector<double>         weight;
+  ps.lattice_family(xi, weight);
+  std::vector<double> lengths;
+  for (const auto &v : xi)
+    lengths.push_back(v.norm());
+  std::sort(lengths.begin(), lengths.end());
+  double G = 0., last = 0.;
+  for (const double length : lengths)
+    if (length > last * (1. + 1e-9))
+      {
+        last = length;
+        for (unsigned int i = 0; i < ps.n_local(); ++i)
+          u.local_element(i) = x[i][dim - 1] > 12. * dx ? r0 * length * (1. + 1e-9) : 0.;
+        const double before = window_energy();
+        model.compute_forces(ps, u, f, nullptr, r0);
+        G += before - window_energy();
+      }
+  return G / (std::pow(window, dim - 1) * (dim == 2 ? thickness : 1.)) / G0;
+}
+
+template <int dim>
+void
+check_state_based(const std::string &alpha, const std::vector<double> &ms)
+{
+  for (const double m : ms)
+    {
+      const double lattice   = state_based_cleave<dim>(alpha, m, true);
+      const double continuum = state_based_cleave<dim>(alpha, m, false);
+      deallog << dim << "D antiplane state based, alpha = " << alpha << ", m = " << m
+              << ", cleave: G/G_c = " << std::setprecision(5) << lattice << " "
+              << pd_tests::ok(std::abs(lattice - 1.) < 1e-2) << " (continuum calibration "
+              << continuum << ")" << std::setprecision(6) << std::endl;
+    }
+}
+
 int
 main(int argc, char **argv)
 {
@@ -197,4 +283,7 @@ main(int argc, char **argv)
   check<2, perideal::TimoshenkoBondBased<2>>("Timoshenko, shear", pd_tests::timoshenko_entries, 1);
   check<3, perideal::TimoshenkoBondBased<3>>("Timoshenko, stretch", pd_tests::timoshenko_entries);
   check<3, perideal::TimoshenkoBondBased<3>>("Timoshenko, shear", pd_tests::timoshenko_entries, 1);
+  check_state_based<2>("0.1", {2.015, 3.015, 4.015});
+  check_state_based<2>("0", {3.015});
+  check_state_based<3>("0.1", {2.015, 3.015});
 }

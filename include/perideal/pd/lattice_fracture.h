@@ -5,6 +5,7 @@
 #ifndef perideal_pd_lattice_fracture_h
 #define perideal_pd_lattice_fracture_h
 
+#include <perideal/pd/material_model.h>
 #include <perideal/pd/particle_system.h>
 
 #include <functional>
@@ -44,6 +45,28 @@ namespace perideal
   lattice_fracture_factor(const ParticleSystem<dim>           &particles,
                           const std::vector<double>           &coefficient,
                           const std::function<double(double)> &energy);
+
+  /**
+   * @brief The fracture energy [J/m^2] that a scalar (antiplane) @p model dissipates, on the
+   * lattice of @p settings, when a mode III cleave breaks the bonds across a plane at the
+   * critical slope @p critical_slope: for a model whose energy is not a sum of bond energies
+   * (antiplane state based), the energy a broken bond releases depends on the field.
+   *
+   * On a box of the lattice (n + 2 ceil(2 delta/dx)) dx wide, n = 12 in 2D and 4 in 3D, with
+   * @p model initialized on it (@p context), the half beyond the middle plane normal to the
+   * last axis jumps rigidly by Delta, raised through the jumps r_c |xi| at which the bonds
+   * across the plane reach the critical slope (the bond lengths binned to 1e-4 relative): the
+   * drop of the model's energy of the particles of the middle n dx window (families complete)
+   * at each jump, E(bonds before) - E(bonds after), summed over the jumps and divided by the
+   * window's area. Collective on @p communicator; the model's own critical slope is not used.
+   */
+  template <int dim>
+  double
+  antiplane_cleave_energy(const typename ParticleSystem<dim>::Settings &settings,
+                          MaterialModel<dim>                           &model,
+                          const ModelContext                           &context,
+                          const double                                  critical_slope,
+                          const MPI_Comm                                communicator);
 } // namespace perideal
 
 #endif
