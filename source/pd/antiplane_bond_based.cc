@@ -178,15 +178,6 @@ namespace perideal
     return out.str();
   }
 
-  template <int dim>
-  ModelCapabilities
-  AntiplaneBondBased<dim>::capabilities() const
-  {
-    ModelCapabilities capabilities;
-    capabilities.lattice_fracture = true;
-    return capabilities;
-  }
-
   template class AntiplaneBondBased<2>;
   template class AntiplaneBondBased<3>;
 } // namespace perideal

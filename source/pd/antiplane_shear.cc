@@ -53,6 +53,15 @@ namespace perideal
   }
 
   template <int dim>
+  ModelCapabilities
+  AntiplaneModel<dim>::capabilities() const
+  {
+    ModelCapabilities capabilities;
+    capabilities.lattice_fracture = true;
+    return capabilities;
+  }
+
+  template <int dim>
   bool
   AntiplaneModel<dim>::has_prestrain() const
   {

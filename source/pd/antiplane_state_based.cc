@@ -457,15 +457,6 @@ namespace perideal
   }
 
   template <int dim>
-  ModelCapabilities
-  AntiplaneStateBased<dim>::capabilities() const
-  {
-    ModelCapabilities capabilities;
-    capabilities.lattice_fracture = true;
-    return capabilities;
-  }
-
-  template <int dim>
   std::string
   AntiplaneStateBased<dim>::summary() const
   {

@@ -94,6 +94,26 @@ cut_energy(perideal::ParticleSystem<dim> &ps,
   return (before - after) / area;
 }
 
+// Parse @p entries into @p model and initialize it on @p ps (horizon m dx, plane strain in 2D,
+// the energy surface correction) with the lattice calibration if @p on_lattice.
+template <int dim, typename Model>
+void
+set_up(Model                         &model,
+       const Entries                 &entries,
+       perideal::ParticleSystem<dim> &ps,
+       const double                   m,
+       const bool                     on_lattice)
+{
+  pd_tests::parse_model(model, entries);
+  auto context             = pd_tests::model_context(m * dx,
+                                         thickness,
+                                         dim == 2 ? perideal::PlanarAssumption::plane_strain :
+                                                                perideal::PlanarAssumption::three_dimensional,
+                                         true);
+  context.lattice_fracture = on_lattice;
+  model.initialize(ps, context);
+}
+
 // G / G_c of @p Model (entries @p entries, calibration on the lattice or in the continuum) for
 // the fields of @p mode (0: the expansion, or the antiplane slopes; 1: the rotations). The box
 // is n + 2 ceil(2m) lattice spacings along every axis, the window n wide in its middle (n = 4 in
@@ -125,14 +145,7 @@ measured_ratio(const Entries &entries,
   pd_tests::generate_box<dim>(ps, s, Point<dim>(), upper);
 
   Model model;
-  pd_tests::parse_model(model, entries);
-  auto context             = pd_tests::model_context(m * dx,
-                                         thickness,
-                                         dim == 2 ? perideal::PlanarAssumption::plane_strain :
-                                                                perideal::PlanarAssumption::three_dimensional,
-                                         true);
-  context.lattice_fracture = on_lattice;
-  model.initialize(ps, context);
+  set_up(model, entries, ps, m, on_lattice);
   const double       s0 = model.critical_stretch(G0);
   const unsigned int nc = model.field_layout().n_components();
 
@@ -204,14 +217,7 @@ state_based_cleave(const std::string &alpha, const double m, const bool on_latti
     upper[d] = d + 1 < dim ? width : 24. * dx;
   pd_tests::generate_box<dim>(ps, s, Point<dim>(), upper);
   perideal::AntiplaneStateBased<dim> model;
-  pd_tests::parse_model(model, {{"Shear modulus", "1e9"}, {"Stabilization", alpha}});
-  auto context             = pd_tests::model_context(m * dx,
-                                         thickness,
-                                         dim == 2 ? perideal::PlanarAssumption::plane_strain :
-                                                                perideal::PlanarAssumption::three_dimensional,
-                                         true);
-  context.lattice_fracture = on_lattice;
-  model.initialize(ps, context);
+  set_up(model, {{"Shear modulus", "1e9"}, {"Stabilization", alpha}}, ps, m, on_lattice);
   const double             r0 = model.critical_stretch(G0);
   perideal::ParticleVector u, f;
   ps.reinit_vector(u, 1);

@@ -96,12 +96,6 @@ namespace perideal
     std::string
     summary() const override;
 
-    /**
-     * @brief The lattice calibration of the critical slope (ModelCapabilities::lattice_fracture).
-     */
-    ModelCapabilities
-    capabilities() const override;
-
     std::unique_ptr<SurfaceCorrectionLaw<dim>>
     surface_correction_law(ParticleSystem<dim> &particles) override;
 

@@ -114,13 +114,6 @@ namespace perideal
     std::string
     summary() const override;
 
-    /**
-     * @brief The lattice calibration of the critical slope (ModelCapabilities::lattice_fracture):
-     * by a mode III cleave of a box of the same lattice (antiplane_cleave_energy()).
-     */
-    ModelCapabilities
-    capabilities() const override;
-
     std::unique_ptr<SurfaceCorrectionLaw<dim>>
     surface_correction_law(ParticleSystem<dim> &particles) override;
 
