@@ -50,7 +50,10 @@ namespace perideal
       "actual particles that a straight crack cuts, with their partial volumes and surface "
       "factors, on a regular or perturbed lattice, dissipate exactly the Fracture "
       "energy per unit crack area; measured on the interior particles, the crack normal along "
-      "the coordinate axes). Not with a Critical stretch given.");
+      "the coordinate axes; antiplane state based, whose energy is not a sum of bond energies: "
+      "by a mode III cleave of a box of the same lattice). For bond based, antiplane bond "
+      "based, antiplane state based and timoshenko bond based; not with a Critical stretch "
+      "given.");
   }
 
   template <int dim>
