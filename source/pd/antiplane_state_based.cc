@@ -352,11 +352,11 @@ namespace perideal
         probe_context.lattice_fracture = false;
         const double r0                = this->critical_stretch(1.);
         this->fracture_factor =
-          1. / std::sqrt(antiplane_cleave_energy<dim>(particles.settings(),
-                                                      probe,
-                                                      probe_context,
-                                                      r0,
-                                                      particles.get_communicator()));
+          1. / std::sqrt(cleave_fracture_energy<dim>(particles.settings(),
+                                                     probe,
+                                                     probe_context,
+                                                     r0,
+                                                     particles.get_communicator()));
       }
   }
 

@@ -48,12 +48,13 @@ namespace perideal
       "limit of the Timoshenko bond) follows from the Fracture energy: continuum (the model's "
       "closed-form formula, the integral over the horizon's ball) or lattice (the bonds of the "
       "actual particles that a straight crack cuts, with their partial volumes and surface "
-      "factors, on a regular or perturbed lattice, dissipate exactly the Fracture "
-      "energy per unit crack area; measured on the interior particles, the crack normal along "
-      "the coordinate axes; antiplane state based, whose energy is not a sum of bond energies: "
-      "by a mode III cleave of a box of the same lattice). For bond based, antiplane bond "
-      "based, antiplane state based and timoshenko bond based; not with a Critical stretch "
-      "given.");
+      "factors, on a regular or perturbed lattice, dissipate exactly the Fracture energy per "
+      "unit crack area; measured on the interior particles, the crack normal along the "
+      "coordinate axes; for the state-based models, whose energy is not a sum of bond "
+      "energies, by a cleave of a box of the same lattice: mode III for antiplane state "
+      "based, mode I for linear peridynamic solid). For bond based, antiplane bond based, "
+      "antiplane state based, linear peridynamic solid and timoshenko bond based; not with a "
+      "Critical stretch given.");
   }
 
   template <int dim>

@@ -110,11 +110,11 @@ namespace perideal
 
   template <int dim>
   double
-  antiplane_cleave_energy(const typename ParticleSystem<dim>::Settings &settings,
-                          MaterialModel<dim>                           &model,
-                          const ModelContext                           &context,
-                          const double                                  critical_slope,
-                          const MPI_Comm                                communicator)
+  cleave_fracture_energy(const typename ParticleSystem<dim>::Settings &settings,
+                         MaterialModel<dim>                           &model,
+                         const ModelContext                           &context,
+                         const double                                  critical,
+                         const MPI_Comm                                communicator)
   {
     const double dx = settings.spacing, window = (dim == 2 ? 12. : 4.) * dx;
     const double side = window + 2. * std::ceil(2. * settings.horizon / dx) * dx;
@@ -134,27 +134,40 @@ namespace perideal
     const auto         across  = [&](const unsigned int i, const unsigned int j) {
       return (x[i][dim - 1] - cut) * (x[j][dim - 1] - cut) < 0.;
     };
-    // The jumps at which the bonds across the cut reach the critical slope, binned.
+    // The component that jumps: the scalar, or the translation normal to the cut.
+    const FieldLayout  layout  = model.field_layout();
+    const unsigned int nc      = layout.n_components();
+    unsigned int       jumping = 0;
+    for (unsigned int c = 0; c < nc; ++c)
+      if (layout.kind(c) == ComponentKind::translation && layout[c].axis == dim - 1)
+        jumping = c;
+    const bool mode_III = nc == 1;
+    // The jumps at which the bonds across the cut reach the critical value, binned.
     BondList           &bonds = particles.bonds();
-    std::vector<double> lengths;
+    std::vector<double> jumps;
     for (unsigned int i = 0; i < n_owned; ++i)
       for (unsigned int b = bonds.row_start[i]; b < bonds.row_start[i + 1]; ++b)
         if (across(i, bonds.neighbor[b]))
-          lengths.push_back(bonds.length[b]);
+          {
+            const double r = bonds.length[b],
+                         n = std::abs(x[bonds.neighbor[b]][dim - 1] - x[i][dim - 1]);
+            jumps.push_back(mode_III ? critical * r :
+                                       std::sqrt(n * n + (2. + critical) * critical * r * r) - n);
+          }
     std::vector<double> all;
-    for (const auto &part : Utilities::MPI::all_gather(communicator, lengths))
+    for (const auto &part : Utilities::MPI::all_gather(communicator, jumps))
       all.insert(all.end(), part.begin(), part.end());
     std::sort(all.begin(), all.end());
     std::vector<double> steps;
-    for (const double length : all)
-      if (steps.empty() || length > steps.back() * (1. + 1e-4))
-        steps.push_back(length);
+    for (const double jump : all)
+      if (steps.empty() || jump > steps.back() * (1. + 1e-4))
+        steps.push_back(jump);
       else
-        steps.back() = length;
+        steps.back() = jump;
 
     ParticleVector u, force;
-    particles.reinit_vector(u, 1);
-    particles.reinit_vector(force, 1);
+    particles.reinit_vector(u, nc);
+    particles.reinit_vector(force, nc);
     const auto window_energy = [&]() {
       std::vector<double> w;
       model.compute_forces(particles, u, force, &w, std::numeric_limits<double>::infinity());
@@ -170,13 +183,13 @@ namespace perideal
       return Utilities::MPI::sum(local, communicator);
     };
     double dissipated = 0.;
-    for (const double length : steps)
+    for (const double step : steps)
       {
-        const double jump = critical_slope * length * (1. + 1e-9);
+        const double jump = step * (1. + 1e-9);
         for (unsigned int i = 0; i < particles.n_local(); ++i)
-          u.local_element(i) = x[i][dim - 1] > cut ? jump : 0.;
+          u.local_element(i * nc + jumping) = x[i][dim - 1] > cut ? jump : 0.;
         const double before = window_energy();
-        model.compute_forces(particles, u, force, nullptr, critical_slope);
+        model.compute_forces(particles, u, force, nullptr, critical);
         dissipated += before - window_energy();
       }
     return dissipated / (std::pow(window, dim - 1) * (dim == 2 ? settings.thickness : 1.));
@@ -187,17 +200,17 @@ namespace perideal
   template double
   lattice_fracture_energy<3>(const ParticleSystem<3> &, const std::vector<double> &);
   template double
-  antiplane_cleave_energy<2>(const ParticleSystem<2>::Settings &,
-                             MaterialModel<2> &,
-                             const ModelContext &,
-                             double,
-                             MPI_Comm);
+  cleave_fracture_energy<2>(const ParticleSystem<2>::Settings &,
+                            MaterialModel<2> &,
+                            const ModelContext &,
+                            double,
+                            MPI_Comm);
   template double
-  antiplane_cleave_energy<3>(const ParticleSystem<3>::Settings &,
-                             MaterialModel<3> &,
-                             const ModelContext &,
-                             double,
-                             MPI_Comm);
+  cleave_fracture_energy<3>(const ParticleSystem<3>::Settings &,
+                            MaterialModel<3> &,
+                            const ModelContext &,
+                            double,
+                            MPI_Comm);
   template double
   lattice_fracture_factor<2>(const ParticleSystem<2> &,
                              const std::vector<double> &,

@@ -129,10 +129,9 @@ main(int argc, char **argv)
         conduction + "subsection Boundary conditions\n subsection pull\n set Type = "
                      "traction\n set Layer thickness = 1e-3\n end\nend\n");
   check("lattice fracture calibration for a model without it",
-        "subsection Material\n set Model = linear peridynamic solid\n set Damage model = critical "
-        "stretch\n subsection critical stretch\n set Fracture energy = 100\n set Fracture energy "
-        "calibration = lattice\n end\n subsection linear peridynamic solid\n set Young's modulus = "
-        "200e9\n end\nend\n");
+        conduction + "subsection Material\n set Damage model = critical stretch\n subsection "
+                     "critical stretch\n set Fracture energy = 100\n set Fracture energy "
+                     "calibration = lattice\n end\nend\n");
   check("lattice fracture calibration with a given critical stretch",
         "subsection Material\n set Damage model = critical stretch\n subsection critical "
         "stretch\n set Critical stretch = 0.01\n set Fracture energy calibration = lattice\n "

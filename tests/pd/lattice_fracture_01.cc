@@ -1,7 +1,8 @@
 // The lattice calibration of the fracture energy (<Material/critical stretch/Fracture energy
 // calibration> = lattice, issue #40): the bonds that a straight cut breaks, each at the critical
 // value of the model's calibration, dissipate G_c per unit crack area on the actual lattice
-// (book partial volumes, the energy surface correction), measured through the force kernel:
+// (book partial volumes, the energy surface correction), measured through the force kernel.
+// Models whose energy is a sum of bond energies (PMB, antiplane bond based, Timoshenko):
 // - a field u that holds every bond at its critical value: the uniform expansion u = s0 x
 //   (PMB, the Timoshenko bond's stretch mode); the uniform rotation theta = gamma0 with u = 0
 //   (the Timoshenko bond's shear mode: |gamma| = gamma0 in 2D, gamma0 |e_a x n| in 3D, so the
@@ -12,11 +13,15 @@
 //   difference over the window's area is G;
 // G / G_c within 1e-2 for m = delta/dx = 2, 3, 4 in 2D and 3D, on the regular lattice (where the
 // cut between two lattice planes is the mean over the cuts, so G = G_c to round-off) and a
-// perturbed one (epsilon = 0.3, the mean of four cuts a quarter dx apart); beside it the
-// continuum calibration's G / G_c, the error the lattice calibration removes.
+// perturbed one (epsilon = 0.3, the mean of four cuts a quarter dx apart).
+// State-based models (antiplane state based, LPS), whose energy is not a sum of bond energies:
+// a rigid cleave through the kernel with breaking (mode III, mode I), on a box other than the
+// calibration's; m = 2, 3, 4 in 2D, 2 and 3 in 3D.
+// Beside each, the continuum calibration's G / G_c, the error the lattice calibration removes.
 #include <perideal/pd/antiplane_bond_based.h>
 #include <perideal/pd/antiplane_state_based.h>
 #include <perideal/pd/bond_based.h>
+#include <perideal/pd/linear_peridynamic_solid.h>
 #include <perideal/pd/timoshenko_bond_based.h>
 
 #include "../tests.h"
@@ -196,15 +201,18 @@ check(const std::string &name,
     report(3.015, 0.3);
 }
 
-// The state-based antiplane model, whose energy is not a sum of bond energies: a mode III cleave
-// through the kernel with breaking at its critical slope r0. A box 24 dx high (the cut in its
+// The state-based models, whose energy is not a sum of bond energies: a cleave through the
+// kernel with breaking at the critical value c = critical_stretch(G_c), mode III for the
+// antiplane model (the upper half's w jumps; a bond across the cut reaches the critical slope at
+// Delta = c |xi|), mode I for LPS (the upper half's u_y, u_z in 3D, jumps; the stretch reaches c
+// at Delta = sqrt(xi_n^2 + (2 c + c^2) |xi|^2) - xi_n). A box 24 dx high (the cut in its
 // middle) and 40 dx wide in 2D, the window the middle 16 dx; in 3D 20 dx wide, the window
-// 4 dx x 4 dx. The upper half jumps by r0 |xi| (1 + 1e-9) for each length |xi| of the lattice's
-// bonds in turn, so every bond across the cut breaks just above its critical slope; the drops of
-// the window's energy at each jump sum to G.
-template <int dim>
+// 4 dx x 4 dx. Delta takes these values of the lattice's bonds in turn (times 1 + 1e-9), so every
+// bond across the cut breaks just above its critical value; the drops of the window's energy at
+// each jump sum to G.
+template <int dim, typename Model>
 double
-state_based_cleave(const std::string &alpha, const double m, const bool on_lattice)
+cleave(const Entries &entries, const double m, const bool on_lattice)
 {
   perideal::ParticleSystem<dim>                    ps(MPI_COMM_WORLD);
   typename perideal::ParticleSystem<dim>::Settings s;
@@ -216,12 +224,13 @@ state_based_cleave(const std::string &alpha, const double m, const bool on_latti
   for (unsigned int d = 0; d < dim; ++d)
     upper[d] = d + 1 < dim ? width : 24. * dx;
   pd_tests::generate_box<dim>(ps, s, Point<dim>(), upper);
-  perideal::AntiplaneStateBased<dim> model;
-  set_up(model, {{"Shear modulus", "1e9"}, {"Stabilization", alpha}}, ps, m, on_lattice);
-  const double             r0 = model.critical_stretch(G0);
+  Model model;
+  set_up(model, entries, ps, m, on_lattice);
+  const double             c  = model.critical_stretch(G0);
+  const unsigned int       nc = model.field_layout().n_components();
   perideal::ParticleVector u, f;
-  ps.reinit_vector(u, 1);
-  ps.reinit_vector(f, 1);
+  ps.reinit_vector(u, nc);
+  ps.reinit_vector(f, nc);
   const auto &x             = ps.positions();
   const auto  window_energy = [&]() {
     std::vector<double> w;
@@ -240,33 +249,38 @@ state_based_cleave(const std::string &alpha, const double m, const bool on_latti
   std::vector<Tensor<1, dim>> xi;
   std::vector<double>         weight;
   ps.lattice_family(xi, weight);
-  std::vector<double> lengths;
+  std::vector<double> jumps;
   for (const auto &v : xi)
-    lengths.push_back(v.norm());
-  std::sort(lengths.begin(), lengths.end());
-  double G = 0., last = 0.;
-  for (const double length : lengths)
-    if (length > last * (1. + 1e-9))
+    if (v[dim - 1] > 0.)
       {
-        last = length;
+        const double r = v.norm(), n = v[dim - 1];
+        jumps.push_back(nc == 1 ? c * r : std::sqrt(n * n + (2. + c) * c * r * r) - n);
+      }
+  std::sort(jumps.begin(), jumps.end());
+  double G = 0., last = 0.;
+  for (const double jump : jumps)
+    if (jump > last * (1. + 1e-9))
+      {
+        last = jump;
         for (unsigned int i = 0; i < ps.n_local(); ++i)
-          u.local_element(i) = x[i][dim - 1] > 12. * dx ? r0 * length * (1. + 1e-9) : 0.;
+          u.local_element(i * nc + (nc == 1 ? 0 : dim - 1)) =
+            x[i][dim - 1] > 12. * dx ? jump * (1. + 1e-9) : 0.;
         const double before = window_energy();
-        model.compute_forces(ps, u, f, nullptr, r0);
+        model.compute_forces(ps, u, f, nullptr, c);
         G += before - window_energy();
       }
   return G / (std::pow(window, dim - 1) * (dim == 2 ? thickness : 1.)) / G0;
 }
 
-template <int dim>
+template <int dim, typename Model>
 void
-check_state_based(const std::string &alpha, const std::vector<double> &ms)
+check_cleave(const std::string &name, const Entries &entries, const std::vector<double> &ms)
 {
   for (const double m : ms)
     {
-      const double lattice   = state_based_cleave<dim>(alpha, m, true);
-      const double continuum = state_based_cleave<dim>(alpha, m, false);
-      deallog << dim << "D antiplane state based, alpha = " << alpha << ", m = " << m
+      const double lattice   = cleave<dim, Model>(entries, m, true);
+      const double continuum = cleave<dim, Model>(entries, m, false);
+      deallog << dim << "D " << name << ", m = " << m
               << ", cleave: G/G_c = " << std::setprecision(5) << lattice << " "
               << pd_tests::ok(std::abs(lattice - 1.) < 1e-2) << " (continuum calibration "
               << continuum << ")" << std::setprecision(6) << std::endl;
@@ -289,7 +303,18 @@ main(int argc, char **argv)
   check<2, perideal::TimoshenkoBondBased<2>>("Timoshenko, shear", pd_tests::timoshenko_entries, 1);
   check<3, perideal::TimoshenkoBondBased<3>>("Timoshenko, stretch", pd_tests::timoshenko_entries);
   check<3, perideal::TimoshenkoBondBased<3>>("Timoshenko, shear", pd_tests::timoshenko_entries, 1);
-  check_state_based<2>("0.1", {2.015, 3.015, 4.015});
-  check_state_based<2>("0", {3.015});
-  check_state_based<3>("0.1", {2.015, 3.015});
+  const Entries sb  = {{"Shear modulus", "1e9"}, {"Stabilization", "0.1"}};
+  const Entries lps = {{"Young's modulus", "1e9"}, {"Poisson's ratio", "0.3"}};
+  check_cleave<2, perideal::AntiplaneStateBased<2>>("antiplane state based, alpha = 0.1",
+                                                    sb,
+                                                    {2.015, 3.015, 4.015});
+  check_cleave<2, perideal::AntiplaneStateBased<2>>("antiplane state based, alpha = 0",
+                                                    {{"Shear modulus", "1e9"},
+                                                     {"Stabilization", "0"}},
+                                                    {3.015});
+  check_cleave<3, perideal::AntiplaneStateBased<3>>("antiplane state based, alpha = 0.1",
+                                                    sb,
+                                                    {2.015, 3.015});
+  check_cleave<2, perideal::LinearPeridynamicSolid<2>>("LPS, nu = 0.3", lps, {2.015, 3.015, 4.015});
+  check_cleave<3, perideal::LinearPeridynamicSolid<3>>("LPS, nu = 0.3", lps, {2.015, 3.015});
 }

@@ -47,26 +47,28 @@ namespace perideal
                           const std::function<double(double)> &energy);
 
   /**
-   * @brief The fracture energy [J/m^2] that a scalar (antiplane) @p model dissipates, on the
-   * lattice of @p settings, when a mode III cleave breaks the bonds across a plane at the
-   * critical slope @p critical_slope: for a model whose energy is not a sum of bond energies
-   * (antiplane state based), the energy a broken bond releases depends on the field.
+   * @brief The fracture energy [J/m^2] that @p model dissipates, on the lattice of @p settings,
+   * when a cleave breaks the bonds across a plane at the critical value @p critical: for a model
+   * whose energy is not a sum of bond energies (antiplane state based, LPS), so that the energy a
+   * broken bond releases depends on the field.
    *
    * On a box of the lattice (n + 2 ceil(2 delta/dx)) dx wide, n = 12 in 2D and 4 in 3D, with
    * @p model initialized on it (@p context), the half beyond the middle plane normal to the
-   * last axis jumps rigidly by Delta, raised through the jumps r_c |xi| at which the bonds
-   * across the plane reach the critical slope (the bond lengths binned to 1e-4 relative): the
-   * drop of the model's energy of the particles of the middle n dx window (families complete)
-   * at each jump, E(bonds before) - E(bonds after), summed over the jumps and divided by the
-   * window's area. Collective on @p communicator; the model's own critical slope is not used.
+   * last axis jumps rigidly by Delta: the scalar of a one-component layout (mode III: a bond
+   * across the plane reaches the critical slope at Delta = r_c |xi|), else the translation
+   * along that axis (mode I: the stretch reaches s_c at Delta = sqrt(xi_n^2 + (2 s_c + s_c^2)
+   * |xi|^2) - |xi_n|). Delta is raised through these jumps (binned to 1e-4 relative), each
+   * breaking its bonds just above their critical value; the drops of the model's energy of the
+   * particles of the middle n dx window (families complete), E(bonds before) - E(bonds after),
+   * are summed and divided by the window's area. Collective on @p communicator.
    */
   template <int dim>
   double
-  antiplane_cleave_energy(const typename ParticleSystem<dim>::Settings &settings,
-                          MaterialModel<dim>                           &model,
-                          const ModelContext                           &context,
-                          const double                                  critical_slope,
-                          const MPI_Comm                                communicator);
+  cleave_fracture_energy(const typename ParticleSystem<dim>::Settings &settings,
+                         MaterialModel<dim>                           &model,
+                         const ModelContext                           &context,
+                         const double                                  critical,
+                         const MPI_Comm                                communicator);
 } // namespace perideal
 
 #endif
