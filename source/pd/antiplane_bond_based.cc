@@ -3,6 +3,7 @@
 // ---------------------------------------------------------------------
 #include <perideal/pd/antiplane_bond_based.h>
 #include <perideal/pd/bond_loop.h>
+#include <perideal/pd/lattice_fracture.h>
 #include <perideal/pd/surface_correction.h>
 
 #include <limits>
@@ -102,6 +103,16 @@ namespace perideal
     blocks.reinit_field(kernel->e_field, 1);
     apply_surface_correction<dim>(*this, particles, context);
     set_bond_coefficients(particles, true);
+    this->fracture_factor = 1.;
+    if (context.lattice_fracture)
+      {
+        // A bond at the critical slope r0 holds k r0^2 |xi| / 2.
+        const double r0 = this->critical_stretch(1.);
+        this->fracture_factor =
+          lattice_fracture_factor<dim>(particles, bond_coefficient, [r0](double r) {
+            return 0.5 * r0 * r0 * r;
+          });
+      }
     if (twist.active())
       {
         blocks.reinit_field(kernel->twist_field, 2);

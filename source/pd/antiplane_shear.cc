@@ -48,7 +48,17 @@ namespace perideal
   double
   AntiplaneModel<dim>::critical_stretch(const double fracture_energy) const
   {
-    return AntiplaneShear::critical_slope(dim, fracture_energy, mu, context.horizon);
+    return fracture_factor *
+           AntiplaneShear::critical_slope(dim, fracture_energy, mu, context.horizon);
+  }
+
+  template <int dim>
+  ModelCapabilities
+  AntiplaneModel<dim>::capabilities() const
+  {
+    ModelCapabilities capabilities;
+    capabilities.lattice_fracture = true;
+    return capabilities;
   }
 
   template <int dim>
@@ -154,6 +164,9 @@ namespace perideal
       out << "; by region: " << region_moduli.summary();
     if (twist.active())
       out << "; torsion: twist " << twist.twist() << " rad/m about (" << twist.axis() << ")";
+    if (context.lattice_fracture)
+      out << "; lattice calibration of the fracture energy: critical slope " << fracture_factor
+          << " times the continuum's";
     return out.str();
   }
 

@@ -7,6 +7,7 @@
 #include <perideal/base/parameter_utilities.h>
 #include <perideal/pd/antiplane_state_based.h>
 #include <perideal/pd/bond_loop.h>
+#include <perideal/pd/lattice_fracture.h>
 #include <perideal/pd/surface_correction.h>
 
 #include <cmath>
@@ -337,6 +338,25 @@ namespace perideal
       {
         k.blocks.reinit_field(k.twist_field, 2);
         k.blocks.gather(twist_values.data(), 2, k.twist_field);
+      }
+    this->fracture_factor = 1.;
+    if (context.lattice_fracture)
+      {
+        // The energy is not a sum of bond energies: a cleave of a box of the same lattice
+        // measures what the continuum's critical slope of 1 J/m^2 dissipates (a model of the
+        // same mu and alpha, without region moduli and twist: the ratio does not depend on mu).
+        AntiplaneStateBased<dim> probe;
+        probe.mu                       = mu;
+        probe.alpha                    = alpha;
+        ModelContext probe_context     = context;
+        probe_context.lattice_fracture = false;
+        const double r0                = this->critical_stretch(1.);
+        this->fracture_factor =
+          1. / std::sqrt(cleave_fracture_energy<dim>(particles.settings(),
+                                                     probe,
+                                                     probe_context,
+                                                     r0,
+                                                     particles.get_communicator()));
       }
   }
 

@@ -7,6 +7,7 @@
 #include <perideal/base/parameter_utilities.h>
 #include <perideal/pd/bond_based.h>
 #include <perideal/pd/bond_loop.h>
+#include <perideal/pd/lattice_fracture.h>
 #include <perideal/pd/surface_correction.h>
 
 #include <algorithm>
@@ -163,6 +164,15 @@ namespace perideal
     blocks.reinit_field(kernel->w_field, 1);
     fit_report = apply_surface_correction<dim>(*this, particles, context);
     set_bond_coefficients(particles, true);
+    fracture_factor = 1.;
+    if (context.lattice_fracture)
+      {
+        // A bond at the critical stretch s0 holds k s0^2 |xi| / 2.
+        const double s0 = critical_stretch(1.);
+        fracture_factor = lattice_fracture_factor<dim>(particles, bond_coefficient, [s0](double r) {
+          return 0.5 * s0 * s0 * r;
+        });
+      }
   }
 
   template <int dim>
@@ -254,11 +264,11 @@ namespace perideal
     switch (context.planar)
       {
         case PlanarAssumption::three_dimensional:
-          return std::sqrt(5. * G / (6. * E * delta));
+          return fracture_factor * std::sqrt(5. * G / (6. * E * delta));
         case PlanarAssumption::plane_stress:
-          return std::sqrt(4. * pi * G / (9. * E * delta));
+          return fracture_factor * std::sqrt(4. * pi * G / (9. * E * delta));
         case PlanarAssumption::plane_strain:
-          return std::sqrt(5. * pi * G / (12. * E * delta));
+          return fracture_factor * std::sqrt(5. * pi * G / (12. * E * delta));
       }
     return 0.;
   }
@@ -270,6 +280,7 @@ namespace perideal
     ModelCapabilities capabilities;
     capabilities.stiffness_fit       = true;
     capabilities.sequentially_linear = true;
+    capabilities.lattice_fracture    = true;
     return capabilities;
   }
 
@@ -282,6 +293,9 @@ namespace perideal
         << implied_poisson_ratio() << ", micromodulus c = " << c << " N/m^6";
     if (context.surface_correction && context.stiffness_fit)
       out << "; " << fit_report.summary();
+    if (context.lattice_fracture)
+      out << "; lattice calibration of the fracture energy: critical stretch " << fracture_factor
+          << " times the continuum's";
     return out.str();
   }
 

@@ -13,6 +13,13 @@ namespace perideal
   using namespace dealii;
 
   template <int dim>
+  bool
+  DamageModel<dim>::calibrated_on_lattice() const
+  {
+    return false;
+  }
+
+  template <int dim>
   double
   NoDamage<dim>::critical_stretch(const MaterialModel<dim> &) const
   {
@@ -33,6 +40,21 @@ namespace perideal
                       Patterns::Double(0.),
                       "Critical stretch s0 [-]; when greater than zero it is used as given and "
                       "'Fracture energy' is ignored.");
+    prm.declare_entry(
+      "Fracture energy calibration",
+      "continuum",
+      Patterns::Selection("continuum|lattice"),
+      "How the critical stretch (the critical slope of antiplane shear, each failure mode's "
+      "limit of the Timoshenko bond) follows from the Fracture energy: continuum (the model's "
+      "closed-form formula, the integral over the horizon's ball) or lattice (the bonds of the "
+      "actual particles that a straight crack cuts, with their partial volumes and surface "
+      "factors, on a regular or perturbed lattice, dissipate exactly the Fracture energy per "
+      "unit crack area; measured on the interior particles, the crack normal along the "
+      "coordinate axes; for the state-based models, whose energy is not a sum of bond "
+      "energies, by a cleave of a box of the same lattice: mode III for antiplane state "
+      "based, mode I for linear peridynamic solid). For bond based, antiplane bond based, "
+      "antiplane state based, linear peridynamic solid and timoshenko bond based; not with a "
+      "Critical stretch given.");
   }
 
   template <int dim>
@@ -41,10 +63,18 @@ namespace perideal
   {
     fracture_energy = prm.get_double("Fracture energy");
     given_stretch   = prm.get_double("Critical stretch");
+    on_lattice      = prm.get("Fracture energy calibration") == "lattice";
     AssertThrow(fracture_energy > 0. || given_stretch > 0.,
                 ExcMessage("The damage model 'critical stretch' needs <Material/critical "
                            "stretch/Fracture energy> > 0 [J/m^2] or <Material/critical "
                            "stretch/Critical stretch> > 0."));
+    AssertThrow(!(on_lattice && given_stretch > 0.),
+                ExcMessage("<Material/critical stretch/Fracture energy calibration> = lattice "
+                           "calibrates the critical stretch from the Fracture energy, but "
+                           "<Material/critical stretch/Critical stretch> = " +
+                           prm.get("Critical stretch") +
+                           " gives it; accepted: Critical stretch = 0 with the lattice "
+                           "calibration, or the continuum calibration."));
   }
 
   template <int dim>
@@ -52,6 +82,13 @@ namespace perideal
   CriticalStretch<dim>::critical_stretch(const MaterialModel<dim> &material) const
   {
     return given_stretch > 0. ? given_stretch : material.critical_stretch(fracture_energy);
+  }
+
+  template <int dim>
+  bool
+  CriticalStretch<dim>::calibrated_on_lattice() const
+  {
+    return on_lattice;
   }
 
   template <int dim>
@@ -116,6 +153,8 @@ namespace perideal
     return false;
   }
 
+  template class DamageModel<2>;
+  template class DamageModel<3>;
   template class NoDamage<2>;
   template class NoDamage<3>;
   template class CriticalStretch<2>;

@@ -5,6 +5,7 @@
 
 #include <perideal/base/parameter_utilities.h>
 #include <perideal/pd/bond_loop.h>
+#include <perideal/pd/lattice_fracture.h>
 #include <perideal/pd/linear_peridynamic_solid.h>
 
 #include <cmath>
@@ -268,6 +269,26 @@ namespace perideal
     for (unsigned int i = 0; i < particles.n_local(); ++i)
       weighted[i] = beta[i] / weighted_volume.local_element(i);
     k.blocks.gather(weighted.data(), 1, k.beta_over_m_field);
+    fracture_factor = 1.;
+    if (context.lattice_fracture)
+      {
+        // Not a sum of bond energies: a mode I cleave of a box of the same lattice measures what
+        // the continuum's critical stretch of 1 J/m^2 dissipates.
+        LinearPeridynamicSolid<dim> probe;
+        probe.youngs_modulus = youngs_modulus;
+        probe.poisson_ratio  = poisson_ratio;
+        probe.influence_name = influence_name;
+        probe.influence      = PluginRegistry<InfluenceFunction>::create(
+          influence_name,
+          "Material/linear peridynamic solid/Influence function");
+        ModelContext probe_context     = context;
+        probe_context.lattice_fracture = false;
+        fracture_factor = 1. / std::sqrt(cleave_fracture_energy<dim>(particles.settings(),
+                                                                     probe,
+                                                                     probe_context,
+                                                                     critical_stretch(1.),
+                                                                     particles.get_communicator()));
+      }
   }
 
   template <int dim>
@@ -343,8 +364,10 @@ namespace perideal
     const double G = fracture_energy, mu = shear_modulus, k = bulk_modulus, delta = context.horizon,
                  pi = numbers::PI;
     if (dim == 3)
-      return std::sqrt(G / ((3. * mu + std::pow(0.75, 4) * (k - 5. * mu / 3.)) * delta));
-    return std::sqrt(G / ((6. * mu / pi + 16. / (9. * pi * pi) * (k - 2. * mu)) * delta));
+      return fracture_factor *
+             std::sqrt(G / ((3. * mu + std::pow(0.75, 4) * (k - 5. * mu / 3.)) * delta));
+    return fracture_factor *
+           std::sqrt(G / ((6. * mu / pi + 16. / (9. * pi * pi) * (k - 2. * mu)) * delta));
   }
 
   template <int dim>
@@ -362,6 +385,9 @@ namespace perideal
     out << "linear peridynamic solid: E = " << youngs_modulus << " Pa, nu = " << poisson_ratio
         << ", bulk modulus k = " << bulk_modulus << " Pa, shear modulus mu = " << shear_modulus
         << " Pa, influence function '" << influence_name << "'";
+    if (context.lattice_fracture)
+      out << "; lattice calibration of the fracture energy: critical stretch " << fracture_factor
+          << " times the continuum's";
     return out.str();
   }
 
@@ -378,6 +404,7 @@ namespace perideal
   {
     ModelCapabilities capabilities;
     capabilities.sequentially_linear = true;
+    capabilities.lattice_fracture    = true;
     return capabilities;
   }
 

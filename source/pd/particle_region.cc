@@ -295,6 +295,12 @@ namespace perideal
           prm.enter_subsection(damage_name);
           damage->parse_parameters(prm);
           prm.leave_subsection();
+          AssertThrow(!damage->calibrated_on_lattice() || model->capabilities().lattice_fracture,
+                      ExcMessage("<Material/" + damage_name +
+                                 "/Fracture energy calibration> = lattice is available for "
+                                 "<Material/Model> = " +
+                                 material_models_with<dim>(&ModelCapabilities::lattice_fracture) +
+                                 ", not '" + model_name + "'; accepted for it: continuum."));
         }
       prm.leave_subsection();
       conditions.parse_parameters(prm, regions, model->field_layout());
@@ -340,6 +346,7 @@ namespace perideal
     context.planar             = planar;
     context.surface_correction = surface_correction;
     context.stiffness_fit      = stiffness_fit;
+    context.lattice_fracture   = damage->calibrated_on_lattice();
     model->initialize(ps, context);
     s_critical = damage->critical_stretch(*model);
 

@@ -314,7 +314,6 @@ namespace perideal
   {
     Kernel    &k      = *kernel;
     const bool breaks = std::isfinite(critical_stretch);
-    const auto ratio  = Timoshenko::limit_ratios(bond_stiffness, dim, context.horizon);
     const bool soft   = (failure == FailureLaw::softening);
     // The histories are raised only by a call that may break bonds (explicit steps, the
     // converged state of a load step); the others see the bonds as the last such call left
@@ -328,9 +327,9 @@ namespace perideal
     base.C_B     = bond_stiffness.bending;
     if (breaks)
       {
-        base.inverse_limit[0] = 1. / critical_stretch;
-        base.inverse_limit[1] = 1. / (critical_stretch * ratio[0]);
-        base.inverse_limit[2] = 1. / (critical_stretch * ratio[1]);
+        const auto limit = failure_limits(critical_stretch);
+        for (unsigned int m = 0; m < 3; ++m)
+          base.inverse_limit[m] = 1. / limit[m];
       }
     base.softening_parameter = softening;
     base.commit              = breaks;
@@ -392,7 +391,18 @@ namespace perideal
                                                   context.horizon,
                                                   context.thickness,
                                                   fracture_energy);
-    return failure == FailureLaw::softening ? s0 * std::sqrt(softening / (softening + 2.)) : s0;
+    return fracture_factor[0] *
+           (failure == FailureLaw::softening ? s0 * std::sqrt(softening / (softening + 2.)) : s0);
+  }
+
+  template <int dim>
+  std::array<double, 3>
+  TimoshenkoBondBased<dim>::failure_limits(const double critical_stretch) const
+  {
+    const auto ratio = Timoshenko::limit_ratios(bond_stiffness, dim, context.horizon);
+    return {{critical_stretch,
+             critical_stretch * ratio[0] * fracture_factor[1] / fracture_factor[0],
+             critical_stretch * ratio[1] * fracture_factor[2] / fracture_factor[0]}};
   }
 
   template <int dim>
@@ -407,7 +417,8 @@ namespace perideal
   TimoshenkoBondBased<dim>::capabilities() const
   {
     ModelCapabilities capabilities;
-    capabilities.stiffness_fit = true;
+    capabilities.stiffness_fit    = true;
+    capabilities.lattice_fracture = true;
     return capabilities;
   }
 

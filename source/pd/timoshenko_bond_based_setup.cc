@@ -3,6 +3,7 @@
 // stiffnesses, the surface correction and the summary.
 // ---------------------------------------------------------------------
 #include <perideal/base/parameter_utilities.h>
+#include <perideal/pd/lattice_fracture.h>
 #include <perideal/pd/surface_correction.h>
 #include <perideal/pd/timoshenko_bond_based.h>
 #include <perideal/pd/timoshenko_kernel.h>
@@ -169,6 +170,25 @@ namespace perideal
       }
     fit_report = apply_surface_correction<dim>(*this, particles, context);
     set_bond_coefficients(particles, true);
+    fracture_factor = {{1., 1., 1.}};
+    if (context.lattice_fracture)
+      {
+        // A bond at the continuum's limits of 1 J/m^2 holds k C_N |xi| s_0^2 / 2,
+        // k 6 C_theta gamma_0^2 / |xi| and k C_B kappa_0^2 / (2 |xi|) in the three modes.
+        const double s0 =
+          Timoshenko::brittle_stretch(bond_stiffness, dim, context.horizon, context.thickness, 1.);
+        const auto   ratio = Timoshenko::limit_ratios(bond_stiffness, dim, context.horizon);
+        const double g0 = s0 * ratio[0], kappa0 = s0 * ratio[1];
+        const Timoshenko::Stiffness                        C = bond_stiffness;
+        const std::array<std::function<double(double)>, 3> energy{
+          {[&](const double r) { return 0.5 * C.normal * r * s0 * s0; },
+           [&](const double r) { return 6. * C.shear * g0 * g0 / r; },
+           [&](const double r) { return 0.5 * C.bending * kappa0 * kappa0 / r; }}};
+        for (unsigned int m = 0; m < 3; ++m)
+          if (m == 0 || std::isfinite(ratio[m - 1]))
+            fracture_factor[m] =
+              lattice_fracture_factor<dim>(particles, bond_coefficient, energy[m]);
+      }
   }
 
   template <int dim>
@@ -213,6 +233,10 @@ namespace perideal
         << (failure == FailureLaw::brittle ? std::string() : std::to_string(softening));
     if (context.surface_correction && context.stiffness_fit)
       out << "; " << fit_report.summary();
+    if (context.lattice_fracture)
+      out << "; lattice calibration of the fracture energy: limits s_0, gamma_0, kappa_0 "
+          << fracture_factor[0] << ", " << fracture_factor[1] << ", " << fracture_factor[2]
+          << " times the continuum's";
     return out.str();
   }
 

@@ -128,4 +128,12 @@ main(int argc, char **argv)
   check("mechanical condition on a temperature",
         conduction + "subsection Boundary conditions\n subsection pull\n set Type = "
                      "traction\n set Layer thickness = 1e-3\n end\nend\n");
+  check("lattice fracture calibration for a model without it",
+        conduction + "subsection Material\n set Damage model = critical stretch\n subsection "
+                     "critical stretch\n set Fracture energy = 100\n set Fracture energy "
+                     "calibration = lattice\n end\nend\n");
+  check("lattice fracture calibration with a given critical stretch",
+        "subsection Material\n set Damage model = critical stretch\n subsection critical "
+        "stretch\n set Critical stretch = 0.01\n set Fracture energy calibration = lattice\n "
+        "end\nend\n");
 }

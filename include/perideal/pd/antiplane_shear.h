@@ -105,6 +105,13 @@ namespace perideal
     derived_fields(const ParticleSystem<dim> &particles, const ParticleVector &u) const override;
 
     /**
+     * @brief The lattice calibration of the critical slope (ModelCapabilities::lattice_fracture;
+     * each model sets fracture_factor in its initialize()).
+     */
+    ModelCapabilities
+    capabilities() const override;
+
+    /**
      * @brief The shear modulus mu [Pa] (of the particles outside the regions of <Shear moduli
      * by region>).
      */
@@ -155,6 +162,9 @@ namespace perideal
     Torsion           twist;
     ModelContext      context;
     ///@}
+    /// The factor of the lattice calibration on the continuum's critical slope (1 without it,
+    /// ModelContext::lattice_fracture), set by initialize().
+    double fracture_factor = 1.;
   };
 } // namespace perideal
 

@@ -114,6 +114,9 @@ namespace perideal
     double       youngs_modulus = 0.;
     ModelContext context;
     double       c = 0.;
+    /// The factor of the lattice calibration on the continuum's critical stretch (1 without it,
+    /// ModelContext::lattice_fracture).
+    double fracture_factor = 1.;
     /// c G chi V_i V_j per bond (the pair force per unit stretch).
     std::vector<double> bond_coefficient;
     /// What the stiffness fit achieved (<Discretization/Surface correction method>).

@@ -34,6 +34,13 @@ namespace perideal
      */
     virtual double
     critical_stretch(const MaterialModel<dim> &material) const = 0;
+
+    /**
+     * @brief Whether the material model is to calibrate its critical values on the actual
+     * lattice (ModelContext::lattice_fracture): false by default.
+     */
+    virtual bool
+    calibrated_on_lattice() const;
   };
 
   /**
@@ -56,7 +63,8 @@ namespace perideal
 
   /**
    * @brief A bond breaks for good once its stretch exceeds s0 (Silling & Askari 2005), with s0
-   * given directly or from the fracture energy through the material model's formula.
+   * given directly or from the fracture energy through the material model's calibration: the
+   * continuum's formula, or the actual lattice's (<Fracture energy calibration> = lattice).
    */
   template <int dim>
   class CriticalStretch : public DamageModel<dim>
@@ -69,10 +77,13 @@ namespace perideal
     parse_parameters(dealii::ParameterHandler &prm) override;
     double
     critical_stretch(const MaterialModel<dim> &material) const override;
+    bool
+    calibrated_on_lattice() const override;
 
   private:
     double fracture_energy = 0.;
     double given_stretch   = 0.;
+    bool   on_lattice      = false;
   };
 
   /**

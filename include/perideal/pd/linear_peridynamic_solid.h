@@ -116,6 +116,9 @@ namespace perideal
     ModelContext                       context;
     double                             bulk_modulus  = 0.;
     double                             shear_modulus = 0.;
+    /// The factor of the lattice calibration on the continuum's critical stretch (1 without it,
+    /// ModelContext::lattice_fracture): by a mode I cleave (cleave_fracture_energy()).
+    double fracture_factor = 1.;
     /// omega chi V_i V_j per bond.
     std::vector<double> pair_weight;
     /// Weighted volume per local particle (owned and ghost).

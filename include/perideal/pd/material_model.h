@@ -40,6 +40,11 @@ namespace perideal
     /// With it, the stiffness fit (apply_stiffness_fit()) instead of the energy method, for a
     /// model whose capabilities() say stiffness_fit.
     bool stiffness_fit = false;
+    /// Whether the model calibrates its critical stretch (slope, mode limits) on the actual
+    /// lattice (lattice_fracture_factor()) instead of the continuum, for a model whose
+    /// capabilities() say lattice_fracture (<Material/critical stretch/Fracture energy
+    /// calibration>).
+    bool lattice_fracture = false;
   };
 
   /**
@@ -55,6 +60,9 @@ namespace perideal
     /// (times its breaking_factors()) and it linearizes itself: the sequentially linear control
     /// (<Solver/Control/Method> = sequentially linear) can break them event by event.
     bool sequentially_linear = false;
+    /// It calibrates its critical values on the actual lattice when ModelContext says
+    /// lattice_fracture (<Material/critical stretch/Fracture energy calibration> = lattice).
+    bool lattice_fracture = false;
   };
 
   /**

@@ -277,6 +277,15 @@ namespace perideal
     const Timoshenko::Stiffness &
     stiffness() const;
 
+    /**
+     * @brief The limits s_0, gamma_0, kappa_0 of the failure modes for the critical stretch
+     * @p critical_stretch = s_0 (critical_stretch()): of equal fracture energy
+     * (Timoshenko::limit_ratios()), with the lattice calibration's factor of each mode;
+     * infinite for a mode that does not fail.
+     */
+    std::array<double, 3>
+    failure_limits(const double critical_stretch) const;
+
   private:
     double youngs_modulus = 0., poisson_ratio = 0., bending_ratio = 0.;
     double inertia_factor = 1. / 12., softening = 10.;
@@ -292,6 +301,9 @@ namespace perideal
     std::array<double, 3> lattice_moduli{};
     /// G chi V_i V_j per bond.
     std::vector<double> bond_coefficient;
+    /// The factors of the lattice calibration on the continuum's limits s_0, gamma_0, kappa_0
+    /// (1 without it, ModelContext::lattice_fracture; 1 for a mode that does not fail).
+    std::array<double, 3> fracture_factor{{1., 1., 1.}};
     /// What the stiffness fit achieved (<Discretization/Surface correction method>).
     StiffnessFitReport fit_report;
     /// The kernel's data: defined in timoshenko_bond_based.cc only (kernel options).
