@@ -64,10 +64,11 @@ for n in [10, 20, 40]:
         cases.append(("PD", method, n, dx, rows))
 for n in [10, 20]:
     dx = L / n
-    rows = run("coupled.prm", {"DX": f"{dx:.17g}", "NX": str(2 * n), "NY": str(n),
-                               "SOLVER": "explicit", "STEP": "0",
-                               "PROBES": f"{dx / 2:.17g}, {L / 2 + dx / 2:.17g}"})
-    cases.append(("coupled", "explicit", n, dx, rows))
+    for method, step in [("explicit", "0"), ("implicit", "0.5")]:
+        rows = run("coupled.prm", {"DX": f"{dx:.17g}", "NX": str(2 * n), "NY": str(n),
+                                   "SOLVER": method, "STEP": step,
+                                   "PROBES": f"{dx / 2:.17g}, {L / 2 + dx / 2:.17g}"})
+        cases.append(("coupled", method, n, dx, rows))
 
 print("| model | solver | dx = h | T(mid) [K] | series | error / (T_i - T_inf) | T(face) [K] "
       "| series | error / (T_i - T_inf) | heat error / stored heat |")
