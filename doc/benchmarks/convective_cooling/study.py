@@ -5,18 +5,15 @@ with PD blended in the middle), explicit and implicit. Prints a Markdown table a
 (t = 40 s) and writes cooling.png.
 usage: /usr/bin/python3 doc/benchmarks/convective_cooling/study.py [path/to/perideal-solid]
 """
-import csv
 import math
 import os
-import re
-import subprocess
 import sys
-import tempfile
 
 here = os.path.dirname(os.path.abspath(__file__))
-root = os.path.normpath(os.path.join(here, "..", "..", ".."))
-solver = sys.argv[1] if len(sys.argv) > 1 else os.path.join(root, "build", "bin", "perideal-solid")
-env = dict(os.environ, OMPI_ALLOW_RUN_AS_ROOT="1", OMPI_ALLOW_RUN_AS_ROOT_CONFIRM="1")
+sys.path.insert(0, os.path.join(here, ".."))
+import prm_runs  # noqa: E402
+
+solver = prm_runs.solver(sys.argv)
 L, k, rho, c, h, T_i, T_inf = 0.02, 20., 8000., 500., 1000., 500., 300.
 alpha, Bi = k / (rho * c), h * L / k
 
@@ -39,16 +36,7 @@ def series(xi, Fo):
 
 
 def run(template, values):
-    text = open(os.path.join(here, template)).read()
-    for key, value in values.items():
-        text = re.sub(r"\b" + key + r"\b", value, text)
-    with tempfile.TemporaryDirectory() as work:
-        with open(os.path.join(work, "p.prm"), "w") as f:
-            f.write(text)
-        subprocess.run([solver, "p.prm"], cwd=work, env=env, capture_output=True, text=True,
-                       check=True)
-        with open(os.path.join(work, "results", "statistics.csv")) as f:
-            return list(csv.DictReader(f))
+    return prm_runs.run(solver, os.path.join(here, template), values)[1]
 
 
 cases = []

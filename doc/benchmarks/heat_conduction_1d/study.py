@@ -8,18 +8,16 @@ continuation sin(pi x) exp(-lambda t) of the PD series; reads the probe at the s
 prints a Markdown table at t = 0.1 and writes decay.png and convergence.png.
 usage: /usr/bin/python3 doc/benchmarks/heat_conduction_1d/study.py [path/to/perideal-solid]
 """
-import csv
 import math
 import os
 import re
-import subprocess
 import sys
-import tempfile
 
 here = os.path.dirname(os.path.abspath(__file__))
-root = os.path.normpath(os.path.join(here, "..", "..", ".."))
-solver = sys.argv[1] if len(sys.argv) > 1 else os.path.join(root, "build", "bin", "perideal-solid")
-env = dict(os.environ, OMPI_ALLOW_RUN_AS_ROOT="1", OMPI_ALLOW_RUN_AS_ROOT_CONFIRM="1")
+sys.path.insert(0, os.path.join(here, ".."))
+import prm_runs  # noqa: E402
+
+solver = prm_runs.solver(sys.argv)
 m, W, T_END = 3.015, 0.15, 0.1
 K = math.pi  # the mode sin(pi x / L), L = 1, k = rho = c = 1
 
@@ -51,17 +49,7 @@ def run(dx, corrected):
               "END": f"{1 + depth:.17g}", "RATE": f"{rate:.17g}",
               "CORRECTION": "true" if corrected else "false", "SOLVER": "explicit",
               "STEP": "0", "PROBE": f"{x_probe:.17g}, {y_probe:.17g}"}
-    text = open(os.path.join(here, "bar.prm")).read()
-    for key, value in values.items():
-        text = re.sub(r"\b" + key + r"\b", value, text)
-    text = text.replace("set End time  = 0.1", f"set End time  = {T_END:g}")
-    with tempfile.TemporaryDirectory() as work:
-        with open(os.path.join(work, "bar.prm"), "w") as f:
-            f.write(text)
-        log = subprocess.run([solver, "bar.prm"], cwd=work, env=env, capture_output=True,
-                             text=True, check=True).stdout
-        with open(os.path.join(work, "results", "statistics.csv")) as f:
-            rows = list(csv.DictReader(f))
+    log, rows = prm_runs.run(solver, os.path.join(here, "bar.prm"), values)
     x = float(re.search(r"particle at \(([0-9.e+-]+) ", log).group(1))
     t = [float(r["time"]) for r in rows]
     A = [float(r["probe1_T"]) / math.sin(K * x) for r in rows]
@@ -99,12 +87,8 @@ ax.plot(tt, [math.exp(-K * K * s) for s in tt], "k-", lw=2, label="classical ser
 for (dx, corrected), (t, A) in series.items():
     if corrected:
         ax.plot(t, A, "--", label=f"PD, dx = L/{round(1 / dx)}")
-ax.set_xlabel("t [L^2 rho c / k]")
-ax.set_ylabel("T(L/2, t) / sin(pi x_probe / L)")
-ax.set_title("Thin bar, insulated sides, surface correction on", fontsize=9)
-ax.legend(fontsize=8)
-fig.tight_layout()
-fig.savefig(os.path.join(here, "decay.png"), dpi=120)
+prm_runs.finish(fig, ax, os.path.join(here, "decay.png"), "t [L^2 rho c / k]",
+                "T(L/2, t) / sin(pi x_probe / L)", "Thin bar, insulated sides, surface correction on")
 
 fig, ax = plt.subplots(figsize=(5.5, 3.8))
 for corrected, marker in [(True, "o-"), (False, "s-")]:

@@ -9,30 +9,24 @@ usage: /usr/bin/python3 doc/benchmarks/heat_coupling_patch/study.py [path/to/per
 """
 import os
 import re
-import subprocess
 import sys
-import tempfile
 
 here = os.path.dirname(os.path.abspath(__file__))
-root = os.path.normpath(os.path.join(here, "..", "..", ".."))
-solver = sys.argv[1] if len(sys.argv) > 1 else os.path.join(root, "build", "bin", "perideal-solid")
-tests = os.path.join(root, "tests", "app-solid")
-env = dict(os.environ, OMPI_ALLOW_RUN_AS_ROOT="1", OMPI_ALLOW_RUN_AS_ROOT_CONFIRM="1")
+sys.path.insert(0, os.path.join(here, ".."))
+import prm_runs  # noqa: E402
+
+solver = prm_runs.solver(sys.argv)
+tests = os.path.join(prm_runs.ROOT, "tests", "app-solid")
 T_RANGE = 150.  # the exact field 300 + 1000 x + 500 y spans 300 ... 450 K
 
 
 def run(method, W=0.01, dx=1e-3):
-    text = open(os.path.join(tests, f"coupled_heat_patch_{method}_2d.prm")).read()
     a, b = 0.04 - W, 0.06 + W
-    text = re.sub(r"set Blending function = .*",
-                  f"set Blending function = min(1, max(0, min(min((x - {a:g}) / {W:g}, "
-                  f"({b:g} - x) / {W:g}), min((y - {a:g}) / {W:g}, ({b:g} - y) / {W:g}))))", text)
-    text = re.sub(r"set Lattice spacing = .*", f"set Lattice spacing = {dx:g}", text)
-    with tempfile.TemporaryDirectory() as work:
-        with open(os.path.join(work, "p.prm"), "w") as f:
-            f.write(text)
-        log = subprocess.run([solver, "p.prm"], cwd=work, env=env, capture_output=True,
-                             text=True, check=True).stdout
+    blending = (f"min(1, max(0, min(min((x - {a:g}) / {W:g}, ({b:g} - x) / {W:g}), "
+                f"min((y - {a:g}) / {W:g}, ({b:g} - y) / {W:g}))))")
+    log = prm_runs.run(solver, os.path.join(tests, f"coupled_heat_patch_{method}_2d.prm"),
+                       {}, [(r"Blending function = .*", f"Blending function = {blending}"),
+                            (r"Lattice spacing = .*", f"Lattice spacing = {dx:g}")])[0]
     error = re.search(r"FE nodes ([0-9.e+-]+), particles ([0-9.e+-]+)", log)
     flux = re.search(r"Force residual of the exact field: ([0-9.e+-]+) N", log)
     return 450. * max(float(error.group(1)), float(error.group(2))), float(flux.group(1))

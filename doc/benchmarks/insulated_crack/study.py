@@ -7,26 +7,18 @@ usage: /usr/bin/python3 doc/benchmarks/insulated_crack/study.py [path/to/peridea
 """
 import os
 import re
-import subprocess
 import sys
-import tempfile
 
 here = os.path.dirname(os.path.abspath(__file__))
-root = os.path.normpath(os.path.join(here, "..", "..", ".."))
-solver = sys.argv[1] if len(sys.argv) > 1 else os.path.join(root, "build", "bin", "perideal-solid")
-env = dict(os.environ, OMPI_ALLOW_RUN_AS_ROOT="1", OMPI_ALLOW_RUN_AS_ROOT_CONFIRM="1")
-mesh = os.path.join(root, "meshes", "antiplane_cracked_bar_half_2d.msh")
+sys.path.insert(0, os.path.join(here, ".."))
+import prm_runs  # noqa: E402
+
+solver = prm_runs.solver(sys.argv)
+mesh = os.path.join(prm_runs.ROOT, "meshes", "antiplane_cracked_bar_half_2d.msh")
 
 
 def run(template, values):
-    text = open(os.path.join(here, template)).read()
-    for key, value in values.items():
-        text = re.sub(r"\b" + key + r"\b", value, text)
-    with tempfile.TemporaryDirectory() as work:
-        with open(os.path.join(work, "p.prm"), "w") as f:
-            f.write(text)
-        log = subprocess.run([solver, "p.prm"], cwd=work, env=env, capture_output=True,
-                             text=True, check=True).stdout
+    log = prm_runs.run(solver, os.path.join(here, template), values)[0]
     Q = float(re.search(r"Reaction top: ([0-9.e+-]+) W", log).group(1))
     probes = [float(v) for v in re.findall(r"temperature \[K\]: ([0-9.e+-]+)", log)]
     jump = probes[0] - probes[1] if len(probes) >= 2 else None
@@ -61,9 +53,6 @@ fig, ax = plt.subplots(figsize=(5.5, 3.8))
 for model, marker in [("FE, slit", "k^-"), ("all-PD", "o-"), ("coupled (PD band, FE h = dx)", "s-")]:
     sel = [r for r in rows if r[0] == model]
     ax.semilogx([r[1] for r in sel], [r[2] for r in sel], marker, label=model)
-ax.set_xlabel("dx (PD) or h (FE)")
-ax.set_ylabel("heat flow through the bar Q [W]")
-ax.set_title("Insulated central crack, a = 0.2, bar 1 x 1, dT = 100 K, k = 1", fontsize=9)
-ax.legend(fontsize=8)
-fig.tight_layout()
-fig.savefig(os.path.join(here, "convergence.png"), dpi=120)
+prm_runs.finish(fig, ax, os.path.join(here, "convergence.png"), "dx (PD) or h (FE)",
+                "heat flow through the bar Q [W]",
+                "Insulated central crack, a = 0.2, bar 1 x 1, dT = 100 K, k = 1")
