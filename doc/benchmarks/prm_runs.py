@@ -1,19 +1,22 @@
 """What the heat benchmarks' study scripts share: run perideal-solid on a parameter template.
 
 solver(argv): the perideal-solid of argv[1], else build/bin/perideal-solid of the repository.
-run(solver, template, values, edits): the template's text with each whole word KEY of values
-replaced by values[KEY] and each (pattern, replacement) of edits applied (re.sub), run in a
-temporary directory; returns the log (stdout) and the rows of results/statistics.csv (dicts;
-empty without the file).
+run(solver, path, fields, edits): the parameter file path with the entries marked # @KEY@ set to
+fields[KEY] (contrib/prm_fill.py) and each (pattern, replacement) of edits applied (re.sub), run
+in a temporary directory; returns the log (stdout) and the rows of results/statistics.csv
+(dicts; empty without the file).
 finish(fig, ax, path, xlabel, ylabel, title): label the axes, title and legend a plot, save it.
 """
 import csv
 import os
 import re
 import subprocess
+import sys
 import tempfile
 
 ROOT = os.path.normpath(os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", ".."))
+sys.path.insert(0, os.path.join(ROOT, "contrib"))
+from prm_fill import fill_text  # noqa: E402
 ENV = dict(os.environ, OMPI_ALLOW_RUN_AS_ROOT="1", OMPI_ALLOW_RUN_AS_ROOT_CONFIRM="1")
 
 
@@ -21,10 +24,8 @@ def solver(argv):
     return argv[1] if len(argv) > 1 else os.path.join(ROOT, "build", "bin", "perideal-solid")
 
 
-def run(executable, template, values, edits=()):
-    text = open(template).read()
-    for key, value in values.items():
-        text = re.sub(r"\b" + key + r"\b", value, text)
+def run(executable, path, fields, edits=()):
+    text = fill_text(open(path).read(), fields, path)
     for pattern, replacement in edits:
         text = re.sub(pattern, replacement, text)
     with tempfile.TemporaryDirectory() as work:

@@ -45,7 +45,9 @@ for n in [10, 20, 40]:
     for method, step in [("explicit", "0"), ("implicit", "0.5")]:
         if method == "implicit" and n != 20:
             continue
-        rows = run("plate.prm", {"DX": f"{dx:.17g}", "LAYER": f"{L - dx:.17g}", "SOLVER": method,
+        rows = run("plate.prm", {"DX": f"{dx:.17g}", "LAYER_DEPTH": f"{dx:.17g}",
+                                 "LEFT_UPPER": f"{dx - L:.17g}, {L:.17g}",
+                                 "RIGHT_LOWER": f"{L - dx:.17g}, 0", "SOLVER": method,
                                  "STEP": step,
                                  "PROBES": f"{dx / 2:.17g}, {L / 2 + dx / 2:.17g}; "
                                            f"{L - dx / 2:.17g}, {L / 2 + dx / 2:.17g}"})
@@ -53,7 +55,8 @@ for n in [10, 20, 40]:
 for n in [10, 20]:
     dx = L / n
     for method, step in [("explicit", "0"), ("implicit", "0.5")]:
-        rows = run("coupled.prm", {"DX": f"{dx:.17g}", "NX": str(2 * n), "NY": str(n),
+        rows = run("coupled.prm", {"DX": f"{dx:.17g}",
+                                   "GENERATOR_ARGUMENTS": f"{2 * n}, {n} : -0.02, 0 : 0.02, 0.02 : true",
                                    "SOLVER": method, "STEP": step,
                                    "PROBES": f"{dx / 2:.17g}, {L / 2 + dx / 2:.17g}"})
         cases.append(("coupled", method, n, dx, rows))

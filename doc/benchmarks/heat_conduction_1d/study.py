@@ -45,8 +45,10 @@ def run(dx, corrected):
     n_across = round(W / dx)
     x_probe = 0.5 - dx / 2
     y_probe = (n_across // 2 + 0.5) * dx
-    values = {"DX": f"{dx:.17g}", "WIDTH": f"{W:.17g}", "DEPTH": f"{depth:.17g}",
-              "END": f"{1 + depth:.17g}", "RATE": f"{rate:.17g}",
+    values = {"DX": f"{dx:.17g}", "BAR_UPPER": f"1, {W:.17g}",
+              "LEFT_LOWER": f"{-depth:.17g}, 0", "LEFT_UPPER": f"0, {W:.17g}",
+              "RIGHT_UPPER": f"{1 + depth:.17g}, {W:.17g}", "DEPTH": f"{depth:.17g}",
+              "LAYERS": f"sin(pi*x) * exp(-{rate:.17g} * t)",
               "CORRECTION": "true" if corrected else "false", "SOLVER": "explicit",
               "STEP": "0", "PROBE": f"{x_probe:.17g}, {y_probe:.17g}"}
     log, rows = prm_runs.run(solver, os.path.join(here, "bar.prm"), values)

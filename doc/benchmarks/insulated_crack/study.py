@@ -32,11 +32,13 @@ for r in range(4):
 for dx in [0.02, 0.01, 0.005]:
     probes = f"{dx / 2:.17g}, {dx / 2:.17g}; {dx / 2:.17g}, {-dx / 2:.17g}"
     Q, jump = run("crack_pd.prm", {"DX": f"{dx:.17g}", "DEPTH": f"{3 * dx:.17g}",
-                                   "LOW": f"{-0.5 - 3 * dx:.17g}", "HIGH": f"{0.5 + 3 * dx:.17g}",
-                                   "PROBES": probes})
+                                   "BOTTOM_LOWER": f"-0.5, {-0.5 - 3 * dx:.17g}",
+                                   "TOP_UPPER": f"0.5, {0.5 + 3 * dx:.17g}", "PROBES": probes})
     rows.append(("all-PD", dx, Q, jump))
-    Q, jump = run("crack_coupled.prm", {"DX": f"{dx:.17g}", "NC": str(round(1 / dx)),
-                                        "PROBES": probes})
+    n = round(1 / dx)
+    Q, jump = run("crack_coupled.prm",
+                  {"DX": f"{dx:.17g}", "PROBES": probes,
+                   "GENERATOR_ARGUMENTS": f"{n}, {n} : -0.5, -0.5 : 0.5, 0.5 : true"})
     rows.append(("coupled (PD band, FE h = dx)", dx, Q, jump))
 
 print("| model | dx or h | heat flow Q [W] (uncracked: 100) | T(dx/2, +dx/2) - T(dx/2, -dx/2) [K] |")
