@@ -112,8 +112,8 @@ namespace perideal
   void
   BlendedCoupling<dim>::lumped_masses(FEVector &fe_mass, std::vector<double> &particle_mass) const
   {
-    // Particles: beta_i rho V_i. FE: the lumped (1 - beta) rho plus P^T of the slaved
-    // particles' masses.
+    // Particles: beta_i rho V_i (times the model's inertia scale). FE: the lumped (1 - beta) rho
+    // plus P^T of the slaved particles' masses.
     const auto        &particles = *regions.particles;
     const auto        &volume    = particles.volumes();
     const auto        &weights   = particles.energy_weights();
@@ -122,19 +122,16 @@ namespace perideal
     particle_mass.assign(n_owned, 0.);
     ParticleVector slaved_mass;
     particles.reinit_vector(slaved_mass, nc);
-    // What a slaved component carries to the FE dofs per unit mass: the model's inertia over
-    // the density (MaterialModel::inertia_densities(): 1 for translations and scalars, the
-    // specific heat c for a temperature, as the FE heat physics' lumped capacity rho c).
-    std::vector<double> inertia_ratio(nc, 1.);
-    if (regions.density > 0.)
-      {
-        inertia_ratio = regions.material->inertia_densities(regions.density);
-        for (double &ratio : inertia_ratio)
-          ratio /= regions.density;
-      }
+    // What a slaved component carries to the FE dofs per unit mass (MaterialModel::
+    // inertia_ratios(): 1 for translations and scalars, the specific heat c for a temperature,
+    // as the FE heat physics' lumped capacity rho c).
+    const std::vector<double> inertia_ratio = regions.material->inertia_ratios(regions.density);
+    // Materials by region: the particle's inertia relative to the uniform one.
+    const std::vector<double> scales = regions.material->inertia_scales(particles, regions.density);
     for (unsigned int i = 0; i < n_owned; ++i)
       {
-        particle_mass[i] = weights[i] * regions.density * volume[i];
+        particle_mass[i] =
+          weights[i] * regions.density * volume[i] * (scales.empty() ? 1. : scales[i]);
         // Rotations of slaved particles follow 1/2 curl U: their (second-order) rotational
         // inertia is not carried over to the FE translations.
         if (transfer.is_slaved(i))

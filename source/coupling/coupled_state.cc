@@ -65,11 +65,7 @@ namespace perideal
                   "with FE unknowns); prescribe it there with <Finite elements/Boundary "
                   "conditions>, or move its region into the PD-only zone (beta = 1)."));
 
-    // A density of zero (a static run) leaves every ratio 1.
-    const double rho = pd.density() > 0. ? pd.density() : 1.;
-    inertia_ratio    = pd.material().inertia_densities(rho);
-    for (double &ratio : inertia_ratio)
-      ratio /= rho;
+    inertia_ratio = pd.material().inertia_ratios(pd.density());
 
     const auto &volume = ps.volumes();
     internal_work_factor.assign(motion.size(), 0.);

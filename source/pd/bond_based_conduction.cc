@@ -65,6 +65,8 @@ namespace perideal
                       "The specific heat c [J/kg/K] (the heat capacity per volume is rho c "
                       "with <Material/Density>); > 0.");
     RegionModuli<dim>::declare_parameters(prm, "Conductivities by region", "W/m/K");
+    RegionModuli<dim>::declare_parameters(prm, "Densities by region", "kg/m^3", false);
+    RegionModuli<dim>::declare_parameters(prm, "Specific heats by region", "J/kg/K", false);
   }
 
   template <int dim>
@@ -79,6 +81,10 @@ namespace perideal
     region_conductivities.parse_parameters(prm,
                                            "Conductivities by region",
                                            "Material/bond based conduction");
+    region_densities.parse_parameters(prm, "Densities by region", "Material/bond based conduction");
+    region_specific_heats.parse_parameters(prm,
+                                           "Specific heats by region",
+                                           "Material/bond based conduction");
   }
 
   template <int dim>
@@ -86,6 +92,8 @@ namespace perideal
   BondBasedConduction<dim>::resolve_regions(const RegionCollection<dim> &regions)
   {
     region_conductivities.resolve(regions);
+    region_densities.resolve(regions);
+    region_specific_heats.resolve(regions);
   }
 
   template <int dim>
@@ -174,6 +182,25 @@ namespace perideal
   }
 
   template <int dim>
+  std::vector<double>
+  BondBasedConduction<dim>::inertia_scales(const ParticleSystem<dim> &particles,
+                                           const double               density) const
+  {
+    if (region_densities.empty() && region_specific_heats.empty())
+      return {};
+    // A static run (no density) has no capacities: the ratio of the specific heats alone.
+    const double        rho = density > 0. ? density : 1.;
+    std::vector<double> scales(particles.n_owned());
+    for (unsigned int i = 0; i < particles.n_owned(); ++i)
+      {
+        const auto &x = particles.positions()[i];
+        scales[i]     = region_densities.at(x, rho) * region_specific_heats.at(x, specific_heat) /
+                    (rho * specific_heat);
+      }
+    return scales;
+  }
+
+  template <int dim>
   std::vector<DerivedParticleField>
   BondBasedConduction<dim>::derived_fields(const ParticleSystem<dim> &particles,
                                            const ParticleVector      &temperature) const
@@ -222,7 +249,11 @@ namespace perideal
         << " J/(kg K), micro-conductivity kappa = " << kappa
         << (dim == 2 ? " W/(m^4 K) / h" : " W/(m^5 K)");
     if (!region_conductivities.empty())
-      out << "; by region: " << region_conductivities.summary();
+      out << "; conductivities by region: " << region_conductivities.summary();
+    if (!region_densities.empty())
+      out << "; densities by region: " << region_densities.summary();
+    if (!region_specific_heats.empty())
+      out << "; specific heats by region: " << region_specific_heats.summary();
     return out.str();
   }
 

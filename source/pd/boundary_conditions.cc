@@ -398,7 +398,7 @@ namespace perideal
   template <int dim>
   void
   BoundaryConditions<dim>::add_convection(const double          time,
-                                          const ParticleVector &field,
+                                          const ParticleVector *field,
                                           ParticleVector       &force) const
   {
     const auto        &x  = particle_system->positions();
@@ -410,8 +410,23 @@ namespace perideal
           for (const unsigned int i : c.particles)
             for (const unsigned int k : c.components)
               force.local_element(i * nc + k) +=
-                c.convection->flux(x[i], field.local_element(i * nc + k)) / c.layer_thickness;
+                c.convection->flux(x[i], field ? field->local_element(i * nc + k) : 0.) /
+                c.layer_thickness;
         }
+  }
+
+  template <int dim>
+  void
+  BoundaryConditions<dim>::add_convection_conductance(ParticleVector &diagonal) const
+  {
+    const auto        &volume = particle_system->volumes();
+    const unsigned int nc     = layout.n_components();
+    for (const auto &c : conditions)
+      if (c.convection)
+        for (const unsigned int i : c.particles)
+          for (const unsigned int k : c.components)
+            diagonal.local_element(i * nc + k) +=
+              c.convection->coefficient * volume[i] / c.layer_thickness;
   }
 
   template <int dim>

@@ -79,18 +79,23 @@ namespace perideal
     std::vector<double> bound;
     stiffness_bound(particles, bound);
     const std::vector<double> inertia = inertia_densities(density);
+    const std::vector<double> scales  = inertia_scales(particles, density);
     const FieldLayout         layout  = field_layout();
     const std::size_t         nc      = inertia.size();
     double                    dt      = std::numeric_limits<double>::max();
     // Velocity Verlet of a second-order component: sqrt(4 rho / B); forward Euler of a
     // temperature, rho c dT/dt = -K T + q: 2 rho c / B (every eigenvalue of K / (rho c) at most
-    // B / (rho c), and forward Euler is stable for dt lambda <= 2).
+    // B / (rho c), and forward Euler is stable for dt lambda <= 2); rho (rho c) of the particle
+    // (inertia_scales()).
     for (std::size_t k = 0; k < bound.size(); ++k)
       if (bound[k] > 0.)
-        dt = std::min(dt,
-                      layout.kind(k % nc) == ComponentKind::temperature ?
-                        2. * inertia[k % nc] / bound[k] :
-                        std::sqrt(4. * inertia[k % nc] / bound[k]));
+        {
+          const double rho = inertia[k % nc] * (scales.empty() ? 1. : scales[k / nc]);
+          dt               = std::min(dt,
+                        layout.kind(k % nc) == ComponentKind::temperature ?
+                                        2. * rho / bound[k] :
+                                        std::sqrt(4. * rho / bound[k]));
+        }
     return dealii::Utilities::MPI::min(dt, particles.get_communicator());
   }
 
@@ -160,6 +165,24 @@ namespace perideal
                                    ") but states no rotational inertia: it must override "
                                    "MaterialModel::inertia_densities()."));
     return std::vector<double>(layout.n_components(), density);
+  }
+
+  template <int dim>
+  std::vector<double>
+  MaterialModel<dim>::inertia_ratios(const double density) const
+  {
+    const double        rho    = density > 0. ? density : 1.;
+    std::vector<double> ratios = inertia_densities(rho);
+    for (double &ratio : ratios)
+      ratio /= rho;
+    return ratios;
+  }
+
+  template <int dim>
+  std::vector<double>
+  MaterialModel<dim>::inertia_scales(const ParticleSystem<dim> &, const double) const
+  {
+    return {};
   }
 
   template <int dim>

@@ -17,17 +17,23 @@ namespace perideal
   void
   RegionModuli<dim>::declare_parameters(ParameterHandler  &prm,
                                         const std::string &entry_name,
-                                        const std::string &unit)
+                                        const std::string &unit,
+                                        const bool         of_bonds)
   {
+    const std::string what = of_bonds ? "modulus" : "value";
     prm.declare_entry(entry_name,
                       "",
                       Patterns::Anything(),
-                      "Dissimilar materials: 'region: modulus' items [" + unit +
+                      "Dissimilar materials: 'region: " + what + "' items [" + unit +
                         "] separated by ';' (regions of <Regions>, e.g. 'upper: 6e6'); a point "
-                        "takes the modulus of the last listed region that holds it, else the "
-                        "model's own. A bond across an interface gets the length-weighted "
-                        "harmonic mean of the moduli along it (springs in series, Oterkus & "
-                        "Madenci 2015, eq. 60). Empty: one material.");
+                        "takes the " +
+                        what + " of the last listed region that holds it, else the model's own. " +
+                        (of_bonds ? "A bond across an interface gets the length-weighted "
+                                    "harmonic mean of the moduli along it (springs in series, "
+                                    "Oterkus & Madenci 2015, eq. 60). " :
+                                    "A property of the particle (at its position): no interface "
+                                    "rule. ") +
+                        "Empty: one material.");
   }
 
   template <int dim>

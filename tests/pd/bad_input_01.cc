@@ -121,6 +121,18 @@ main(int argc, char **argv)
         conduction + "subsection Boundary conditions\n set Names = pull, cool\n subsection "
                      "cool\n set Region = plate\n set Type = convection\n set Layer thickness "
                      "= 1e-3\n set Heat transfer coefficient = 10\n end\nend\n");
+  check("density by region not positive",
+        conduction + "subsection Material\n subsection bond based conduction\n set Densities "
+                     "by region = top: 0\n end\nend\n");
+  check("specific heat by region not positive",
+        conduction + "subsection Material\n subsection bond based conduction\n set Specific "
+                     "heats by region = top: -460\n end\nend\n");
+  check("particle convection under adaptive dynamic relaxation",
+        conduction + "subsection Boundary conditions\n set Names = pull, cool\n subsection "
+                     "cool\n set Region = plate\n set Type = convection\n set Layer thickness "
+                     "= 1e-3\n set Heat transfer coefficient = 10\n set Ambient temperature = "
+                     "290\n end\nend\nsubsection Solver\n set Type = adaptive dynamic "
+                     "relaxation\nend\n");
   check("thermal time step above the stable one",
         conduction + "subsection Time stepping\n set Time step = 1\n set End time = 10\nend\n");
   check("temperature condition on a displacement",

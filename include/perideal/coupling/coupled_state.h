@@ -125,10 +125,12 @@ namespace perideal
     dissipated_energy() const;
 
     /**
-     * @brief Add the heat that enters the particles' temperature components over a forward-Euler
-     * step @p dt from the current heat flows: dt sum (V_i q_ext on the free components, -V_i
-     * q_int on the held ones, i.e. what their conditions supply), exactly the change of the
-     * stored heat of the free components that the step makes. Nothing without a temperature.
+     * @brief Add the heat that enters the particles' temperature components over a time @p dt
+     * at the current heat flows: dt sum (V_i q_ext on the free components, -V_i q_int on the
+     * held ones, i.e. what their conditions supply). Forward Euler adds its step dt at the
+     * flows of the step's start, the theta scheme (1 - theta) dt at t_n and theta dt at t_{n+1}:
+     * so the sum is the change of the stored heat of the free components that the steps make
+     * (to round-off, to the solver tolerance). Nothing without a temperature.
      */
     void
     accumulate_heat(const double dt);

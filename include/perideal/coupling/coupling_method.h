@@ -215,9 +215,10 @@ namespace perideal
                       ParticleVector       &u) = 0;
 
     /**
-     * @brief Implicit time stepping of a first-order field (ThetaScheme): after
-     * initialize_equilibrium(), the diagonal D that the following solve_equilibrium() calls add
-     * to their system, (D + K) z = F: the lumped capacities over theta dt, @p fe_diagonal on the
+     * @brief Implicit time stepping of a first-order field (ThetaScheme) and particle
+     * convection: after initialize_equilibrium(), the diagonal D that the following
+     * solve_equilibrium() calls add to their system, (D + K) z = F (the lumped capacities over
+     * theta dt, a particle convection's conductance h V / d), @p fe_diagonal on the
      * FE dofs and @p particle_diagonal [N per unit of the field] on the components of the
      * particles that are not slaved to the FE field (owned entries). equilibrium_forces() keeps
      * K alone. A method that solves in one linear system supports it; by default the run stops,
@@ -247,9 +248,10 @@ namespace perideal
   CouplingMethod<dim>::set_equilibrium_diagonal(const FEVector &, const ParticleVector &)
   {
     AssertThrow(false,
-                dealii::ExcMessage("<Solver/Type> = implicit needs a coupling method that solves "
-                                   "both regions in one linear system; accepted <Coupling/"
-                                   "Method>: blended."));
+                dealii::ExcMessage("<Solver/Type> = implicit, and a particle 'convection' "
+                                   "condition of <Boundary conditions> in a static solve, need a "
+                                   "coupling method that solves both regions in one linear "
+                                   "system; accepted <Coupling/Method>: blended."));
   }
 } // namespace perideal
 

@@ -38,7 +38,9 @@ namespace perideal
    *
    * Its capacity: inertia_densities(rho) = rho c (c the specific heat), so that the explicit
    * solver's factor from heat source density to rate is 1/(rho c) and the stable forward-Euler
-   * step is 2 rho c / B with B the Gershgorin bound (MaterialModel::stable_time_step()).
+   * step is 2 rho c / B with B the Gershgorin bound (MaterialModel::stable_time_step()). By
+   * region (<Densities by region>, <Specific heats by region>, RegionModuli::at() at the
+   * particle): a particle's capacity is rho_i c_i, inertia_scales() = rho_i c_i / (rho c).
    */
   template <int dim>
   class BondBasedConduction : public MaterialModel<dim>
@@ -50,7 +52,8 @@ namespace perideal
     /// @brief Destructor (the kernel's data are defined in bond_based_conduction.cc).
     ~BondBasedConduction() override;
 
-    /// @brief Declare <Conductivity>, <Specific heat> and <Conductivities by region>.
+    /// @brief Declare <Conductivity>, <Specific heat> and the entries by region
+    /// (<Conductivities by region>, <Densities by region>, <Specific heats by region>).
     static void
     declare_parameters(dealii::ParameterHandler &prm);
 
@@ -58,7 +61,7 @@ namespace perideal
     void
     parse_parameters(dealii::ParameterHandler &prm) override;
 
-    /// @brief Look up the regions of <Conductivities by region>.
+    /// @brief Look up the regions of the entries by region.
     void
     resolve_regions(const RegionCollection<dim> &regions) override;
 
@@ -86,6 +89,14 @@ namespace perideal
     /// @brief The heat capacity per unit volume rho c of the temperature.
     std::vector<double>
     inertia_densities(const double density) const override;
+
+    /**
+     * @brief rho_i c_i / (rho c) per owned particle, rho_i and c_i of <Densities by region> and
+     * <Specific heats by region> at the particle (rho = @p density, <Material/Density>, and c =
+     * <Specific heat> elsewhere); empty without entries by region.
+     */
+    std::vector<double>
+    inertia_scales(const ParticleSystem<dim> &particles, const double density) const override;
 
     /**
      * @brief Gershgorin bound (bond_pair_stiffness_bound()); defined in
@@ -131,6 +142,8 @@ namespace perideal
     double            specific_heat = 0.;
     double            kappa         = 0.;
     RegionModuli<dim> region_conductivities;
+    /// The densities [kg/m^3] and specific heats [J/(kg K)] by region.
+    RegionModuli<dim> region_densities, region_specific_heats;
     ModelContext      context;
     /// kappa G chi V_i V_j per bond (the heat flow per unit temperature slope).
     std::vector<double> bond_coefficient;

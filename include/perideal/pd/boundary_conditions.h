@@ -114,10 +114,19 @@ namespace perideal
     convection_bound() const;
     /**
      * @brief Add the heat source density h (T_inf(x, @p time) - T) / d of the convection
-     * conditions (d the <Layer thickness>) at the temperature @p field to @p force.
+     * conditions (d the <Layer thickness>) at the temperature @p field to @p force; without
+     * @p field (nullptr) its ambient part h T_inf / d alone, the load of a linear solve whose
+     * matrix holds the conductance (add_convection_conductance()).
      */
     void
-    add_convection(const double time, const ParticleVector &field, ParticleVector &force) const;
+    add_convection(const double time, const ParticleVector *field, ParticleVector &force) const;
+    /**
+     * @brief Add the conductance h V_i / d [W/K] of the convection conditions to the diagonal
+     * @p diagonal of the owned particle components they act on: the matrix term of
+     * h (T_inf - T) / d in a static or implicit solve (CouplingMethod::set_equilibrium_diagonal()).
+     */
+    void
+    add_convection_conductance(ParticleVector &diagonal) const;
     /// Whether component @p c of owned particle @p i is prescribed.
     bool
     is_prescribed(const unsigned int i, const unsigned int c) const

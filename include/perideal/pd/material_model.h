@@ -318,6 +318,26 @@ namespace perideal
     inertia_densities(const double density) const;
 
     /**
+     * @brief The inertia per unit mass of each component of field_layout():
+     * inertia_densities(@p density) / @p density (1 for translations and scalars, the specific
+     * heat c for a temperature), what multiplies a particle's mass rho V to give the inertia of
+     * its component (the capacity rho c V of a temperature). A density of zero or less (a
+     * static run) evaluates inertia_densities(1).
+     */
+    std::vector<double>
+    inertia_ratios(const double density) const;
+
+    /**
+     * @brief Per owned particle of @p particles, the factor of its inertia relative to the
+     * uniform one of inertia_densities(@p density) (a model with materials by region: the heat
+     * capacity rho_i c_i / (rho c) of the conduction model), which multiplies the particle's
+     * mass (CouplingMethod::lumped_masses()) and its stable step; empty (the default): 1 for
+     * every particle.
+     */
+    virtual std::vector<double>
+    inertia_scales(const ParticleSystem<dim> &particles, const double density) const;
+
+    /**
      * @brief The largest stable explicit time step for density @p density [kg/m^3]: the
      * Silling–Askari bound dt = min_i sqrt(2 rho / sum_j V_j C_ij) (Silling & Askari 2005,
      * Comput. Struct. 83, eq. 31) with the model's bond stiffness C_ij, i.e.

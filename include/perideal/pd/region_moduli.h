@@ -41,12 +41,14 @@ namespace perideal
   public:
     /**
      * @brief Declare the entry @p entry_name (empty default) in the current subsection; @p unit is
-     * the modulus' unit for the documentation.
+     * the modulus' unit for the documentation; @p of_bonds: the documentation states the bonds'
+     * interface rule (bond_modulus()), else that the value is the particle's (at()).
      */
     static void
     declare_parameters(dealii::ParameterHandler &prm,
                        const std::string        &entry_name,
-                       const std::string        &unit);
+                       const std::string        &unit,
+                       const bool                of_bonds = true);
 
     /**
      * @brief Read the entry @p entry_name of the current subsection; @p path is the subsection's

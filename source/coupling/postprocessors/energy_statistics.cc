@@ -74,9 +74,10 @@ namespace perideal
       }
     else if (state.layout.has_temperature())
       {
-        // The thermal balance of forward Euler: the change of the stored heat of the free
-        // particles against the heat in through the conditions (CoupledState::accumulate_heat()),
-        // equal to round-off.
+        // The thermal balance of the time steps: the change of the stored heat of the free
+        // particles against the heat in through the conditions (CoupledState::accumulate_heat(),
+        // weighted as the step), equal to round-off (forward Euler) or to the solver tolerance
+        // (theta scheme).
         const double stored = state.stored_heat() - state.initial_stored_heat();
         const double heat   = state.heat_in();
         statistics.add_value("stored_heat", stored);

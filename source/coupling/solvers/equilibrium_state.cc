@@ -39,6 +39,31 @@ namespace perideal
     return pd_energy;
   }
 
+  template <int dim>
+  void
+  check_convection_on_free_particles(const CoupledState<dim> &state, const std::string &solver)
+  {
+    const auto &conditions = state.pd.boundary_conditions();
+    if (!conditions.has_convection())
+      return;
+    ParticleVector conductance;
+    state.pd.particles().reinit_vector(conductance, state.n_components());
+    conditions.add_convection_conductance(conductance);
+    std::uint64_t n_slaved = 0;
+    for (std::size_t k = 0; k < state.motion.size(); ++k)
+      n_slaved +=
+        (state.motion[k] == CoupledState<dim>::Motion::slaved && conductance.local_element(k) > 0.);
+    n_slaved = dealii::Utilities::MPI::sum(n_slaved, state.comm);
+    AssertThrow(n_slaved == 0,
+                dealii::ExcMessage(
+                  "A 'convection' condition of <Boundary conditions> acts on " +
+                  std::to_string(n_slaved) +
+                  " particles slaved to the FE field, where <Solver/Type> = " + solver +
+                  " has no matrix term for it; put the convection on the FE boundary (<Finite "
+                  "elements/Boundary conditions>, type 'convection') or move its region into the "
+                  "PD-only zone (beta = 1)."));
+  }
+
   template std::string
   condition_names(const CoupledState<2> &);
   template std::string
@@ -47,4 +72,8 @@ namespace perideal
   equilibrium_state(CoupledState<2> &);
   template double
   equilibrium_state(CoupledState<3> &);
+  template void
+  check_convection_on_free_particles(const CoupledState<2> &, const std::string &);
+  template void
+  check_convection_on_free_particles(const CoupledState<3> &, const std::string &);
 } // namespace perideal

@@ -13,6 +13,7 @@
 #include <chrono>
 #include <cmath>
 #include <iomanip>
+#include <limits>
 #include <sstream>
 
 namespace perideal
@@ -75,13 +76,22 @@ namespace perideal
     fe_dt = state.fe.stable_time_step(&state.mass);
     pd_dt = state.pd.stable_time_step();
     // A convection h (T_inf - T) / d adds h / d to the bound B of its layer's particles:
-    // dt <= 2 rho c / (B + h / d) >= 1 / (1 / dt_B + h / (2 rho c d)) (conservative).
+    // dt <= 2 rho c / (B + h / d) >= 1 / (1 / dt_B + h / (2 rho c d)) (conservative; rho c the
+    // smallest of the particles, MaterialModel::inertia_scales()).
     const double convection = state.pd.boundary_conditions().convection_bound();
     if (convection > 0.)
-      for (unsigned int c = 0; c < nc; ++c)
-        if (state.layout.kind(c) == ComponentKind::temperature)
-          pd_dt =
-            1. / (1. / pd_dt + convection / (2. * state.pd.density() * state.inertia_ratio[c]));
+      {
+        const auto scales = state.pd.material().inertia_scales(ps, state.pd.density());
+        double     smallest =
+          scales.empty() && ps.n_owned() > 0 ? 1. : std::numeric_limits<double>::max();
+        for (const double scale : scales)
+          smallest = std::min(smallest, scale);
+        smallest = Utilities::MPI::min(smallest, state.comm);
+        for (unsigned int c = 0; c < nc; ++c)
+          if (state.layout.kind(c) == ComponentKind::temperature)
+            pd_dt = 1. / (1. / pd_dt + convection / (2. * smallest * state.pd.density() *
+                                                     state.inertia_ratio[c]));
+      }
     state.stable_dt = std::min(fe_dt, pd_dt);
   }
 
@@ -143,7 +153,7 @@ namespace perideal
         state.external_force = 0.;
         pd.boundary_conditions().add_loads(time, state.external_force);
         if (pd.boundary_conditions().has_convection())
-          pd.boundary_conditions().add_convection(time, state.u, state.external_force);
+          pd.boundary_conditions().add_convection(time, &state.u, state.external_force);
       }
     // Particles: a = f V / m on the components that move by it (one pass, no branches); the
     // nodal forces f V only if some particle is slaved to the FE field (zero otherwise).

@@ -47,14 +47,15 @@ namespace perideal
                              "dynamic relaxation) cannot apply; use '" +
                              quantity_name(state.layout.kind(c.components[0]), Quantity::value) +
                              "' (scaled by the load factor) instead."));
-    // A convection's heat flux depends on the temperature: the static path has no matrix term
-    // for it.
+    // A convection's heat flux depends on the temperature: the static solve holds its
+    // conductance in the matrix (setup()); the relaxation has no matrix term for it.
     for (unsigned int k = 0; k < conditions.names().size(); ++k)
-      AssertThrow(conditions.type_name(k) != "convection",
+      AssertThrow(type != SolverType::adaptive_dynamic_relaxation ||
+                    conditions.type_name(k) != "convection",
                   ExcMessage("The boundary condition <" + conditions.names()[k] +
-                             "> is of type 'convection', which a quasi-static solve (<Solver/Type> "
-                             "= static or adaptive dynamic relaxation) cannot apply yet; accepted "
-                             "there: 'value' and 'flux' (or <Solver/Type> = explicit dynamics)."));
+                             "> is of type 'convection', which <Solver/Type> = adaptive dynamic "
+                             "relaxation cannot apply; accepted there: 'value' and 'flux' (or "
+                             "<Solver/Type> = static, implicit or explicit dynamics)."));
     for (unsigned int k = 0; k < conditions.names().size(); ++k)
       AssertThrow(std::find(rates.begin(), rates.end(), conditions.names()[k]) == rates.end(),
                   ExcMessage("The boundary condition <" + conditions.names()[k] + "> is of type '" +
@@ -67,6 +68,7 @@ namespace perideal
                              "' (scaled by the load factor) instead."));
     const bool        relax       = (type == SolverType::adaptive_dynamic_relaxation);
     const std::string solver_name = relax ? "adaptive dynamic relaxation" : "static";
+    check_convection_on_free_particles(state, solver_name);
 
     AssertThrow(control.history != LoadHistory::time || state.settings.end_time > 0.,
                 ExcMessage("<Solver/Control/Load history> = time evaluates the conditions at t = "
@@ -80,11 +82,15 @@ namespace perideal
     for (unsigned int c = 0; c < n_fe && fe.n_dofs() > 0; ++c)
       for (std::size_t k = 0; k < held.size(); ++k)
         constrained[c] += (held[k] && of[c][k]) ? 1. : 0.;
-    // A convection condition holds a temperature (its h T is in the FE stiffness).
+    // A convection condition holds a temperature (its h T is in the FE stiffness or, on
+    // particles, in the diagonal of the static system).
     for (const auto &c : fe.conditions())
       if (c.convection)
         for (const unsigned int component : c.components)
           constrained[component] += 1.;
+    if (conditions.has_convection())
+      for (unsigned int c = 0; c < nc; ++c)
+        constrained[c] += state.layout.kind(c) == ComponentKind::temperature ? 1. : 0.;
     for (std::size_t k = 0; k < state.motion.size(); ++k)
       if (state.motion[k] == Motion::prescribed)
         constrained[k % nc] += 1.;
@@ -161,6 +167,17 @@ namespace perideal
     equilibrium.relaxation_safety         = settings.density_safety_factor;
     state.method.initialize_equilibrium(prescribed, equilibrium, condition_names(state));
     const bool relax = (type == SolverType::adaptive_dynamic_relaxation);
+    // A particle convection h (T_inf - T) / d: its conductance h V / d in the system's diagonal,
+    // its ambient part h T_inf / d a load (conditions_at()).
+    if (state.pd.boundary_conditions().has_convection())
+      {
+        FEVector       fe_diagonal;
+        ParticleVector conductance;
+        fe.initialize_vector(fe_diagonal);
+        state.pd.particles().reinit_vector(conductance, nc);
+        state.pd.boundary_conditions().add_convection_conductance(conductance);
+        state.method.set_equilibrium_diagonal(fe_diagonal, conductance);
+      }
     if (state.is_root)
       state.log << (relax ? "Adaptive dynamic relaxation: " : "Static solve: ")
                 << state.method.n_unknowns() << " unknowns ("
@@ -177,6 +194,7 @@ namespace perideal
     full_load = 0.;
     state.pd.boundary_conditions().prescribe_displacement(time, target);
     state.pd.boundary_conditions().add_loads(time, full_load);
+    state.pd.boundary_conditions().add_convection(time, nullptr, full_load);
     state.fe.prescribe(time, fe_target, state.V);
     state.fe.assemble_load(time, fe_full_load);
   }

@@ -26,6 +26,7 @@ namespace perideal
                            state.layout.description() +
                            ", of second order in time; accepted <Solver/Type> for it: explicit, "
                            "static, adaptive dynamic relaxation."));
+    check_convection_on_free_particles(state, "implicit");
   }
 
   template <int dim>
@@ -61,18 +62,23 @@ namespace perideal
     state.method.lumped_masses(state.mass, state.particle_mass);
     state.fe.initialize_vector(fe_diagonal);
     fe_diagonal.equ(factor, state.mass);
-    ParticleVector diagonal;
+    // A particle convection h (T_inf - T) / d adds its conductance h V / d to the diagonal
+    // (its ambient part h T_inf / d is a load); not to D, which multiplies T_n.
+    ParticleVector diagonal, conductance;
     ps.reinit_vector(diagonal, nc);
+    ps.reinit_vector(conductance, nc);
     ps.reinit_vector(particle_diagonal, nc);
+    state.pd.boundary_conditions().add_convection_conductance(conductance);
     free_factor.assign(state.motion.size(), 0.);
     const auto &volume = ps.volumes();
     for (std::size_t k = 0; k < state.motion.size(); ++k)
       if (state.motion[k] != Motion::slaved)
         {
           free_factor[k] = 1.;
+          particle_diagonal.local_element(k) =
+            factor * state.particle_mass[k / nc] * state.inertia_ratio[k % nc] / volume[k / nc];
           diagonal.local_element(k) =
-            factor * state.particle_mass[k / nc] * state.inertia_ratio[k % nc];
-          particle_diagonal.local_element(k) = diagonal.local_element(k) / volume[k / nc];
+            particle_diagonal.local_element(k) * volume[k / nc] + conductance.local_element(k);
         }
     state.method.set_equilibrium_diagonal(fe_diagonal, diagonal);
     state.fe.initialize_vector(fe_rhs);
@@ -90,6 +96,7 @@ namespace perideal
     state.external_force = 0.;
     state.fe.assemble_load(time, state.f_ext);
     state.pd.boundary_conditions().add_loads(time, state.external_force);
+    state.pd.boundary_conditions().add_convection(time, &state.u, state.external_force);
     equilibrium_state(state);
   }
 
@@ -124,6 +131,11 @@ namespace perideal
     const double      theta      = state.settings.theta;
     const double      old_weight = (1. - theta) / theta;
     const std::size_t n_particle = free_factor.size();
+    // The heat in over the step, theta-weighted as the step: (1 - theta) dt of the heat flows at
+    // t_n here, theta dt of those at t_{n+1} after the solve.
+    state.accumulate_heat((1. - theta) * state.time_step);
+    // D T_n + (1 - theta) / theta (Q_n - K T_n), then the loads at t_{n+1} (of a convection its
+    // ambient part: the conductance is in the matrix).
     for (unsigned int k = 0; k < U.locally_owned_size(); ++k)
       fe_rhs.local_element(k) = fe_diagonal.local_element(k) * U.local_element(k) -
                                 old_weight * state.residual.local_element(k);
@@ -136,12 +148,14 @@ namespace perideal
     state.external_force = 0.;
     fe.assemble_load(time, state.f_ext);
     conditions.add_loads(time, state.external_force);
+    conditions.add_convection(time, nullptr, state.external_force);
     fe_rhs += state.f_ext;
     pd_rhs += state.external_force;
     fe.prescribe(time, U, state.V);
     conditions.prescribe_displacement(time, u);
     iterations = state.method.solve_equilibrium(fe_rhs, pd_rhs, U, u);
     forces_at(state, time);
+    state.accumulate_heat(theta * state.time_step);
   }
 
   template <int dim>

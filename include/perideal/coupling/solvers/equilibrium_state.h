@@ -28,6 +28,15 @@ namespace perideal
   template <int dim>
   double
   equilibrium_state(CoupledState<dim> &state);
+
+  /**
+   * @brief Stop, naming <Solver/Type> = @p solver, if a particle 'convection' condition acts on
+   * particles slaved to the FE field: the linear solves hold its conductance in the diagonal of
+   * the free particle components only (CouplingMethod::set_equilibrium_diagonal()). Collective.
+   */
+  template <int dim>
+  void
+  check_convection_on_free_particles(const CoupledState<dim> &state, const std::string &solver);
 } // namespace perideal
 
 #endif
