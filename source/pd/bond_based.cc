@@ -65,7 +65,8 @@ namespace perideal
   template <int dim>
   struct BondBased<dim>::Kernel
   {
-    /// The bonds in SIMD blocks, and bond_coefficient per lane.
+    /// The bonds in SIMD blocks, and the pair coefficient per lane (the one copy: the model
+    /// keeps none per bond).
     BondBlocks<dim>                 blocks;
     typename BondBlocks<dim>::Array lane_coefficient;
     /// Kernel-order work fields: displacement, force, energy density.
@@ -157,12 +158,27 @@ namespace perideal
           break;
       }
     BondBlocks<dim> &blocks = kernel->blocks;
+    BondList        &bonds  = particles.bonds();
     blocks.reinit(particles);
     blocks.reinit_field(kernel->u_field, dim);
     blocks.reinit_field(kernel->f_field, dim);
     blocks.reinit_field(kernel->w_field, 1);
+    // The factors of a bond list this model initialized before were freed.
+    if (bonds.surface_factor.size() != bonds.size())
+      bonds.surface_factor.assign(bonds.size(), 1.);
     fit_report = apply_surface_correction<dim>(*this, particles, context);
     set_bond_coefficients(particles, true);
+    // The factors are in the lane coefficients now (pair_coefficient()): set-up data.
+    bonds.surface_factor = std::vector<double>();
+  }
+
+  template <int dim>
+  double
+  BondBased<dim>::pair_coefficient(const ParticleSystem<dim> &particles,
+                                   const unsigned int         i,
+                                   const std::size_t          b) const
+  {
+    return kernel->lane_coefficient[kernel->blocks.lane_of(particles.bonds(), i, b)];
   }
 
   template <int dim>
@@ -186,8 +202,12 @@ namespace perideal
   BondBased<dim>::set_bond_coefficients(const ParticleSystem<dim> &particles,
                                         const bool                 with_surface_factor)
   {
-    bond_pair_coefficients(particles, c, with_surface_factor, bond_coefficient);
-    kernel->blocks.to_lanes(bond_coefficient, kernel->lane_coefficient);
+    kernel->blocks.to_lanes(
+      particles.bonds(),
+      [&](const unsigned int i, const std::size_t b) {
+        return bond_pair_coefficient(particles, c, with_surface_factor, i, b);
+      },
+      kernel->lane_coefficient);
   }
 
   template <int dim>
@@ -224,14 +244,14 @@ namespace perideal
     for (const unsigned int b : bonds.newly_broken)
       {
         // The bond's particle: the row of the bond list that holds it.
-        const unsigned int i = std::upper_bound(bonds.row_start.begin(), bonds.row_start.end(), b) -
-                               bonds.row_start.begin() - 1;
+        const unsigned int i = bonds.row_of(b);
         const unsigned int j = bonds.neighbor[b];
         Tensor<1, dim>     r = x[j] - x[i];
         for (unsigned int d = 0; d < dim; ++d)
           r[d] += u.local_element(j * dim + d) - u.local_element(i * dim + d);
         const double s = r.norm() / bonds.length[b] - 1.;
-        released += particles.bond_share(b) * 0.5 * bond_coefficient[b] * s * s * bonds.length[b];
+        released += particles.bond_share(b) * 0.5 * pair_coefficient(particles, i, b) * s * s *
+                    bonds.length[b];
       }
     bonds.newly_broken.clear();
     return released;

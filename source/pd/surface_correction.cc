@@ -46,9 +46,13 @@ namespace perideal
     const double test_strain = 1e-6;
     BondList    &bonds       = particles.bonds();
     std::fill(bonds.surface_factor.begin(), bonds.surface_factor.end(), 1.);
-    // Pre-cracked bonds take part: the correction describes the uncracked geometry.
-    const std::vector<std::uint8_t> intact = bonds.intact;
-    bonds.set_states(std::vector<std::uint8_t>(bonds.size(), 1));
+    // Pre-cracked bonds take part: the correction describes the uncracked geometry (the broken
+    // ones are listed, not the states of all bonds copied: this is the set-up's peak of memory).
+    std::vector<unsigned int> broken;
+    for (unsigned int b = 0; b < bonds.size(); ++b)
+      if (bonds.intact[b] == 0)
+        broken.push_back(b);
+    bonds.set_state_of(broken, 1);
 
     ParticleVector u, factors;
     particles.reinit_vector(u, nc);
@@ -66,7 +70,7 @@ namespace perideal
         for (unsigned int i = 0; i < particles.n_owned(); ++i)
           factors.local_element(i * dim + a) = classical / energy[i];
       }
-    bonds.set_states(intact);
+    bonds.set_state_of(broken, 0);
     factors.update_ghost_values();
 
     for (unsigned int i = 0; i < particles.n_owned(); ++i)

@@ -105,6 +105,17 @@ namespace perideal
     micromodulus() const;
 
     /**
+     * @brief The pair coefficient k_b = c G chi V_i V_j of bond @p b of row @p i of the bond
+     * list of @p particles (bond_pair_coefficient() with the surface-correction factor), as the
+     * force kernel holds it: the model keeps it per lane only, and frees
+     * BondList::surface_factor after initialize().
+     */
+    double
+    pair_coefficient(const ParticleSystem<dim> &particles,
+                     const unsigned int         i,
+                     const std::size_t          b) const;
+
+    /**
      * @brief The Poisson ratio that the model implies (Cauchy relations).
      */
     double
@@ -114,8 +125,6 @@ namespace perideal
     double       youngs_modulus = 0.;
     ModelContext context;
     double       c = 0.;
-    /// c G chi V_i V_j per bond (the pair force per unit stretch).
-    std::vector<double> bond_coefficient;
     /// What the stiffness fit achieved (<Discretization/Surface correction method>).
     StiffnessFitReport fit_report;
     /// The force kernel's data (bonds in SIMD blocks, kernel-order fields): defined in
@@ -125,9 +134,10 @@ namespace perideal
     std::unique_ptr<Kernel> kernel;
 
     /**
-     * @brief Set bond_coefficient from the micromodulus, the partial-volume factors, the
-     * particle volumes and, if @p with_surface_factor, the surface-correction factors and the
-     * coupling's energy weights (BondList::energy_weight; the one place that computes it).
+     * @brief Set the kernel's lane coefficients c G chi V_i V_j (the pair force per unit
+     * stretch; bond_pair_coefficient(), kept per lane only) from the micromodulus, the
+     * partial-volume factors, the particle volumes and, if @p with_surface_factor, the
+     * surface-correction factors and the coupling's energy weights.
      */
     void
     set_bond_coefficients(const ParticleSystem<dim> &particles, const bool with_surface_factor);
