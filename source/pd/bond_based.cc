@@ -157,18 +157,21 @@ namespace perideal
           c = 48. * E / (5. * pi * context.thickness * std::pow(delta, 3));
           break;
       }
+    // The surface factors go straight into the lane coefficients (pair_coefficient()): the
+    // model keeps none per bond, and frees the bond list's before the blocks are built.
     BondBlocks<dim> &blocks = kernel->blocks;
     BondList        &bonds  = particles.bonds();
+    bonds.surface_factor    = std::vector<double>();
     blocks.reinit(particles);
     blocks.reinit_field(kernel->u_field, dim);
     blocks.reinit_field(kernel->f_field, dim);
     blocks.reinit_field(kernel->w_field, 1);
-    // The factors of a bond list this model initialized before were freed.
-    if (bonds.surface_factor.size() != bonds.size())
-      bonds.surface_factor.assign(bonds.size(), 1.);
-    fit_report = apply_surface_correction<dim>(*this, particles, context);
-    set_bond_coefficients(particles, true);
-    // The factors are in the lane coefficients now (pair_coefficient()): set-up data.
+    fit_report           = apply_surface_correction<dim>(*this,
+                                               particles,
+                                               context,
+                                               [&](const SurfaceFactors &surface_factor) {
+                                                 set_bond_coefficients(particles, surface_factor);
+                                               });
     bonds.surface_factor = std::vector<double>();
   }
 
@@ -186,7 +189,7 @@ namespace perideal
   BondBased<dim>::surface_correction_law(ParticleSystem<dim> &particles)
   {
     auto law = elastic_surface_correction_law<dim>(*this, particles, [this, &particles]() {
-      set_bond_coefficients(particles, false);
+      set_bond_coefficients(particles, {});
     });
     // Per end and unit chi V_i V_j, c |xi| (n.e.n)^2 / 4 under a homogeneous strain.
     const double micromodulus = c;
@@ -199,13 +202,20 @@ namespace perideal
 
   template <int dim>
   void
-  BondBased<dim>::set_bond_coefficients(const ParticleSystem<dim> &particles,
-                                        const bool                 with_surface_factor)
+  BondBased<dim>::set_bond_coefficients(
+    const ParticleSystem<dim>                                          &particles,
+    const std::function<double(const unsigned int, const std::size_t)> &surface_factor)
   {
+    const BondList &bonds  = particles.bonds();
+    const auto     &volume = particles.volumes();
     kernel->blocks.to_lanes(
-      particles.bonds(),
+      bonds,
       [&](const unsigned int i, const std::size_t b) {
-        return bond_pair_coefficient(particles, c, with_surface_factor, i, b);
+        // bond_pair_coefficient() with the factor G of the correction.
+        const unsigned int j = bonds.neighbor[b];
+        return surface_factor ? c * (surface_factor(i, b) * particles.bond_energy_weight(i, j)) *
+                                  bonds.volume_factor(b) * volume[i] * volume[j] :
+                                bond_pair_coefficient(particles, c, false, i, b);
       },
       kernel->lane_coefficient);
   }

@@ -136,11 +136,13 @@ namespace perideal
     /**
      * @brief Set the kernel's lane coefficients c G chi V_i V_j (the pair force per unit
      * stretch; bond_pair_coefficient(), kept per lane only) from the micromodulus, the
-     * partial-volume factors, the particle volumes and, if @p with_surface_factor, the
-     * surface-correction factors and the coupling's energy weights.
+     * partial-volume factors, the particle volumes and, if @p surface_factor is given, the
+     * surface-correction factors G it returns for (i, b) and the coupling's energy weights.
      */
     void
-    set_bond_coefficients(const ParticleSystem<dim> &particles, const bool with_surface_factor);
+    set_bond_coefficients(
+      const ParticleSystem<dim>                                          &particles,
+      const std::function<double(const unsigned int, const std::size_t)> &surface_factor);
   };
 } // namespace perideal
 
