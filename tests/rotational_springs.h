@@ -72,7 +72,7 @@ namespace perideal_tests
           {
             const unsigned int j  = bonds.neighbor[b];
             const double       L  = bonds.length[b];
-            const double       VV = volume[i] * volume[j] * bonds.volume_factor[b];
+            const double       VV = volume[i] * volume[j] * bonds.volume_factor(b);
             normal[b]             = (x[j] - x[i]) / L;
             weight[b]             = {c_n * VV / L, c_t * VV / L, c_r * VV * L};
           }

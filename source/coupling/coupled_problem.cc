@@ -210,6 +210,13 @@ namespace perideal
   }
 
   template <int dim>
+  const MaterialModel<dim> &
+  CoupledProblem<dim>::material() const
+  {
+    return pd.material();
+  }
+
+  template <int dim>
   const FERegion<dim> &
   CoupledProblem<dim>::fe_region() const
   {

@@ -420,9 +420,9 @@ namespace perideal
       for (unsigned int b = bonds.row_start[i]; b < bonds.row_start[i + 1]; ++b)
         {
           const unsigned int j = bonds.neighbor[b];
-          m_local[i] += bonds.length[b] * bonds.volume_factor[b] * volume[j];
+          m_local[i] += bonds.length[b] * bonds.volume_factor(b) * volume[j];
           if (j < particles.n_owned())
-            m_local[j] += bonds.length[b] * bonds.volume_factor[b] * volume[i];
+            m_local[j] += bonds.length[b] * bonds.volume_factor(b) * volume[i];
         }
     ParticleVector m_vector;
     particles.reinit_vector(m_vector, 1);
@@ -469,7 +469,7 @@ namespace perideal
           const unsigned int j = bonds.neighbor[b];
           const Tensor<1, 2> n = (x[j] - x[i]) / bonds.length[b];
           k0[b] *= am::directional_modulus(Lambda0, n);
-          g[b] = quadratic_form(M, n) * bonds.volume_factor[b] * volume[i] * volume[j];
+          g[b] = quadratic_form(M, n) * bonds.volume_factor(b) * volume[i] * volume[j];
         }
     kernel->blocks.to_lanes(k0, kernel->lane_k);
     kernel->blocks.to_lanes(g, kernel->lane_g);

@@ -107,11 +107,11 @@ namespace perideal
     if (context.lattice_fracture)
       {
         // A bond at the critical slope r0 holds k r0^2 |xi| / 2.
-        const double r0 = this->critical_stretch(1.);
-        this->fracture_factor =
-          lattice_fracture_factor<dim>(particles, bond_coefficient, [r0](double r) {
-            return 0.5 * r0 * r0 * r;
-          });
+        const double r0       = this->critical_stretch(1.);
+        this->fracture_factor = lattice_fracture_factor<dim>(
+          particles,
+          [&](const unsigned int, const std::size_t b) { return bond_coefficient[b]; },
+          [r0](double r) { return 0.5 * r0 * r0 * r; });
       }
     if (twist.active())
       {

@@ -289,7 +289,7 @@ namespace perideal
     for (unsigned int i = 0; i < n_owned; ++i)
       for (unsigned int b = bonds.row_start[i]; b < bonds.row_start[i + 1]; ++b)
         state_coefficient[b] =
-          delta * bonds.volume_factor[b] * volume[i] * volume[bonds.neighbor[b]];
+          delta * bonds.volume_factor(b) * volume[i] * volume[bonds.neighbor[b]];
 
     Kernel &k = *kernel;
     k.twist_field.clear();

@@ -95,7 +95,7 @@ namespace perideal
             const Tensor<1, dim> xi   = x[j] - x[i];
             const Tensor<2, dim> xixi = outer_product(xi, xi);
             const Tensor<1, dim> dw   = xi * (w.local_element(j) - w.local_element(i));
-            const double         chi  = bonds.volume_factor[b];
+            const double         chi  = bonds.volume_factor(b);
             shape[i] += chi * volume[j] * xixi;
             moment[i] += chi * volume[j] * dw;
             // The other end sees -xi and -(w_j - w_i): the same products.

@@ -66,7 +66,8 @@ namespace perideal
   template <int dim>
   struct BondBased<dim>::Kernel
   {
-    /// The bonds in SIMD blocks, and bond_coefficient per lane.
+    /// The bonds in SIMD blocks, and the pair coefficient per lane (the one copy: the model
+    /// keeps none per bond).
     BondBlocks<dim>                 blocks;
     typename BondBlocks<dim>::Array lane_coefficient;
     /// Kernel-order work fields: displacement, force, energy density.
@@ -157,22 +158,43 @@ namespace perideal
           c = 48. * E / (5. * pi * context.thickness * std::pow(delta, 3));
           break;
       }
+    // The surface factors go straight into the lane coefficients (pair_coefficient()): the
+    // model keeps none per bond, and frees the bond list's before the blocks are built.
     BondBlocks<dim> &blocks = kernel->blocks;
+    BondList        &bonds  = particles.bonds();
+    bonds.surface_factor    = std::vector<double>();
     blocks.reinit(particles);
     blocks.reinit_field(kernel->u_field, dim);
     blocks.reinit_field(kernel->f_field, dim);
     blocks.reinit_field(kernel->w_field, 1);
-    fit_report = apply_surface_correction<dim>(*this, particles, context);
-    set_bond_coefficients(particles, true);
-    fracture_factor = 1.;
+    fit_report           = apply_surface_correction<dim>(*this,
+                                               particles,
+                                               context,
+                                               [&](const SurfaceFactors &surface_factor) {
+                                                 set_bond_coefficients(particles, surface_factor);
+                                               });
+    bonds.surface_factor = std::vector<double>();
+    fracture_factor      = 1.;
     if (context.lattice_fracture)
       {
         // A bond at the critical stretch s0 holds k s0^2 |xi| / 2.
         const double s0 = critical_stretch(1.);
-        fracture_factor = lattice_fracture_factor<dim>(particles, bond_coefficient, [s0](double r) {
-          return 0.5 * s0 * s0 * r;
-        });
+        fracture_factor = lattice_fracture_factor<dim>(
+          particles,
+          [&](const unsigned int i, const std::size_t b) {
+            return pair_coefficient(particles, i, b);
+          },
+          [s0](double r) { return 0.5 * s0 * s0 * r; });
       }
+  }
+
+  template <int dim>
+  double
+  BondBased<dim>::pair_coefficient(const ParticleSystem<dim> &particles,
+                                   const unsigned int         i,
+                                   const std::size_t          b) const
+  {
+    return kernel->lane_coefficient[kernel->blocks.lane_of(particles.bonds(), i, b)];
   }
 
   template <int dim>
@@ -180,7 +202,7 @@ namespace perideal
   BondBased<dim>::surface_correction_law(ParticleSystem<dim> &particles)
   {
     auto law = elastic_surface_correction_law<dim>(*this, particles, [this, &particles]() {
-      set_bond_coefficients(particles, false);
+      set_bond_coefficients(particles, {});
     });
     // Per end and unit chi V_i V_j, c |xi| (n.e.n)^2 / 4 under a homogeneous strain.
     const double micromodulus = c;
@@ -193,11 +215,22 @@ namespace perideal
 
   template <int dim>
   void
-  BondBased<dim>::set_bond_coefficients(const ParticleSystem<dim> &particles,
-                                        const bool                 with_surface_factor)
+  BondBased<dim>::set_bond_coefficients(
+    const ParticleSystem<dim>                                          &particles,
+    const std::function<double(const unsigned int, const std::size_t)> &surface_factor)
   {
-    bond_pair_coefficients(particles, c, with_surface_factor, bond_coefficient);
-    kernel->blocks.to_lanes(bond_coefficient, kernel->lane_coefficient);
+    const BondList &bonds  = particles.bonds();
+    const auto     &volume = particles.volumes();
+    kernel->blocks.to_lanes(
+      bonds,
+      [&](const unsigned int i, const std::size_t b) {
+        // bond_pair_coefficient() with the factor G of the correction.
+        const unsigned int j = bonds.neighbor[b];
+        return surface_factor ? c * (surface_factor(i, b) * particles.bond_energy_weight(i, j)) *
+                                  bonds.volume_factor(b) * volume[i] * volume[j] :
+                                bond_pair_coefficient(particles, c, false, i, b);
+      },
+      kernel->lane_coefficient);
   }
 
   template <int dim>
@@ -234,14 +267,14 @@ namespace perideal
     for (const unsigned int b : bonds.newly_broken)
       {
         // The bond's particle: the row of the bond list that holds it.
-        const unsigned int i = std::upper_bound(bonds.row_start.begin(), bonds.row_start.end(), b) -
-                               bonds.row_start.begin() - 1;
+        const unsigned int i = bonds.row_of(b);
         const unsigned int j = bonds.neighbor[b];
         Tensor<1, dim>     r = x[j] - x[i];
         for (unsigned int d = 0; d < dim; ++d)
           r[d] += u.local_element(j * dim + d) - u.local_element(i * dim + d);
         const double s = r.norm() / bonds.length[b] - 1.;
-        released += particles.bond_share(b) * 0.5 * bond_coefficient[b] * s * s * bonds.length[b];
+        released += particles.bond_share(b) * 0.5 * pair_coefficient(particles, i, b) * s * s *
+                    bonds.length[b];
       }
     bonds.newly_broken.clear();
     return released;

@@ -11,14 +11,20 @@ namespace perideal
   using namespace LinearizationRows;
 
   // PMB: the bond b couples i and j through the block k_b n n^T (force density per unit
-  // displacement k_b = c G chi V_j / |xi|, i.e. bond_coefficient / (|xi| V_i)); block
+  // displacement k_b = c G chi V_j / |xi|, i.e. bond_pair_coefficient() / (|xi| V_i)); block
   // Gershgorin with spectral norms gives |K_ii| + sum_j |K_ij| <= 2 sum_j k_b.
   template <int dim>
   void
   BondBased<dim>::stiffness_bound(const ParticleSystem<dim> &particles,
                                   std::vector<double>       &per_particle) const
   {
-    bond_pair_stiffness_bound(particles, bond_coefficient, dim, per_particle);
+    bond_pair_stiffness_bound<dim>(
+      particles,
+      [this, &particles](const unsigned int i, const std::size_t b) {
+        return pair_coefficient(particles, i, b);
+      },
+      dim,
+      per_particle);
   }
 
   // PMB linearized: f_i V_i = sum_j (c G chi / |xi|) V_i V_j n n^T (u_j - u_i), i.e. one row
@@ -28,6 +34,11 @@ namespace perideal
   BondBased<dim>::linearize(const ParticleSystem<dim> &particles, LinearizedModel &linearized) const
   {
     linearized.reinit(this->field_layout().n_components(), particles.n_owned());
+    std::vector<double> bond_coefficient(particles.bonds().size());
+    for (unsigned int i = 0; i < particles.n_owned(); ++i)
+      for (unsigned int b = particles.bonds().row_start[i]; b < particles.bonds().row_start[i + 1];
+           ++b)
+        bond_coefficient[b] = pair_coefficient(particles, i, b);
     add_bond_rows(particles,
                   intact_bond_stiffness(particles.bonds(), bond_coefficient),
                   extension_row<dim>(particles),

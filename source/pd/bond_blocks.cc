@@ -79,54 +79,80 @@ namespace perideal
         class_list.push_back(c);
       }
 
+    // The bonds bucketed by their group (the group of their end of lower kernel index): a
+    // counting sort that holds one index per bond.
+    const auto lower_end = [&](const unsigned int i, const unsigned int b) {
+      return std::min(kernel_index[i], kernel_index[bonds.neighbor[b]]);
+    };
+    const std::size_t        n_groups = (std::size_t(n_local) + width - 1) / width;
+    std::vector<std::size_t> group_start(n_groups + 1, 0);
+    for (unsigned int i = 0; i < n_owned; ++i)
+      for (unsigned int b = bonds.row_start[i]; b < bonds.row_start[i + 1]; ++b)
+        ++group_start[lower_end(i, b) / width + 1];
+    std::partial_sum(group_start.begin(), group_start.end(), group_start.begin());
+    std::vector<unsigned int> by_group(bonds.size());
+    {
+      std::vector<std::size_t> next(group_start.begin(), group_start.end() - 1);
+      for (unsigned int i = 0; i < n_owned; ++i)
+        for (unsigned int b = bonds.row_start[i]; b < bonds.row_start[i + 1]; ++b)
+          by_group[next[lower_end(i, b) / width]++] = b;
+    }
+
+    // Blocks: a group of width particles, one class, one offset; within a group, the blocks by
+    // class, then offset.
     struct Pair
     {
-      unsigned int a;
-      int          offset;
       unsigned int bond_class;
+      int          offset;
+      unsigned int lane;
       unsigned int bond;
     };
     std::vector<Pair> pairs;
-    pairs.reserve(bonds.size());
-    for (unsigned int i = 0; i < n_owned; ++i)
-      for (unsigned int b = bonds.row_start[i]; b < bonds.row_start[i + 1]; ++b)
-        {
-          const unsigned int j = bonds.neighbor[b];
-          pairs.push_back({std::min(kernel_index[i], kernel_index[j]),
-                           std::abs(int(kernel_index[j]) - int(kernel_index[i])),
-                           class_of.at(lattice_vector(i, b)),
-                           b});
-        }
-
-    // Blocks: a group of width particles, one class, one offset.
-    std::sort(pairs.begin(), pairs.end(), [](const Pair &x, const Pair &y) {
-      if (x.a / width != y.a / width)
-        return x.a / width < y.a / width;
-      if (x.bond_class != y.bond_class)
-        return x.bond_class < y.bond_class;
-      if (x.offset != y.offset)
-        return x.offset < y.offset;
-      return x.a < y.a;
-    });
     group_list.clear();
     block_list.clear();
     lane_bond.clear();
     const unsigned int none = numbers::invalid_unsigned_int;
-    for (std::size_t s = 0; s < pairs.size();)
+    for (std::size_t group = 0; group < n_groups; ++group)
       {
-        const unsigned int group = pairs[s].a / width;
-        if (group_list.empty() || group_list.back().first_particle != group * width)
-          group_list.push_back({group * width, static_cast<unsigned int>(block_list.size())});
-        block_list.push_back({pairs[s].offset, pairs[s].bond_class});
-        lane_bond.resize(lane_bond.size() + width, none);
-        unsigned int *lanes = lane_bond.data() + lane_bond.size() - width;
-        std::size_t   e     = s;
-        for (; e < pairs.size() && pairs[e].a / width == group &&
-               pairs[e].bond_class == pairs[s].bond_class && pairs[e].offset == pairs[s].offset;
-             ++e)
-          lanes[pairs[e].a % width] = pairs[e].bond;
-        s = e;
+        if (group_start[group] == group_start[group + 1])
+          continue;
+        pairs.clear();
+        for (std::size_t k = group_start[group]; k < group_start[group + 1]; ++k)
+          {
+            const unsigned int b = by_group[k];
+            const unsigned int i = bonds.row_of(b);
+            const unsigned int j = bonds.neighbor[b];
+            pairs.push_back({class_of.at(lattice_vector(i, b)),
+                             std::abs(int(kernel_index[j]) - int(kernel_index[i])),
+                             lower_end(i, b) % width,
+                             b});
+          }
+        std::sort(pairs.begin(), pairs.end(), [](const Pair &x, const Pair &y) {
+          if (x.bond_class != y.bond_class)
+            return x.bond_class < y.bond_class;
+          if (x.offset != y.offset)
+            return x.offset < y.offset;
+          return x.lane < y.lane;
+        });
+        group_list.push_back(
+          {static_cast<unsigned int>(group * width), static_cast<unsigned int>(block_list.size())});
+        for (std::size_t s = 0; s < pairs.size();)
+          {
+            block_list.push_back({pairs[s].offset, pairs[s].bond_class});
+            lane_bond.resize(lane_bond.size() + width, none);
+            unsigned int *lanes = lane_bond.data() + lane_bond.size() - width;
+            std::size_t   e     = s;
+            for (; e < pairs.size() && pairs[e].bond_class == pairs[s].bond_class &&
+                   pairs[e].offset == pairs[s].offset;
+                 ++e)
+              lanes[pairs[e].lane] = pairs[e].bond;
+            s = e;
+          }
       }
+    by_group = std::vector<unsigned int>();
+    // The lane arrays grew block by block: no spare capacity kept.
+    lane_bond.shrink_to_fit();
+    block_list.shrink_to_fit();
     group_list.push_back(
       {numbers::invalid_unsigned_int, static_cast<unsigned int>(block_list.size())});
 
@@ -181,6 +207,46 @@ namespace perideal
     per_lane.resize_fast(lane_bond.size());
     for (std::size_t l = 0; l < lane_bond.size(); ++l)
       per_lane[l] = (lane_bond[l] == numbers::invalid_unsigned_int ? 0. : per_bond[lane_bond[l]]);
+  }
+
+  template <int dim>
+  void
+  BondBlocks<dim>::to_lanes(
+    const BondList                                                     &bonds,
+    const std::function<double(const unsigned int, const std::size_t)> &value,
+    Array                                                              &per_lane) const
+  {
+    per_lane.resize_fast(lane_bond.size());
+    for (std::size_t l = 0; l < lane_bond.size(); ++l)
+      {
+        const unsigned int b = lane_bond[l];
+        per_lane[l] = (b == numbers::invalid_unsigned_int ? 0. : value(bonds.row_of(b), b));
+      }
+  }
+
+  template <int dim>
+  std::size_t
+  BondBlocks<dim>::lane_of(const BondList &bonds, const unsigned int i, const std::size_t b) const
+  {
+    const unsigned int ki = kernel_index[i], kj = kernel_index[bonds.neighbor[b]];
+    const unsigned int a      = std::min(ki, kj);
+    const int          offset = std::abs(int(kj) - int(ki));
+    // The group of a (the last entry is the sentinel).
+    const auto group = std::upper_bound(group_list.begin(),
+                                        group_list.end() - 1,
+                                        a,
+                                        [](const unsigned int particle, const Group &g) {
+                                          return particle < g.first_particle;
+                                        }) -
+                       1;
+    for (unsigned int q = group->first_block; q < (group + 1)->first_block; ++q)
+      {
+        const std::size_t lane = std::size_t(q) * width + (a - group->first_particle);
+        if (block_list[q].offset == offset && lane_bond[lane] == b)
+          return lane;
+      }
+    Assert(false, ExcMessage("Bond " + std::to_string(b) + " is in no lane."));
+    return numbers::invalid_unsigned_int;
   }
 
   template <int dim>

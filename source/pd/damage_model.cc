@@ -104,7 +104,7 @@ namespace perideal
         {
           const unsigned int j     = bonds.neighbor[b];
           const double       lost  = bonds.intact[b] ? 0. : 1.;
-          const double       share = bonds.volume_factor[b];
+          const double       share = bonds.volume_factor(b);
           total[i] += share * volume[j];
           broken[i] += lost * share * volume[j];
           if (j < n_owned)

@@ -35,9 +35,9 @@ namespace perideal
       for (unsigned int b = bonds.row_start[i]; b < bonds.row_start[i + 1]; ++b)
         {
           const unsigned int j = bonds.neighbor[b];
-          family[i] += bonds.volume_factor[b] * volume[j];
+          family[i] += bonds.volume_factor(b) * volume[j];
           if (j < n_owned)
-            family[j] += bonds.volume_factor[b] * volume[i];
+            family[j] += bonds.volume_factor(b) * volume[i];
           for (unsigned int a = 0; a < dim; ++a)
             {
               const double share = 0.5 * std::abs(x[j][a] - x[i][a]) * bond_energy[b];
@@ -97,14 +97,16 @@ namespace perideal
 
   template <int dim>
   double
-  lattice_fracture_factor(const ParticleSystem<dim>           &particles,
-                          const std::vector<double>           &coefficient,
-                          const std::function<double(double)> &energy)
+  lattice_fracture_factor(
+    const ParticleSystem<dim>                                          &particles,
+    const std::function<double(const unsigned int, const std::size_t)> &coefficient,
+    const std::function<double(double)>                                &energy)
   {
     const BondList     &bonds = particles.bonds();
     std::vector<double> bond_energy(bonds.size(), 0.);
-    for (unsigned int b = 0; b < bonds.row_start[particles.n_owned()]; ++b)
-      bond_energy[b] = coefficient[b] * energy(bonds.length[b]);
+    for (unsigned int i = 0; i < particles.n_owned(); ++i)
+      for (std::size_t b = bonds.row_start[i]; b < bonds.row_start[i + 1]; ++b)
+        bond_energy[b] = coefficient(i, b) * energy(bonds.length[b]);
     return 1. / std::sqrt(lattice_fracture_energy(particles, bond_energy));
   }
 
@@ -213,10 +215,10 @@ namespace perideal
                             MPI_Comm);
   template double
   lattice_fracture_factor<2>(const ParticleSystem<2> &,
-                             const std::vector<double> &,
+                             const std::function<double(const unsigned int, const std::size_t)> &,
                              const std::function<double(double)> &);
   template double
   lattice_fracture_factor<3>(const ParticleSystem<3> &,
-                             const std::vector<double> &,
+                             const std::function<double(const unsigned int, const std::size_t)> &,
                              const std::function<double(double)> &);
 } // namespace perideal

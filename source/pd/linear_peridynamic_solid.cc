@@ -229,7 +229,7 @@ namespace perideal
     for (unsigned int i = 0; i < particles.n_owned(); ++i)
       for (unsigned int b = bonds.row_start[i]; b < bonds.row_start[i + 1]; ++b)
         pair_weight[b] = influence->value(bonds.length[b], context.horizon) *
-                         bonds.volume_factor[b] * volume[i] * volume[bonds.neighbor[b]];
+                         bonds.volume_factor(b) * volume[i] * volume[bonds.neighbor[b]];
     Kernel &k = *kernel;
     k.blocks.reinit(particles);
     k.blocks.to_lanes(pair_weight, k.lane_weight);

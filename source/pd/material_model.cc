@@ -290,15 +290,11 @@ namespace perideal
                          const bool                 with_surface_factor,
                          std::vector<double>       &coefficient)
   {
-    const BondList &bonds  = particles.bonds();
-    const auto     &volume = particles.volumes();
+    const BondList &bonds = particles.bonds();
     coefficient.resize(bonds.size());
     for (unsigned int i = 0; i < particles.n_owned(); ++i)
       for (unsigned int b = bonds.row_start[i]; b < bonds.row_start[i + 1]; ++b)
-        coefficient[b] =
-          micromodulus *
-          (with_surface_factor ? bonds.surface_factor[b] * bonds.energy_weight[b] : 1.) *
-          bonds.volume_factor[b] * volume[i] * volume[bonds.neighbor[b]];
+        coefficient[b] = bond_pair_coefficient(particles, micromodulus, with_surface_factor, i, b);
   }
 
   template <int dim>
@@ -307,6 +303,21 @@ namespace perideal
                             const std::vector<double> &coefficient,
                             const unsigned int         n_components,
                             std::vector<double>       &per_particle)
+  {
+    bond_pair_stiffness_bound<dim>(
+      particles,
+      [&coefficient](const unsigned int, const std::size_t b) { return coefficient[b]; },
+      n_components,
+      per_particle);
+  }
+
+  template <int dim>
+  void
+  bond_pair_stiffness_bound(
+    const ParticleSystem<dim>                                          &particles,
+    const std::function<double(const unsigned int, const std::size_t)> &coefficient,
+    const unsigned int                                                  n_components,
+    std::vector<double>                                                &per_particle)
   {
     const BondList     &bonds   = particles.bonds();
     const auto         &volume  = particles.volumes();
@@ -318,7 +329,7 @@ namespace perideal
           if (!bonds.intact[b])
             continue;
           const unsigned int j = bonds.neighbor[b];
-          const double       k = 2. * coefficient[b] / bonds.length[b];
+          const double       k = 2. * coefficient(i, b) / bonds.length[b];
           bound[i] += k / volume[i];
           if (j < n_owned)
             bound[j] += k / volume[j];
@@ -362,6 +373,16 @@ namespace perideal
   template void
   bond_pair_stiffness_bound<3>(const ParticleSystem<3> &,
                                const std::vector<double> &,
+                               unsigned int,
+                               std::vector<double> &);
+  template void
+  bond_pair_stiffness_bound<2>(const ParticleSystem<2> &,
+                               const std::function<double(const unsigned int, const std::size_t)> &,
+                               unsigned int,
+                               std::vector<double> &);
+  template void
+  bond_pair_stiffness_bound<3>(const ParticleSystem<3> &,
+                               const std::function<double(const unsigned int, const std::size_t)> &,
                                unsigned int,
                                std::vector<double> &);
 

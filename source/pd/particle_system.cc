@@ -2,6 +2,7 @@
 // PeriDeal: distributed particles on a lattice and their bonds.
 // ---------------------------------------------------------------------
 #include <deal.II/base/index_set.h>
+#include <deal.II/base/utilities.h>
 #include <deal.II/distributed/tria.h>
 #include <deal.II/grid/grid_generator.h>
 #include <deal.II/grid/grid_tools.h>
@@ -67,6 +68,12 @@ namespace perideal
                                 const std::vector<PreCrack<dim>>              &pre_cracks,
                                 const std::function<bool(const Point<dim> &)> &no_fail)
   {
+    if (resident_before == 0)
+      {
+        Utilities::System::MemoryStats memory;
+        Utilities::System::get_memory_stats(memory);
+        resident_before = memory.VmRSS;
+      }
     parameters = settings;
     partitioners.clear();
     grid = Lattice<dim>(settings.spacing, settings.perturbation, settings.perturbation_seed);
@@ -302,20 +309,19 @@ namespace perideal
     for (auto &j : found.neighbor)
       j = new_index[j];
 
-    // Per-bond data.
+    // Per-bond data (the neighbours grew row by row: no spare capacity kept).
+    found.neighbor.shrink_to_fit();
     const std::size_t n_bonds = found.neighbor.size();
     found.length.resize(n_bonds);
-    found.volume_factor.resize(n_bonds);
     found.surface_factor.assign(n_bonds, 1.);
-    found.energy_weight.assign(n_bonds, 1.);
     found.intact.assign(n_bonds, 1);
+    found.partial_volume = {parameters.partial_volume, parameters.horizon, parameters.spacing};
     for (unsigned int i = 0; i < n_owned_particles; ++i)
       for (unsigned int b = found.row_start[i]; b < found.row_start[i + 1]; ++b)
         {
-          const Point<dim> &xj   = reference_positions[found.neighbor[b]];
-          const double      r    = reference_positions[i].distance(xj);
-          found.length[b]        = r;
-          found.volume_factor[b] = partial_volume_factor(r);
+          const Point<dim> &xj = reference_positions[found.neighbor[b]];
+          const double      r  = reference_positions[i].distance(xj);
+          found.length[b]      = r;
           for (const auto &crack : pre_cracks)
             if (crack.cuts(reference_positions[i], xj))
               found.intact[b] = 0;
@@ -390,10 +396,6 @@ namespace perideal
   {
     for (std::size_t i = 0; i < reference_positions.size(); ++i)
       particle_energy_weights[i] = weight(reference_positions[i]);
-    for (unsigned int i = 0; i < n_owned_particles; ++i)
-      for (unsigned int b = bond_list.row_start[i]; b < bond_list.row_start[i + 1]; ++b)
-        bond_list.energy_weight[b] =
-          0.5 * (particle_energy_weights[i] + particle_energy_weights[bond_list.neighbor[b]]);
   }
 
   template <int dim>
@@ -440,10 +442,7 @@ namespace perideal
   double
   ParticleSystem<dim>::partial_volume_factor(const double r) const
   {
-    const double delta = parameters.horizon, dx = parameters.spacing;
-    return (parameters.partial_volume == PartialVolume::none || r <= delta - 0.5 * dx) ?
-             1. :
-             (delta + 0.5 * dx - r) / dx;
+    return PartialVolumeLaw{parameters.partial_volume, parameters.horizon, parameters.spacing}(r);
   }
 
   template <int dim>
@@ -480,6 +479,13 @@ namespace perideal
   ParticleSystem<dim>::settings() const
   {
     return parameters;
+  }
+
+  template <int dim>
+  std::uint64_t
+  ParticleSystem<dim>::resident_memory_before() const
+  {
+    return resident_before;
   }
 
   template <int dim>

@@ -218,7 +218,7 @@ namespace perideal
           double               axial, shear;
           const Tensor<1, dim> xi = x[bonds.neighbor[b]] - x[i];
           law(xi, axial, shear);
-          const double k = bonds.volume_factor[b] * volume[i] * volume[bonds.neighbor[b]] / unit;
+          const double k = bonds.volume_factor(b) * volume[i] * volume[bonds.neighbor[b]] / unit;
           equations.h[b] =
             V::bond_tensor((x[bonds.neighbor[b]] - x[i]) / bonds.length[b], k * axial, k * shear);
         }

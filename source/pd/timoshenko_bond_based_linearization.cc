@@ -178,8 +178,7 @@ namespace perideal
     const unsigned int nc = Kernel::n_components;
     for (const unsigned int b : bonds.newly_broken)
       {
-        const unsigned int i = std::upper_bound(bonds.row_start.begin(), bonds.row_start.end(), b) -
-                               bonds.row_start.begin() - 1;
+        const unsigned int i = bonds.row_of(b);
         bond_rows(particles,
                   i,
                   b,

@@ -186,8 +186,10 @@ namespace perideal
            [&](const double r) { return 0.5 * C.bending * kappa0 * kappa0 / r; }}};
         for (unsigned int m = 0; m < 3; ++m)
           if (m == 0 || std::isfinite(ratio[m - 1]))
-            fracture_factor[m] =
-              lattice_fracture_factor<dim>(particles, bond_coefficient, energy[m]);
+            fracture_factor[m] = lattice_fracture_factor<dim>(
+              particles,
+              [&](const unsigned int, const std::size_t b) { return bond_coefficient[b]; },
+              energy[m]);
       }
   }
 

@@ -64,7 +64,7 @@ namespace
       }
     for (unsigned int i = 0; i < ps.n_owned(); ++i)
       for (unsigned int b = bonds.row_start[i]; b < bonds.row_start[i + 1]; ++b)
-        k[b] = bonds.volume_factor[b] * volume[i] * volume[bonds.neighbor[b]];
+        k[b] = bonds.volume_factor(b) * volume[i] * volume[bonds.neighbor[b]];
 
     // The plain loop.
     std::vector<double>       f_reference(ps.n_owned(), 0.), e_reference(ps.n_owned(), 0.);

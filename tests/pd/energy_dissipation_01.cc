@@ -92,7 +92,8 @@ namespace
     const auto  &bonds    = ps.bonds();
     double       n_broken = 0.;
     double       bond_sum = 0.; // sum of k s^2 |xi| / 2 over the broken bonds (PMB)
-    const double c        = 9. * E / (dealii::numbers::PI * h * std::pow(body.delta, 3));
+    // PMB keeps k = c G chi V_i V_j per lane only (its surface factors are freed).
+    const auto *pmb = dynamic_cast<const perideal::BondBased<2> *>(&model);
     for (unsigned int i = 0; i < ps.n_owned(); ++i)
       for (unsigned int b = bonds.row_start[i]; b < bonds.row_start[i + 1]; ++b)
         if (bonds.intact[b] == 0)
@@ -102,8 +103,7 @@ namespace
             for (unsigned int d = 0; d < 2; ++d)
               r[d] += u.local_element(2 * j + d) - u.local_element(2 * i + d);
             const double s = r.norm() / bonds.length[b] - 1.;
-            const double k = c * bonds.surface_factor[b] * bonds.energy_weight[b] *
-                             bonds.volume_factor[b] * ps.volumes()[i] * ps.volumes()[j];
+            const double k = (pmb != nullptr ? pmb->pair_coefficient(ps, i, b) : 0.);
             n_broken += ps.bond_share(b);
             bond_sum += ps.bond_share(b) * 0.5 * k * s * s * bonds.length[b];
           }
@@ -221,14 +221,18 @@ namespace
     const auto  &bonds       = ps.bonds();
     const double delta       = horizon_factor * 0.5 * dx;
     const double c           = 9. * E / (dealii::numbers::PI * h * std::pow(delta, 3));
+    const auto  *pmb         = dynamic_cast<const perideal::BondBased<2> *>(&problem.material());
     double       at_critical = 0.;
     for (unsigned int i = 0; i < ps.n_owned(); ++i)
       for (unsigned int b = bonds.row_start[i]; b < bonds.row_start[i + 1]; ++b)
-        if (bonds.intact[b] == 0)
-          at_critical += ps.bond_share(b) * 0.5 * c * bonds.surface_factor[b] *
-                         bonds.volume_factor[b] * ps.volumes()[i] *
-                         ps.volumes()[bonds.neighbor[b]] * critical_stretch * critical_stretch *
-                         bonds.length[b];
+        if (bonds.intact[b] == 0 && pmb != nullptr)
+          {
+            // k = c G chi V_i V_j, with the model's micromodulus c as the analytic one.
+            AssertThrow(std::abs(pmb->micromodulus() / c - 1.) < 1e-12,
+                        dealii::ExcMessage("micromodulus"));
+            at_critical += ps.bond_share(b) * 0.5 * pmb->pair_coefficient(ps, i, b) *
+                           critical_stretch * critical_stretch * bonds.length[b];
+          }
     at_critical = dealii::Utilities::MPI::sum(at_critical, comm);
 
     if (dealii::Utilities::MPI::this_mpi_process(comm) != 0)

@@ -153,8 +153,7 @@ namespace
           if (intact_reference[b] == 0)
             continue;
           const unsigned int j = bonds.neighbor[b];
-          const double k = model.micromodulus() * bonds.surface_factor[b] * bonds.energy_weight[b] *
-                           bonds.volume_factor[b] * volume[i] * volume[j];
+          const double       k = model.pair_coefficient(ps, i, b);
           for (unsigned int d = 0; d < dim; ++d)
             {
               f_reference[i * dim + d] += k * s * y[d] / length / volume[i];
@@ -207,7 +206,7 @@ namespace
     const auto                              &bonds  = ps.bonds();
     const auto                              &volume = ps.volumes();
     const auto pair_weight = [&](const unsigned int i, const unsigned int b) {
-      return omega.value(bonds.length[b], delta) * bonds.volume_factor[b] * volume[i] *
+      return omega.value(bonds.length[b], delta) * bonds.volume_factor(b) * volume[i] *
              volume[bonds.neighbor[b]];
     };
     ParticleVector m, theta, u, f;

@@ -56,12 +56,12 @@ namespace
               const unsigned int j        = bonds.neighbor[b];
               const double       r        = ps.positions()[i].distance(ps.positions()[j]);
               const double       expected = partial ? expected_factor(r, s.horizon, dx) : 1.;
-              if (std::abs(bonds.volume_factor[b] - expected) > 1e-12 ||
-                  bonds.volume_factor[b] < 0.5 - 1e-12 || bonds.volume_factor[b] > 1.)
+              if (std::abs(bonds.volume_factor(b) - expected) > 1e-12 ||
+                  bonds.volume_factor(b) < 0.5 - 1e-12 || bonds.volume_factor(b) > 1.)
                 ++bad;
-              family_sum[i] += bonds.volume_factor[b];
+              family_sum[i] += bonds.volume_factor(b);
               if (j < ps.n_owned())
-                family_sum[j] += bonds.volume_factor[b];
+                family_sum[j] += bonds.volume_factor(b);
             }
         bad = dealii::Utilities::MPI::sum(bad, comm);
 
@@ -137,9 +137,9 @@ namespace
           {
             const unsigned int j = bonds.neighbor[b];
             if (ps.positions()[i].distance(centre) < 1e-3 * dx)
-              local += bonds.volume_factor[b];
+              local += bonds.volume_factor(b);
             if (j < ps.n_owned() && ps.positions()[j].distance(centre) < 1e-3 * dx)
-              local += bonds.volume_factor[b];
+              local += bonds.volume_factor(b);
           }
       geometric_sum = dealii::Utilities::MPI::sum(local, comm);
     }

@@ -166,18 +166,26 @@ namespace
     return result;
   }
 
-  // The range of the bond factors over the ranks.
+  // The range of the bond factors over the ranks. PMB frees the factors after its set-up and
+  // keeps k = c G chi V_i V_j: G from k there.
   template <int dim>
   std::pair<double, double>
-  factor_range(const perideal::ParticleSystem<dim> &ps)
+  factor_range(const perideal::ParticleSystem<dim> &ps, const perideal::MaterialModel<dim> &model)
   {
-    const auto &g  = ps.bonds().surface_factor;
+    const auto &bonds  = ps.bonds();
+    const auto &volume = ps.volumes();
+    const auto *pmb    = dynamic_cast<const perideal::BondBased<dim> *>(&model);
     double      lo = inf, hi = -inf;
-    for (const double x : g)
-      {
-        lo = std::min(lo, x);
-        hi = std::max(hi, x);
-      }
+    for (unsigned int i = 0; i < ps.n_owned(); ++i)
+      for (unsigned int b = bonds.row_start[i]; b < bonds.row_start[i + 1]; ++b)
+        {
+          const double x = pmb != nullptr ? pmb->pair_coefficient(ps, i, b) /
+                                              (pmb->micromodulus() * bonds.volume_factor(b) *
+                                               volume[i] * volume[bonds.neighbor[b]]) :
+                                            bonds.surface_factor[b];
+          lo             = std::min(lo, x);
+          hi             = std::max(hi, x);
+        }
     return {Utilities::MPI::min(lo, comm), Utilities::MPI::max(hi, comm)};
   }
 
@@ -218,7 +226,7 @@ namespace
         context.stiffness_fit       = fit;
         model->initialize(body.ps, context);
         const auto d     = deviation<dim>(body, *model);
-        const auto range = factor_range(body.ps);
+        const auto range = factor_range(body.ps, *model);
         deallog << "  " << (fit ? "stiffness fit" : "energy method")
                 << ": largest |D_i - D| / D_11 interior " << d.largest[0] << ", faces "
                 << d.largest[1] << ", corners " << d.largest[2] << "; factors " << range.first

@@ -129,6 +129,10 @@ namespace perideal
     const ParticleSystem<dim> &
     particles() const;
 
+    /// The material model of the particles (after setup()).
+    const MaterialModel<dim> &
+    material() const;
+
     /// The particles' displacement after run() (owned entries).
     const ParticleVector &
     particle_displacement() const;

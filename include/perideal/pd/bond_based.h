@@ -105,6 +105,17 @@ namespace perideal
     micromodulus() const;
 
     /**
+     * @brief The pair coefficient k_b = c G chi V_i V_j of bond @p b of row @p i of the bond
+     * list of @p particles (bond_pair_coefficient() with the surface-correction factor), as the
+     * force kernel holds it: the model keeps it per lane only, and frees
+     * BondList::surface_factor after initialize().
+     */
+    double
+    pair_coefficient(const ParticleSystem<dim> &particles,
+                     const unsigned int         i,
+                     const std::size_t          b) const;
+
+    /**
      * @brief The Poisson ratio that the model implies (Cauchy relations).
      */
     double
@@ -117,8 +128,6 @@ namespace perideal
     /// The factor of the lattice calibration on the continuum's critical stretch (1 without it,
     /// ModelContext::lattice_fracture).
     double fracture_factor = 1.;
-    /// c G chi V_i V_j per bond (the pair force per unit stretch).
-    std::vector<double> bond_coefficient;
     /// What the stiffness fit achieved (<Discretization/Surface correction method>).
     StiffnessFitReport fit_report;
     /// The force kernel's data (bonds in SIMD blocks, kernel-order fields): defined in
@@ -128,12 +137,15 @@ namespace perideal
     std::unique_ptr<Kernel> kernel;
 
     /**
-     * @brief Set bond_coefficient from the micromodulus, the partial-volume factors, the
-     * particle volumes and, if @p with_surface_factor, the surface-correction factors and the
-     * coupling's energy weights (BondList::energy_weight; the one place that computes it).
+     * @brief Set the kernel's lane coefficients c G chi V_i V_j (the pair force per unit
+     * stretch; bond_pair_coefficient(), kept per lane only) from the micromodulus, the
+     * partial-volume factors, the particle volumes and, if @p surface_factor is given, the
+     * surface-correction factors G it returns for (i, b) and the coupling's energy weights.
      */
     void
-    set_bond_coefficients(const ParticleSystem<dim> &particles, const bool with_surface_factor);
+    set_bond_coefficients(
+      const ParticleSystem<dim>                                          &particles,
+      const std::function<double(const unsigned int, const std::size_t)> &surface_factor);
   };
 } // namespace perideal
 

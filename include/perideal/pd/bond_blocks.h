@@ -10,6 +10,7 @@
 
 #include <array>
 #include <cstdint>
+#include <functional>
 #include <vector>
 
 #include <experimental/simd>
@@ -219,6 +220,23 @@ namespace perideal
      */
     void
     to_lanes(const std::vector<double> &per_bond, Array &per_lane) const;
+
+    /**
+     * @brief @p per_lane[q * width + l] = @p value(i, b) for the lane's bond b, of row i of
+     * @p bonds (the bond list of reinit()), 0 for empty lanes: per-lane values of a model that
+     * keeps none per bond.
+     */
+    void
+    to_lanes(const BondList                                                     &bonds,
+             const std::function<double(const unsigned int, const std::size_t)> &value,
+             Array                                                              &per_lane) const;
+
+    /**
+     * @brief The lane of bond @p b of row @p i of @p bonds (the bond list of reinit()): a
+     * search among the blocks of the group of its end of lower kernel index.
+     */
+    std::size_t
+    lane_of(const BondList &bonds, const unsigned int i, const std::size_t b) const;
 
     /**
      * @brief The inverse of to_lanes(): @p per_bond[bond_index(q, l)] = @p per_lane[q * width +

@@ -35,16 +35,17 @@ namespace perideal
    * @brief The factor on a model's critical measure (stretch, slope, a mode's limit) that makes
    * its actual lattice dissipate the fracture energy of its continuum calibration:
    * 1 / sqrt(lattice_fracture_energy() / (1 J/m^2)) for the bond energies
-   * E_b = @p coefficient[b] @p energy(|xi_b|) that the bonds hold at the critical measure the
-   * continuum calibration gives for 1 J/m^2 (the bond energies are quadratic in the measure).
-   * @p coefficient: the model's pair coefficients (bond_pair_coefficients(), surface factors
-   * included).
+   * E_b = @p coefficient(i, b) @p energy(|xi_b|) that the bonds hold at the critical measure
+   * the continuum calibration gives for 1 J/m^2 (the bond energies are quadratic in the
+   * measure). @p coefficient: the model's pair coefficient of bond @p b of owned particle @p i
+   * (bond_pair_coefficients(), surface factors included).
    */
   template <int dim>
   double
-  lattice_fracture_factor(const ParticleSystem<dim>           &particles,
-                          const std::vector<double>           &coefficient,
-                          const std::function<double(double)> &energy);
+  lattice_fracture_factor(
+    const ParticleSystem<dim>                                          &particles,
+    const std::function<double(const unsigned int, const std::size_t)> &coefficient,
+    const std::function<double(double)>                                &energy);
 
   /**
    * @brief The fracture energy [J/m^2] that @p model dissipates, on the lattice of @p settings,

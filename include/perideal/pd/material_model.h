@@ -485,11 +485,32 @@ namespace perideal
   material_models_with(bool ModelCapabilities::*capability);
 
   /**
-   * @brief The pair coefficients k_b = c G chi V_i V_j of the bonds of a bond-based model with
-   * micromodulus @p micromodulus (PMB, antiplane): with the surface-correction factors G and
-   * the coupling's energy weights (BondList::surface_factor, BondList::energy_weight) if
-   * @p with_surface_factor, without them (G = 1) otherwise; chi the partial-volume factor.
-   * @p coefficient is sized like the bond list (the entries of owned rows are set).
+   * @brief The pair coefficient k_b = c G chi V_i V_j of bond @p b of row @p i of a bond-based
+   * model with micromodulus @p micromodulus (PMB, antiplane): with the surface-correction factor
+   * and the coupling's energy weight G (BondList::surface_factor,
+   * ParticleSystem::bond_energy_weight()) if @p with_surface_factor, without them (G = 1)
+   * otherwise; chi the partial-volume factor.
+   */
+  template <int dim>
+  inline double
+  bond_pair_coefficient(const ParticleSystem<dim> &particles,
+                        const double               micromodulus,
+                        const bool                 with_surface_factor,
+                        const unsigned int         i,
+                        const std::size_t          b)
+  {
+    const BondList    &bonds  = particles.bonds();
+    const auto        &volume = particles.volumes();
+    const unsigned int j      = bonds.neighbor[b];
+    return micromodulus *
+           (with_surface_factor ? bonds.surface_factor[b] * particles.bond_energy_weight(i, j) :
+                                  1.) *
+           bonds.volume_factor(b) * volume[i] * volume[j];
+  }
+
+  /**
+   * @brief The pair coefficients bond_pair_coefficient() of all bonds. @p coefficient is sized
+   * like the bond list (the entries of owned rows are set).
    */
   template <int dim>
   void
@@ -510,6 +531,18 @@ namespace perideal
                             const std::vector<double> &coefficient,
                             const unsigned int         n_components,
                             std::vector<double>       &per_particle);
+
+  /**
+   * @brief The bound of the other bond_pair_stiffness_bound() with k_b = @p coefficient(i, b)
+   * (bond b of row i), for a model that keeps no per-bond coefficients.
+   */
+  template <int dim>
+  void
+  bond_pair_stiffness_bound(
+    const ParticleSystem<dim>                                          &particles,
+    const std::function<double(const unsigned int, const std::size_t)> &coefficient,
+    const unsigned int                                                  n_components,
+    std::vector<double>                                                &per_particle);
 
   /**
    * @brief Register a material model for dim = 2 and 3.

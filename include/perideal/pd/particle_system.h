@@ -13,6 +13,7 @@
 #include <perideal/pd/lattice.h>
 #include <perideal/pd/pre_crack.h>
 
+#include <algorithm>
 #include <cstdint>
 #include <functional>
 #include <map>
@@ -21,6 +22,51 @@
 
 namespace perideal
 {
+  /**
+   * @brief How the volume of a neighbour that the horizon cuts is counted (seed note 000,
+   * sec. 4.3; Seleson 2014, Comput. Methods Appl. Mech. Engrg. 282).
+   *
+   * - none: every neighbour with |xi| <= delta counts fully;
+   * - book: neighbours with |xi| <= delta, scaled by beta = (delta + dx/2 - |xi|)/dx beyond
+   *   delta - dx/2 (Madenci & Oterkus 2014 codes; beta falls to 1/2 at delta, so a full family
+   *   holds 86 % of the horizon volume at delta = 3.015 dx: use with surface correction, which
+   *   rescales it);
+   * - geometric: the same beta, with the family extended to |xi| < delta + dx/2, the cells that the
+   *   horizon cuts; the family volume then matches the horizon to about 1 %.
+   */
+  enum class PartialVolume
+  {
+    none,
+    book,
+    geometric
+  };
+
+  /**
+   * @brief The partial-volume factor chi of a bond as a function of its length (PartialVolume):
+   * 1 inside delta - dx/2 (and everywhere for PartialVolume::none), (delta + dx/2 - r)/dx beyond.
+   */
+  struct PartialVolumeLaw
+  {
+    /// The rule.
+    PartialVolume rule = PartialVolume::none;
+    /// Horizon delta and lattice spacing dx [m].
+    ///@{
+    double horizon = 0.;
+    double spacing = 1.;
+    ///@}
+
+    /**
+     * @brief The factor of a bond of length @p r.
+     */
+    double
+    operator()(const double r) const
+    {
+      return (rule == PartialVolume::none || r <= horizon - 0.5 * spacing) ?
+               1. :
+               (horizon + 0.5 * spacing - r) / spacing;
+    }
+  };
+
   /**
    * @brief The bonds of the locally owned particles in compressed-row form (structure of arrays).
    *
@@ -37,15 +83,12 @@ namespace perideal
     std::vector<unsigned int> neighbor;
     /// Reference bond length |xi| [m].
     std::vector<double> length;
-    /// Partial-volume factor chi of the bond (1 inside delta - dx/2, then (delta + dx/2 -
-    /// |xi|)/dx); beta is the coupling's blending weight.
-    std::vector<double> volume_factor;
-    /// Surface-correction factor (1 until a model computes it).
+    /// Surface-correction factor (1 until a model computes it). Set-up data of the models:
+    /// one that keeps the factors in its own coefficients frees it after its initialize()
+    /// (BondBased: empty then, BondBased::pair_coefficient()).
     std::vector<double> surface_factor;
-    /// Energy weight of the bond: 1, or (beta_i + beta_j) / 2 in the overlap of a blended
-    /// FE-PD coupling (set before the model is initialized; bond-based models scale the bond
-    /// modulus by it).
-    std::vector<double> energy_weight;
+    /// The partial-volume factor chi of the bonds, a function of their length (not stored).
+    PartialVolumeLaw partial_volume;
     /// 1 while the bond carries force, 0 once broken (pre-cracks start at 0), 2 for a bond that
     /// never breaks (it touches a no-fail region). Read it freely; outside the force kernels
     /// (which keep their lane copy in step themselves, BondBlocks::break_lanes()) change it only
@@ -54,6 +97,25 @@ namespace perideal
     /// The bonds the force kernels broke (BondBlocks::break_lanes()) since the list was last
     /// cleared: MaterialModel::released_energy() takes their energy and clears it.
     std::vector<unsigned int> newly_broken;
+
+    /**
+     * @brief Partial-volume factor chi of bond @p b (1 inside delta - dx/2, then (delta + dx/2 -
+     * |xi|)/dx), computed from its length.
+     */
+    double
+    volume_factor(const std::size_t b) const
+    {
+      return partial_volume(length[b]);
+    }
+
+    /**
+     * @brief The row of bond @p b: the owned particle whose row lists it (a binary search).
+     */
+    unsigned int
+    row_of(const std::size_t b) const
+    {
+      return std::upper_bound(row_start.begin(), row_start.end(), b) - row_start.begin() - 1;
+    }
 
     /// Number of locally stored bonds.
     std::size_t
@@ -112,24 +174,6 @@ namespace perideal
     std::uint64_t n_changes = 0;
   };
 
-  /**
-   * @brief How the volume of a neighbour that the horizon cuts is counted (seed note 000,
-   * sec. 4.3; Seleson 2014, Comput. Methods Appl. Mech. Engrg. 282).
-   *
-   * - none: every neighbour with |xi| <= delta counts fully;
-   * - book: neighbours with |xi| <= delta, scaled by beta = (delta + dx/2 - |xi|)/dx beyond
-   *   delta - dx/2 (Madenci & Oterkus 2014 codes; beta falls to 1/2 at delta, so a full family
-   *   holds 86 % of the horizon volume at delta = 3.015 dx: use with surface correction, which
-   *   rescales it);
-   * - geometric: the same beta, with the family extended to |xi| < delta + dx/2, the cells that the
-   *   horizon cuts; the family volume then matches the horizon to about 1 %.
-   */
-  enum class PartialVolume
-  {
-    none,
-    book,
-    geometric
-  };
 
   /**
    * @brief Particles on a lattice, distributed over MPI ranks, with ghosts and bonds.
@@ -210,10 +254,20 @@ namespace perideal
     energy_weights() const;
     /**
      * @brief Weight the particles' energies by @p weight(x) (before the model is initialized):
-     * sets energy_weights() and BondList::energy_weight = (beta_i + beta_j) / 2.
+     * sets energy_weights(); a bond's weight is bond_energy_weight().
      */
     void
     set_energy_weights(const std::function<double(const dealii::Point<dim> &)> &weight);
+    /**
+     * @brief The energy weight of the bond between local particles @p i and @p j: 1, or
+     * (beta_i + beta_j) / 2 in the overlap of a blended FE-PD coupling (bond-based models scale
+     * the bond modulus by it).
+     */
+    double
+    bond_energy_weight(const unsigned int i, const unsigned int j) const
+    {
+      return 0.5 * (particle_energy_weights[i] + particle_energy_weights[j]);
+    }
     /// Global index of local particle @p i.
     dealii::types::global_dof_index
     global_index(const unsigned int i) const;
@@ -253,6 +307,14 @@ namespace perideal
     /// The settings used by generate().
     const Settings &
     settings() const;
+
+    /**
+     * @brief The resident memory of this process [kiB] when generate() was first called: the
+     * program without its particles, against which the run summary states the peak memory per
+     * bond and per particle.
+     */
+    std::uint64_t
+    resident_memory_before() const;
 
     /**
      * @brief The partitioner of a field with @p n_components values per particle (cached).
@@ -312,6 +374,8 @@ namespace perideal
     BondList                                                           bond_list;
     Lattice<dim>                                                       grid;
     mutable std::map<unsigned int, std::shared_ptr<const Partitioner>> partitioners;
+    /// resident_memory_before() [kiB].
+    std::uint64_t resident_before = 0;
 
     /// The largest bond length the search accepts (search_radius() with a round-off margin).
     double

@@ -19,6 +19,9 @@
 
 namespace perideal
 {
+  /// The surface-correction factor G of bond b of row i of the bond list, as a function (i, b).
+  using SurfaceFactors = std::function<double(const unsigned int, const std::size_t)>;
+
   /**
    * @brief Set BondList::surface_factor by the energy method (Madenci & Oterkus 2014, sec. 4.2;
    * seed note 002, sec. 3.2; for the scalar antiplane field, seed 000, sec. 5.1).
@@ -51,12 +54,19 @@ namespace perideal
    * It sets BondList::surface_factor; the model then sets its coefficients with the factors.
    * Called by the model's initialize() once its constants are set. Returns the fit's report
    * (the default one without a fit).
+   *
+   * With @p use, the correction hands the factors to @p use instead, once, as a function of
+   * the bond (SurfaceFactors: 1 without a correction, BondList::surface_factor after the fit);
+   * the energy method then computes each bond's factor from the particles' directional factors
+   * when asked and stores none per bond (a model that puts them straight into its own
+   * coefficients: PMB, which does not keep BondList::surface_factor).
    */
   template <int dim>
   StiffnessFitReport
-  apply_surface_correction(MaterialModel<dim>  &model,
-                           ParticleSystem<dim> &particles,
-                           const ModelContext  &context);
+  apply_surface_correction(MaterialModel<dim>                                &model,
+                           ParticleSystem<dim>                               &particles,
+                           const ModelContext                                &context,
+                           const std::function<void(const SurfaceFactors &)> &use = {});
 
   /**
    * @brief The energy density of the energy method by @p model's own force evaluation
