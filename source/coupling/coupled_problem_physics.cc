@@ -75,10 +75,12 @@ namespace perideal
     for (unsigned int k = 1; k < physics.size(); ++k)
       {
         Physics<dim> &field = *physics[k];
-        field.fe.setup(
-          [&field, this](const Point<dim> &x) { return field.method->fe_weight(blending(x)); });
-        // The particles are the first physics': only this physics' model is set up on them.
-        field.pd.setup({}, {}, false);
+        field.with_entry_names([&]() {
+          field.fe.setup(
+            [&field, this](const Point<dim> &x) { return field.method->fe_weight(blending(x)); });
+          // The particles are the first physics': only this physics' model is set up on them.
+          field.pd.setup({}, {}, false);
+        });
         if (is_root && field.pd.has_body())
           log << "Material (" << field.name << "): " << field.pd.material().summary() << std::endl;
         field.method->initialize(coupled_regions(field));

@@ -8,6 +8,7 @@
 
 #include <algorithm>
 #include <cctype>
+#include <sstream>
 
 namespace perideal
 {
@@ -166,12 +167,14 @@ namespace perideal
     settings.base_name     = problem_settings.base_name + "_" + name;
     settings.solution_name = problem_settings.solution_name + "_" + name;
     prm.enter_subsection(section(name));
-    settings.parse_field_parameters(prm);
-    settings.solver_type = solver_type_from_name(prm.get({"Solver"}, "Type"));
-    pd.parse_physics_parameters(prm, section(name), first.pd);
-    fe.parse_physics_parameters(prm, first.fe);
-    parse_field(prm, prefix);
-    parse_method(prm);
+    with_entry_names([&]() {
+      settings.parse_field_parameters(prm);
+      settings.solver_type = solver_type_from_name(prm.get({"Solver"}, "Type"));
+      pd.parse_physics_parameters(prm, section(name), first.pd);
+      fe.parse_physics_parameters(prm, first.fe);
+      parse_field(prm, prefix);
+      parse_method(prm);
+    });
     prm.leave_subsection();
     AssertThrow(method_name == first.method_name,
                 ExcMessage("<" + prefix + "Coupling/Method> = " + method_name +
@@ -191,6 +194,37 @@ namespace perideal
                            "> has the unknowns " + fe.field_layout().description() +
                            "; the physics " + name + " has a temperature: accepted <" + prefix +
                            "Finite elements/Physics> = heat."));
+  }
+
+  template <int dim>
+  std::string
+  Physics<dim>::named_in_section(const ExceptionBase &exc) const
+  {
+    std::ostringstream info;
+    exc.print_info(info);
+    std::string message = info.str();
+    // The subsections declare_parameters() gives each physics.
+    static const std::vector<std::string> own = {"Material",
+                                                 "Boundary conditions",
+                                                 "Finite elements",
+                                                 "Initial conditions",
+                                                 "Body force",
+                                                 "Solver",
+                                                 "Coupling"};
+    const std::string prefix = section(name) + "/";
+    for (const auto &subsection : own)
+      for (const std::string &closing : {std::string("/"), std::string(">")})
+        {
+          const std::string entry = "<" + subsection + closing;
+          for (auto at = message.find(entry); at != std::string::npos;
+               at      = message.find(entry, at + prefix.size() + entry.size()))
+            message.insert(at + 1, prefix);
+        }
+    // print_info() indents the message and ends it with a line break, which ExcMessage adds
+    // again.
+    const auto first = message.find_first_not_of(" \n");
+    const auto last  = message.find_last_not_of(" \n");
+    return first == std::string::npos ? message : message.substr(first, last - first + 1);
   }
 
   template <int dim>

@@ -96,6 +96,10 @@ namespace perideal
                      const ProblemSettings<dim> &problem_settings,
                      const Physics<dim>         &first);
 
+    /// The message of @p exc with the entries of this physics' subsections prefixed.
+    std::string
+    named_in_section(const dealii::ExceptionBase &exc) const;
+
     /**
      * @brief What every physics reads the same way once its regions are read, in the current
      * subsection (the top level or its own; @p prefix, "" or e.g. "Heat/", names the entries
@@ -112,6 +116,28 @@ namespace perideal
      */
     void
     parse_method(dealii::ParameterHandler &prm);
+
+    /**
+     * @brief Run @p work, which reads or sets up this physics, so that the refusals it throws
+     * name the entries of this physics' own subsections with their full path: the parsers of
+     * the regions, models and conditions name "<Material/...>", "<Boundary conditions/...>"
+     * (they read the current subsection, whichever it is), which become "<Heat/Material/...>".
+     * Entries of the problem's sections (<Discretization/...>, <Regions/...>) keep their names.
+     * For the physics after the first (the first one's entries are the top-level ones).
+     */
+    template <typename Work>
+    void
+    with_entry_names(Work &&work) const
+    {
+      try
+        {
+          work();
+        }
+      catch (const dealii::ExceptionBase &exc)
+        {
+          AssertThrow(false, dealii::ExcMessage(named_in_section(exc)));
+        }
+    }
 
     /// Its name in <Physics/List> ("mechanics" for the first physics).
     const std::string name;
