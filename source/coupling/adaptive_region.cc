@@ -257,7 +257,8 @@ namespace perideal
   AdaptiveRegion<dim>::propose_seeds(const CoupledState<dim>                         &state,
                                      const std::function<double(const Point<dim> &)> &beta,
                                      const std::function<bool(const Point<dim> &)>   &in_body,
-                                     const std::vector<double> &precrack_damage) const
+                                     const std::vector<double> &precrack_damage,
+                                     const std::string         &when) const
   {
     std::vector<double> flagged; // coordinates of the points this rank flags
     const auto          flag = [&](const Point<dim> &x) {
@@ -313,9 +314,17 @@ namespace perideal
         const auto &x          = ps.positions();
         const auto  damage     = damage_index(ps);
         const auto  directions = edge_directions<dim>();
+        // The damaged particle farthest out in the overlap, and where it is.
+        double     least_beta = 1.;
+        Point<dim> where;
         for (unsigned int i = 0; i < ps.n_owned(); ++i)
           if (damage[i] - precrack_damage[i] >= damage_threshold)
             {
+              if (const double b = beta(x[i]); b < least_beta)
+                {
+                  least_beta = b;
+                  where      = x[i];
+                }
               // (beta first: the body test may be a point search in a mesh.)
               bool near_edge = false;
               for (const double r : {0.5 * damage_distance, damage_distance})
@@ -341,6 +350,7 @@ namespace perideal
                 }
               flag(centre);
             }
+        check_crack_inside(least_beta, where, state.comm, when);
       }
 
     // The same list on every rank, in lexicographic order, thinned to one point per R/2.
@@ -367,6 +377,46 @@ namespace perideal
           }))
         kept.push_back(p);
     return kept;
+  }
+
+  template <int dim>
+  void
+  AdaptiveRegion<dim>::check_crack_inside(const double       least_beta,
+                                          const Point<dim>  &where,
+                                          const MPI_Comm     comm,
+                                          const std::string &when) const
+  {
+    // The least beta of all ranks, and the point of the first rank that holds it.
+    const double least = Utilities::MPI::min(least_beta, comm);
+    if (least >= 1.)
+      return;
+    std::vector<double> mine = {least_beta};
+    for (unsigned int d = 0; d < dim; ++d)
+      mine.push_back(where[d]);
+    const auto all   = Utilities::MPI::all_gather(comm, mine);
+    const auto first = std::find_if(all.begin(), all.end(), [&](const std::vector<double> &item) {
+      return item[0] == least;
+    });
+    std::ostringstream point;
+    for (unsigned int d = 0; d < dim; ++d)
+      point << (d == 0 ? "" : ", ") << (*first)[d + 1];
+    AssertThrow(false,
+                ExcMessage(
+                  when + ", the crack has left the PD-only zone before the region grew: a particle "
+                         "the run damaged (damage index at least <Coupling/Adaptive region/"
+                         "Damage threshold> = " +
+                  ParameterUtilities::format_number(damage_threshold) +
+                  " above the pre-cracks') at (" + point.str() +
+                  ") m lies where beta = " + ParameterUtilities::format_number(least) +
+                  " < 1, where the FE field bridges the crack; the run stops rather than arrest "
+                  "or slow the crack there. The zone must lead the crack: lower <Coupling/"
+                  "Adaptive region/Check interval> (now " +
+                  std::to_string(interval) +
+                  " steps), or raise <Coupling/Adaptive region/Damage distance> (now " +
+                  ParameterUtilities::format_number(damage_distance) +
+                  " m; it must exceed the distance the crack runs between two checks) with "
+                  "<Core radius> (now " +
+                  ParameterUtilities::format_number(core_radius) + " m)."));
   }
 
   template <int dim>

@@ -26,15 +26,16 @@ namespace perideal
     using Key = typename Lattice<dim>::Key;
     // Particles are matched by their lattice point across the regeneration.
     const Lattice<dim> lattice(pd.discretization().spacing);
-    const auto         seeds = adaptive.propose_seeds(
+    std::ostringstream when;
+    when << "At step " << step << " (t = " << time << " s)";
+    const auto seeds = adaptive.propose_seeds(
       *state,
       [this](const Point<dim> &x) { return blending(x); },
       [this](const Point<dim> &x) { return pd.in_body(x); },
-      precrack_damage);
+      precrack_damage,
+      when.str());
     if (seeds.empty())
       return false;
-    std::ostringstream when;
-    when << "At step " << step << " (t = " << time << " s)";
     adaptive.check_conditions_outside(fe, seeds, when.str());
 
     // What carries over, before anything changes: the unknowns of the free particles by lattice

@@ -99,4 +99,16 @@ main(int argc, char **argv)
   run_case("PD zone reaching an FE condition during the run", left_condition, "0.06, 0.01", true);
   const auto stats = perideal_tests::read_statistics("results/statistics.csv");
   std::cout << "  last statistics row: step " << stats.at("step").back() << std::endl;
+  // The pulse, reversed so that its half running right stretches (strain 2e-3), breaks bonds
+  // in the ramp (beta < 1) of the disk at x = 60 mm on its way in, and the damage criterion's
+  // first check that sees them stops the run: the zone did not lead the crack.
+  run_case("crack outside the PD-only zone at a check",
+           adaptive("    set Criterion = damage\n") +
+             "subsection Material\n  subsection critical stretch\n    set Critical stretch = "
+             "1e-3\n  end\nend\nsubsection Initial conditions\n  set Velocity = -20 * "
+             "exp(-((x - 0.02) / 0.006)^2); 0\nend\n",
+           "0.06, 0.01",
+           true);
+  const auto cracked = perideal_tests::read_statistics("results/statistics.csv");
+  std::cout << "  last statistics row: step " << cracked.at("step").back() << std::endl;
 }

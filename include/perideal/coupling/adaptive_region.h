@@ -78,13 +78,27 @@ namespace perideal
      * @brief The seeds the criterion proposes in @p state, whose overlap is @p beta and whose
      * body is @p in_body; @p precrack_damage is the damage index of each owned particle with
      * only the pre-cracks' bonds broken (collective; the same list on every rank, empty if
-     * none).
+     * none). With the damage criterion, stops the run (check_crack_inside(); @p when begins
+     * the message) if a particle damaged by the run lies outside the PD-only zone.
      */
     std::vector<dealii::Point<dim>>
     propose_seeds(const CoupledState<dim>                                 &state,
                   const std::function<double(const dealii::Point<dim> &)> &beta,
                   const std::function<bool(const dealii::Point<dim> &)>   &in_body,
-                  const std::vector<double>                               &precrack_damage) const;
+                  const std::vector<double>                               &precrack_damage,
+                  const std::string                                       &when) const;
+
+    /**
+     * @brief Stop the run, naming the entries to change, if the least beta of a particle
+     * damaged by the run on any rank (@p least_beta on this one, at @p where) is below 1: the
+     * crack has reached the overlap, where the FE field bridges it, before a check grew the
+     * zone around it (collective).
+     */
+    void
+    check_crack_inside(const double              least_beta,
+                       const dealii::Point<dim> &where,
+                       const MPI_Comm            comm,
+                       const std::string        &when) const;
 
     /**
      * @brief Whether @p x lies within @p reach of the support of the seeds' beta (closer than
