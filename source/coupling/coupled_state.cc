@@ -75,10 +75,14 @@ namespace perideal
         internal_work_factor[k] = -volume[k / nc];
       else
         applied_work_factor[k] = volume[k / nc];
-    // A temperature's heat flows are no work: its factors move to the heat factors.
+    // A temperature's heat flows in time are no work: its factors move to the heat factors. A
+    // steady (quasi-static) temperature keeps them: its balance is that of the work,
+    // int Q dT = 1/2 T.K T.
     internal_heat_factor.clear();
     applied_heat_factor.clear();
-    if (layout.has_temperature())
+    const bool in_time = settings.solver_type == SolverType::explicit_dynamics ||
+                         settings.solver_type == SolverType::implicit;
+    if (layout.has_temperature() && in_time)
       {
         internal_heat_factor.assign(motion.size(), 0.);
         applied_heat_factor.assign(motion.size(), 0.);

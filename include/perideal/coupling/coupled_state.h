@@ -259,9 +259,10 @@ namespace perideal
     bool any_particle_slaved = false;
     /// Factors from the internal and the applied force density to the load that does work:
     /// -V_i and 0 on prescribed components (the support balances the internal force), 0 and
-    /// V_i on the others (particles slaved to the FE field too: they move with it); 0 on
-    /// temperature components, whose heat flows the heat factors take instead (empty without a
-    /// temperature).
+    /// V_i on the others (particles slaved to the FE field too: they move with it); in runs in
+    /// time (explicit, implicit) 0 on temperature components, whose heat flows the heat factors
+    /// take instead (empty without a temperature and in quasi-static runs, whose temperature's
+    /// balance is that of the work).
     ///@{
     std::vector<double> internal_work_factor, applied_work_factor;
     std::vector<double> internal_heat_factor, applied_heat_factor;
