@@ -294,6 +294,10 @@ namespace perideal
     ///@}
     /// The particles' strain-energy density (per owned particle) [J/m^3].
     std::vector<double> energy_density;
+    /// Quasi-static runs: the particles' strain energy at the last equilibrium (the method's
+    /// equilibrium_forces(), set by equilibrium_state()) [J], for a physics of <Physics/List>
+    /// whose statistics its own solver does not write.
+    double equilibrium_particle_energy = 0.;
 
     /**
      * @brief Explicit runs with an adaptive PD region (<Coupling/Adaptive region>; empty
