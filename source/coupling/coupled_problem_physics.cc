@@ -60,6 +60,14 @@ namespace perideal
         Physics<dim> &field = *physics.back();
         field.parse_parameters(prm, settings, *physics[0]);
         const std::string section = Physics<dim>::section(field.name);
+        AssertThrow(field.settings.solver_type != SolverType::static_linear ||
+                      settings.solver_type != SolverType::explicit_dynamics,
+                    ExcMessage("<" + section +
+                               "/Solver/Type> = static solves a steady state "
+                               "before each load step of a quasi-static first physics, but "
+                               "<Solver/Type> = explicit; accepted there: explicit, implicit "
+                               "(or a quasi-static <Solver/Type>: static, adaptive dynamic "
+                               "relaxation)."));
         AssertThrow(!field.fe.has_mesh() || field.fe.get_density() > 0.,
                     ExcMessage("The parameter <" + section + "/Finite elements/Density> is " +
                                ParameterUtilities::format_number(field.fe.get_density()) +
@@ -118,14 +126,20 @@ namespace perideal
         if (field.settings.solver_type == SolverType::implicit)
           field.settings.time_step = split_step();
         field.solver->setup(*field.state);
+        // A steady physics solves once per load step.
+        const double step_length = split_step();
+        if (field.settings.solver_type == SolverType::static_linear)
+          field.state->time_step = step_length;
         // The largest step of at most its own (the safety factor times its stable step) that
         // divides the first physics' step, as its run takes it.
-        const double step_length = split_step();
-        const auto   n           = static_cast<unsigned int>(
+
+        const auto n = static_cast<unsigned int>(
           std::max(1., std::ceil(step_length / field.state->time_step * (1. - 1e-12))));
         field.state->time_step = step_length / n;
         sub_steps[k - 1]       = n;
-        if (is_root)
+        if (is_root && field.settings.solver_type == SolverType::static_linear)
+          log << "  a steady solve before each load step of the first physics" << std::endl;
+        else if (is_root)
           log << "  " << n << " step" << (n > 1 ? "s" : "") << " of " << field.state->time_step
               << " s per step of the first physics" << std::endl;
         postprocessors->add_physics(field.name, *field.state, *field.postprocessors);

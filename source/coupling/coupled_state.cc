@@ -75,10 +75,14 @@ namespace perideal
         internal_work_factor[k] = -volume[k / nc];
       else
         applied_work_factor[k] = volume[k / nc];
-    // A temperature's heat flows are no work: its factors move to the heat factors.
+    // A temperature's heat flows in time are no work: its factors move to the heat factors. A
+    // steady (quasi-static) temperature keeps them: its balance is that of the work,
+    // int Q dT = 1/2 T.K T.
     internal_heat_factor.clear();
     applied_heat_factor.clear();
-    if (layout.has_temperature())
+    const bool in_time = settings.solver_type == SolverType::explicit_dynamics ||
+                         settings.solver_type == SolverType::implicit;
+    if (layout.has_temperature() && in_time)
       {
         internal_heat_factor.assign(motion.size(), 0.);
         applied_heat_factor.assign(motion.size(), 0.);
@@ -97,6 +101,19 @@ namespace perideal
          {&U, &V, &A, &f_ext, &residual, &fe_load, &fe_support, &previous_fe_load, &previous_U})
       fe.initialize_vector(*vec);
     energy_density.assign(n_owned, 0.);
+
+    // The FE field of a temperature: the column sums of its stiffness, the conductance of its
+    // convection (Robin) faces per dof (the conduction part sums to 0 over a column).
+    fe_convection.reinit(0);
+    if (layout.has_temperature() && fe.n_dofs() > 0)
+      {
+        FEVector one;
+        fe.initialize_vector(one);
+        fe.initialize_vector(fe_convection);
+        one = 1.;
+        one.update_ghost_values();
+        fe.stiffness_matrix().Tvmult(fe_convection, one);
+      }
   }
 
   template <int dim>
@@ -244,6 +261,10 @@ namespace perideal
     double        heat = 0.;
     for (std::size_t k = 0; k < internal_heat_factor.size(); ++k)
       heat += internal_heat_factor[k] * internal[k] + applied_heat_factor[k] * applied[k];
+    // FE dofs: the loads (sources, fluxes, a convection's h T_inf) and the supports' heat on
+    // prescribed dofs, less the h T that leaves through the convection faces.
+    for (unsigned int k = 0; k < fe_convection.locally_owned_size(); ++k)
+      heat += fe_load.local_element(k) - fe_convection.local_element(k) * U.local_element(k);
     local_heat_in += dt * heat;
   }
 
@@ -264,6 +285,15 @@ namespace perideal
     for (std::size_t k = 0; k < (particle_mass.empty() ? 0 : motion.size()); ++k)
       if (motion[k] == Motion::moves && layout.kind(k % nc) == ComponentKind::temperature)
         heat += particle_mass[k / nc] * inertia_ratio[k % nc] * u.local_element(k);
+    // The free FE dofs with the capacity the solver uses, the method's lumped mass (which holds
+    // the slaved particles' capacity: each part of the body counted once).
+    if (fe_convection.size() > 0 && mass.size() > 0)
+      {
+        const auto &mask = fe.prescribed_mask();
+        for (unsigned int k = 0; k < U.locally_owned_size(); ++k)
+          if (!mask[k])
+            heat += mass.local_element(k) * U.local_element(k);
+      }
     return Utilities::MPI::sum(heat, comm);
   }
 

@@ -125,12 +125,16 @@ namespace perideal
     dissipated_energy() const;
 
     /**
-     * @brief Add the heat that enters the particles' temperature components over a time @p dt
-     * at the current heat flows: dt sum (V_i q_ext on the free components, -V_i q_int on the
-     * held ones, i.e. what their conditions supply). Forward Euler adds its step dt at the
-     * flows of the step's start, the theta scheme (1 - theta) dt at t_n and theta dt at t_{n+1}:
-     * so the sum is the change of the stored heat of the free components that the steps make
-     * (to round-off, to the solver tolerance). Nothing without a temperature.
+     * @brief Add the heat that enters the body over a time @p dt at the current heat flows:
+     * dt times, on the particles' temperature components, sum (V_i q_ext on the free and
+     * slaved components, -V_i q_int on the held ones, i.e. what their conditions supply), and
+     * on the FE dofs of a temperature field sum_k (fe_load_k - r_k U_k): the loads and the
+     * supports' heat, less the convection faces' h T (r the column sums of the FE stiffness,
+     * its convection conductance). The conduction inside and through the overlap cancels in
+     * the sum. Forward Euler adds its step dt at the flows of the step's start, the theta
+     * scheme (1 - theta) dt at t_n and theta dt at t_{n+1}: so the sum is the change of
+     * stored_heat() that the steps make (to round-off, to the solver tolerance). Nothing
+     * without a temperature.
      */
     void
     accumulate_heat(const double dt);
@@ -140,8 +144,11 @@ namespace perideal
     heat_in() const;
 
     /**
-     * @brief The heat stored in the free particle temperature components, sum rho c V_i T_i,
-     * summed over the ranks [J] (0 without a temperature or without masses: quasi-static).
+     * @brief The heat stored in the body, summed over the ranks [J]: sum m_i c T_i over the
+     * free particle temperature components and sum C_k T_k over the free dofs of an FE
+     * temperature field, with the method's lumped masses (CouplingMethod::lumped_masses(): the
+     * FE capacity weighted by the method plus that of the slaved particles, so that the overlap
+     * counts once). 0 without a temperature or without masses (quasi-static).
      */
     double
     stored_heat() const;
@@ -252,9 +259,10 @@ namespace perideal
     bool any_particle_slaved = false;
     /// Factors from the internal and the applied force density to the load that does work:
     /// -V_i and 0 on prescribed components (the support balances the internal force), 0 and
-    /// V_i on the others (particles slaved to the FE field too: they move with it); 0 on
-    /// temperature components, whose heat flows the heat factors take instead (empty without a
-    /// temperature).
+    /// V_i on the others (particles slaved to the FE field too: they move with it); in runs in
+    /// time (explicit, implicit) 0 on temperature components, whose heat flows the heat factors
+    /// take instead (empty without a temperature and in quasi-static runs, whose temperature's
+    /// balance is that of the work).
     ///@{
     std::vector<double> internal_work_factor, applied_work_factor;
     std::vector<double> internal_heat_factor, applied_heat_factor;
@@ -286,6 +294,10 @@ namespace perideal
     ///@}
     /// The particles' strain-energy density (per owned particle) [J/m^3].
     std::vector<double> energy_density;
+    /// Quasi-static runs: the particles' strain energy at the last equilibrium (the method's
+    /// equilibrium_forces(), set by equilibrium_state()) [J], for a physics of <Physics/List>
+    /// whose statistics its own solver does not write.
+    double equilibrium_particle_energy = 0.;
 
     /**
      * @brief Explicit runs with an adaptive PD region (<Coupling/Adaptive region>; empty
@@ -322,6 +334,9 @@ namespace perideal
     // The heat in through the conditions on this rank since start_work(), and the stored heat
     // then.
     double local_heat_in = 0., stored_heat_at_start = 0.;
+    // The FE field of a temperature: per dof the column sum of the FE stiffness, the conductance
+    // of its convection faces (empty otherwise).
+    FEVector fe_convection;
   };
 } // namespace perideal
 

@@ -74,19 +74,33 @@ namespace perideal
       }
     else if (state.layout.has_temperature())
       {
-        // The thermal balance of the time steps: the change of the stored heat of the free
-        // particles against the heat in through the conditions (CoupledState::accumulate_heat(),
-        // weighted as the step), equal to round-off (forward Euler) or to the solver tolerance
-        // (theta scheme).
+        // The thermal balance of the time steps: the change of the heat stored in the body
+        // (free particles and FE dofs) against the heat in through the conditions
+        // (CoupledState::accumulate_heat(), weighted as the step), equal to round-off (forward
+        // Euler) or to the solver tolerance (theta scheme).
         const double stored = state.stored_heat() - state.initial_stored_heat();
         const double heat   = state.heat_in();
         statistics.add_value("stored_heat", stored);
         statistics.add_value("heat_in", heat);
         statistics.add_value("heat_error", stored - heat);
         if (state.is_root && data.final_row)
-          log << "Stored heat (change): " << stored << " J\n"
-              << "Heat in through the conditions: " << heat << " J\n"
-              << "Heat error: " << stored - heat << " J\n";
+          {
+            // Printed to the accuracy of the steps (relative to the heat exchanged): round-off
+            // for forward Euler, the solution's accuracy for the theta scheme (0, not -0, when
+            // it rounds to nothing).
+            const double accuracy = state.settings.solver_type == SolverType::explicit_dynamics ?
+                                      1e-12 :
+                                      state.solution_accuracy();
+            const double scale    = std::max(std::abs(stored), std::abs(heat));
+            const double error    = to_accuracy(stored - heat, accuracy * scale);
+            const double relative =
+              to_accuracy(scale > 0. ? (stored - heat) / scale : 0., accuracy);
+            log << "Stored heat (change): " << stored << " J\n"
+                << "Heat in through the conditions: " << heat << " J\n"
+                << "Heat error: " << (error == 0. ? 0. : error)
+                << " J (relative to the heat exchanged " << (relative == 0. ? 0. : relative)
+                << ")\n";
+          }
       }
     else
       {

@@ -108,9 +108,13 @@ namespace perideal
         if (data.final_row && state.is_root)
           state.log << "Physics " << name << ":\n";
         // The other physics advance in time within the load steps of a quasi-static run (step
-        // k of N ends at k/N of the end time).
-        StepData other_data = data;
-        if (data.quasi_static)
+        // k of N ends at k/N of the end time), or take the same load steps (a steady physics:
+        // its own equilibrium energy).
+        StepData   other_data = data;
+        const bool steady     = other_state->settings.solver_type == SolverType::static_linear;
+        if (steady)
+          other_data.pd_energy = other_state->equilibrium_particle_energy;
+        else if (data.quasi_static)
           {
             other_data.quasi_static = false;
             other_data.time         = data.time * other_state->settings.end_time;

@@ -35,7 +35,8 @@ namespace perideal
       state.fe_load.local_element(k) =
         state.f_ext.local_element(k) + (mask[k] ? state.residual.local_element(k) : 0.);
     state.accumulate_work();
-    state.fe_support = state.residual;
+    state.fe_support                  = state.residual;
+    state.equilibrium_particle_energy = pd_energy;
     return pd_energy;
   }
 

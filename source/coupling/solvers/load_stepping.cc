@@ -1,6 +1,7 @@
 // ---------------------------------------------------------------------
 // PeriDeal: quasi-static load stepping with bond breaking.
 // ---------------------------------------------------------------------
+#include <perideal/base/parameter_utilities.h>
 #include <perideal/coupling/coupled_static_solver.h>
 #include <perideal/coupling/solvers/equilibrium_state.h>
 #include <perideal/coupling/solvers/load_stepping.h>
@@ -8,6 +9,7 @@
 #include <perideal/pd/damage_model.h>
 
 #include <algorithm>
+#include <cmath>
 #include <limits>
 #include <sstream>
 #include <string>
@@ -240,7 +242,6 @@ namespace perideal
     auto              &ps       = pd.particles();
     const bool         relax    = (type == SolverType::adaptive_dynamic_relaxation);
     const unsigned int n_steps  = settings.load_steps;
-    auto              &U = state.U, &u = state.u;
 
     // The conditions at t = End time, scaled by the load factor (a time history evaluates them
     // at each load factor).
@@ -282,30 +283,11 @@ namespace perideal
         const double factor = cutting ? std::min(1., reached + increment) : double(step) / n_steps;
         const auto   broken_at_start = n_broken_bonds(ps);
 
-        unsigned int passes = 0, iterations = 0;
-        bool         failed = false;
+        StepSolves solves;
+        bool       failed = false;
         try
           {
-            for (;; ++passes)
-              {
-                const auto broken_before = n_broken_bonds(ps);
-                apply_load_factor(state, factor);
-                iterations +=
-                  state.method.solve_equilibrium(state.f_ext, state.external_force, U, u);
-                // The model's own forces and energy density at the solution (breaks bonds).
-                pd.material().compute_forces(ps,
-                                             u,
-                                             state.internal_force,
-                                             &state.energy_density,
-                                             pd.critical_stretch());
-                state.accumulate_dissipated_energy();
-                if (breaking_settled(ps,
-                                     broken_before,
-                                     pd.material().damage_changed(),
-                                     step,
-                                     passes))
-                  break;
-              }
+            solves = solve_load_step(state, factor, step);
           }
         catch (const ExcNotConverged &failure)
           {
@@ -342,15 +324,16 @@ namespace perideal
               state.log << " (load factor " << factor << ")";
             else
               state.log << "/" << n_steps;
-            state.log << ": " << passes + 1 << " solve(s)";
+            state.log << ": " << solves.passes + 1 << " solve(s)";
             if (pd.has_body())
               state.log << ", " << broken << " broken bonds";
             if (settings.show_progress)
-              state.log << ", " << iterations << (relax ? " relaxation" : " CG") << " iterations";
+              state.log << ", " << solves.iterations << (relax ? " relaxation" : " CG")
+                        << " iterations";
             state.log << std::endl;
           }
         StepData data   = run.plan(step, factor, cutting ? factor >= 1. : (step == n_steps));
-        data.iterations = iterations;
+        data.iterations = solves.iterations;
         data.pd_energy  = pd_energy;
         run.write(data);
         if (run.checkpoint(data))
@@ -359,6 +342,68 @@ namespace perideal
         if (cutting && 2 * broken_in_step <= control.cut_threshold)
           increment = std::min(nominal, 2. * increment);
       }
+  }
+
+  template <int dim>
+  typename LoadStepping<dim>::StepSolves
+  LoadStepping<dim>::solve_load_step(CoupledState<dim> &state,
+                                     const double       factor,
+                                     const unsigned int step)
+  {
+    auto      &pd = state.pd;
+    auto      &ps = pd.particles();
+    StepSolves solves;
+    for (;; ++solves.passes)
+      {
+        const auto broken_before = n_broken_bonds(ps);
+        apply_load_factor(state, factor);
+        solves.iterations +=
+          state.method.solve_equilibrium(state.f_ext, state.external_force, state.U, state.u);
+        // The model's own forces and energy density at the solution (breaks bonds).
+        pd.material().compute_forces(ps,
+                                     state.u,
+                                     state.internal_force,
+                                     &state.energy_density,
+                                     pd.critical_stretch());
+        state.accumulate_dissipated_energy();
+        if (breaking_settled(ps,
+                             broken_before,
+                             pd.material().damage_changed(),
+                             step,
+                             solves.passes))
+          return solves;
+      }
+  }
+
+  template <int dim>
+  void
+  LoadStepping<dim>::start_state(CoupledState<dim> &state)
+  {
+    conditions_at(state, state.settings.end_time);
+    state.start_work();
+    split_steps = 0;
+  }
+
+  template <int dim>
+  void
+  LoadStepping<dim>::advance(CoupledState<dim> &state,
+                             const double       time,
+                             const double       dt,
+                             const bool)
+  {
+    const auto        &settings = state.settings;
+    const unsigned int step     = ++split_steps;
+    const double       factor   = double(step) / settings.load_steps;
+    AssertThrow(step <= settings.load_steps &&
+                  std::abs(time + dt - factor * settings.end_time) <= 1e-12 * settings.end_time,
+                ExcMessage("A steady physics takes load step k of <Solver/Load steps> = " +
+                           std::to_string(settings.load_steps) +
+                           " at the time k/N <Time "
+                           "stepping/End time>; asked for its step " +
+                           std::to_string(step) + " to end at " +
+                           ParameterUtilities::format_number(time + dt) + " s."));
+    solve_load_step(state, factor, step);
+    equilibrium_state(state);
   }
 
   template <int dim>

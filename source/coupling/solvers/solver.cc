@@ -20,7 +20,8 @@ namespace perideal
   {
     AssertThrow(false,
                 dealii::ExcMessage("This <Solver/Type> cannot advance a physics of "
-                                   "<Physics/List> by operator splitting; accepted: explicit."));
+                                   "<Physics/List> by operator splitting; accepted: explicit, "
+                                   "implicit, static."));
   }
 
   template <int dim>
@@ -29,7 +30,8 @@ namespace perideal
   {
     AssertThrow(false,
                 dealii::ExcMessage("This <Solver/Type> cannot advance a physics of "
-                                   "<Physics/List> by operator splitting; accepted: explicit."));
+                                   "<Physics/List> by operator splitting; accepted: explicit, "
+                                   "implicit, static."));
   }
 
   template <int dim>

@@ -56,6 +56,24 @@ namespace perideal
         Postprocessors<dim> &postprocessors,
         Checkpoint<dim>     &checkpoint) override;
 
+    /**
+     * @brief Operator splitting (a physics of <Physics/List> within a quasi-static first
+     * physics): the state before the first load step, at rest with the work started.
+     */
+    void
+    start_state(CoupledState<dim> &state) override;
+
+    /**
+     * @brief Operator splitting: the next load step k of <Solver/Load steps> N, which must end
+     * at @p time + @p dt = k/N <Time stepping/End time> (the first physics' load step): its
+     * solve at load factor k/N, as run() takes it, and its equilibrium forces. Refused after N.
+     */
+    void
+    advance(CoupledState<dim> &state,
+            const double       time,
+            const double       dt,
+            const bool         with_energy) override;
+
   protected:
     /**
      * @brief The conditions at time @p time: the prescribed values of the particles and FE dofs
@@ -108,6 +126,20 @@ namespace perideal
     ParticleVector prescribed;
 
   private:
+    /// Solves and iterations of a load step.
+    struct StepSolves
+    {
+      unsigned int passes = 0, iterations = 0;
+    };
+
+    /**
+     * @brief Load step @p step at load factor @p factor: apply it, solve the method's
+     * equilibrium and evaluate the model's forces at the solution (breaking bonds), again while
+     * bonds break (breaking_settled()). Throws ExcNotConverged if a solve fails.
+     */
+    StepSolves
+    solve_load_step(CoupledState<dim> &state, const double factor, const unsigned int step);
+
     /**
      * @brief Load step @p step (load factor @p factor) did not converge (@p failure): write its
      * last iterate and the
@@ -125,6 +157,8 @@ namespace perideal
     /// The prescribed values and the loads at End time (particles, FE dofs).
     ParticleVector target, full_load;
     FEVector       fe_target, fe_full_load;
+    /// Operator splitting: the load steps advance() took.
+    unsigned int split_steps = 0;
   };
 } // namespace perideal
 

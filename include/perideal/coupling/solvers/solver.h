@@ -57,14 +57,15 @@ namespace perideal
     /**
      * @brief Operator splitting (a physics of <Physics/List>, advanced by CoupledProblem
      * within the steps of the first one): set the initial state. Refused by default; the
-     * explicit solver provides it.
+     * explicit, implicit and load-stepping solvers provide it.
      */
     virtual void
     start_state(CoupledState<dim> &state);
 
     /**
      * @brief Operator splitting: advance @p state by one step @p dt from @p time, its energies
-     * computed if @p with_energy. Refused by default; the explicit solver provides it.
+     * computed if @p with_energy. Refused by default; the explicit, implicit and
+     * load-stepping solvers provide it.
      */
     virtual void
     advance(CoupledState<dim> &state, const double time, const double dt, const bool with_energy);
