@@ -15,7 +15,8 @@ is 1 where the formula applies. The K-dominance of the notch-tip field: sigma_yy
 (the symmetry reactions over h B) against K / sqrt(2 pi r), K = sqrt(E G), at distances r ahead
 of the tip.
 
-The solve is a block-tridiagonal elimination, node column by node column, with numpy only. usage: fe_check.py [--dx DX_MM] [--h H_MM]   (defaults 1 and 0.125)
+The solve is a block-tridiagonal elimination, node column by node column, with numpy only.
+usage: fe_check.py [--dx DX_MM] [--h H_MM]   (defaults 1 and 0.25)
 """
 import argparse
 import math
@@ -124,7 +125,7 @@ def solve(h, dx, tip):
 def main():
     parser = argparse.ArgumentParser(description=__doc__.split("\n")[0])
     parser.add_argument("--dx", type=float, default=1.0, help="PD lattice spacing [mm]")
-    parser.add_argument("--h", type=float, default=0.125, help="FE mesh size [mm]")
+    parser.add_argument("--h", type=float, default=0.25, help="FE mesh size [mm]")
     args = parser.parse_args()
     dx, h = args.dx * 1e-3, args.h * 1e-3
     tip = 0.020

@@ -37,8 +37,9 @@ variant full_pd m_2 -e "s|Horizon factor  = 3.015|Horizon factor  = 2.015|"
 # dx = 1.5 mm: 50 mm is no multiple of it; the specimen [-9, 39] x [-24, 24] mm keeps the load
 # line at x = dx/2 and the notch tip midway between two particle columns (x = 19.5 mm): W =
 # 38.25 mm, a/W = 0.490.
-dx15=(-e "s|Lattice spacing = 1e-3|Lattice spacing = 1.5e-3|" -e "s|Upper corner = 1e-3,|Upper corner = 1.5e-3,|"
-  -e "s|0\.019$|0.0195|" -e "s|-0.010, -0.024|-0.009, -0.024|" -e "s|0.040, 0.024|0.039, 0.024|"
+dx15=(-e "s|Lattice spacing = 1e-3|Lattice spacing = 1.5e-3|"
+  -e "s|Upper corner = 1e-3,|Upper corner = 1.5e-3,|" -e "s|0\.019$|0.0195|"
+  -e "s|-0.010, -0.024|-0.009, -0.024|" -e "s|0.040, 0.024|0.039, 0.024|"
   -e "s|-0.011, 0 : 0.020, 0|-0.010, 0 : 0.0195, 0|")
 m2=(-e "s|Horizon factor  = 3.015|Horizon factor  = 2.015|")
 m4=(-e "s|Horizon factor  = 3.015|Horizon factor  = 4.015|")
@@ -52,7 +53,8 @@ variant full_pd dx_2mm_m_4 -e "s|Lattice spacing = 1e-3|Lattice spacing = 2e-3|"
 # The crack-tip toughness of the lattice: the K-field square of k_field.prm for m = 2, 3, 4.
 variant k_field k_field
 variant k_field k_field_m_2 "${m2[@]}"
-variant k_field k_field_m_4 "${m4[@]}" -e "s|Maximum events           = 40|Maximum events           = 60|"
+variant k_field k_field_m_4 "${m4[@]}" \
+  -e "s|Maximum events           = 40|Maximum events           = 60|"
 
 # The finest run (dx = 0.5 mm) last, as it takes longest; CT_RUNS="..." runs a subset.
 all="full_pd coupled schwarz dx_2mm m_2 m_4 dx_2mm_m_2 dx_2mm_m_4 dx_1.5mm dx_1.5mm_m_2"
