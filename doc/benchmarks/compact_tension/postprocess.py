@@ -6,8 +6,9 @@ usage: postprocess.py RESULTS_DIR... [--plot PREFIX]
 Each RESULTS_DIR holds statistics.csv and run.prm (the parameter file of the run). The LEFM
 peak load is ASTM E399's P = K_Ic B sqrt(W) / f(a/W), f(alpha) = (2 + alpha)(0.886 + 4.64 alpha
 - 13.32 alpha^2 + 14.72 alpha^3 - 5.6 alpha^4) / (1 - alpha)^1.5, K_Ic = sqrt(E' G_c), E' = E
-(plane stress), with the load line at the particle column x = dx/2 of the files: W = 40 mm -
-dx/2, a = 20 mm - dx/2. Prints one line per run; the last line is the ratio of the first run.
+(plane stress), with the load line at the particle column x = dx/2 of the files: W = the back
+edge (the specimen's upper corner) - dx/2, a = the pre-crack's end - dx/2 (40 mm - dx/2 and
+20 mm - dx/2 in full_pd.prm). Prints one line per run; the last line is the ratio of the first run.
 With --plot, PREFIX_load.png (load against load-line displacement, twice the load point's mean
 displacement by symmetry) and PREFIX_crack.png (crack growth against load).
 """
@@ -48,7 +49,11 @@ def read(directory):
     G = float(entry(prm, "Fracture energy"))
     B = float(entry(prm, "Thickness"))
     delta = float(entry(prm, "Horizon factor")) * dx
-    W, a = 0.040 - dx / 2, 0.020 - dx / 2
+    # The load line is the pin column x = dx/2; the back edge and the notch tip from the file.
+    specimen = prm[prm.index("subsection specimen\n"):]
+    back = float(entry(specimen[:specimen.index("end")], "Upper corner").split(",")[0])
+    tip = float(entry(prm, "Cracks").split(":")[1].split(",")[0])
+    W, a = back - dx / 2, tip - dx / 2
     lefm = math.sqrt(E * G) * B * math.sqrt(W) / astm_f(a / W)
     load = [abs(float(r["load"])) for r in rows]
     return {

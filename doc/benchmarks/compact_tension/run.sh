@@ -34,9 +34,32 @@ variant full_pd dx_0.5mm -e "s|Lattice spacing = 1e-3|Lattice spacing = 0.5e-3|"
   -e "s|Upper corner = 1e-3,|Upper corner = 0.5e-3,|" -e "s|0\.019$|0.0185|"
 variant full_pd m_4 -e "s|Horizon factor  = 3.015|Horizon factor  = 4.015|"
 variant full_pd m_2 -e "s|Horizon factor  = 3.015|Horizon factor  = 2.015|"
+# dx = 1.5 mm: 50 mm is no multiple of it; the specimen [-9, 39] x [-24, 24] mm keeps the load
+# line at x = dx/2 and the notch tip midway between two particle columns (x = 19.5 mm): W =
+# 38.25 mm, a/W = 0.490.
+dx15=(-e "s|Lattice spacing = 1e-3|Lattice spacing = 1.5e-3|"
+  -e "s|Upper corner = 1e-3,|Upper corner = 1.5e-3,|" -e "s|0\.019$|0.0195|"
+  -e "s|-0.010, -0.024|-0.009, -0.024|" -e "s|0.040, 0.024|0.039, 0.024|"
+  -e "s|-0.011, 0 : 0.020, 0|-0.010, 0 : 0.0195, 0|")
+m2=(-e "s|Horizon factor  = 3.015|Horizon factor  = 2.015|")
+m4=(-e "s|Horizon factor  = 3.015|Horizon factor  = 4.015|")
+variant full_pd dx_1.5mm "${dx15[@]}"
+variant full_pd dx_1.5mm_m_2 "${dx15[@]}" "${m2[@]}"
+variant full_pd dx_1.5mm_m_4 "${dx15[@]}" "${m4[@]}"
+variant full_pd dx_2mm_m_2 -e "s|Lattice spacing = 1e-3|Lattice spacing = 2e-3|" \
+  -e "s|Upper corner = 1e-3,|Upper corner = 2e-3,|" -e "s|0\.019$|0.020|" "${m2[@]}"
+variant full_pd dx_2mm_m_4 -e "s|Lattice spacing = 1e-3|Lattice spacing = 2e-3|" \
+  -e "s|Upper corner = 1e-3,|Upper corner = 2e-3,|" -e "s|0\.019$|0.020|" "${m4[@]}"
+# The crack-tip toughness of the lattice: the K-field square of k_field.prm for m = 2, 3, 4.
+variant k_field k_field
+variant k_field k_field_m_2 "${m2[@]}"
+variant k_field k_field_m_4 "${m4[@]}" \
+  -e "s|Maximum events           = 40|Maximum events           = 60|"
 
 # The finest run (dx = 0.5 mm) last, as it takes longest; CT_RUNS="..." runs a subset.
-for name in ${CT_RUNS:-full_pd coupled schwarz dx_2mm m_2 m_4 dx_0.5mm}; do
+all="full_pd coupled schwarz dx_2mm m_2 m_4 dx_2mm_m_2 dx_2mm_m_4 dx_1.5mm dx_1.5mm_m_2"
+all="$all dx_1.5mm_m_4 k_field k_field_m_2 k_field_m_4 dx_0.5mm"
+for name in ${CT_RUNS:-$all}; do
   echo "== $name"
   start=$(date +%s)
   mpirun -np 2 "$solver" "results/$name/run.prm" | grep -E '^(Particles|Coupling|Critical|Sequentially)'
@@ -47,5 +70,14 @@ finished() { for name in "$@"; do [ -f "results/$name/statistics.csv" ] && echo 
 echo "== convergence with dx (delta = 3.015 dx) and with m = delta/dx (dx = 1 mm)"
 /usr/bin/python3 postprocess.py $(finished dx_2mm full_pd dx_0.5mm)
 /usr/bin/python3 postprocess.py $(finished m_2 full_pd m_4)
+echo "== the crack-tip toughness of the lattice (k_field.prm): r = K_tip / K_Ic"
+/usr/bin/python3 k_field.py $(finished k_field_m_2 k_field k_field_m_4)
+echo "== where the peak comes from (measures.py; --tip: r of the table above)"
+tip=$(/usr/bin/python3 k_field.py $(finished k_field_m_2 k_field k_field_m_4) |
+  awk -F'|' 'NR > 2 && $6 + 0 > 0 { printf "%s%s=%s", sep, $2 + 0, $6 + 0; sep = "," }')
+/usr/bin/python3 measures.py $(finished dx_2mm_m_2 dx_1.5mm_m_2 m_2 dx_2mm dx_1.5mm full_pd \
+  dx_0.5mm dx_2mm_m_4 dx_1.5mm_m_4 m_4) ${tip:+--tip "$tip"} --plot compact_tension_convergence.png
+echo "== the FE check of ASTM E399's formula for this specimen and pins (fe_check.py)"
+/usr/bin/python3 fe_check.py --dx 1 --h 0.25
 echo "== all-PD and coupled (blended, overlapping Schwarz)"
 /usr/bin/python3 postprocess.py $(finished full_pd coupled schwarz) --plot compact_tension
