@@ -178,12 +178,12 @@ namespace perideal
     if (context.lattice_fracture)
       {
         // A bond at the critical stretch s0 holds k s0^2 |xi| / 2.
-        const double s0 = critical_stretch(1.);
+        const double        s0 = critical_stretch(1.);
+        std::vector<double> coefficient;
+        pair_coefficients(particles, coefficient);
         fracture_factor = lattice_fracture_factor<dim>(
           particles,
-          [&](const unsigned int i, const std::size_t b) {
-            return pair_coefficient(particles, i, b);
-          },
+          [&coefficient](const unsigned int, const std::size_t b) { return coefficient[b]; },
           [s0](double r) { return 0.5 * s0 * s0 * r; });
       }
   }
@@ -195,6 +195,15 @@ namespace perideal
                                    const std::size_t          b) const
   {
     return kernel->lane_coefficient[kernel->blocks.lane_of(particles.bonds(), i, b)];
+  }
+
+  template <int dim>
+  void
+  BondBased<dim>::pair_coefficients(const ParticleSystem<dim> &particles,
+                                    std::vector<double>       &per_bond) const
+  {
+    per_bond.assign(particles.bonds().size(), 0.);
+    kernel->blocks.from_lanes(kernel->lane_coefficient, per_bond);
   }
 
   template <int dim>

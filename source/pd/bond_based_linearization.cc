@@ -18,13 +18,9 @@ namespace perideal
   BondBased<dim>::stiffness_bound(const ParticleSystem<dim> &particles,
                                   std::vector<double>       &per_particle) const
   {
-    bond_pair_stiffness_bound<dim>(
-      particles,
-      [this, &particles](const unsigned int i, const std::size_t b) {
-        return pair_coefficient(particles, i, b);
-      },
-      dim,
-      per_particle);
+    std::vector<double> coefficient;
+    pair_coefficients(particles, coefficient);
+    bond_pair_stiffness_bound<dim>(particles, coefficient, dim, per_particle);
   }
 
   // PMB linearized: f_i V_i = sum_j (c G chi / |xi|) V_i V_j n n^T (u_j - u_i), i.e. one row
@@ -34,11 +30,8 @@ namespace perideal
   BondBased<dim>::linearize(const ParticleSystem<dim> &particles, LinearizedModel &linearized) const
   {
     linearized.reinit(this->field_layout().n_components(), particles.n_owned());
-    std::vector<double> bond_coefficient(particles.bonds().size());
-    for (unsigned int i = 0; i < particles.n_owned(); ++i)
-      for (unsigned int b = particles.bonds().row_start[i]; b < particles.bonds().row_start[i + 1];
-           ++b)
-        bond_coefficient[b] = pair_coefficient(particles, i, b);
+    std::vector<double> bond_coefficient;
+    pair_coefficients(particles, bond_coefficient);
     add_bond_rows(particles,
                   intact_bond_stiffness(particles.bonds(), bond_coefficient),
                   extension_row<dim>(particles),

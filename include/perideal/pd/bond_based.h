@@ -116,6 +116,15 @@ namespace perideal
                      const std::size_t          b) const;
 
     /**
+     * @brief The pair coefficients pair_coefficient() of all bonds of the bond list of
+     * @p particles in one pass over the kernel's lanes (no search per bond), into
+     * @p per_bond, sized like the bond list: for what reads every bond's coefficient (the
+     * stiffness bound, the linearization, the lattice calibration).
+     */
+    void
+    pair_coefficients(const ParticleSystem<dim> &particles, std::vector<double> &per_bond) const;
+
+    /**
      * @brief The Poisson ratio that the model implies (Cauchy relations).
      */
     double
