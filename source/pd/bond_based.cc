@@ -178,12 +178,11 @@ namespace perideal
     if (context.lattice_fracture)
       {
         // A bond at the critical stretch s0 holds k s0^2 |xi| / 2.
-        const double        s0 = critical_stretch(1.);
-        std::vector<double> coefficient;
-        pair_coefficients(particles, coefficient);
-        fracture_factor = lattice_fracture_factor<dim>(
+        const double s0          = critical_stretch(1.);
+        const auto   coefficient = pair_coefficients(particles);
+        fracture_factor          = lattice_fracture_factor<dim>(
           particles,
-          [&coefficient](const unsigned int, const std::size_t b) { return coefficient[b]; },
+          [&coefficient](const unsigned int, const std::size_t b) { return coefficient(b); },
           [s0](double r) { return 0.5 * s0 * s0 * r; });
       }
   }
@@ -198,12 +197,13 @@ namespace perideal
   }
 
   template <int dim>
-  void
-  BondBased<dim>::pair_coefficients(const ParticleSystem<dim> &particles,
-                                    std::vector<double>       &per_bond) const
+  typename BondBased<dim>::PairCoefficients
+  BondBased<dim>::pair_coefficients(const ParticleSystem<dim> &particles) const
   {
-    per_bond.assign(particles.bonds().size(), 0.);
-    kernel->blocks.from_lanes(kernel->lane_coefficient, per_bond);
+    PairCoefficients coefficients;
+    coefficients.coefficient = kernel->lane_coefficient.data();
+    kernel->blocks.lanes_of_bonds(particles.bonds().size(), coefficients.lane);
+    return coefficients;
   }
 
   template <int dim>

@@ -18,9 +18,12 @@ namespace perideal
   BondBased<dim>::stiffness_bound(const ParticleSystem<dim> &particles,
                                   std::vector<double>       &per_particle) const
   {
-    std::vector<double> coefficient;
-    pair_coefficients(particles, coefficient);
-    bond_pair_stiffness_bound<dim>(particles, coefficient, dim, per_particle);
+    const auto coefficient = pair_coefficients(particles);
+    bond_pair_stiffness_bound<dim>(
+      particles,
+      [&coefficient](const unsigned int, const std::size_t b) { return coefficient(b); },
+      dim,
+      per_particle);
   }
 
   // PMB linearized: f_i V_i = sum_j (c G chi / |xi|) V_i V_j n n^T (u_j - u_i), i.e. one row
@@ -30,8 +33,10 @@ namespace perideal
   BondBased<dim>::linearize(const ParticleSystem<dim> &particles, LinearizedModel &linearized) const
   {
     linearized.reinit(this->field_layout().n_components(), particles.n_owned());
-    std::vector<double> bond_coefficient;
-    pair_coefficients(particles, bond_coefficient);
+    const auto          coefficient = pair_coefficients(particles);
+    std::vector<double> bond_coefficient(particles.bonds().size());
+    for (std::size_t b = 0; b < bond_coefficient.size(); ++b)
+      bond_coefficient[b] = coefficient(b);
     add_bond_rows(particles,
                   intact_bond_stiffness(particles.bonds(), bond_coefficient),
                   extension_row<dim>(particles),

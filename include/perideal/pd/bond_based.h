@@ -116,13 +116,33 @@ namespace perideal
                      const std::size_t          b) const;
 
     /**
-     * @brief The pair coefficients pair_coefficient() of all bonds of the bond list of
-     * @p particles in one pass over the kernel's lanes (no search per bond), into
-     * @p per_bond, sized like the bond list: for what reads every bond's coefficient (the
-     * stiffness bound, the linearization, the lattice calibration).
+     * @brief pair_coefficient() of every bond of the bond list, read from the kernel's lanes
+     * through the lane of each bond (BondBlocks::lanes_of_bonds(): one pass over the lanes
+     * instead of a search per bond; 4 B per bond while it exists).
      */
-    void
-    pair_coefficients(const ParticleSystem<dim> &particles, std::vector<double> &per_bond) const;
+    class PairCoefficients
+    {
+    public:
+      /// k_b of bond @p b.
+      double
+      operator()(const std::size_t b) const
+      {
+        return coefficient[lane[b]];
+      }
+
+    private:
+      friend class BondBased<dim>;
+      const double             *coefficient = nullptr;
+      std::vector<unsigned int> lane;
+    };
+
+    /**
+     * @brief The pair coefficients of all bonds of @p particles (PairCoefficients), for what
+     * reads every bond's coefficient: the stiffness bound, the linearization, the lattice
+     * calibration of the fracture energy.
+     */
+    PairCoefficients
+    pair_coefficients(const ParticleSystem<dim> &particles) const;
 
     /**
      * @brief The Poisson ratio that the model implies (Cauchy relations).
