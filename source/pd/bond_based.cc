@@ -178,12 +178,11 @@ namespace perideal
     if (context.lattice_fracture)
       {
         // A bond at the critical stretch s0 holds k s0^2 |xi| / 2.
-        const double s0 = critical_stretch(1.);
-        fracture_factor = lattice_fracture_factor<dim>(
+        const double s0          = critical_stretch(1.);
+        const auto   coefficient = pair_coefficients(particles);
+        fracture_factor          = lattice_fracture_factor<dim>(
           particles,
-          [&](const unsigned int i, const std::size_t b) {
-            return pair_coefficient(particles, i, b);
-          },
+          [&coefficient](const unsigned int, const std::size_t b) { return coefficient(b); },
           [s0](double r) { return 0.5 * s0 * s0 * r; });
       }
   }
@@ -195,6 +194,16 @@ namespace perideal
                                    const std::size_t          b) const
   {
     return kernel->lane_coefficient[kernel->blocks.lane_of(particles.bonds(), i, b)];
+  }
+
+  template <int dim>
+  typename BondBased<dim>::PairCoefficients
+  BondBased<dim>::pair_coefficients(const ParticleSystem<dim> &particles) const
+  {
+    PairCoefficients coefficients;
+    coefficients.coefficient = kernel->lane_coefficient.data();
+    kernel->blocks.lanes_of_bonds(particles.bonds().size(), coefficients.lane);
+    return coefficients;
   }
 
   template <int dim>

@@ -18,11 +18,10 @@ namespace perideal
   BondBased<dim>::stiffness_bound(const ParticleSystem<dim> &particles,
                                   std::vector<double>       &per_particle) const
   {
+    const auto coefficient = pair_coefficients(particles);
     bond_pair_stiffness_bound<dim>(
       particles,
-      [this, &particles](const unsigned int i, const std::size_t b) {
-        return pair_coefficient(particles, i, b);
-      },
+      [&coefficient](const unsigned int, const std::size_t b) { return coefficient(b); },
       dim,
       per_particle);
   }
@@ -34,11 +33,10 @@ namespace perideal
   BondBased<dim>::linearize(const ParticleSystem<dim> &particles, LinearizedModel &linearized) const
   {
     linearized.reinit(this->field_layout().n_components(), particles.n_owned());
+    const auto          coefficient = pair_coefficients(particles);
     std::vector<double> bond_coefficient(particles.bonds().size());
-    for (unsigned int i = 0; i < particles.n_owned(); ++i)
-      for (unsigned int b = particles.bonds().row_start[i]; b < particles.bonds().row_start[i + 1];
-           ++b)
-        bond_coefficient[b] = pair_coefficient(particles, i, b);
+    for (std::size_t b = 0; b < bond_coefficient.size(); ++b)
+      bond_coefficient[b] = coefficient(b);
     add_bond_rows(particles,
                   intact_bond_stiffness(particles.bonds(), bond_coefficient),
                   extension_row<dim>(particles),

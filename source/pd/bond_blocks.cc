@@ -251,6 +251,16 @@ namespace perideal
 
   template <int dim>
   void
+  BondBlocks<dim>::lanes_of_bonds(const std::size_t n_bonds, std::vector<unsigned int> &lane) const
+  {
+    lane.assign(n_bonds, numbers::invalid_unsigned_int);
+    for (std::size_t l = 0; l < lane_bond.size(); ++l)
+      if (lane_bond[l] != numbers::invalid_unsigned_int)
+        lane[lane_bond[l]] = l;
+  }
+
+  template <int dim>
+  void
   BondBlocks<dim>::from_lanes(const Array &per_lane, std::vector<double> &per_bond) const
   {
     for (std::size_t l = 0; l < lane_bond.size(); ++l)

@@ -116,6 +116,35 @@ namespace perideal
                      const std::size_t          b) const;
 
     /**
+     * @brief pair_coefficient() of every bond of the bond list, read from the kernel's lanes
+     * through the lane of each bond (BondBlocks::lanes_of_bonds(): one pass over the lanes
+     * instead of a search per bond; 4 B per bond while it exists).
+     */
+    class PairCoefficients
+    {
+    public:
+      /// k_b of bond @p b.
+      double
+      operator()(const std::size_t b) const
+      {
+        return coefficient[lane[b]];
+      }
+
+    private:
+      friend class BondBased<dim>;
+      const double             *coefficient = nullptr;
+      std::vector<unsigned int> lane;
+    };
+
+    /**
+     * @brief The pair coefficients of all bonds of @p particles (PairCoefficients), for what
+     * reads every bond's coefficient: the stiffness bound, the linearization, the lattice
+     * calibration of the fracture energy.
+     */
+    PairCoefficients
+    pair_coefficients(const ParticleSystem<dim> &particles) const;
+
+    /**
      * @brief The Poisson ratio that the model implies (Cauchy relations).
      */
     double

@@ -239,6 +239,14 @@ namespace perideal
     lane_of(const BondList &bonds, const unsigned int i, const std::size_t b) const;
 
     /**
+     * @brief The lanes of all bonds at once: @p lane[b] = lane_of() of bond b (the lanes store
+     * their bond: one pass over them), for the @p n_bonds bonds of the bond list of reinit()
+     * (4 B per bond, less than a copy of a per-lane value of doubles).
+     */
+    void
+    lanes_of_bonds(const std::size_t n_bonds, std::vector<unsigned int> &lane) const;
+
+    /**
      * @brief The inverse of to_lanes(): @p per_bond[bond_index(q, l)] = @p per_lane[q * width +
      * l] (per-lane histories back in bond order, for the linearization and checkpoints);
      * @p per_bond is sized like the bond list.
