@@ -21,8 +21,7 @@ namespace perideal
     /**
      * @brief Pass 1 of the LPS kernel as a pair law of for_each_bond_block(): breaks bonds by
      * stretch, then adds the pair sum p omega chi V_i V_j |xi| e (e = |xi| s) at both ends
-     * (the dilatation before the factor n / (m_i V_i)), and keeps each lane's
-     * rho = |xi| / |xi + eta| for pass 2 (LPSForceLaw: no inverse square root there).
+     * (the dilatation before the factor n / (m_i V_i)).
      */
     template <int dim>
     struct LPSDilatationLaw : StretchPairLaw<dim>
@@ -31,8 +30,6 @@ namespace perideal
       static constexpr bool         breaks_bonds = true;
       /// omega chi V_i V_j per lane.
       const double *weight;
-      /// rho per lane (written).
-      double *rho;
 
       template <typename Bond>
       void
@@ -49,7 +46,6 @@ namespace perideal
                                        y.stretch * (bond.length * bond.length);
         to_a[0] = p;
         to_b[0] = p;
-        y.rho.copy_to(rho + lanes.first_lane, stdx::element_aligned);
       }
     };
 
@@ -59,8 +55,7 @@ namespace perideal
      * omega chi V_i V_j (xi + eta)/|xi + eta| on the particle side (its negative on the
      * neighbour) and, if @p with_energy, the deviatoric pair energies
      * alpha_i omega chi V_i V_j (e - theta_i |xi| / n)^2 / 2 at i and the same with j at j
-     * (theta / m and alpha carry the particles' energy weights). The deformed bond takes rho
-     * from pass 1 (the same displacements): the same values without the inverse square root.
+     * (theta / m and alpha carry the particles' energy weights).
      */
     template <int dim, bool with_energy>
     struct LPSForceLaw : StretchPairLaw<dim>
@@ -69,8 +64,6 @@ namespace perideal
       static constexpr bool         breaks_bonds = false;
       /// omega chi V_i V_j per lane.
       const double *weight;
-      /// rho per lane, from pass 1.
-      const double *rho;
       /// Kernel order: beta theta / m, beta alpha, theta.
       const double *theta_over_m, *alpha, *theta;
       /// n k - (n + 2) mu.
@@ -88,16 +81,6 @@ namespace perideal
         return {Vector(theta_over_m + a, stdx::element_aligned),
                 Vector(alpha + a, stdx::element_aligned),
                 Vector(theta + a, stdx::element_aligned)};
-      }
-
-      template <typename Bond>
-      DeformedBond<dim>
-      strain(const Bond              &bond,
-             const std::size_t        first_lane,
-             const bond_simd::Vector *u_a,
-             const bond_simd::Vector *u_b) const
-      {
-        return deformed_bond<dim>(bond, u_a, u_b, rho + first_lane);
       }
 
       template <typename Bond>
@@ -142,9 +125,9 @@ namespace perideal
   template <int dim>
   struct LinearPeridynamicSolid<dim>::Kernel
   {
-    /// The bonds in SIMD blocks, pair_weight per lane and rho per lane (pass 1 to pass 2).
+    /// The bonds in SIMD blocks, and pair_weight per lane.
     BondBlocks<dim>                 blocks;
-    typename BondBlocks<dim>::Array lane_weight, lane_rho;
+    typename BondBlocks<dim>::Array lane_weight;
     /// Kernel-order work fields of compute_forces(): displacement, force, energy density,
     /// dilatation, beta theta / m, beta alpha and beta / m (beta: the particles' energy weights).
     typename BondBlocks<dim>::Array u_field, f_field, w_field, theta_field, theta_over_m_field,
@@ -169,7 +152,6 @@ namespace perideal
         out[dim] = blocks.component(w_field, 0);
       const LPSForceLaw<dim, with_energy> law{{},
                                               lane_weight.data(),
-                                              lane_rho.data(),
                                               blocks.component(theta_over_m_field, 0),
                                               blocks.component(alpha_field, 0),
                                               blocks.component(theta_field, 0),
@@ -251,7 +233,6 @@ namespace perideal
     Kernel &k = *kernel;
     k.blocks.reinit(particles);
     k.blocks.to_lanes(pair_weight, k.lane_weight);
-    k.lane_rho.resize_fast(k.lane_weight.size());
     for (auto *field : {&k.u_field, &k.f_field})
       k.blocks.reinit_field(*field, dim);
     for (auto *field :
@@ -336,7 +317,7 @@ namespace perideal
     for_each_bond_block<dim>(k.blocks,
                              u_k,
                              {{k.blocks.component(k.theta_field, 0)}},
-                             LPSDilatationLaw<dim>{{}, k.lane_weight.data(), k.lane_rho.data()},
+                             LPSDilatationLaw<dim>{{}, k.lane_weight.data()},
                              bonds,
                              critical_stretch);
     double *theta_owned = theta.begin();

@@ -235,16 +235,11 @@ namespace perideal
    * @brief The DeformedBond of the lanes of a block of reference bond @p bond_class (its
    * class or the lanes' own, see for_each_bond_block()) with displacements
    * @p u_a at the particle side and @p u_b at the neighbours (dim components each);
-   * multiplications only (bond_simd::inverse_sqrt()). With @p known_rho, the lanes' rho as an
-   * earlier pass over the same displacements computed it (the per-lane array at the block's
-   * first lane): the same DeformedBond without the inverse square root.
+   * multiplications only (bond_simd::inverse_sqrt()).
    */
   template <int dim, typename Bond>
   inline DeformedBond<dim>
-  deformed_bond(const Bond              &bond_class,
-                const bond_simd::Vector *u_a,
-                const bond_simd::Vector *u_b,
-                const double            *known_rho = nullptr)
+  deformed_bond(const Bond &bond_class, const bond_simd::Vector *u_a, const bond_simd::Vector *u_b)
   {
     using bond_simd::Vector;
     DeformedBond<dim> y;
@@ -255,11 +250,8 @@ namespace perideal
         length2 += y.r[d] * y.r[d];
       }
     const Vector ratio2 = length2 * (bond_class.inverse_length * bond_class.inverse_length);
-    if (known_rho != nullptr)
-      y.rho.copy_from(known_rho, std::experimental::element_aligned);
-    else
-      y.rho = bond_simd::inverse_sqrt(ratio2);
-    y.stretch = ratio2 * y.rho - 1.;
+    y.rho               = bond_simd::inverse_sqrt(ratio2);
+    y.stretch           = ratio2 * y.rho - 1.;
     return y;
   }
 
