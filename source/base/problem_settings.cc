@@ -123,8 +123,9 @@ namespace perideal
     prm.declare_entry("Checkpoint interval",
                       "off",
                       Patterns::Anything(),
-                      "Write the complete state of the run to <Directory>/checkpoint every this "
-                      "many steps: time steps (explicit) or load steps (quasi-static); off: not "
+                      "Write the complete state of the run (of every physics of <Physics/List> "
+                      "too) to <Directory>/checkpoint every this many steps: time steps "
+                      "(explicit) or load steps (quasi-static); off: not "
                       "by steps. 'perideal-solid --restart FILE.prm' continues the run from it. "
                       "With <Checkpoint time interval> too, a checkpoint is written when either "
                       "is due. Never after the last step. Accepted: off or an integer >= 1.");

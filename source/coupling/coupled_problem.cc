@@ -435,12 +435,8 @@ namespace perideal
   void
   CoupledProblem<dim>::restart_from_checkpoint()
   {
-    AssertThrow(physics.size() == 1,
-                ExcMessage("--restart: a checkpoint holds one physics so far, and this problem "
-                           "has <Physics/List> = " +
-                           physics[1]->name + (physics.size() > 2 ? ", ..." : "") +
-                           " besides; run it from its initial conditions."));
-    restart = true;
+    restart              = true;
+    resume_other_physics = physics.size() > 1;
   }
 
   template <int dim>
@@ -455,6 +451,13 @@ namespace perideal
   CoupledProblem<dim>::run()
   {
     Checkpoint<dim> checkpoint(settings, physics[0]->model_lines, restart, stop_step);
+    for (unsigned int k = 1; k < physics.size(); ++k)
+      checkpoint.add_physics(physics[k]->name,
+                             physics[k]->model_lines + "solver = " +
+                               (physics[k]->settings.solver_type == SolverType::implicit ?
+                                  "implicit\n" :
+                                  "explicit\n"),
+                             *physics[k]->state);
     solver->run(*state, *postprocessors, checkpoint);
   }
 

@@ -50,10 +50,6 @@ namespace perideal
                 ExcMessage(entry + ": the physics share the particles, which an adaptive PD "
                                    "region does not rebuild for each yet; accepted "
                                    "<Coupling/Adaptive region/Criterion> = none."));
-    AssertThrow(settings.checkpoint_interval == 0 && settings.checkpoint_time_interval == 0.,
-                ExcMessage(entry + ": checkpoints hold one physics so far; set <Output/"
-                                   "Checkpoint interval> and <Output/Checkpoint time interval> "
-                                   "to off."));
     for (const auto &item : list)
       {
         physics.push_back(std::make_unique<Physics<dim>>(item.first, comm, log));
@@ -170,6 +166,8 @@ namespace perideal
         const unsigned int n     = sub_steps[k - 1];
         const double       dt    = field.state->time_step;
         const double       start = (step - 1) * split_step();
+        if (resume_other_physics)
+          field.solver->resume_state(*field.state, start);
         for (unsigned int s = 0; s < n; ++s)
           field.solver->advance(*field.state, start + s * dt, dt, with_energy && s + 1 == n);
         // The force of the supports, for the reactions (explicit runs keep it from the last
@@ -177,6 +175,7 @@ namespace perideal
         if (with_energy && field.settings.solver_type == SolverType::explicit_dynamics)
           field.state->fe_support.equ(-1., field.state->residual);
       }
+    resume_other_physics = resume_other_physics && step == 0;
   }
 
   template <int dim>

@@ -123,8 +123,8 @@ namespace perideal
     return {{&u, &v, &a, &internal_force, &external_force, &previous_u, &previous_load},
             &energy_density,
             {&U, &V, &A, &f_ext, &residual, &fe_load, &fe_support, &previous_fe_load, &previous_U},
-            &local_work,
-            &local_dissipated};
+            {&local_work, &local_dissipated, &local_heat_in},
+            {&stored_heat_at_start}};
   }
 
   template <int dim>

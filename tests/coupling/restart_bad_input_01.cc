@@ -6,7 +6,8 @@
 // default);
 // a restart without a checkpoint; a restart with the checkpoint of another problem (another
 // material model; another horizon, so other bonds); a truncated checkpoint; a file that is not a
-// checkpoint. The good checkpoint is then accepted.
+// checkpoint; a checkpoint of the first format (PERIDEAL-CKPT-01). The good checkpoint is then
+// accepted.
 // ---------------------------------------------------------------------
 
 #include <deal.II/base/mpi.h>
@@ -136,10 +137,22 @@ main(int argc, char **argv)
                                  "not_a_checkpoint/statistics.csv",
                                  std::filesystem::copy_options::overwrite_existing);
       std::ofstream("not_a_checkpoint/checkpoint") << std::ifstream("other/statistics.csv").rdbuf();
+      // A checkpoint of the first format (before the regions wrote their own sections): its
+      // mark, then what followed it.
+      std::filesystem::create_directories("old_format");
+      std::filesystem::copy_file("other/statistics.csv",
+                                 "old_format/statistics.csv",
+                                 std::filesystem::copy_options::overwrite_existing);
+      std::ofstream old("old_format/checkpoint");
+      old << "PERIDEAL-CKPT-01";
+      std::ifstream current("other/checkpoint");
+      current.seekg(16);
+      old << current.rdbuf();
     }
   MPI_Barrier(MPI_COMM_WORLD);
   refused_restart(plate, "truncated");
   refused_restart(plate, "not_a_checkpoint");
+  refused_restart(plate, "old_format");
 
   // The checkpoint itself is good: the run continues from it.
   run(plate, "other", 0, true);

@@ -4,6 +4,7 @@
 #ifndef perideal_coupling_checkpoint_h
 #define perideal_coupling_checkpoint_h
 
+#include <perideal/base/checkpoint_file.h>
 #include <perideal/base/problem_settings.h>
 #include <perideal/coupling/coupled_state.h>
 #include <perideal/coupling/postprocessors/postprocessor.h>
@@ -33,28 +34,26 @@ namespace perideal
    * <Output/Checkpoint time interval> of simulated time (the load factor of a quasi-static run),
    * and the restart from the newest one (perideal-solid --restart).
    *
-   * The checkpoint `<Output/Directory>/checkpoint` holds the complete state of the run: every
-   * vector of CoupledState (particles: displacement, velocity, acceleration, forces, the
-   * previous state of the work of the loads, energy density; FE: the same), the broken bonds,
-   * each rank's partial sums of the work and the dissipated energy, the position (step, time,
-   * next output index) and the postprocessors' state (the statistics table so far, the energy
+   * The checkpoint `<Output/Directory>/checkpoint` holds the complete state of the run, of every
+   * physics of the problem: each state's vectors and partial sums (CoupledState::save(): its
+   * particle records, bond histories and FE dof values through its regions), the broken bonds
+   * once (the physics share one bond list), the position (step, time, next output index) and
+   * the postprocessors' state of every physics (the statistics table so far, the energy
    * balance, the records of the XDMF/PVD files). The state is restored exactly, so a restarted
-   * run gives the numbers of the uninterrupted run bit for bit on the same number of ranks.
+   * run gives the numbers of the uninterrupted run bit for bit on the same number of ranks; on
+   * another number of ranks the partial sums are added on rank 0, so the run continues to
+   * round-off.
    *
-   * Layout (one binary file, written collectively with MPI-IO): a text header (the problem's
-   * fingerprint and the position), then each rank's two partial sums, the particles' records
-   * by ParticleSystem::invariant_index() (independent of the number of ranks), the broken bonds
-   * as pairs of invariant indices, the FE records of the FE-carrying cells by their CellId (the
-   * mesh is rebuilt from the parameter file, deterministically, so the cells are the same on
-   * any number of ranks), the postprocessors' state and an end mark. On another number of ranks
-   * the partial sums are added on rank 0, so the run continues to round-off.
+   * This class decides when a checkpoint is written and what goes into it; the regions write
+   * and read their own sections, and the file format is CheckpointWriter's and
+   * CheckpointReader's (base/checkpoint_file.h).
    *
    * The file is written as `checkpoint.tmp` and renamed by rank 0 after every rank has closed
    * it, so a run killed while writing leaves the previous checkpoint complete. A restart checks,
    * before it writes anything, that the file exists, is complete (its size and end mark) and
-   * belongs to this problem (dimension, models, unknowns, numbers of particles, bonds, FE cells
-   * and dofs, the solver type and its number and size of steps); otherwise it stops naming the
-   * file and what differs. The settings that only decide how well a step is solved
+   * belongs to this problem (dimension, physics, models, unknowns, numbers of particles, bonds,
+   * FE cells and dofs, the solver type and its number and size of steps); otherwise it stops
+   * naming the file and what differs. The settings that only decide how well a step is solved
    * (<Solver/Tolerance>, <Solver/Maximum iterations>, <Solver/Linear solver>, <Solver/Density
    * safety factor>) are not part of it: a quasi-static run that stopped without convergence
    * continues from the checkpoint of its last converged load step (keep(), write_kept()) with
@@ -80,6 +79,17 @@ namespace perideal
     /// The checkpoint file.
     const std::string &
     filename() const;
+
+    /**
+     * @brief A physics of <Physics/List> besides the first one (whose state the solver passes):
+     * its @p name, its @p problem_lines for the fingerprint and its @p state, whose sections
+     * are named "<name>/..." (its postprocessors are the first physics' ones through
+     * Postprocessors::add_physics()). Call before the run.
+     */
+    void
+    add_physics(const std::string &name,
+                const std::string &problem_lines,
+                CoupledState<dim> &state);
 
     /**
      * @brief The solver's run: @p description (e.g. its number and size of steps) is part of the
@@ -112,9 +122,10 @@ namespace perideal
                const RunPosition         &position);
 
     /**
-     * @brief Keep in memory what a checkpoint of @p position would hold (the stored parts of
-     * @p state, its broken bonds and the postprocessors' state): a quasi-static run keeps each
-     * converged load step before it solves the next one. Collective.
+     * @brief Keep in memory what a checkpoint of @p position would hold (the stored parts and
+     * bond histories of @p state and of every physics of add_physics(), the broken bonds and the
+     * postprocessors' state): a quasi-static run keeps each converged load step before it (and
+     * the other physics) advance to the next one. Collective.
      */
     void
     keep(CoupledState<dim>         &state,
@@ -148,22 +159,40 @@ namespace perideal
     bool
     due(const RunPosition &position) const;
 
-    /// The fingerprint of the problem of @p state: "key = value" lines.
+    /// The fingerprint of the problem of @p state and the other physics: "key = value" lines.
     std::string
     fingerprint(CoupledState<dim> &state) const;
 
-    /// What keep() keeps: copies of the stored parts, the bond states, the postprocessors.
-    struct Kept
+    /// Every physics' state: @p state (the first one's) and those of add_physics().
+    std::vector<CoupledState<dim> *>
+    all_states(CoupledState<dim> &state) const;
+
+    /// What keep() keeps of one state: copies of its stored parts and of its bond histories.
+    struct KeptState
     {
       std::vector<ParticleVector> particle_vectors;
       std::vector<double>         energy_density;
       std::vector<FEVector>       fe_vectors;
-      double                      work = 0., dissipated = 0.;
-      std::vector<std::uint8_t>   intact;
+      std::vector<double>         sums;
       std::vector<double>         history;
-      std::string                 postprocessors;
-      RunPosition                 position;
-      bool                        valid = false;
+    };
+
+    /// What keep() keeps: every state, the bond states, the postprocessors.
+    struct Kept
+    {
+      std::vector<KeptState>    states;
+      std::vector<std::uint8_t> intact;
+      std::string               postprocessors;
+      RunPosition               position;
+      bool                      valid = false;
+    };
+
+    /// The physics of add_physics(): name, fingerprint lines, state.
+    struct OtherPhysics
+    {
+      std::string        name;
+      std::string        problem_lines;
+      CoupledState<dim> *state;
     };
 
     std::string  file;
@@ -175,8 +204,9 @@ namespace perideal
     std::string  run_description;
     unsigned int n_steps = 0;
     /// The time of the step before (the restart's or 0 at first): the time interval's reference.
-    double previous_time = 0.;
-    Kept   kept;
+    double                    previous_time = 0.;
+    Kept                      kept;
+    std::vector<OtherPhysics> others;
   };
 } // namespace perideal
 

@@ -276,6 +276,9 @@ namespace perideal
 
     bool         restart   = false;
     unsigned int stop_step = Checkpoint<dim>::no_step;
+    /// Set by a restart with several physics: the other physics' solvers resume before their
+    /// first step (Solver::resume_state()).
+    bool resume_other_physics = false;
 
     /// The first physics' state, solver and postprocessors.
     ///@{

@@ -6,6 +6,7 @@
 
 #include <deal.II/lac/la_parallel_vector.h>
 
+#include <perideal/base/checkpoint_file.h>
 #include <perideal/base/field_layout.h>
 #include <perideal/base/linear_algebra.h>
 #include <perideal/base/problem_settings.h>
@@ -224,20 +225,45 @@ namespace perideal
       ///@}
       /// Every FE vector.
       std::vector<FEVector *> fe_vectors;
-      /// This rank's sums of the work of the loads and of the dissipated energy.
-      ///@{
-      double *work, *dissipated;
-      ///@}
+      /// This rank's sums of the work of the loads, of the dissipated energy and of the heat in
+      /// through the conditions.
+      std::vector<double *> sums;
+      /// What is the same on every rank: the stored heat at start_work().
+      std::vector<double *> totals;
     };
 
     /**
-     * @brief What a checkpoint holds of this state (Checkpoint): everything that changes during
-     * a run, the previous state of the work of the loads and this rank's partial sums included,
-     * so that a restarted run repeats the uninterrupted one bit for bit on the same number of
-     * ranks.
+     * @brief What a checkpoint holds of this state: everything that changes during a run, the
+     * previous state of the work of the loads and this rank's partial sums included, so that a
+     * restarted run repeats the uninterrupted one bit for bit on the same number of ranks.
      */
     StoredParts
     stored_parts();
+
+    /**
+     * @brief The lines "key = value" of this state in a checkpoint's fingerprint, each key
+     * prefixed by @p prefix: the unknowns, the counts of particles, bonds, FE cells and dofs,
+     * the stored vectors and the values per bond history of the model. Collective.
+     */
+    std::string
+    fingerprint(const std::string &prefix);
+
+    /**
+     * @brief Add the sections of this state to @p writer, named with @p prefix: this rank's sums,
+     * the particle records (ParticleRegion::save_particle_records()), the bond histories of the
+     * model (ParticleRegion::save_bond_histories()) and the FE dof values
+     * (FERegion::save_dof_values()). The bond states are the particles' owner's (the first
+     * physics). Collective.
+     */
+    void
+    save(CheckpointWriter &writer, const std::string &prefix);
+
+    /**
+     * @brief Restore what save() wrote with @p prefix from @p reader (on another number of ranks
+     * the sums go to rank 0); the ghost values of u and U are updated. Collective.
+     */
+    void
+    load(CheckpointReader &reader, const std::string &prefix);
 
     /// The problem: its communicator, its log (written on rank 0, is_root), its settings, its
     /// particle and FE regions and its coupling method.

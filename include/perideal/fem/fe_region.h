@@ -17,6 +17,7 @@
 #include <deal.II/lac/full_matrix.h>
 #include <deal.II/lac/vector.h>
 
+#include <perideal/base/checkpoint_file.h>
 #include <perideal/base/convection.h>
 #include <perideal/base/elasticity.h>
 #include <perideal/base/field_layout.h>
@@ -276,6 +277,28 @@ namespace perideal
     /// again).
     void
     load_output_records(const std::string &packed);
+
+    /**
+     * @brief Checkpoints (source/fem/fe_region_checkpoint.cc): the bytes section @p name of the
+     * FE-carrying owned cells, each its CellId and its dof values of every vector of
+     * @p vectors (the mesh is rebuilt from the parameter file, so the CellIds are the same on
+     * any number of ranks). Collective.
+     */
+    void
+    save_dof_values(CheckpointWriter              &writer,
+                    const std::string             &name,
+                    const std::vector<FEVector *> &vectors) const;
+
+    /// Read the values of save_dof_values() into @p vectors (owned entries; every rank reads
+    /// the whole section). Collective.
+    void
+    load_dof_values(CheckpointReader              &reader,
+                    const std::string             &name,
+                    const std::vector<FEVector *> &vectors) const;
+
+    /// The number of FE-carrying cells (FE_Q, not FE_Nothing), over the ranks. Collective.
+    std::uint64_t
+    n_cells_with_unknowns() const;
 
     /// A vector with the layout of the solution (owned + ghosted dofs).
     void

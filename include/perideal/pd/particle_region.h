@@ -6,7 +6,9 @@
 
 #include <deal.II/base/parameter_handler.h>
 
+#include <perideal/base/checkpoint_file.h>
 #include <perideal/base/field_layout.h>
+#include <perideal/base/linear_algebra.h>
 #include <perideal/base/region.h>
 #include <perideal/pd/boundary_conditions.h>
 #include <perideal/pd/damage_model.h>
@@ -151,6 +153,53 @@ namespace perideal
     /// The planar assumption (<Material/Planar assumption>; three_dimensional in 3D).
     PlanarAssumption
     planar_assumption() const;
+
+    /**
+     * @brief Checkpoints (source/pd/particle_region_checkpoint.cc): the records section @p name
+     * of the owned particles at their ParticleSystem::invariant_index() (so that any number of
+     * ranks reads them), each the @p n_components values of every vector of @p vectors, then
+     * the value of every per-particle array of @p per_particle. Collective.
+     */
+    void
+    save_particle_records(CheckpointWriter                         &writer,
+                          const std::string                        &name,
+                          const std::vector<ParticleVector *>      &vectors,
+                          const unsigned int                        n_components,
+                          const std::vector<std::vector<double> *> &per_particle) const;
+
+    /// Read the records of save_particle_records() into @p vectors and @p per_particle (owned
+    /// entries).
+    void
+    load_particle_records(CheckpointReader                         &reader,
+                          const std::string                        &name,
+                          const std::vector<ParticleVector *>      &vectors,
+                          const unsigned int                        n_components,
+                          const std::vector<std::vector<double> *> &per_particle) const;
+
+    /**
+     * @brief The bytes section @p name of the broken bonds (state 0) as pairs of invariant
+     * indices, each bond once (pre-cracks and no-fail bonds are rebuilt by the set-up). The
+     * bond list is shared by the physics: the particles' owner writes it. Collective.
+     */
+    void
+    save_bond_states(CheckpointWriter &writer, const std::string &name) const;
+
+    /// Break the bonds of save_bond_states() (every rank reads them all); stops if they do not
+    /// join particles of this run. Collective.
+    void
+    load_bond_states(CheckpointReader &reader, const std::string &name);
+
+    /**
+     * @brief The bytes section @p name of the model's bond histories
+     * (MaterialModel::bond_history()): records (pair of invariant indices, values) of the bonds
+     * with a non-zero history, each bond once. Nothing for a model without them. Collective.
+     */
+    void
+    save_bond_histories(CheckpointWriter &writer, const std::string &name) const;
+
+    /// Restore the histories of save_bond_histories() (every rank reads them all). Collective.
+    void
+    load_bond_histories(CheckpointReader &reader, const std::string &name);
 
   private:
     /**

@@ -155,6 +155,9 @@ namespace perideal
     std::vector<std::string> parts{statistics ? statistics->contents() : std::string()};
     for (const auto &postprocessor : postprocessors)
       parts.push_back(postprocessor->save_state(state));
+    for (const auto &[name, other_state, others] : physics)
+      for (const auto &postprocessor : others->postprocessors)
+        parts.push_back(postprocessor->save_state(*other_state));
     const std::vector<char> packed = Utilities::pack(parts, false);
     return std::string(packed.begin(), packed.end());
   }
@@ -166,14 +169,21 @@ namespace perideal
     const auto parts =
       Utilities::unpack<std::vector<std::string>>(std::vector<char>(packed.begin(), packed.end()),
                                                   false);
-    AssertThrow(parts.size() == postprocessors.size() + 1,
+    std::size_t n_postprocessors = postprocessors.size();
+    for (const auto &[name, other_state, others] : physics)
+      n_postprocessors += others->postprocessors.size();
+    AssertThrow(parts.size() == n_postprocessors + 1,
                 ExcMessage("The checkpoint holds the state of " + std::to_string(parts.size() - 1) +
-                           " postprocessors, the run has " + std::to_string(postprocessors.size()) +
+                           " postprocessors, the run has " + std::to_string(n_postprocessors) +
                            "."));
     create_statistics(state);
     statistics->resume(parts[0]);
-    for (unsigned int k = 0; k < postprocessors.size(); ++k)
-      postprocessors[k]->load_state(state, parts[k + 1]);
+    auto part = parts.begin() + 1;
+    for (const auto &postprocessor : postprocessors)
+      postprocessor->load_state(state, *part++);
+    for (const auto &[name, other_state, others] : physics)
+      for (const auto &postprocessor : others->postprocessors)
+        postprocessor->load_state(*other_state, *part++);
   }
 
   template class Postprocessors<2>;

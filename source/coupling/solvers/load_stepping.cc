@@ -275,11 +275,12 @@ namespace perideal
     unsigned int cuts = 0;
     for (unsigned int step = start.step + 1; cutting ? reached < 1. : step <= n_steps; ++step)
       {
+        // The state after the last converged step, for a checkpoint if this one fails (every
+        // physics', before the others advance).
+        checkpoint.keep(state, postprocessors, {step - 1, reached, step});
         // The other physics of a problem with several (their solve to the step's time first).
         if (state.advance_other_physics)
           state.advance_other_physics(step, true);
-        // The state after the last converged step, for a checkpoint if this one fails.
-        checkpoint.keep(state, postprocessors, {step - 1, reached, step});
         const double factor = cutting ? std::min(1., reached + increment) : double(step) / n_steps;
         const auto   broken_at_start = n_broken_bonds(ps);
 

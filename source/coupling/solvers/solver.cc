@@ -35,6 +35,11 @@ namespace perideal
   }
 
   template <int dim>
+  void
+  Solver<dim>::resume_state(CoupledState<dim> &, const double)
+  {}
+
+  template <int dim>
   std::unique_ptr<Solver<dim>>
   create_solver(const SolverType type, const QuasiStaticControl &control)
   {

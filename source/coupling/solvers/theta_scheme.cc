@@ -123,6 +123,13 @@ namespace perideal
 
   template <int dim>
   void
+  ThetaScheme<dim>::resume_state(CoupledState<dim> &state, const double time)
+  {
+    first_forces(state, time);
+  }
+
+  template <int dim>
+  void
   ThetaScheme<dim>::step_to(CoupledState<dim> &state, const double time)
   {
     auto             &fe         = state.fe;
@@ -193,7 +200,7 @@ namespace perideal
     const RunPosition start =
       run.start(run_description.str(), n_steps, [&]() { start_state(state); });
     if (restarting)
-      first_forces(state, start.time);
+      resume_state(state, start.time);
 
     for (unsigned int step = start.step + 1; step <= n_steps; ++step)
       {

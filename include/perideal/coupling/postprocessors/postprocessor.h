@@ -191,8 +191,9 @@ namespace perideal
                 Postprocessors<dim>     &others);
 
     /**
-     * @brief The statistics table written so far and every postprocessor's save_state(),
-     * packed for a checkpoint (complete on rank 0). Collective.
+     * @brief The statistics table written so far and every postprocessor's save_state(), those
+     * of the physics of add_physics() after the own ones, packed for a checkpoint (complete on
+     * rank 0). Collective.
      */
     std::string
     save_state(const CoupledState<dim> &state) const;
@@ -200,7 +201,8 @@ namespace perideal
     /**
      * @brief Continue from save_state()'s @p packed (the same on every rank): rewrite the
      * statistics table with the rows it kept (rows written after it are dropped) and restore
-     * every postprocessor. Instead of the first execute() of a restarted run. Collective.
+     * every postprocessor, those of add_physics() too. Instead of the first execute() of a
+     * restarted run. Collective.
      */
     void
     load_state(const CoupledState<dim> &state, const std::string &packed);

@@ -69,6 +69,14 @@ namespace perideal
      */
     virtual void
     advance(CoupledState<dim> &state, const double time, const double dt, const bool with_energy);
+
+    /**
+     * @brief Operator splitting, after a restart (Checkpoint::load() restored @p state at
+     * @p time): derive what the solver keeps beside the state before its next advance(). Nothing
+     * by default (an explicit step needs only the state).
+     */
+    virtual void
+    resume_state(CoupledState<dim> &state, const double time);
   };
 
   /// The solver of <Solver/Type> = @p type and, for quasi-static runs, <Solver/Control> =

@@ -66,6 +66,10 @@ namespace perideal
             const double       dt,
             const bool         with_energy) override;
 
+    /// After a restart at @p time: the forces of the next step (first_forces()).
+    void
+    resume_state(CoupledState<dim> &state, const double time) override;
+
   private:
     /// The forces of the first step at @p time (after the initial state or a restart).
     void
