@@ -202,7 +202,10 @@ namespace perideal
   {
     PairCoefficients coefficients;
     coefficients.coefficient = kernel->lane_coefficient.data();
-    kernel->blocks.lanes_of_bonds(particles.bonds().size(), coefficients.lane);
+    // The lanes are those of the particles the model was initialized on; a system without
+    // bonds (the empty particle part of the FE solve of the Schwarz method) has none to find.
+    if (particles.bonds().size() > 0)
+      kernel->blocks.lanes_of_bonds(particles.bonds().size(), coefficients.lane);
     return coefficients;
   }
 

@@ -256,7 +256,10 @@ namespace perideal
     lane.assign(n_bonds, numbers::invalid_unsigned_int);
     for (std::size_t l = 0; l < lane_bond.size(); ++l)
       if (lane_bond[l] != numbers::invalid_unsigned_int)
-        lane[lane_bond[l]] = l;
+        {
+          AssertIndexRange(lane_bond[l], n_bonds);
+          lane[lane_bond[l]] = l;
+        }
   }
 
   template <int dim>
