@@ -402,9 +402,10 @@ namespace perideal
       point << (d == 0 ? "" : ", ") << (*first)[d + 1];
     AssertThrow(false,
                 ExcMessage(
-                  when + ", the crack has left the PD-only zone before the region grew: a particle "
-                         "the run damaged (damage index at least <Coupling/Adaptive region/"
-                         "Damage threshold> = " +
+                  when +
+                  ", the crack has left the PD-only zone before the region grew: a particle "
+                  "the run damaged (damage index at least <Coupling/Adaptive region/"
+                  "Damage threshold> = " +
                   ParameterUtilities::format_number(damage_threshold) +
                   " above the pre-cracks') at (" + point.str() +
                   ") m lies where beta = " + ParameterUtilities::format_number(least) +

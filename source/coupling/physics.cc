@@ -207,14 +207,14 @@ namespace perideal
     exc.print_info(info);
     std::string message = info.str();
     // The subsections declare_parameters() gives each physics.
-    static const std::vector<std::string> own = {"Material",
-                                                 "Boundary conditions",
-                                                 "Finite elements",
-                                                 "Initial conditions",
-                                                 "Body force",
-                                                 "Solver",
-                                                 "Coupling"};
-    const std::string prefix = section(name) + "/";
+    static const std::vector<std::string> own    = {"Material",
+                                                    "Boundary conditions",
+                                                    "Finite elements",
+                                                    "Initial conditions",
+                                                    "Body force",
+                                                    "Solver",
+                                                    "Coupling"};
+    const std::string                     prefix = section(name) + "/";
     for (const auto &subsection : own)
       for (const std::string &closing : {std::string("/"), std::string(">")})
         {
