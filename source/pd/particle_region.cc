@@ -3,6 +3,7 @@
 // ---------------------------------------------------------------------
 #include <deal.II/base/utilities.h>
 
+#include <perideal/base/memory_estimate.h>
 #include <perideal/base/parameter_utilities.h>
 #include <perideal/pd/particle_region.h>
 
@@ -74,10 +75,12 @@ namespace perideal
                         "3.015",
                         Patterns::Double(0.),
                         "Horizon delta as a multiple of the lattice spacing [-]; must exceed 1.");
-      prm.declare_entry("Thickness",
-                        "1",
-                        Patterns::Double(0.),
-                        "2D only: thickness h of the body [m]; particle volume dx^2 h.");
+      prm.declare_entry(
+        "Thickness",
+        "1",
+        Patterns::Double(0.),
+        "2D only: thickness h of the body [m]; particle volume dx^2 h. A 3D problem "
+        "refuses any other value than 1.");
       prm.declare_entry("Partial volume correction",
                         "book",
                         Patterns::Selection(ParameterUtilities::selection(partial_volumes())),
@@ -150,7 +153,8 @@ namespace perideal
                         "plane stress",
                         Patterns::Selection(
                           ParameterUtilities::selection(planar_assumption_names())),
-                        "2D only: the state of the third direction.");
+                        "2D only: the state of the third direction. A 3D problem refuses 'plane "
+                        "strain'.");
       prm.declare_entry("No-fail regions",
                         "",
                         Patterns::Anything(),
@@ -208,8 +212,17 @@ namespace perideal
                            ": the horizon must be larger than the lattice spacing (accepted: > 1; "
                            "3 to 4 is usual)."));
     settings.horizon   = horizon_factor * settings.spacing;
-    settings.thickness = (dim == 2 ? prm.get_double("Thickness") : 1.);
+    settings.thickness = prm.get_double("Thickness");
     ParameterUtilities::require_positive(settings.thickness, "Discretization/Thickness");
+    AssertThrow(dim == 2 || settings.thickness == 1.,
+                ExcMessage("The parameter <Discretization/Thickness> is " +
+                           ParameterUtilities::format_number(settings.thickness) +
+                           ", an entry of 2D problems (a particle's volume dx^2 h); in 3D a "
+                           "particle's volume is dx^3 and the body's thickness is the extent of "
+                           "its regions (<Regions>): remove the entry (accepted in 3D: 1, its "
+                           "default)."));
+    if (dim == 3)
+      settings.thickness = 1.;
     settings.partial_volume =
       ParameterUtilities::choice(partial_volumes(),
                                  prm.get("Partial volume correction"),
@@ -262,7 +275,15 @@ namespace perideal
     prm.enter_subsection("Material");
     {
       if (with_geometry)
-        planar = planar_assumption_from_name(prm.get("Planar assumption"), dim);
+        {
+          const std::string planar_name = prm.get("Planar assumption");
+          AssertThrow(dim == 2 || planar_name == "plane stress",
+                      ExcMessage("The parameter <Material/Planar assumption> is '" + planar_name +
+                                 "', an entry of 2D problems (the state of the third "
+                                 "direction); a 3D body has none: remove the entry (accepted in "
+                                 "3D: plane stress, its default, which 3D ignores)."));
+          planar = planar_assumption_from_name(planar_name, dim);
+        }
       rho                          = prm.get_double("Density");
       const std::string model_name = prm.get("Model");
       model = PluginRegistry<MaterialModel<dim>>::create(model_name, section + "Material/Model");
@@ -328,7 +349,10 @@ namespace perideal
                              [&](const Point<dim> &x) { return keep(x) && body(x); }) :
                            body,
                     pre_cracks,
-                    regions.union_of(no_fail_regions, "Material/No-fail regions"));
+                    regions.union_of(no_fail_regions, "Material/No-fail regions"),
+                    [&](const std::uint64_t n_particles) {
+                      warn_if_bonds_exceed_memory(n_particles);
+                    });
         // A coupled problem may leave the PD region empty (beta = 0 on the whole body).
         AssertThrow(keep || ps.n_global() > 0,
                     ExcMessage("The body (<Discretization/Body>) holds no particle: its regions "
@@ -360,6 +384,21 @@ namespace perideal
           << "Bonds: " << n_bonds << "\n"
           << "Material: " << model->summary() << "\n"
           << "Critical stretch: " << s_critical << std::endl;
+  }
+
+  template <int dim>
+  void
+  ParticleRegion<dim>::warn_if_bonds_exceed_memory(const std::uint64_t n_particles) const
+  {
+    std::vector<Tensor<1, dim>> xi;
+    std::vector<double>         weight;
+    particle_system->lattice_family(xi, weight);
+    const std::string warning =
+      MemoryEstimate::warning(0.5 * double(xi.size()) * double(n_particles),
+                              MemoryEstimate::available_memory(communicator),
+                              settings.spacing);
+    if (is_root && !warning.empty())
+      log << warning << std::endl;
   }
 
   template <int dim>

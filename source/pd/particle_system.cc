@@ -66,7 +66,8 @@ namespace perideal
                                 const BoundingBox<dim>                        &box,
                                 const std::function<bool(const Point<dim> &)> &in_body,
                                 const std::vector<PreCrack<dim>>              &pre_cracks,
-                                const std::function<bool(const Point<dim> &)> &no_fail)
+                                const std::function<bool(const Point<dim> &)> &no_fail,
+                                const std::function<void(std::uint64_t)>      &placed)
   {
     if (resident_before == 0)
       {
@@ -205,6 +206,8 @@ namespace perideal
                            ") for the index type of this deal.II build; use a deal.II configured "
                            "with DEAL_II_WITH_64BIT_INDICES=ON."));
     n_global_particles = n_total;
+    if (placed)
+      placed(n_total);
 
     for (auto &first : first_of_cell)
       first += n_before;

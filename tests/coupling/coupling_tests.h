@@ -212,8 +212,7 @@ subsection Regions
 end
 subsection Material
   set Model             = bond based
-  set Planar assumption = plane strain
-  set Density           = 8000
+PLANAR  set Density           = 8000
   set Damage model      = critical stretch
   subsection bond based
     set Young's modulus = 191e9
@@ -263,6 +262,7 @@ end
        {"UPPER", three ? "0.1, 0.02, 0.01" : "0.1, 0.02"},
        {"RAMP", three ? "0.007" : "0.006"},
        {"ZERO", three ? "; 0" : ""},
+       {"PLANAR", three ? "" : "  set Planar assumption = plane strain\n"},
        {"CELLS", cells},
        {"BETA", beta},
        {"CRITERION", criterion},

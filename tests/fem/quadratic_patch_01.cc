@@ -40,7 +40,9 @@ namespace
     const std::string text =
       fem_tests::static_problem(dim, "plane stress", body_force, "1e-13") +
       "subsection Discretization\n"
-      "  set Thickness = 1e-3\n"
+      "  set Thickness = " +
+      std::string(dim == 2 ? "1e-3" : "1") +
+      "\n"
       "end\n"
       "subsection Finite elements\n"
       "  set Generator = subdivided_hyper_rectangle\n"

@@ -141,7 +141,7 @@ set Dimension = DIM
 subsection Discretization
   set Lattice spacing = 1e-3
   set Horizon factor  = 3.015
-  set Thickness       = 0.01
+  set Thickness       = THICKNESS
   set Body            = body
 end
 subsection Regions
@@ -242,12 +242,14 @@ end
               {"LOWER", "0, 0"},
               {"UPPER", "0.02, 0.01"},
               {"LEFT", "0.002, 0.01"},
-              {"RIGHT", "0.018, 0"}};
+              {"RIGHT", "0.018, 0"},
+              {"THICKNESS", "0.01"}};
     return {{"DIM", "3"},
             {"LOWER", "0, 0, 0"},
             {"UPPER", "0.008, 0.006, 0.006"},
             {"LEFT", "0.002, 0.006, 0.006"},
-            {"RIGHT", "0.006, 0, 0"}};
+            {"RIGHT", "0.006, 0, 0"},
+            {"THICKNESS", "1"}};
   }
 
   template <int dim>

@@ -212,6 +212,14 @@ namespace perideal
                    const std::string        &section,
                    const bool                with_geometry);
 
+    /**
+     * @brief Once generate() has placed @p n_particles particles, before their bonds take
+     * memory: warn (MemoryEstimate::warning()) if the bonds, half an interior particle's family
+     * per particle, would not fit in the memory the nodes of the run have available. Collective.
+     */
+    void
+    warn_if_bonds_exceed_memory(const std::uint64_t n_particles) const;
+
     MPI_Comm      communicator;
     std::ostream &log;
     bool          is_root;

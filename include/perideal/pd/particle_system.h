@@ -218,14 +218,17 @@ namespace perideal
     /**
      * @brief Fill the lattice points of @p box that satisfy @p in_body, distribute them, import
      * ghosts and find the bonds; bonds that cross a pre-crack start broken, bonds with an end
-     * in @p no_fail (if given) never break.
+     * in @p no_fail (if given) never break. @p placed (if given) is called on every rank with the
+     * number of particles once they are placed, before the bonds take memory (ParticleRegion
+     * warns there when the bonds would not fit).
      */
     void
     generate(const Settings                                        &settings,
              const dealii::BoundingBox<dim>                        &box,
              const std::function<bool(const dealii::Point<dim> &)> &in_body,
              const std::vector<PreCrack<dim>>                      &pre_cracks,
-             const std::function<bool(const dealii::Point<dim> &)> &no_fail = {});
+             const std::function<bool(const dealii::Point<dim> &)> &no_fail = {},
+             const std::function<void(std::uint64_t)>              &placed  = {});
 
     /// Communicator.
     MPI_Comm
