@@ -140,15 +140,21 @@ namespace perideal
         for (unsigned int c = 0; c < nc; ++c)
           if (layout.kind(c) != ComponentKind::rotation)
             applied_forces.push_back(applied[c]);
+        // A temperature's loads and reactions are heat flows [W].
+        const bool        heat         = layout.has_temperature();
+        const std::string unit         = heat ? " W" : " N";
+        const std::string balance_name = heat ? "Heat balance" : "Force balance";
+        const std::string largest      = heat ? "the largest heat flow" : "the largest force";
         log << "Applied load: ";
         print_without_round_off(log, applied_forces, floor);
-        log << " N\n";
+        log << unit << "\n";
         if (imbalance <= floor)
-          log << "Force balance: |applied + reactions| below the accuracy of the solution, "
-              << accuracy << " of the largest force\n";
+          log << balance_name << ": |applied + reactions| below the accuracy of the solution, "
+              << accuracy << " of " << largest << "\n";
         else // to the accuracy, as the reactions
-          log << "Force balance: |applied + reactions| = " << to_accuracy(imbalance, floor)
-              << " N, relative to the largest force: " << to_accuracy(balance, accuracy) << "\n";
+          log << balance_name << ": |applied + reactions| = " << to_accuracy(imbalance, floor)
+              << unit << ", relative to " << largest << ": " << to_accuracy(balance, accuracy)
+              << "\n";
       }
     log << std::flush;
     log.flags(flags);
