@@ -167,8 +167,12 @@ namespace perideal
       when.str());
     if (seeds.empty())
       return false;
-    for (const auto &field : physics)
-      adaptive.check_conditions_outside(field->fe, seeds, when.str());
+    for (unsigned int k = 0; k < physics.size(); ++k)
+      adaptive.check_conditions_outside(physics[k]->fe,
+                                        seeds,
+                                        when.str(),
+                                        k == 0 ? "" :
+                                                 Physics<dim>::section(physics[k]->name) + "/");
 
     // What carries over, before anything changes: per physics the unknowns of the free
     // particles by lattice point (the others are slaved to the FE field and take it again) and

@@ -81,6 +81,13 @@ namespace perideal
           // The particles are the first physics': only this physics' model is set up on them.
           field.pd.setup({}, {}, false);
         });
+        // The initial disks reach no FE condition of this physics either (those act on its FE
+        // field only).
+        if (adaptive.enabled())
+          adaptive.check_conditions_outside(field.fe,
+                                            adaptive.seed_points(),
+                                            "With <Coupling/Adaptive region/Initial seeds>",
+                                            Physics<dim>::section(field.name) + "/");
         if (is_root && field.pd.has_body())
           log << "Material (" << field.name << "): " << field.pd.material().summary() << std::endl;
         field.method->initialize(coupled_regions(field));
