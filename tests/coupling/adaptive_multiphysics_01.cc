@@ -23,6 +23,9 @@
 //      particle and FE value equals 20 K to 1e-13 before and after each (the stored heat
 //      changes by 20 K times the change of the lumped capacity, which the blended lumping does
 //      not keep exactly; heat.conversion_heat takes it);
+//  - a crack carried over once: the bonds across x = 60 mm near the initial disk's centre,
+//    broken before the first conversion, are broken after it, and the heat's model sees them
+//    broken (its flows of a unit temperature step across them are 0);
 //  - checkpoints of the adaptive run with its heat are refused, as without heat.
 // The explicit heat takes 3 sub-steps per step at the start and 4 after the first conversion,
 // which lowers its stable step.
@@ -207,21 +210,95 @@ end
     found.deviation = std::max({found.deviation, before.deviation, after.deviation});
   }
 
+  // The cut: the bonds across x = 60 mm with both ends within 7.5 mm of the initial disk's
+  // centre (free particles of its PD-only zone before and after every conversion).
+  const Point<2> centre(0.06, 0.01);
+
+  bool
+  crosses_cut(const Point<2> &a, const Point<2> &b)
+  {
+    return (a[0] - 0.06) * (b[0] - 0.06) < 0. && a.distance(centre) < 7.5e-3 &&
+           b.distance(centre) < 7.5e-3;
+  }
+
+  /// Break the cut's bonds (as a crack would), returning how many (all ranks).
+  std::uint64_t
+  break_cut(perideal::ParticleSystem<2> &ps)
+  {
+    const auto   &x      = ps.positions();
+    auto         &bonds  = ps.bonds();
+    std::uint64_t broken = 0;
+    for (unsigned int i = 0; i < ps.n_owned(); ++i)
+      for (unsigned int b = bonds.row_start[i]; b < bonds.row_start[i + 1]; ++b)
+        if (crosses_cut(x[i], x[bonds.neighbor[b]]))
+          {
+            bonds.break_bond(b);
+            ++broken;
+          }
+    return Utilities::MPI::sum(broken, MPI_COMM_WORLD);
+  }
+
+  /// After a conversion: the cut's bonds intact and broken, and the heat model's flows (its
+  /// force kernel) with T = 1 beyond the cut and 0 before it at the particles within 4 mm of
+  /// the centre (all their bonds across x = 60 mm are the cut's: the largest is 0 if the heat
+  /// sees them broken), and how many of these lie within a horizon of the cut.
+  struct CutCheck
+  {
+    std::uint64_t broken = 0, intact = 0, near = 0;
+    double        largest_flow = 0.;
+  };
+
+  CutCheck
+  check_cut(perideal::Physics<2> &heat)
+  {
+    CutCheck    found;
+    auto       &ps    = heat.pd.particles();
+    const auto &x     = ps.positions();
+    const auto &bonds = ps.bonds();
+    for (unsigned int i = 0; i < ps.n_owned(); ++i)
+      for (unsigned int b = bonds.row_start[i]; b < bonds.row_start[i + 1]; ++b)
+        if (crosses_cut(x[i], x[bonds.neighbor[b]]))
+          ++(bonds.intact[b] == 0 ? found.broken : found.intact);
+    perideal::ParticleVector T, flow;
+    ps.reinit_vector(T, 1);
+    ps.reinit_vector(flow, 1);
+    for (unsigned int i = 0; i < ps.n_owned(); ++i)
+      T.local_element(i) = x[i][0] > 0.06 ? 1. : 0.;
+    T.update_ghost_values();
+    heat.pd.material().compute_forces(ps, T, flow, nullptr, heat.pd.critical_stretch());
+    for (unsigned int i = 0; i < ps.n_owned(); ++i)
+      if (x[i].distance(centre) < 4e-3)
+        {
+          found.largest_flow = std::max(found.largest_flow, std::abs(flow.local_element(i)));
+          found.near += std::abs(x[i][0] - 0.06) < 3.015e-3;
+        }
+    found.broken       = Utilities::MPI::sum(found.broken, MPI_COMM_WORLD);
+    found.intact       = Utilities::MPI::sum(found.intact, MPI_COMM_WORLD);
+    found.near         = Utilities::MPI::sum(found.near, MPI_COMM_WORLD);
+    found.largest_flow = Utilities::MPI::max(found.largest_flow, MPI_COMM_WORLD);
+    return found;
+  }
+
   struct Run
   {
     std::string                                log;
     std::map<Key, Tensor<1, 2>>                displacement; // rank 0: every particle
     std::map<std::string, std::vector<double>> statistics;
     Inspection                                 inspection;
+    // With the cut: the bonds it broke before the first conversion, what it is after it.
+    std::uint64_t cut_bonds = 0;
+    CutCheck      cut;
   };
 
   /// The strip with the heat of @p solver (empty: without heat); @p uniform: the temperature
-  /// against which the snapshots measure their deviation.
+  /// against which the snapshots measure their deviation; @p cut: break the cut's bonds before
+  /// the first conversion and check them after it.
   Run
   run(const std::string &solver,
       const std::string &initial,
       const std::string &source,
-      const double       uniform = 0.)
+      const double       uniform = 0.,
+      const bool         cut     = false)
   {
     coupling_tests::write_file("adaptive.prm", input(solver, initial, source));
     std::ostringstream          log;
@@ -232,28 +309,33 @@ end
     const auto physics = problem.get_physics().size();
     if (physics > 1)
       {
-        auto      &mechanics    = *problem.get_physics()[0]->state;
-        const auto convert      = mechanics.adapt_regions;
-        mechanics.adapt_regions = [&problem, &result, convert, uniform](const unsigned int step,
-                                                                        const double       time) {
-          const perideal::Physics<2> &heat   = *problem.get_physics()[1];
-          const Snapshot              before = snapshot(heat, uniform);
-          const double stored = heat.state->stored_heat(), summed = heat.state->conversion_energy;
-          if (!convert(step, time))
-            return false;
-          const Snapshot after = snapshot(heat, uniform);
-          double         scale = 0.;
-          for (const auto &[key, T] : before.fe)
-            scale = std::max(scale, std::abs(T));
-          compare(before, after, scale, result.inspection);
-          const double jump = heat.state->stored_heat() - stored;
-          result.inspection.heat_jump_error =
-            std::max(result.inspection.heat_jump_error,
-                     std::abs(jump - (heat.state->conversion_energy - summed)));
-          result.inspection.heat_jump = std::max(result.inspection.heat_jump, std::abs(jump));
-          ++result.inspection.conversions;
-          return true;
-        };
+        auto      &mechanics = *problem.get_physics()[0]->state;
+        const auto convert   = mechanics.adapt_regions;
+        mechanics.adapt_regions =
+          [&problem, &result, convert, uniform, cut](const unsigned int step, const double time) {
+            perideal::Physics<2> &heat   = *problem.get_physics()[1];
+            const Snapshot        before = snapshot(heat, uniform);
+            const double stored = heat.state->stored_heat(), summed = heat.state->conversion_energy;
+            const bool   first = result.inspection.conversions == 0;
+            if (cut && first && result.cut_bonds == 0)
+              result.cut_bonds = break_cut(heat.pd.particles());
+            if (!convert(step, time))
+              return false;
+            if (cut && first)
+              result.cut = check_cut(heat);
+            const Snapshot after = snapshot(heat, uniform);
+            double         scale = 0.;
+            for (const auto &[key, T] : before.fe)
+              scale = std::max(scale, std::abs(T));
+            compare(before, after, scale, result.inspection);
+            const double jump = heat.state->stored_heat() - stored;
+            result.inspection.heat_jump_error =
+              std::max(result.inspection.heat_jump_error,
+                       std::abs(jump - (heat.state->conversion_energy - summed)));
+            result.inspection.heat_jump = std::max(result.inspection.heat_jump, std::abs(jump));
+            ++result.inspection.conversions;
+            return true;
+          };
       }
     problem.run();
     result.log             = log.str();
@@ -371,6 +453,17 @@ main(int argc, char **argv)
               << coupling_tests::ok(message.find("cannot be checkpointed yet") != std::string::npos)
               << std::endl;
   }
+
+  // A crack across the PD-only zone (the cut's bonds broken before the first conversion) is
+  // carried over once and insulates for the heat after it.
+  const Run cut = run("explicit", initial, source, 0., true);
+  std::cout << "cut: " << cut.cut_bonds << " bonds broken before the first conversion; after "
+            << "it " << cut.cut.broken << " broken, " << cut.cut.intact << " intact: "
+            << coupling_tests::ok(cut.cut_bonds > 0 && cut.cut.broken == cut.cut_bonds &&
+                                  cut.cut.intact == 0)
+            << "; the heat's flows of a unit step across it at the " << cut.cut.near
+            << " particles within a horizon of it near the centre are 0: "
+            << coupling_tests::ok(cut.cut.near > 0 && cut.cut.largest_flow == 0.) << std::endl;
 
   const Run uniform = run("explicit", "20", "0", 20.);
   std::cout << "uniform 20 K: " << uniform.inspection.conversions
