@@ -424,7 +424,8 @@ namespace perideal
   void
   AdaptiveRegion<dim>::check_conditions_outside(const FERegion<dim>           &fe,
                                                 const std::vector<Point<dim>> &new_seeds,
-                                                const std::string             &when) const
+                                                const std::string             &when,
+                                                const std::string             &section) const
   {
     // beta of the new seeds alone: a condition inside the file's own PD zone is the file's.
     const auto beta = [&](const Point<dim> &x) {
@@ -460,15 +461,19 @@ namespace perideal
               p[d] = part[c * (dim + 1) + 1 + d];
             std::ostringstream where;
             where << p;
+            const std::string name =
+              section.empty() ?
+                conditions[c].name :
+                section + "Finite elements/Boundary conditions/" + conditions[c].name;
             AssertThrow(false,
                         ExcMessage(when + ", the PD zone would reach the FE boundary condition <" +
-                                   conditions[c].name + "> (beta > 0 at its boundary point " +
-                                   where.str() +
+                                   name + "> (beta > 0 at its boundary point " + where.str() +
                                    "), which acts on the FE field only. Nothing was converted; "
                                    "the run stops here. Move the condition away from the crack "
                                    "path, reduce <Coupling/Adaptive region/Core radius> or <Ramp "
-                                   "width>, or give the particles that condition (<Boundary "
-                                   "conditions>) inside a PD zone of <Coupling/Blending "
+                                   "width>, or give the particles that condition (<" +
+                                   section +
+                                   "Boundary conditions>) inside a PD zone of <Coupling/Blending "
                                    "function>."));
           }
   }

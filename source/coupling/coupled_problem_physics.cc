@@ -46,10 +46,6 @@ namespace perideal
                                        "k/N <Time stepping/End time>, to which the other physics "
                                        "advance; <Time stepping/End time> is 0: accepted > 0."));
       }
-    AssertThrow(!adaptive.enabled(),
-                ExcMessage(entry + ": the physics share the particles, which an adaptive PD "
-                                   "region does not rebuild for each yet; accepted "
-                                   "<Coupling/Adaptive region/Criterion> = none."));
     for (const auto &item : list)
       {
         physics.push_back(std::make_unique<Physics<dim>>(item.first, comm, log));
@@ -85,6 +81,13 @@ namespace perideal
           // The particles are the first physics': only this physics' model is set up on them.
           field.pd.setup({}, {}, false);
         });
+        // The initial disks reach no FE condition of this physics either (those act on its FE
+        // field only).
+        if (adaptive.enabled())
+          adaptive.check_conditions_outside(field.fe,
+                                            adaptive.seed_points(),
+                                            "With <Coupling/Adaptive region/Initial seeds>",
+                                            Physics<dim>::section(field.name) + "/");
         if (is_root && field.pd.has_body())
           log << "Material (" << field.name << "): " << field.pd.material().summary() << std::endl;
         field.method->initialize(coupled_regions(field));
@@ -122,22 +125,9 @@ namespace perideal
         if (field.settings.solver_type == SolverType::implicit)
           field.settings.time_step = split_step();
         field.solver->setup(*field.state);
-        // A steady physics solves once per load step.
-        const double step_length = split_step();
-        if (field.settings.solver_type == SolverType::static_linear)
-          field.state->time_step = step_length;
-        // The largest step of at most its own (the safety factor times its stable step) that
-        // divides the first physics' step, as its run takes it.
-
-        const auto n = static_cast<unsigned int>(
-          std::max(1., std::ceil(step_length / field.state->time_step * (1. - 1e-12))));
-        field.state->time_step = step_length / n;
-        sub_steps[k - 1]       = n;
-        if (is_root && field.settings.solver_type == SolverType::static_linear)
-          log << "  a steady solve before each load step of the first physics" << std::endl;
-        else if (is_root)
-          log << "  " << n << " step" << (n > 1 ? "s" : "") << " of " << field.state->time_step
-              << " s per step of the first physics" << std::endl;
+        choose_sub_steps(k);
+        // Through a conversion of the adaptive PD region too (convert_regions()).
+        field.state->adaptation_interval = state->adaptation_interval;
         postprocessors->add_physics(field.name, *field.state, *field.postprocessors);
         for (unsigned int c = 0; c < field.layout.n_components(); ++c)
           if (field.layout.kind(c) == ComponentKind::temperature)
@@ -147,6 +137,28 @@ namespace perideal
     state->advance_other_physics = [this](const unsigned int step, const bool with_energy) {
       advance_other_physics(step, with_energy);
     };
+  }
+
+  template <int dim>
+  void
+  CoupledProblem<dim>::choose_sub_steps(const unsigned int k)
+  {
+    Physics<dim> &field = *physics[k];
+    // A steady physics solves once per load step.
+    const double step_length = split_step();
+    if (field.settings.solver_type == SolverType::static_linear)
+      field.state->time_step = step_length;
+    // The largest step of at most its own (the safety factor times its stable step) that
+    // divides the first physics' step, as its run takes it.
+    const auto n = static_cast<unsigned int>(
+      std::max(1., std::ceil(step_length / field.state->time_step * (1. - 1e-12))));
+    field.state->time_step = step_length / n;
+    sub_steps[k - 1]       = n;
+    if (is_root && field.settings.solver_type == SolverType::static_linear)
+      log << "  a steady solve before each load step of the first physics" << std::endl;
+    else if (is_root)
+      log << "  " << n << " step" << (n > 1 ? "s" : "") << " of " << field.state->time_step
+          << " s per step of the first physics" << std::endl;
   }
 
   template <int dim>
@@ -200,6 +212,7 @@ namespace perideal
   template void CoupledProblem<dim>::parse_other_physics(ParameterHandler &);               \
   template void CoupledProblem<dim>::check_other_physics();                                 \
   template void CoupledProblem<dim>::setup_other_physics();                                 \
+  template void CoupledProblem<dim>::choose_sub_steps(const unsigned int);                  \
   template void CoupledProblem<dim>::advance_other_physics(const unsigned int, const bool); \
   template const PhysicsExchange<dim> &CoupledProblem<dim>::get_exchange() const;           \
   template double                      CoupledProblem<dim>::split_step() const;

@@ -119,12 +119,14 @@ namespace perideal
      * @brief Stop, naming the condition and <Core radius>, if the disks of @p new_seeds would
      * give beta > 0 at a vertex of a face of an FE boundary condition (the conditions act on the
      * FE field only: a face in the PD zone would lose its condition). @p when starts the
-     * message. Collective; call before anything changes.
+     * message; @p section names the physics' subsection of the conditions ("" for the first
+     * physics, e.g. "Heat/"). Collective; call before anything changes.
      */
     void
     check_conditions_outside(const FERegion<dim>                   &fe,
                              const std::vector<dealii::Point<dim>> &new_seeds,
-                             const std::string                     &when) const;
+                             const std::string                     &when,
+                             const std::string                     &section = "") const;
 
   private:
     /// beta of a disk at distance @p distance from its seed.

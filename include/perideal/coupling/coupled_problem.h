@@ -213,6 +213,15 @@ namespace perideal
     setup_other_physics();
 
     /**
+     * @brief The sub-steps of the physics @p k of <Physics/List> within a step of the first
+     * physics (sub_steps) and its step (CoupledState::time_step): the fewest whose step is at
+     * most the one its solver chose (the safety factor times its stable step); logged. At the
+     * set-up and after each conversion of the adaptive PD region.
+     */
+    void
+    choose_sub_steps(const unsigned int k);
+
+    /**
      * @brief Advance the physics of <Physics/List> by operator splitting to the end of step
      * @p step of the first physics (step 0: their initial state), their energies computed if
      * @p with_energy (CoupledState::advance_other_physics).
@@ -231,9 +240,11 @@ namespace perideal
     /**
      * @brief The adaptive PD region of an explicit run (CoupledState::adapt_regions) after step
      * @p step at @p time: the criterion's seeds, if any, grow the PD region; the particles, the
-     * FE space, the coupling and the state are rebuilt and the unknowns carried over (free
-     * particles keep theirs and their broken bonds, the others take the FE field's, the FE dofs
-     * keep their values cell by cell). Returns whether the regions changed. In
+     * FE spaces, the couplings and the states of every physics are rebuilt and the unknowns
+     * carried over (free particles keep theirs and their broken bonds, the others take the FE
+     * field's, the FE dofs keep their values cell by cell); the other physics' solvers renew
+     * their masses or matrices, forces and sub-steps, and a temperature's stored heat change
+     * is summed in its CoupledState::conversion_energy. Returns whether the regions changed. In
      * coupled_problem_conversion.cc.
      */
     bool

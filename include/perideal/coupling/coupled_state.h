@@ -333,9 +333,13 @@ namespace perideal
      * solver renews what it derives from them: masses, forces, the previous state of the work).
      */
     std::function<bool(unsigned int, double)> adapt_regions;
-    /// The steps between two calls of adapt_regions (Coupling/Adaptive region/Check interval).
+    /// The steps between two calls of adapt_regions (Coupling/Adaptive region/Check interval);
+    /// set on the states of the other physics of <Physics/List> too, whose regions the
+    /// conversions rebuild (0 without an adaptive region).
     unsigned int adaptation_interval = 0;
-    /// The change of kinetic plus strain energy at the conversions so far (summed) [J].
+    /// The change at the conversions so far (summed) [J]: of the kinetic plus strain energy,
+    /// or of a temperature's stored_heat() (the interpolation of the old FE field into the new
+    /// particles), which the heat balance takes out.
     double conversion_energy = 0.;
 
     /**

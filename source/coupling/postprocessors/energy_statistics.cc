@@ -77,12 +77,17 @@ namespace perideal
         // The thermal balance of the time steps: the change of the heat stored in the body
         // (free particles and FE dofs) against the heat in through the conditions
         // (CoupledState::accumulate_heat(), weighted as the step), equal to round-off (forward
-        // Euler) or to the solver tolerance (theta scheme).
-        const double stored = state.stored_heat() - state.initial_stored_heat();
-        const double heat   = state.heat_in();
+        // Euler) or to the solver tolerance (theta scheme); less the change the conversions of
+        // an adaptive PD region made (CoupledState::conversion_energy).
+        const double stored     = state.stored_heat() - state.initial_stored_heat();
+        const double heat       = state.heat_in();
+        const bool   converts   = state.adaptation_interval > 0;
+        const double conversion = state.conversion_energy;
         statistics.add_value("stored_heat", stored);
         statistics.add_value("heat_in", heat);
-        statistics.add_value("heat_error", stored - heat);
+        if (converts)
+          statistics.add_value("conversion_heat", conversion);
+        statistics.add_value("heat_error", stored - heat - conversion);
         if (state.is_root && data.final_row)
           {
             // Printed to the accuracy of the steps (relative to the heat exchanged): round-off
@@ -91,13 +96,15 @@ namespace perideal
             const double accuracy = state.settings.solver_type == SolverType::explicit_dynamics ?
                                       1e-12 :
                                       state.solution_accuracy();
-            const double scale    = std::max(std::abs(stored), std::abs(heat));
-            const double error    = to_accuracy(stored - heat, accuracy * scale);
+            const double scale = std::max({std::abs(stored), std::abs(heat), std::abs(conversion)});
+            const double error = to_accuracy(stored - heat - conversion, accuracy * scale);
             const double relative =
-              to_accuracy(scale > 0. ? (stored - heat) / scale : 0., accuracy);
+              to_accuracy(scale > 0. ? (stored - heat - conversion) / scale : 0., accuracy);
             log << "Stored heat (change): " << stored << " J\n"
-                << "Heat in through the conditions: " << heat << " J\n"
-                << "Heat error: " << (error == 0. ? 0. : error)
+                << "Heat in through the conditions: " << heat << " J\n";
+            if (converts)
+              log << "Heat change of the conversions: " << conversion << " J\n";
+            log << "Heat error: " << (error == 0. ? 0. : error)
                 << " J (relative to the heat exchanged " << (relative == 0. ? 0. : relative)
                 << ")\n";
           }

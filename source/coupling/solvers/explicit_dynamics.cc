@@ -115,10 +115,7 @@ namespace perideal
                            " s, below the step of the run, " +
                            ParameterUtilities::format_number(state.time_step) +
                            " s: lower <Time stepping/Safety factor> (or <Time step>)."));
-    compute_acceleration(state, time, true);
-    if (state.settings.damping > 0.)
-      add_damping(state);
-    state.carry_work();
+    renew_forces(state, time);
     const auto   kinetic = state.kinetic_energy();
     const auto   strain  = state.strain_energy();
     const double after   = kinetic.total + strain.fe + strain.particles;
@@ -129,6 +126,24 @@ namespace perideal
                 << " J (kinetic " << kinetic.total << ", strain " << strain.fe + strain.particles
                 << "), change " << after - before << " J, relative "
                 << (before != 0. ? (after - before) / before : 0.) << std::endl;
+  }
+
+  template <int dim>
+  void
+  ExplicitDynamics<dim>::renew_forces(CoupledState<dim> &state, const double time)
+  {
+    compute_acceleration(state, time, true);
+    if (state.settings.damping > 0.)
+      add_damping(state);
+    state.carry_work();
+  }
+
+  template <int dim>
+  void
+  ExplicitDynamics<dim>::renew_regions(CoupledState<dim> &state, const double time)
+  {
+    setup(state);
+    renew_forces(state, time);
   }
 
   template <int dim>

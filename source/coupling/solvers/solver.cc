@@ -40,6 +40,16 @@ namespace perideal
   {}
 
   template <int dim>
+  void
+  Solver<dim>::renew_regions(CoupledState<dim> &, const double)
+  {
+    AssertThrow(false,
+                dealii::ExcMessage("This <Solver/Type> cannot follow a conversion of "
+                                   "<Coupling/Adaptive region> in a physics of <Physics/List>; "
+                                   "accepted: explicit, implicit."));
+  }
+
+  template <int dim>
   std::unique_ptr<Solver<dim>>
   create_solver(const SolverType type, const QuasiStaticControl &control)
   {

@@ -130,6 +130,15 @@ namespace perideal
 
   template <int dim>
   void
+  ThetaScheme<dim>::renew_regions(CoupledState<dim> &state, const double time)
+  {
+    setup(state);
+    first_forces(state, time);
+    state.carry_work();
+  }
+
+  template <int dim>
+  void
   ThetaScheme<dim>::step_to(CoupledState<dim> &state, const double time)
   {
     auto             &fe         = state.fe;

@@ -61,6 +61,14 @@ namespace perideal
             const double       dt,
             const bool         with_energy) override;
 
+    /**
+     * @brief After a conversion (a physics of <Physics/List>): setup() again (masses, factors,
+     * the stable step and the step it chooses), the forces at @p time and the previous state
+     * of the work.
+     */
+    void
+    renew_regions(CoupledState<dim> &state, const double time) override;
+
   private:
     /**
      * @brief What the step derives from the regions: the masses of the method, the factors from
@@ -76,6 +84,13 @@ namespace perideal
      */
     void
     adapt_regions(CoupledState<dim> &state, const unsigned int step, const double time);
+
+    /**
+     * @brief After the regions changed: the forces and accelerations at @p time (with the
+     * damping) and the previous state of the work of the loads.
+     */
+    void
+    renew_forces(CoupledState<dim> &state, const double time);
 
     /**
      * @brief Forces and accelerations of both regions at @p time (the method's P U into the

@@ -77,6 +77,16 @@ namespace perideal
      */
     virtual void
     resume_state(CoupledState<dim> &state, const double time);
+
+    /**
+     * @brief Operator splitting, after a conversion of the adaptive PD region at @p time (the
+     * regions of @p state rebuilt, CoupledState::setup() run and the unknowns carried over):
+     * what setup() derives from the regions again (masses and stable step, or the matrix), the
+     * forces at @p time and the previous state of the work. The caller sets the step again.
+     * Refused by default; the explicit and implicit solvers provide it.
+     */
+    virtual void
+    renew_regions(CoupledState<dim> &state, const double time);
   };
 
   /// The solver of <Solver/Type> = @p type and, for quasi-static runs, <Solver/Control> =

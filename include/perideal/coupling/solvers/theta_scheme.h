@@ -70,6 +70,14 @@ namespace perideal
     void
     resume_state(CoupledState<dim> &state, const double time) override;
 
+    /**
+     * @brief After a conversion (a physics of <Physics/List>): setup() again (the method's
+     * solve and the diagonal of the step), the forces at @p time (as resume_state()) and the
+     * previous state of the work.
+     */
+    void
+    renew_regions(CoupledState<dim> &state, const double time) override;
+
   private:
     /// The forces of the first step at @p time (after the initial state or a restart).
     void
