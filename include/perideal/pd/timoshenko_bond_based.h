@@ -179,7 +179,7 @@ namespace perideal
    * (s_0 = sigma_t / E, s_G the brittle critical stretch of the damage model's fracture energy
    * G0, critical_stretch()) and k follows from G0 (Timoshenko::
    * softening_for_limit_ratio(r)): the bond's elastic limit is the concrete's strength and its
-   * work to separation is still G0's (doc/theory/models.md, "Timoshenko bonds"). A
+   * work to separation is still G0's (doc/theory/models.md, "Tensile strength"). A
    * <Compressive strength> sigma_c then sets the stretch limit of compression, sigma_c / E
    * (seed note 003, A12; otherwise compression fails at -s_0, as printed).
    */
