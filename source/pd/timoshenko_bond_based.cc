@@ -2,6 +2,7 @@
 // PeriDeal: bond-based peridynamics with Timoshenko-beam bonds and particle rotations (seed 003):
 // the pair law, its softening histories and the force evaluation.
 // ---------------------------------------------------------------------
+#include <perideal/base/parameter_utilities.h>
 #include <perideal/pd/timoshenko_bond_based.h>
 #include <perideal/pd/timoshenko_kernel.h>
 
@@ -46,6 +47,8 @@ namespace perideal
       double        C_N = 0., C_theta = 0., C_B = 0.;
       /// 1/s_0, 1/gamma_0, 1/kappa_0 (0: that mode does not fail).
       double inverse_limit[3] = {0., 0., 0.};
+      /// 1/s_0 of compression (s < 0): inverse_limit[0] but with a <Compressive strength>.
+      double inverse_compression = 0.;
       /// Softening: histories x (largest value / limit) and factors mu per mode and lane, the
       /// dissipated energy per lane, k, and whether this evaluation raises the histories.
       double *history[3] = {nullptr, nullptr, nullptr};
@@ -133,11 +136,21 @@ namespace perideal
               }
           }
         y.s *= il;
-        const Vector x2 = stdx::max(y.s * y.s * (p.inverse_limit[0] * p.inverse_limit[0]),
+        const Vector a  = axial_inverse_limit(y.s);
+        const Vector x2 = stdx::max(y.s * y.s * (a * a),
                                     stdx::max(gamma2 * (p.inverse_limit[1] * p.inverse_limit[1]),
                                               kappa2 * (p.inverse_limit[2] * p.inverse_limit[2])));
         y.stretch       = stdx::sqrt(x2);
         return y;
+      }
+
+      /// Per lane 1/s_0 of the sign of the stretch @p s (tension or compression).
+      Vector
+      axial_inverse_limit(const Vector &s) const
+      {
+        Vector a               = p.inverse_limit[0];
+        stdx::where(s < 0., a) = p.inverse_compression;
+        return a;
       }
 
       template <typename Bond>
@@ -235,22 +248,22 @@ namespace perideal
           b2 += y.kappa[d] * y.kappa[d];
         // Lanes without force (empty, broken) keep their histories: a checkpoint restores those
         // of bonds only, and damage_changed() reports the growth of bonds only.
-        Vector present[3] = {stdx::abs(y.s) * p.inverse_limit[0],
-                             stdx::sqrt(g2) * p.inverse_limit[1],
-                             stdx::sqrt(b2) * p.inverse_limit[2]};
+        const Vector a          = axial_inverse_limit(y.s);
+        Vector       present[3] = {stdx::abs(y.s) * a,
+                                   stdx::sqrt(g2) * p.inverse_limit[1],
+                                   stdx::sqrt(b2) * p.inverse_limit[2]};
         for (auto &x : present)
           stdx::where(k == 0., x) = 0.;
-        // U_0 per mode: p.C_N |xi| s_0^2, 12 p.C_theta gamma_0^2 / |xi|, p.C_B kappa_0^2 / |xi|.
-        const BondValue<Bond> U0[3] = {
-          p.inverse_limit[0] > 0. ?
-            p.C_N * bond.length / (p.inverse_limit[0] * p.inverse_limit[0]) :
-            BondValue<Bond>(0.),
-          p.inverse_limit[1] > 0. ?
-            12. * p.C_theta * bond.inverse_length / (p.inverse_limit[1] * p.inverse_limit[1]) :
-            BondValue<Bond>(0.),
+        // U_0 per mode: p.C_N |xi| s_0^2 (s_0 of the present sign), 12 p.C_theta gamma_0^2 /
+        // |xi|, p.C_B kappa_0^2 / |xi|.
+        const Vector U0[3] = {
+          p.inverse_limit[0] > 0. ? Vector(p.C_N * bond.length) / (a * a) : Vector(0.),
+          p.inverse_limit[1] > 0. ? Vector(12. * p.C_theta * bond.inverse_length /
+                                           (p.inverse_limit[1] * p.inverse_limit[1])) :
+                                    Vector(0.),
           p.inverse_limit[2] > 0. ?
-            p.C_B * bond.inverse_length / (p.inverse_limit[2] * p.inverse_limit[2]) :
-            BondValue<Bond>(0.)};
+            Vector(p.C_B * bond.inverse_length / (p.inverse_limit[2] * p.inverse_limit[2])) :
+            Vector(0.)};
         const double kk = p.softening_parameter;
         const auto   D  = [kk](const Vector &x) {
           Vector d = 0.;
@@ -315,6 +328,12 @@ namespace perideal
     Kernel    &k      = *kernel;
     const bool breaks = std::isfinite(critical_stretch);
     const bool soft   = (failure == FailureLaw::softening);
+    AssertThrow(!breaks || std::isfinite(softening),
+                ExcMessage("<Material/timoshenko bond based/Tensile strength> derives the "
+                           "softening parameter from the fracture energy, but the critical "
+                           "stretch was given as such. Accepted: <Material/critical "
+                           "stretch/Fracture energy> > 0 with Critical stretch = 0, or no "
+                           "Tensile strength."));
     // The histories are raised only by a call that may break bonds (explicit steps, the
     // converged state of a load step); the others see the bonds as the last such call left
     // them. A softening bond is removed once its force has fallen to 1e-6 of the peak.
@@ -330,6 +349,8 @@ namespace perideal
         const auto limit = failure_limits(critical_stretch);
         for (unsigned int m = 0; m < 3; ++m)
           base.inverse_limit[m] = 1. / limit[m];
+        base.inverse_compression =
+          compressive_strength > 0. ? youngs_modulus / compressive_strength : base.inverse_limit[0];
       }
     base.softening_parameter = softening;
     base.commit              = breaks;
@@ -391,8 +412,35 @@ namespace perideal
                                                   context.horizon,
                                                   context.thickness,
                                                   fracture_energy);
+    if (tensile_strength > 0.)
+      {
+        // The limit is the strength's; G0 gives k (doc/theory/models.md, "Tensile strength").
+        const std::string entry = "<Material/timoshenko bond based/Tensile strength>";
+        const double      s_G   = fracture_factor[0] * s0;
+        const double      limit = tensile_strength / youngs_modulus;
+        AssertThrow(fracture_energy > 0. && limit < s_G,
+                    ExcMessage(entry + " = " + ParameterUtilities::format_number(tensile_strength) +
+                               " gives the elastic limit s_0 = sigma_t / E = " +
+                               ParameterUtilities::format_number(limit) +
+                               ", not below the brittle critical stretch s_G = " +
+                               ParameterUtilities::format_number(s_G) + " of the fracture energy " +
+                               ParameterUtilities::format_number(fracture_energy) +
+                               " J/m^2: no softening bond dissipates it. Accepted: sigma_t < "
+                               "E s_G = " +
+                               ParameterUtilities::format_number(youngs_modulus * s_G) +
+                               " Pa (or Tensile strength = 0)."));
+        softening = Timoshenko::softening_for_limit_ratio(limit / s_G);
+        return limit;
+      }
     return fracture_factor[0] *
            (failure == FailureLaw::softening ? s0 * std::sqrt(softening / (softening + 2.)) : s0);
+  }
+
+  template <int dim>
+  double
+  TimoshenkoBondBased<dim>::softening_parameter() const
+  {
+    return softening;
   }
 
   template <int dim>

@@ -55,10 +55,32 @@ namespace perideal
                       "exceeds its limit) or 'softening' (each mode softens exponentially beyond "
                       "its limit, irreversibly; seed eqs. 15-19).");
     prm.declare_entry("Softening parameter",
-                      "10",
-                      Patterns::Double(),
+                      "",
+                      Patterns::Anything(),
                       "k > 0 of the softening law: force C x0 exp(-k (x - x0)/x0) beyond the "
-                      "limit x0; the limits are the brittle ones times sqrt(k / (k + 2)).");
+                      "limit x0; the limits are the brittle ones times sqrt(k / (k + 2)). Empty: "
+                      "10, or, with a Tensile strength, the k that strength and the fracture "
+                      "energy imply (then it must stay empty).");
+    prm.declare_entry(
+      "Tensile strength",
+      "0",
+      Patterns::Double(0.),
+      "sigma_t [Pa] > 0: the bond's elastic limit, with the softening law: the "
+      "critical stretch s_0 = sigma_t / E (a bond along a uniaxial stress "
+      "sigma_t reaches it), the shear and bending limits in the same ratio to "
+      "their brittle ones, and k from <Material/critical stretch/Fracture energy> "
+      "G0 so that each bond still dissipates the brittle work of G0: (k + 2)/k = "
+      "(s_G / s_0)^2, s_G the brittle critical stretch of G0 (accepted: sigma_t < "
+      "E s_G, printed in the summary; <Softening parameter> empty; a Critical stretch "
+      "given instead of the Fracture energy is refused). 0: the limits "
+      "follow from G0 and k alone (seed eqs. 18, 19).");
+    prm.declare_entry("Compressive strength",
+                      "0",
+                      Patterns::Double(0.),
+                      "sigma_c [Pa] > 0, with a Tensile strength only: the stretch limit of a "
+                      "bond in compression, -sigma_c / E, beyond which it softens with the same "
+                      "k (one history: the larger of s / s_0 and -s E / sigma_c). 0: compression "
+                      "fails at -s_0 like tension (seed eq. 15 as printed).");
     prm.declare_entry("Softening tolerance",
                       "1e-3",
                       Patterns::Double(),
@@ -96,12 +118,47 @@ namespace perideal
     AssertThrow(law == "brittle" || law == "softening",
                 ExcMessage("<" + section + "Failure law> = '" + law +
                            "' is not known; accepted values: brittle | softening."));
-    failure   = law == "brittle" ? FailureLaw::brittle : FailureLaw::softening;
-    softening = prm.get_double("Softening parameter");
-    AssertThrow(softening > 0.,
-                ExcMessage("<" + section + "Softening parameter> = " +
-                           ParameterUtilities::format_number(softening) +
-                           " must be > 0 (the limits scale by sqrt(k / (k + 2)))."));
+    failure                = law == "brittle" ? FailureLaw::brittle : FailureLaw::softening;
+    tensile_strength       = prm.get_double("Tensile strength");
+    const std::string k    = prm.get("Softening parameter");
+    const bool        no_k = k.find_first_not_of(" \t") == std::string::npos;
+    compressive_strength   = prm.get_double("Compressive strength");
+    AssertThrow(compressive_strength == 0. || tensile_strength > 0.,
+                ExcMessage("<" + section + "Compressive strength> = " +
+                           prm.get("Compressive strength") + " needs <" + section +
+                           "Tensile strength> > 0 (the strengths set the limits together). "
+                           "Accepted: both, or Compressive strength = 0."));
+    if (tensile_strength > 0.)
+      {
+        AssertThrow(failure == FailureLaw::softening,
+                    ExcMessage("<" + section +
+                               "Tensile strength> = " + prm.get("Tensile strength") +
+                               " is the elastic limit of a softening bond; with <" + section +
+                               "Failure law> = brittle a bond would break there and dissipate "
+                               "far less than the fracture energy. Accepted: Failure law = "
+                               "softening, or Tensile strength = 0."));
+        AssertThrow(no_k,
+                    ExcMessage("<" + section +
+                               "Tensile strength> = " + prm.get("Tensile strength") +
+                               " derives the softening parameter from the fracture energy, "
+                               "but <" +
+                               section + "Softening parameter> = " + k +
+                               " gives it. Accepted: one of the two (Softening parameter "
+                               "empty with a Tensile strength)."));
+        // Derived by critical_stretch() from the fracture energy.
+        softening = std::numeric_limits<double>::quiet_NaN();
+      }
+    else
+      {
+        AssertThrow(no_k || Patterns::Double().match(k),
+                    ExcMessage("<" + section + "Softening parameter> = '" + k +
+                               "' is not a number; accepted: a number > 0, or empty (10)."));
+        softening = no_k ? 10. : std::stod(k);
+        AssertThrow(softening > 0.,
+                    ExcMessage("<" + section + "Softening parameter> = " +
+                               ParameterUtilities::format_number(softening) +
+                               " must be > 0 (the limits scale by sqrt(k / (k + 2)))."));
+      }
     softening_tolerance = prm.get_double("Softening tolerance");
     AssertThrow(softening_tolerance > 0. && softening_tolerance <= 0.1,
                 ExcMessage("<" + section + "Softening tolerance> = " +
@@ -233,6 +290,11 @@ namespace perideal
         << ", D_66/mu = " << lattice_moduli[2] / mu << "; J = " << inertia_factor
         << " rho dx^2; failure " << (failure == FailureLaw::brittle ? "brittle" : "softening, k = ")
         << (failure == FailureLaw::brittle ? std::string() : std::to_string(softening));
+    if (tensile_strength > 0.)
+      out << " (from the tensile strength " << tensile_strength
+          << " Pa: s_0 = " << tensile_strength / youngs_modulus << ")";
+    if (compressive_strength > 0.)
+      out << ", compression limit " << compressive_strength / youngs_modulus;
     if (context.surface_correction && context.stiffness_fit)
       out << "; " << fit_report.summary();
     if (context.lattice_fracture)

@@ -8,6 +8,7 @@
 
 #include <cmath>
 #include <limits>
+#include <string>
 
 namespace perideal
 {
@@ -128,6 +129,15 @@ namespace perideal
       if (dim == 2)
         return std::sqrt(4. * G0 / (std::pow(horizon, 4) * thickness * k.normal));
       return std::sqrt(10. * G0 / (numbers::PI * k.normal * std::pow(horizon, 5)));
+    }
+
+    double
+    softening_for_limit_ratio(const double ratio)
+    {
+      AssertThrow(ratio > 0. && ratio < 1.,
+                  ExcMessage("The limit ratio " + std::to_string(ratio) +
+                             " is not in (0, 1): no softening law dissipates the brittle work."));
+      return 2. * ratio * ratio / (1. - ratio * ratio);
     }
 
     template std::array<double, 4>

@@ -5,7 +5,7 @@
 # side by side, one rank each pinned to its own core (their wall times compare), and
 # post-processes them (postprocess.py: checks, the force-displacement curves and the crack
 # paths, nooru_mohamed_force_displacement.png and nooru_mohamed_cracks.png beside this script).
-# Each run takes under a minute on one core of the development machine.
+# Each run takes about three minutes on one core of the development machine.
 #
 # Usage: run.sh   (from anywhere; results in <top>/results/nooru_mohamed)
 # Environment: PERIDEAL_BUILD_DIR (default <top>/build), PYTHON (default /usr/bin/python3).

@@ -143,6 +143,15 @@ namespace perideal
     {
       return x <= 1. ? 1. : std::exp(-k * (x - 1.)) / x;
     }
+
+    /**
+     * @brief The softening parameter k with which a bond whose limits are @p ratio times the
+     * brittle ones of the fracture energy (0 < ratio < 1) still dissipates the brittle work:
+     * (k + 2)/k = 1/ratio^2, so k = 2 ratio^2 / (1 - ratio^2) (the inverse of the factor
+     * sqrt(k / (k + 2)) of eqs. 18, 19).
+     */
+    double
+    softening_for_limit_ratio(const double ratio);
   } // namespace Timoshenko
 
   /**
@@ -165,7 +174,14 @@ namespace perideal
    * |s| / s_0, |gamma| / gamma_0 or |kappa| / kappa_0 exceeds 1 (seed eq. 15 is symmetric in
    * s). `softening` (parameter k): each mode softens by its factor (softening_factor()) at the
    * largest value it has reached, irreversibly (secant unloading); the limits are the brittle
-   * ones times sqrt(k / (k + 2)) so that a bond dissipates the same energy.
+   * ones times sqrt(k / (k + 2)) so that a bond dissipates the same energy. With a <Tensile
+   * strength> sigma_t the limits are instead the brittle ones times r = (sigma_t / E) / s_G
+   * (s_0 = sigma_t / E, s_G the brittle critical stretch of the damage model's fracture energy
+   * G0, critical_stretch()) and k follows from G0 (Timoshenko::
+   * softening_for_limit_ratio(r)): the bond's elastic limit is the concrete's strength and its
+   * work to separation is still G0's (doc/theory/models.md, "Tensile strength"). A
+   * <Compressive strength> sigma_c then sets the stretch limit of compression, sigma_c / E
+   * (seed note 003, A12; otherwise compression fails at -s_0, as printed).
    */
   template <int dim>
   class TimoshenkoBondBased : public MaterialModel<dim>
@@ -260,9 +276,15 @@ namespace perideal
     dealii::SymmetricTensor<4, dim>
     elasticity_tensor() const override;
 
-    /// s_0 of the fracture energy, times sqrt(k / (k + 2)) for the softening law.
+    /// s_0 of the fracture energy, times sqrt(k / (k + 2)) for the softening law; with a
+    /// <Tensile strength> sigma_t / E, and k then follows from @p fracture_energy (set here).
     double
     critical_stretch(const double fracture_energy) const override;
+
+    /// The softening parameter k in use: <Softening parameter>, or the one critical_stretch()
+    /// derived from the <Tensile strength> and the fracture energy.
+    double
+    softening_parameter() const;
 
     std::string
     summary() const override;
@@ -288,7 +310,16 @@ namespace perideal
 
   private:
     double youngs_modulus = 0., poisson_ratio = 0., bending_ratio = 0.;
-    double inertia_factor = 1. / 12., softening = 10.;
+    double inertia_factor = 1. / 12.;
+    /// k: <Softening parameter>, or, with a <Tensile strength>, derived from the fracture energy
+    /// by critical_stretch() (which the damage model asks once, after initialize(); NaN until
+    /// then).
+    mutable double softening = 10.;
+    /// <Tensile strength> sigma_t [Pa]; 0: the limits follow from the fracture energy alone.
+    double tensile_strength = 0.;
+    /// <Compressive strength> sigma_c [Pa] (with a tensile strength): the stretch limit of
+    /// compression is sigma_c / E; 0: -s_0, as in tension.
+    double compressive_strength = 0.;
     /// Softening: damage_changed() while a history beyond its limit grows by more than this.
     double                  softening_tolerance = 1e-3;
     Timoshenko::Calibration calibration         = Timoshenko::Calibration::lattice;
