@@ -63,8 +63,9 @@ namespace coupling_tests
 
   /**
    * Declare and read the parameters of the coupled problem in @p file and hand them to
-   * @p problem, as perideal-solid does: a first pass reads the names of the regions and of the
-   * particle and FE boundary conditions, which decide the subsections.
+   * @p problem, as perideal-solid does: a first pass reads the names of the regions, of the
+   * particle and FE boundary conditions and of the physics of <Physics/List> (with theirs),
+   * which decide the subsections.
    */
   template <int dim>
   void
@@ -75,13 +76,18 @@ namespace coupling_tests
     perideal::RegionCollection<dim>::declare_names(first);
     perideal::BoundaryConditions<dim>::declare_names(first);
     perideal::FERegion<dim>::declare_names(first);
+    perideal::Physics<dim>::declare_names(first);
     perideal::ParameterUtilities::parse_partially(first, file);
+    std::map<std::string, typename perideal::Physics<dim>::ConditionNames> physics;
+    for (const auto &[name, conditions] : perideal::Physics<dim>::parse_names(first))
+      physics[name] = conditions;
     dealii::ParameterHandler prm;
     perideal::CoupledProblem<dim>::declare_parameters(
       prm,
       perideal::RegionCollection<dim>::parse_names(first),
       perideal::BoundaryConditions<dim>::parse_names(first),
-      perideal::FERegion<dim>::parse_names(first));
+      perideal::FERegion<dim>::parse_names(first),
+      physics);
     perideal::ParameterUtilities::parse_file(prm, file);
     problem.parse_parameters(prm);
   }
@@ -376,6 +382,94 @@ end
         }
     std::cout << "line '" << key << "' missing (FAILED)" << std::endl;
     return {std::nan(""), std::nan(""), std::nan("")};
+  }
+
+  /**
+   * The plate of the tests of several physics (multiphysics_*, restart_multiphysics_*): the
+   * sections Dimension, Discretization and Regions of a 20 mm x 10 mm plane-stress plate, dx =
+   * 1 mm (200 particles), with the regions plate, left (x < 3 mm), right (x > 17 mm) and, if
+   * @p top, top (8 mm < x < 12 mm, y > 9 mm).
+   */
+  inline std::string
+  multiphysics_plate(const bool top = false)
+  {
+    return R"(
+set Dimension = 2
+subsection Discretization
+  set Lattice spacing = 1e-3
+  set Thickness       = 1e-3
+  set Body            = plate
+end
+subsection Regions
+  set Names = plate, left, right)" +
+           std::string(top ? ", top" : "") + R"(
+  subsection plate
+    set Lower corner = 0, 0
+    set Upper corner = 0.02, 0.01
+  end
+  subsection left
+    set Lower corner = 0, 0
+    set Upper corner = 0.003, 0.01
+  end
+  subsection right
+    set Lower corner = 0.017, 0
+    set Upper corner = 0.02, 0.01
+  end)" +
+           std::string(top ? R"(
+  subsection top
+    set Lower corner = 0.008, 0.009
+    set Upper corner = 0.012, 0.01
+  end)" :
+                             "") +
+           R"(
+end
+)";
+  }
+
+  /// The plate's mechanics: <Material> of PMB (E = 200 GPa, rho = 7800 kg/m^3), with a critical
+  /// stretch of 1e-3 if @p damage.
+  inline std::string
+  multiphysics_mechanics(const bool damage)
+  {
+    return R"(
+subsection Material
+  set Model   = bond based
+  set Density = 7800
+  set Damage model = )" +
+           std::string(damage ? "critical stretch" : "none") + R"(
+  subsection bond based
+    set Young's modulus = 200e9
+  end
+  subsection critical stretch
+    set Critical stretch = 1e-3
+  end
+end
+)";
+  }
+
+  /// The plate's heat: <Material> of the bond based conduction, k = 50 W/(m K), rho c = 1
+  /// J/(m^3 K) (the heat diffuses across the plate in microseconds).
+  inline std::string
+  multiphysics_conduction()
+  {
+    return R"(
+subsection Material
+  set Model   = bond based conduction
+  set Density = 1
+  subsection bond based conduction
+    set Conductivity  = 50
+    set Specific heat = 1
+  end
+end
+)";
+  }
+
+  /// The sections that add the physics @p heat (its entries, as the heat alone has them at
+  /// the top level) as <Physics/List> = heat.
+  inline std::string
+  with_heat(const std::string &heat)
+  {
+    return "subsection Physics\n  set List = heat\nend\nsubsection Heat\n" + heat + "end\n";
   }
 
 } // namespace coupling_tests

@@ -51,18 +51,7 @@ namespace
   input(const Kind kind, const bool with_heat)
   {
     const bool        coupled   = kind == Kind::coupled;
-    const std::string mechanics = R"(
-subsection Material
-  set Model   = bond based
-  set Density = 7800
-  set Damage model = critical stretch
-  subsection bond based
-    set Young's modulus = 200e9
-  end
-  subsection critical stretch
-    set Critical stretch = 1e-3
-  end
-end
+    const std::string mechanics = coupling_tests::multiphysics_mechanics(true) + R"(
 subsection Initial conditions
   set Velocity = if(x < 0.01, -20, 20); 0
 end
@@ -103,15 +92,7 @@ subsection Coupling
 end
 )" :
                                                         "");
-    const std::string heat = R"(
-subsection Material
-  set Model   = bond based conduction
-  set Density = 1
-  subsection bond based conduction
-    set Conductivity  = 50
-    set Specific heat = 1
-  end
-end
+    const std::string heat = coupling_tests::multiphysics_conduction() + R"(
 subsection Initial conditions
   set Displacement = if(x < 0.01, 100, 0)
 end
@@ -138,35 +119,14 @@ subsection Finite elements
 end
 )" :
                                                    "");
-    std::string text = R"(
-set Dimension = 2
-subsection Discretization
-  set Lattice spacing = 1e-3
-  set Thickness       = 1e-3
-  set Body            = plate
-end
-subsection Regions
-  set Names = plate, left, right
-  subsection plate
-    set Lower corner = 0, 0
-    set Upper corner = 0.02, 0.01
-  end
-  subsection left
-    set Lower corner = 0, 0
-    set Upper corner = 0.003, 0.01
-  end
-  subsection right
-    set Lower corner = 0.017, 0
-    set Upper corner = 0.02, 0.01
-  end
-end
+    std::string text = coupling_tests::multiphysics_plate() + R"(
 subsection Time stepping
   set End time = 2e-6
 end
 )";
     text += mechanics;
     if (with_heat)
-      text += "subsection Physics\n  set List = heat\nend\nsubsection Heat\n" + heat + "end\n";
+      text += coupling_tests::with_heat(heat);
     return text;
   }
 
