@@ -199,8 +199,12 @@ namespace perideal
   {
     Assert(kept.valid, ExcMessage("restore_kept() without keep()."));
     const auto states = all_states(state);
-    // The bonds first: the models' histories belong to the states of the bonds.
+    // The bonds first: the models' histories belong to the states of the bonds. Those broken
+    // since keep() are intact again, so the record of them for the other physics goes too
+    // (set_states() shows every physics' kernel the kept states).
     state.pd.particles().bonds().set_states(kept.intact);
+    if (state.broken_bond_record != nullptr)
+      state.broken_bond_record->clear();
     for (unsigned int s = 0; s < states.size(); ++s)
       {
         auto             parts = states[s]->stored_parts();

@@ -341,11 +341,13 @@ namespace perideal
     /**
      * @brief Runs with several physics (<Physics/List>; empty otherwise), set by CoupledProblem
      * on the first physics' state: its solver calls it with step 0 once the initial state is
-     * set, then with each step and whether the step computes energies (explicit: after the
-     * step, when it writes statistics or fields; quasi-static: before the load step's solve);
-     * it advances the other physics to the end of the step by operator splitting.
+     * set, then with each step, the time it starts at and its length [s], and whether the step
+     * computes energies (explicit: after the step, when it writes statistics or fields;
+     * quasi-static: before the load step's solve, over the time from the last converged load
+     * factor to the one solved, each times <Time stepping/End time>); it advances the other
+     * physics over that time by operator splitting.
      */
-    std::function<void(unsigned int, bool)> advance_other_physics;
+    std::function<void(unsigned int, double, double, bool)> advance_other_physics;
     /// Runs with several physics: where accumulate_dissipated_energy() records the bonds the
     /// force evaluation broke, for the physics that share them (PhysicsExchange::record()).
     std::vector<unsigned int> *broken_bond_record = nullptr;

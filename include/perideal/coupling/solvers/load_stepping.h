@@ -64,9 +64,9 @@ namespace perideal
     start_state(CoupledState<dim> &state) override;
 
     /**
-     * @brief Operator splitting: the next load step k of <Solver/Load steps> N, which must end
-     * at @p time + @p dt = k/N <Time stepping/End time> (the first physics' load step): its
-     * solve at load factor k/N, as run() takes it, and its equilibrium forces. Refused after N.
+     * @brief Operator splitting: the solve at the load factor of the time reached, (@p time +
+     * @p dt) / <Time stepping/End time> (the first physics' load factor: k/N of load step k of
+     * N, or a cut one), as run() solves a load step, and its equilibrium forces.
      */
     void
     advance(CoupledState<dim> &state,
@@ -157,8 +157,6 @@ namespace perideal
     /// The prescribed values and the loads at End time (particles, FE dofs).
     ParticleVector target, full_load;
     FEVector       fe_target, fe_full_load;
-    /// Operator splitting: the load steps advance() took.
-    unsigned int split_steps = 0;
   };
 } // namespace perideal
 
