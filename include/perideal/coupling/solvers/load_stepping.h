@@ -25,6 +25,11 @@ namespace perideal
    * steps>. The load factor is then the time column of the statistics (rows numbered by step),
    * and checkpoints are refused (the increment is not stored).
    *
+   * With several physics (<Physics/List>) the others advance before each solve
+   * (CoupledState::advance_other_physics), from the time of the last converged load factor to
+   * that of the one solved (load factor x <Time stepping/End time>); a step that is undone
+   * takes them back too, and they advance again to the cut load factor's time.
+   *
    * Refused before any work: velocity conditions (a quasi-static solve applies displacements),
    * no displacement condition at all, and for the static solve a translation that no
    * displacement condition holds (a singular system). After each step the postprocessors see
