@@ -464,6 +464,61 @@ end
 )";
   }
 
+  /**
+   * The plate's FE part (a mesh of 2 mm cells over the plate, the particles blended out from
+   * x = 12 mm to 16 mm): for the mechanics (@p heat false) <Finite elements> with the mesh and
+   * its elasticity, and <Coupling>; for the heat its <Finite elements> of the FE heat (k, rho c
+   * as multiphysics_conduction()).
+   */
+  inline std::string
+  multiphysics_fe(const bool heat)
+  {
+    if (heat)
+      return R"(
+subsection Finite elements
+  set Physics = heat
+  set Density = 1
+  subsection heat
+    set Conductivity  = 50
+    set Specific heat = 1
+  end
+end
+)";
+    return R"(
+subsection Finite elements
+  set Generator           = subdivided_hyper_rectangle
+  set Generator arguments = 10, 5 : 0, 0 : 0.02, 0.01 : true
+  set Density             = 7800
+  subsection Elasticity
+    set Young's modulus = 200e9
+    set Poisson's ratio = 0.3333333333333333
+  end
+end
+subsection Coupling
+  set Blending function = min(1, max(0, (0.016 - x) / 0.004))
+end
+)";
+  }
+
+  /// The plate's heat as the restart tests start it: 100 K in the left half and 0 in the
+  /// right one, the left 3 mm held at 200 K (heat comes in).
+  inline std::string
+  multiphysics_heat_start()
+  {
+    return R"(
+subsection Initial conditions
+  set Displacement = if(x < 0.01, 100, 0)
+end
+subsection Boundary conditions
+  set Names = hot
+  subsection hot
+    set Region   = left
+    set Function = 200
+  end
+end
+)";
+  }
+
   /// The sections that add the physics @p heat (its entries, as the heat alone has them at
   /// the top level) as <Physics/List> = heat.
   inline std::string

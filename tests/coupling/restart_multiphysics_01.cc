@@ -77,48 +77,14 @@ subsection Solver
 end
 )" :
                                                                            "") +
-                                  std::string(coupled ? R"(
-subsection Finite elements
-  set Generator           = subdivided_hyper_rectangle
-  set Generator arguments = 10, 5 : 0, 0 : 0.02, 0.01 : true
-  set Density             = 7800
-  subsection Elasticity
-    set Young's modulus = 200e9
-    set Poisson's ratio = 0.3333333333333333
-  end
-end
-subsection Coupling
-  set Blending function = min(1, max(0, (0.016 - x) / 0.004))
-end
-)" :
-                                                        "");
-    const std::string heat = coupling_tests::multiphysics_conduction() + R"(
-subsection Initial conditions
-  set Displacement = if(x < 0.01, 100, 0)
-end
-subsection Boundary conditions
-  set Names = hot
-  subsection hot
-    set Region   = left
-    set Function = 200
-  end
-end
+                                  (coupled ? coupling_tests::multiphysics_fe(false) : "");
+    const std::string heat = coupling_tests::multiphysics_conduction() +
+                             coupling_tests::multiphysics_heat_start() + R"(
 subsection Solver
   set Type = )" + std::string(kind == Kind::implicit_heat ? "implicit" : "explicit") +
                              R"(
 end
-)" +
-                             std::string(coupled ? R"(
-subsection Finite elements
-  set Physics = heat
-  set Density = 1
-  subsection heat
-    set Conductivity  = 50
-    set Specific heat = 1
-  end
-end
-)" :
-                                                   "");
+)" + (coupled ? coupling_tests::multiphysics_fe(true) : "");
     std::string text = coupling_tests::multiphysics_plate() + R"(
 subsection Time stepping
   set End time = 2e-6

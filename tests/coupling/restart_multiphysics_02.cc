@@ -50,30 +50,10 @@ namespace
   std::string
   heat(const std::string &solver, const bool coupled)
   {
-    return coupling_tests::with_heat(coupling_tests::multiphysics_conduction() + R"(
-subsection Initial conditions
-  set Displacement = if(x < 0.01, 100, 0)
-end
-subsection Boundary conditions
-  set Names = hot
-  subsection hot
-    set Region   = left
-    set Function = 200
-  end
-end
-subsection Solver
-  set Type = )" + solver + "\nend\n" +
-                                     (coupled ? R"(
-subsection Finite elements
-  set Physics = heat
-  set Density = 1
-  subsection heat
-    set Conductivity  = 50
-    set Specific heat = 1
-  end
-end
-)" :
-                                                ""));
+    return coupling_tests::with_heat(coupling_tests::multiphysics_conduction() +
+                                     coupling_tests::multiphysics_heat_start() +
+                                     "subsection Solver\n  set Type = " + solver + "\nend\n" +
+                                     (coupled ? coupling_tests::multiphysics_fe(true) : ""));
   }
 
   // The plate's mechanics: explicit, its halves moving apart (with an FE part if @p coupled).
@@ -88,22 +68,7 @@ end
 subsection Time stepping
   set End time = 2e-6
 end
-)" +
-           (coupled ? R"(
-subsection Finite elements
-  set Generator           = subdivided_hyper_rectangle
-  set Generator arguments = 10, 5 : 0, 0 : 0.02, 0.01 : true
-  set Density             = 7800
-  subsection Elasticity
-    set Young's modulus = 200e9
-    set Poisson's ratio = 0.3333333333333333
-  end
-end
-subsection Coupling
-  set Blending function = min(1, max(0, (0.016 - x) / 0.004))
-end
-)" :
-                      "");
+)" + (coupled ? coupling_tests::multiphysics_fe(false) : "");
   }
 
   // The plate's mechanics pulled at its right end by @p pull [m] (a function of the time with
