@@ -39,14 +39,6 @@ namespace perideal
       return out.str();
     }
 
-    // The number of values per bond of the material model's bond histories (0 without one).
-    template <int dim>
-    unsigned int
-    history_values(CoupledState<dim> &state)
-    {
-      return state.pd.has_body() ? state.pd.material().n_bond_history_values() : 0;
-    }
-
     // @p lines ("key = value" lines) with every key prefixed by @p prefix.
     std::string
     prefixed(const std::string &lines, const std::string &prefix)
@@ -166,27 +158,8 @@ namespace perideal
                         const Postprocessors<dim> &postprocessors,
                         const RunPosition         &position)
   {
-    const auto states = all_states(state);
-    kept.states.resize(states.size());
-    for (unsigned int s = 0; s < states.size(); ++s)
-      {
-        const auto parts = states[s]->stored_parts();
-        KeptState &copy  = kept.states[s];
-        copy.particle_vectors.resize(parts.particle_vectors.size());
-        for (unsigned int k = 0; k < parts.particle_vectors.size(); ++k)
-          copy.particle_vectors[k] = *parts.particle_vectors[k];
-        copy.energy_density = *parts.energy_density;
-        copy.fe_vectors.resize(parts.fe_vectors.size());
-        for (unsigned int k = 0; k < parts.fe_vectors.size(); ++k)
-          copy.fe_vectors[k] = *parts.fe_vectors[k];
-        copy.sums.clear();
-        for (const auto *part : {&parts.sums, &parts.totals})
-          for (const double *sum : *part)
-            copy.sums.push_back(*sum);
-        copy.history = history_values(*states[s]) > 0 ?
-                         states[s]->pd.material().bond_history(states[s]->pd.particles()) :
-                         std::vector<double>();
-      }
+    for (auto *each : all_states(state))
+      each->keep();
     kept.intact         = state.pd.particles().bonds().intact;
     kept.postprocessors = postprocessors.save_state(state);
     kept.position       = position;
@@ -198,25 +171,14 @@ namespace perideal
   Checkpoint<dim>::restore_kept(CoupledState<dim> &state) const
   {
     Assert(kept.valid, ExcMessage("restore_kept() without keep()."));
-    const auto states = all_states(state);
-    // The bonds first: the models' histories belong to the states of the bonds.
+    // The bonds first: the models' histories belong to the states of the bonds. Those broken
+    // since keep() are intact again, so the record of them for the other physics goes too
+    // (set_states() shows every physics' kernel the kept states).
     state.pd.particles().bonds().set_states(kept.intact);
-    for (unsigned int s = 0; s < states.size(); ++s)
-      {
-        auto             parts = states[s]->stored_parts();
-        const KeptState &copy  = kept.states[s];
-        for (unsigned int k = 0; k < parts.particle_vectors.size(); ++k)
-          *parts.particle_vectors[k] = copy.particle_vectors[k];
-        *parts.energy_density = copy.energy_density;
-        for (unsigned int k = 0; k < parts.fe_vectors.size(); ++k)
-          *parts.fe_vectors[k] = copy.fe_vectors[k];
-        auto sum = copy.sums.begin();
-        for (const auto *part : {&parts.sums, &parts.totals})
-          for (double *value : *part)
-            *value = *sum++;
-        if (history_values(*states[s]) > 0)
-          states[s]->pd.material().set_bond_history(states[s]->pd.particles(), copy.history);
-      }
+    if (state.broken_bond_record != nullptr)
+      state.broken_bond_record->clear();
+    for (auto *each : all_states(state))
+      each->restore_kept();
     return kept.position;
   }
 

@@ -36,11 +36,17 @@ namespace perideal
                                    "explicit, static, adaptive dynamic relaxation."));
     if (settings.solver_type != SolverType::explicit_dynamics)
       {
-        AssertThrow(control.method == LoadControl::load_steps && control.cut_threshold == 0,
-                    ExcMessage(entry + ": a quasi-static run advances the other physics over "
-                                       "each load step, which a sequentially linear control or "
-                                       "cut load steps would undo; accepted: <Solver/Control/"
-                                       "Method> = load steps with <Cut threshold> = 0."));
+        // The other physics advance to the time of the load factor solved (load factor x End
+        // time); the events of a sequentially linear control have no such time.
+        AssertThrow(control.method == LoadControl::load_steps,
+                    ExcMessage(entry + ": <Solver/Control/Method> = sequentially linear scales "
+                                       "one linear solution by each event's load factor, which "
+                                       "falls when bonds break and rises again, so the events "
+                                       "give the other physics no time to advance to (a "
+                                       "transient heat cannot go back in time; a temperature "
+                                       "held over the events would not scale with the "
+                                       "mechanical load); accepted with a list: <Solver/Control/"
+                                       "Method> = load steps (cut load steps included)."));
         AssertThrow(settings.end_time > 0.,
                     ExcMessage(entry + ": load step k of N of a quasi-static run ends at the time "
                                        "k/N <Time stepping/End time>, to which the other physics "
@@ -114,7 +120,7 @@ namespace perideal
   {
     if (physics.size() == 1)
       return;
-    sub_steps.assign(physics.size() - 1, 1);
+    sub_steps.assign(physics.size() - 1, 0.);
     for (unsigned int k = 1; k < physics.size(); ++k)
       {
         Physics<dim> &field = *physics[k];
@@ -133,10 +139,11 @@ namespace perideal
           if (field.layout.kind(c) == ComponentKind::temperature)
             exchange.publish("temperature", field.state->u, field.state->U, field.layout, c);
       }
-    state->broken_bond_record    = &exchange.record();
-    state->advance_other_physics = [this](const unsigned int step, const bool with_energy) {
-      advance_other_physics(step, with_energy);
-    };
+    state->broken_bond_record = &exchange.record();
+    state->advance_other_physics =
+      [this](const unsigned int step, const double time, const double dt, const bool with_energy) {
+        advance_other_physics(step, time, dt, with_energy);
+      };
   }
 
   template <int dim>
@@ -153,7 +160,7 @@ namespace perideal
     const auto n = static_cast<unsigned int>(
       std::max(1., std::ceil(step_length / field.state->time_step * (1. - 1e-12))));
     field.state->time_step = step_length / n;
-    sub_steps[k - 1]       = n;
+    sub_steps[k - 1]       = field.state->time_step;
     if (is_root && field.settings.solver_type == SolverType::static_linear)
       log << "  a steady solve before each load step of the first physics" << std::endl;
     else if (is_root)
@@ -163,7 +170,10 @@ namespace perideal
 
   template <int dim>
   void
-  CoupledProblem<dim>::advance_other_physics(const unsigned int step, const bool with_energy)
+  CoupledProblem<dim>::advance_other_physics(const unsigned int step,
+                                             const double       time,
+                                             const double       dt,
+                                             const bool         with_energy)
   {
     // What the first physics broke in its step is broken for the others before theirs.
     exchange.share_broken_bonds(pd.particles().bonds());
@@ -175,13 +185,15 @@ namespace perideal
             field.solver->start_state(*field.state);
             continue;
           }
-        const unsigned int n     = sub_steps[k - 1];
-        const double       dt    = field.state->time_step;
-        const double       start = (step - 1) * split_step();
+        // The fewest equal steps of at most the set-up's one: its n steps over a step of the
+        // first physics, fewer over a cut load step.
+        const auto n =
+          static_cast<unsigned int>(std::max(1., std::ceil(dt / sub_steps[k - 1] * (1. - 1e-12))));
+        const double length = dt / n;
         if (resume_other_physics)
-          field.solver->resume_state(*field.state, start);
+          field.solver->resume_state(*field.state, time);
         for (unsigned int s = 0; s < n; ++s)
-          field.solver->advance(*field.state, start + s * dt, dt, with_energy && s + 1 == n);
+          field.solver->advance(*field.state, time + s * length, length, with_energy && s + 1 == n);
         // The force of the supports, for the reactions (explicit runs keep it from the last
         // step's residual).
         if (with_energy && field.settings.solver_type == SolverType::explicit_dynamics)
@@ -208,13 +220,16 @@ namespace perideal
     return exchange;
   }
 
-#define PERIDEAL_INSTANTIATE(dim)                                                           \
-  template void CoupledProblem<dim>::parse_other_physics(ParameterHandler &);               \
-  template void CoupledProblem<dim>::check_other_physics();                                 \
-  template void CoupledProblem<dim>::setup_other_physics();                                 \
-  template void CoupledProblem<dim>::choose_sub_steps(const unsigned int);                  \
-  template void CoupledProblem<dim>::advance_other_physics(const unsigned int, const bool); \
-  template const PhysicsExchange<dim> &CoupledProblem<dim>::get_exchange() const;           \
+#define PERIDEAL_INSTANTIATE(dim)                                                 \
+  template void CoupledProblem<dim>::parse_other_physics(ParameterHandler &);     \
+  template void CoupledProblem<dim>::check_other_physics();                       \
+  template void CoupledProblem<dim>::setup_other_physics();                       \
+  template void CoupledProblem<dim>::choose_sub_steps(const unsigned int);        \
+  template void CoupledProblem<dim>::advance_other_physics(const unsigned int,    \
+                                                           const double,          \
+                                                           const double,          \
+                                                           const bool);           \
+  template const PhysicsExchange<dim> &CoupledProblem<dim>::get_exchange() const; \
   template double                      CoupledProblem<dim>::split_step() const;
   PERIDEAL_INSTANTIATE(2)
   PERIDEAL_INSTANTIATE(3)

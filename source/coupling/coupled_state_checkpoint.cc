@@ -1,5 +1,6 @@
 // ---------------------------------------------------------------------
-// PeriDeal: a state's records in a checkpoint (its sums and vectors, through its regions).
+// PeriDeal: a state's records in a checkpoint (its sums and vectors, through its regions), and
+// the copy of them a quasi-static run keeps in memory.
 // ---------------------------------------------------------------------
 #include <perideal/coupling/coupled_state.h>
 
@@ -98,10 +99,51 @@ namespace perideal
     U.update_ghost_values();
   }
 
+  template <int dim>
+  void
+  CoupledState<dim>::keep()
+  {
+    const auto parts = stored_parts();
+    kept.particle_vectors.resize(parts.particle_vectors.size());
+    for (unsigned int k = 0; k < parts.particle_vectors.size(); ++k)
+      kept.particle_vectors[k] = *parts.particle_vectors[k];
+    kept.energy_density = *parts.energy_density;
+    kept.fe_vectors.resize(parts.fe_vectors.size());
+    for (unsigned int k = 0; k < parts.fe_vectors.size(); ++k)
+      kept.fe_vectors[k] = *parts.fe_vectors[k];
+    kept.sums.clear();
+    for (const auto *part : {&parts.sums, &parts.totals})
+      for (const double *sum : *part)
+        kept.sums.push_back(*sum);
+    kept.history.clear();
+    if (pd.has_body() && pd.material().n_bond_history_values() > 0)
+      kept.history = pd.material().bond_history(pd.particles());
+  }
+
+  template <int dim>
+  void
+  CoupledState<dim>::restore_kept()
+  {
+    const auto parts = stored_parts();
+    for (unsigned int k = 0; k < parts.particle_vectors.size(); ++k)
+      *parts.particle_vectors[k] = kept.particle_vectors[k];
+    *parts.energy_density = kept.energy_density;
+    for (unsigned int k = 0; k < parts.fe_vectors.size(); ++k)
+      *parts.fe_vectors[k] = kept.fe_vectors[k];
+    auto sum = kept.sums.begin();
+    for (const auto *part : {&parts.sums, &parts.totals})
+      for (double *value : *part)
+        *value = *sum++;
+    if (!kept.history.empty())
+      pd.material().set_bond_history(pd.particles(), kept.history);
+  }
+
 #define PERIDEAL_INSTANTIATE(dim)                                                        \
   template std::string CoupledState<dim>::fingerprint(const std::string &);              \
   template void        CoupledState<dim>::save(CheckpointWriter &, const std::string &); \
-  template void        CoupledState<dim>::load(CheckpointReader &, const std::string &);
+  template void        CoupledState<dim>::load(CheckpointReader &, const std::string &); \
+  template void        CoupledState<dim>::keep();                                        \
+  template void        CoupledState<dim>::restore_kept();
   PERIDEAL_INSTANTIATE(2)
   PERIDEAL_INSTANTIATE(3)
 #undef PERIDEAL_INSTANTIATE

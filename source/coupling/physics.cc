@@ -134,14 +134,15 @@ namespace perideal
                           "explicit",
                           Patterns::Selection("explicit|implicit|static"),
                           "How this physics advances within each step of the first one (operator "
-                          "splitting; a load step k of N of a quasi-static run ends at k/N <Time "
-                          "stepping/End time>): 'explicit' (forward-Euler sub-steps at its own "
-                          "stable step times <Time stepping/Safety factor>, as many as divide "
-                          "the step), 'implicit' (one theta step of <Time stepping/Theta> per "
-                          "step, with <Solver/Linear solver>), 'static' (a steady run: before "
-                          "each load step of a quasi-static first physics, its own static solve "
-                          "at the same load factor, with the top-level <Solver> entries; "
-                          "refused if the first physics is explicit).");
+                          "splitting; a load step of a quasi-static run at the load factor f "
+                          "ends at f <Time stepping/End time>: k/N for step k of N, or a cut "
+                          "one): 'explicit' (forward-Euler sub-steps at its own stable step "
+                          "times <Time stepping/Safety factor>, as many as divide the step; "
+                          "fewer in a cut load step), 'implicit' (one theta step of <Time "
+                          "stepping/Theta> per step, with <Solver/Linear solver>), 'static' (a "
+                          "steady run: before each load step of a quasi-static first physics, "
+                          "its own static solve at the same load factor, with the top-level "
+                          "<Solver> entries; refused if the first physics is explicit).");
         prm.leave_subsection();
         prm.enter_subsection("Coupling");
         using Methods = PluginRegistry<CouplingMethod<dim>>;

@@ -63,8 +63,9 @@ namespace coupling_tests
 
   /**
    * Declare and read the parameters of the coupled problem in @p file and hand them to
-   * @p problem, as perideal-solid does: a first pass reads the names of the regions and of the
-   * particle and FE boundary conditions, which decide the subsections.
+   * @p problem, as perideal-solid does: a first pass reads the names of the regions, of the
+   * particle and FE boundary conditions and of the physics of <Physics/List> (with theirs),
+   * which decide the subsections.
    */
   template <int dim>
   void
@@ -75,13 +76,18 @@ namespace coupling_tests
     perideal::RegionCollection<dim>::declare_names(first);
     perideal::BoundaryConditions<dim>::declare_names(first);
     perideal::FERegion<dim>::declare_names(first);
+    perideal::Physics<dim>::declare_names(first);
     perideal::ParameterUtilities::parse_partially(first, file);
+    std::map<std::string, typename perideal::Physics<dim>::ConditionNames> physics;
+    for (const auto &[name, conditions] : perideal::Physics<dim>::parse_names(first))
+      physics[name] = conditions;
     dealii::ParameterHandler prm;
     perideal::CoupledProblem<dim>::declare_parameters(
       prm,
       perideal::RegionCollection<dim>::parse_names(first),
       perideal::BoundaryConditions<dim>::parse_names(first),
-      perideal::FERegion<dim>::parse_names(first));
+      perideal::FERegion<dim>::parse_names(first),
+      physics);
     perideal::ParameterUtilities::parse_file(prm, file);
     problem.parse_parameters(prm);
   }
@@ -376,6 +382,149 @@ end
         }
     std::cout << "line '" << key << "' missing (FAILED)" << std::endl;
     return {std::nan(""), std::nan(""), std::nan("")};
+  }
+
+  /**
+   * The plate of the tests of several physics (multiphysics_*, restart_multiphysics_*): the
+   * sections Dimension, Discretization and Regions of a 20 mm x 10 mm plane-stress plate, dx =
+   * 1 mm (200 particles), with the regions plate, left (x < 3 mm), right (x > 17 mm) and, if
+   * @p top, top (8 mm < x < 12 mm, y > 9 mm).
+   */
+  inline std::string
+  multiphysics_plate(const bool top = false)
+  {
+    return R"(
+set Dimension = 2
+subsection Discretization
+  set Lattice spacing = 1e-3
+  set Thickness       = 1e-3
+  set Body            = plate
+end
+subsection Regions
+  set Names = plate, left, right)" +
+           std::string(top ? ", top" : "") + R"(
+  subsection plate
+    set Lower corner = 0, 0
+    set Upper corner = 0.02, 0.01
+  end
+  subsection left
+    set Lower corner = 0, 0
+    set Upper corner = 0.003, 0.01
+  end
+  subsection right
+    set Lower corner = 0.017, 0
+    set Upper corner = 0.02, 0.01
+  end)" +
+           std::string(top ? R"(
+  subsection top
+    set Lower corner = 0.008, 0.009
+    set Upper corner = 0.012, 0.01
+  end)" :
+                             "") +
+           R"(
+end
+)";
+  }
+
+  /// The plate's mechanics: <Material> of PMB (E = 200 GPa, rho = 7800 kg/m^3), with a critical
+  /// stretch of 1e-3 if @p damage.
+  inline std::string
+  multiphysics_mechanics(const bool damage)
+  {
+    return R"(
+subsection Material
+  set Model   = bond based
+  set Density = 7800
+  set Damage model = )" +
+           std::string(damage ? "critical stretch" : "none") + R"(
+  subsection bond based
+    set Young's modulus = 200e9
+  end
+  subsection critical stretch
+    set Critical stretch = 1e-3
+  end
+end
+)";
+  }
+
+  /// The plate's heat: <Material> of the bond based conduction, k = 50 W/(m K), rho c = 1
+  /// J/(m^3 K) (the heat diffuses across the plate in microseconds).
+  inline std::string
+  multiphysics_conduction()
+  {
+    return R"(
+subsection Material
+  set Model   = bond based conduction
+  set Density = 1
+  subsection bond based conduction
+    set Conductivity  = 50
+    set Specific heat = 1
+  end
+end
+)";
+  }
+
+  /**
+   * The plate's FE part (a mesh of 2 mm cells over the plate, the particles blended out from
+   * x = 12 mm to 16 mm): for the mechanics (@p heat false) <Finite elements> with the mesh and
+   * its elasticity, and <Coupling>; for the heat its <Finite elements> of the FE heat (k, rho c
+   * as multiphysics_conduction()).
+   */
+  inline std::string
+  multiphysics_fe(const bool heat)
+  {
+    if (heat)
+      return R"(
+subsection Finite elements
+  set Physics = heat
+  set Density = 1
+  subsection heat
+    set Conductivity  = 50
+    set Specific heat = 1
+  end
+end
+)";
+    return R"(
+subsection Finite elements
+  set Generator           = subdivided_hyper_rectangle
+  set Generator arguments = 10, 5 : 0, 0 : 0.02, 0.01 : true
+  set Density             = 7800
+  subsection Elasticity
+    set Young's modulus = 200e9
+    set Poisson's ratio = 0.3333333333333333
+  end
+end
+subsection Coupling
+  set Blending function = min(1, max(0, (0.016 - x) / 0.004))
+end
+)";
+  }
+
+  /// The plate's heat as the restart tests start it: 100 K in the left half and 0 in the
+  /// right one, the left 3 mm held at 200 K (heat comes in).
+  inline std::string
+  multiphysics_heat_start()
+  {
+    return R"(
+subsection Initial conditions
+  set Displacement = if(x < 0.01, 100, 0)
+end
+subsection Boundary conditions
+  set Names = hot
+  subsection hot
+    set Region   = left
+    set Function = 200
+  end
+end
+)";
+  }
+
+  /// The sections that add the physics @p heat (its entries, as the heat alone has them at
+  /// the top level) as <Physics/List> = heat.
+  inline std::string
+  with_heat(const std::string &heat)
+  {
+    return "subsection Physics\n  set List = heat\nend\nsubsection Heat\n" + heat + "end\n";
   }
 
 } // namespace coupling_tests

@@ -27,6 +27,8 @@
 
 #include <perideal/coupling/coupled_problem.h>
 
+#include "coupling_tests.h"
+
 #include <algorithm>
 #include <cmath>
 #include <iomanip>
@@ -65,19 +67,7 @@ namespace
         const std::string &heat_solver,
         const bool         quasi_static)
   {
-    const std::string mechanics = R"(
-subsection Material
-  set Model   = bond based
-  set Density = 7800
-  set Damage model = )" + std::string(damage ? "critical stretch" : "none") +
-                                  R"(
-  subsection bond based
-    set Young's modulus = 200e9
-  end
-  subsection critical stretch
-    set Critical stretch = 1e-3
-  end
-end
+    const std::string mechanics = coupling_tests::multiphysics_mechanics(damage) + R"(
 subsection Initial conditions
   set Velocity = if(x < 0.01, -20, 20); 0
 end
@@ -103,15 +93,7 @@ subsection Solver
 end
 )" :
                                                              "");
-    const std::string heat = R"(
-subsection Material
-  set Model   = bond based conduction
-  set Density = 1
-  subsection bond based conduction
-    set Conductivity  = 50
-    set Specific heat = 1
-  end
-end
+    const std::string heat = coupling_tests::multiphysics_conduction() + R"(
 subsection Initial conditions
   set Displacement = if(x < 0.01, 100, 0)
 end
@@ -121,28 +103,7 @@ subsection Solver
 end
 )";
     std::string text =
-      R"(
-set Dimension = 2
-subsection Discretization
-  set Lattice spacing = 1e-3
-  set Thickness       = 1e-3
-  set Body            = plate
-end
-subsection Regions
-  set Names = plate, left, right
-  subsection plate
-    set Lower corner = 0, 0
-    set Upper corner = 0.02, 0.01
-  end
-  subsection left
-    set Lower corner = 0, 0
-    set Upper corner = 0.003, 0.01
-  end
-  subsection right
-    set Lower corner = 0.017, 0
-    set Upper corner = 0.02, 0.01
-  end
-end
+      coupling_tests::multiphysics_plate() + R"(
 subsection Time stepping
   set End time = )" +
       number(end_time) + "\n" +
@@ -159,8 +120,7 @@ end
       return text + mechanics;
     if (fields == Fields::heat)
       return text + heat;
-    return text + mechanics + "subsection Physics\n  set List = heat\nend\nsubsection Heat\n" +
-           heat + "end\n";
+    return text + mechanics + coupling_tests::with_heat(heat);
   }
 
   struct Result

@@ -14,12 +14,18 @@
 //    those of the heat run alone, its energy balance (heat.energy_error) closing to the direct
 //    solver's accuracy (1e-10 of its work);
 //  - the exchange publishes the steady temperature.
+// Then the same plate coupled (blended): an FE part of both physics (an elasticity and a heat
+// mesh of 2 mm cells over the plate), the particles blended out from x = 12 mm to 16 mm, the
+// right end pulled, and held at 0 K, on the mesh's right edge (boundary id 1). The same checks,
+// on the particles and the FE dofs of each physics.
 // ---------------------------------------------------------------------
 
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/parameter_handler.h>
 
 #include <perideal/coupling/coupled_problem.h>
+
+#include "coupling_tests.h"
 
 #include <algorithm>
 #include <cmath>
@@ -43,26 +49,66 @@ namespace
   };
 
   // The plate: the mechanics in the top-level sections, the heat in them (alone) or in
-  // <Heat> (both).
+  // <Heat> (both); with an FE part of both physics if @p coupled.
   std::string
-  input(const Fields fields)
+  input(const Fields fields, const bool coupled)
   {
-    const std::string solver    = R"(
+    const std::string solver = R"(
 subsection Solver
   set Type          = static
   set Load steps    = 2
   set Linear solver = direct
 end
 )";
-    const std::string mechanics = R"(
-subsection Material
-  set Model   = bond based
-  set Density = 7800
-  subsection bond based
-    set Young's modulus = 200e9
+    // The mesh and the overlap of the coupled plate; its heat mesh, held at 0 K at the right.
+    const std::string mesh    = R"(
+  set Generator           = subdivided_hyper_rectangle
+  set Generator arguments = 10, 5 : 0, 0 : 0.02, 0.01 : true
+)";
+    const std::string overlap = R"(
+subsection Coupling
+  set Blending function = min(1, max(0, (0.016 - x) / 0.004))
+end
+)";
+    const std::string fe_heat = R"(
+  set Physics = heat
+  set Density = 1
+  subsection heat
+    set Conductivity  = 50
+    set Specific heat = 1
+  end
+  subsection Boundary conditions
+    set Names = cold
+    subsection cold
+      set Boundary ids = 1
+      set Function     = 0
+    end
+  end
+)";
+    const std::string pull    = coupled ? R"(
+  set Names = hold
+  subsection hold
+    set Region = left
+    set Type   = displacement
   end
 end
-subsection Boundary conditions
+subsection Finite elements)" + mesh +
+                                         R"(  set Density = 7800
+  subsection Elasticity
+    set Young's modulus = 200e9
+    set Poisson's ratio = 0.3333333333333333
+  end
+  subsection Boundary conditions
+    set Names = pull
+    subsection pull
+      set Boundary ids = 1
+      set Components   = x
+      set Function     = 2e-6
+    end
+  end
+end
+)" :
+                                          R"(
   set Names = hold, pull
   subsection hold
     set Region = left
@@ -76,25 +122,20 @@ subsection Boundary conditions
   end
 end
 )";
-    const std::string heat      = R"(
-subsection Material
-  set Model   = bond based conduction
-  set Density = 1
-  subsection bond based conduction
-    set Conductivity  = 50
-    set Specific heat = 1
-  end
-end
+    const std::string mechanics =
+      coupling_tests::multiphysics_mechanics(false) + "\nsubsection Boundary conditions" + pull;
+    const std::string heat = coupling_tests::multiphysics_conduction() + R"(
 subsection Boundary conditions
-  set Names = hot, cold, heater
+  set Names = hot, )" + (coupled ? "" : "cold, ") +
+                             R"(heater
   subsection hot
     set Region   = left
     set Function = 100
-  end
+  end)" + (coupled ? "" : R"(
   subsection cold
     set Region   = right
     set Function = 0
-  end
+  end)") + R"(
   subsection heater
     set Region          = top
     set Type            = flux
@@ -103,32 +144,7 @@ subsection Boundary conditions
   end
 end
 )";
-    const std::string text      = R"(
-set Dimension = 2
-subsection Discretization
-  set Lattice spacing = 1e-3
-  set Thickness       = 1e-3
-  set Body            = plate
-end
-subsection Regions
-  set Names = plate, left, right, top
-  subsection plate
-    set Lower corner = 0, 0
-    set Upper corner = 0.02, 0.01
-  end
-  subsection left
-    set Lower corner = 0, 0
-    set Upper corner = 0.003, 0.01
-  end
-  subsection right
-    set Lower corner = 0.017, 0
-    set Upper corner = 0.02, 0.01
-  end
-  subsection top
-    set Lower corner = 0.008, 0.009
-    set Upper corner = 0.012, 0.01
-  end
-end
+    const std::string text = coupling_tests::multiphysics_plate(true) + R"(
 subsection Time stepping
   set End time = 1
 end
@@ -137,20 +153,22 @@ subsection Output
   set Write HDF5 = false
   set Progress   = false
 end
-)" + solver;
+)" + solver + (coupled ? overlap : "");
     if (fields == Fields::mechanics)
       return text + mechanics;
     if (fields == Fields::heat)
-      return text + heat;
-    return text + mechanics + "subsection Physics\n  set List = heat\nend\nsubsection Heat\n" +
-           heat + "  subsection Solver\n    set Type = static\n  end\nend\n";
+      return text + heat + (coupled ? "subsection Finite elements" + mesh + fe_heat + "end\n" : "");
+    return text + mechanics +
+           coupling_tests::with_heat(
+             heat + "  subsection Solver\n    set Type = static\n  end\n" +
+             (coupled ? "subsection Finite elements" + fe_heat + "end\n" : ""));
   }
 
   struct Result
   {
     // Owned entries: the displacement, the temperature, the temperature as the exchange
-    // publishes it.
-    std::vector<double> u, T, published;
+    // publishes it; the FE displacement and temperature.
+    std::vector<double> u, T, published, U, FE_T;
     // The last row of statistics.csv by column (rank 0).
     std::map<std::string, double> row;
   };
@@ -180,21 +198,30 @@ end
   }
 
   Result
-  run(const Fields fields)
+  run(const Fields fields, const bool coupled)
   {
     std::ostringstream                   log;
     perideal::CoupledProblem<2>          problem(MPI_COMM_WORLD, log);
     ParameterHandler                     prm;
     perideal::Physics<2>::ConditionNames heat_conditions;
-    heat_conditions.particles = {"hot", "cold", "heater"};
-    perideal::CoupledProblem<2>::declare_parameters(
-      prm,
-      {"plate", "left", "right", "top"},
-      fields == Fields::heat ? std::vector<std::string>{"hot", "cold", "heater"} :
-                               std::vector<std::string>{"hold", "pull"},
-      {},
-      {{"heat", heat_conditions}});
-    prm.parse_input_from_string(input(fields));
+    const std::vector<std::string>       particle_heat =
+      coupled ? std::vector<std::string>{"hot", "heater"} :
+                      std::vector<std::string>{"hot", "cold", "heater"};
+    heat_conditions.particles = particle_heat;
+    if (coupled)
+      heat_conditions.fe = {"cold"};
+    perideal::CoupledProblem<2>::declare_parameters(prm,
+                                                    {"plate", "left", "right", "top"},
+                                                    fields == Fields::heat ? particle_heat :
+                                                    coupled ? std::vector<std::string>{"hold"} :
+                                                              std::vector<std::string>{"hold",
+                                                                                       "pull"},
+                                                    !coupled ? std::vector<std::string>{} :
+                                                    fields == Fields::heat ?
+                                                               std::vector<std::string>{"cold"} :
+                                                               std::vector<std::string>{"pull"},
+                                                    {{"heat", heat_conditions}});
+    prm.parse_input_from_string(input(fields, coupled));
     problem.parse_parameters(prm);
     deallog.push("run");
     problem.setup();
@@ -217,6 +244,13 @@ end
           if (fields == Fields::both)
             result.published.push_back(problem.get_exchange().particle_value("temperature", i));
         }
+    const auto owned = [](const perideal::FEVector &v) {
+      return std::vector<double>(v.begin(), v.begin() + v.locally_owned_size());
+    };
+    if (fields != Fields::heat)
+      result.U = owned(physics[0]->state->U);
+    if (fields != Fields::mechanics)
+      result.FE_T = owned(physics.back()->state->U);
     result.row = last_row("results/statistics.csv");
     return result;
   }
@@ -246,38 +280,44 @@ main(int argc, char **argv)
   mpi_initlog();
   deallog.depth_file(1);
 
-  const Result both      = run(Fields::both);
-  const Result mechanics = run(Fields::mechanics);
-  const Result heat      = run(Fields::heat);
-  double       largest_T = 0.;
-  for (const double T : both.T)
-    largest_T = std::max(largest_T, std::abs(T));
-  deallog << "largest temperature: " << Utilities::MPI::max(largest_T, MPI_COMM_WORLD) << " K"
-          << std::endl;
-  verdict("mechanics equal to the mechanics alone, bit for bit",
-          difference(both.u, mechanics.u) == 0.);
-  verdict("temperature equal to the heat alone, bit for bit", difference(both.T, heat.T) == 0.);
-  verdict("the exchange publishes the temperature", difference(both.published, both.T) == 0.);
+  for (const bool coupled : {false, true})
+    {
+      if (coupled)
+        deallog << "coupled (blended):" << std::endl;
+      const Result both      = run(Fields::both, coupled);
+      const Result mechanics = run(Fields::mechanics, coupled);
+      const Result heat      = run(Fields::heat, coupled);
+      double       largest_T = 0.;
+      for (const double T : both.T)
+        largest_T = std::max(largest_T, std::abs(T));
+      deallog << "largest temperature: " << Utilities::MPI::max(largest_T, MPI_COMM_WORLD) << " K"
+              << std::endl;
+      verdict("mechanics equal to the mechanics alone, bit for bit",
+              difference(both.u, mechanics.u) == 0. && difference(both.U, mechanics.U) == 0.);
+      verdict("temperature equal to the heat alone, bit for bit",
+              difference(both.T, heat.T) == 0. && difference(both.FE_T, heat.FE_T) == 0.);
+      verdict("the exchange publishes the temperature", difference(both.published, both.T) == 0.);
 
-  // The statistics (rank 0 reads them and writes the log): both physics' columns in one row,
-  // the heat's as alone.
-  bool columns = true;
-  for (const std::string name : {"strain_energy", "external_work", "energy_error"})
-    {
-      const auto mine = both.row.find(name), theirs = both.row.find("heat." + name);
-      const auto alone = heat.row.find(name), alone_mechanics = mechanics.row.find(name);
-      if (Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) != 0)
-        continue;
-      columns = columns && mine != both.row.end() && theirs != both.row.end() &&
-                alone != heat.row.end() && alone_mechanics != mechanics.row.end() &&
-                mine->second == alone_mechanics->second && theirs->second == alone->second;
-    }
-  verdict("statistics: both physics' columns, each as alone", columns);
-  if (Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0)
-    {
-      const double work  = both.row.at("heat.external_work");
-      const double error = both.row.at("heat.energy_error");
-      deallog << "heat: external work " << work << " J, energy error below 1e-10 of it: "
-              << (std::abs(error) <= 1e-10 * std::abs(work) ? "yes" : "no") << std::endl;
+      // The statistics (rank 0 reads them and writes the log): both physics' columns in one
+      // row, the heat's as alone.
+      bool columns = true;
+      for (const std::string name : {"strain_energy", "external_work", "energy_error"})
+        {
+          const auto mine = both.row.find(name), theirs = both.row.find("heat." + name);
+          const auto alone = heat.row.find(name), alone_mechanics = mechanics.row.find(name);
+          if (Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) != 0)
+            continue;
+          columns = columns && mine != both.row.end() && theirs != both.row.end() &&
+                    alone != heat.row.end() && alone_mechanics != mechanics.row.end() &&
+                    mine->second == alone_mechanics->second && theirs->second == alone->second;
+        }
+      verdict("statistics: both physics' columns, each as alone", columns);
+      if (Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0)
+        {
+          const double work  = both.row.at("heat.external_work");
+          const double error = both.row.at("heat.energy_error");
+          deallog << "heat: external work " << work << " J, energy error below 1e-10 of it: "
+                  << (std::abs(error) <= 1e-10 * std::abs(work) ? "yes" : "no") << std::endl;
+        }
     }
 }

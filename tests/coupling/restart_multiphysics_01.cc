@@ -51,18 +51,7 @@ namespace
   input(const Kind kind, const bool with_heat)
   {
     const bool        coupled   = kind == Kind::coupled;
-    const std::string mechanics = R"(
-subsection Material
-  set Model   = bond based
-  set Density = 7800
-  set Damage model = critical stretch
-  subsection bond based
-    set Young's modulus = 200e9
-  end
-  subsection critical stretch
-    set Critical stretch = 1e-3
-  end
-end
+    const std::string mechanics = coupling_tests::multiphysics_mechanics(true) + R"(
 subsection Initial conditions
   set Velocity = if(x < 0.01, -20, 20); 0
 end
@@ -88,85 +77,22 @@ subsection Solver
 end
 )" :
                                                                            "") +
-                                  std::string(coupled ? R"(
-subsection Finite elements
-  set Generator           = subdivided_hyper_rectangle
-  set Generator arguments = 10, 5 : 0, 0 : 0.02, 0.01 : true
-  set Density             = 7800
-  subsection Elasticity
-    set Young's modulus = 200e9
-    set Poisson's ratio = 0.3333333333333333
-  end
-end
-subsection Coupling
-  set Blending function = min(1, max(0, (0.016 - x) / 0.004))
-end
-)" :
-                                                        "");
-    const std::string heat = R"(
-subsection Material
-  set Model   = bond based conduction
-  set Density = 1
-  subsection bond based conduction
-    set Conductivity  = 50
-    set Specific heat = 1
-  end
-end
-subsection Initial conditions
-  set Displacement = if(x < 0.01, 100, 0)
-end
-subsection Boundary conditions
-  set Names = hot
-  subsection hot
-    set Region   = left
-    set Function = 200
-  end
-end
+                                  (coupled ? coupling_tests::multiphysics_fe(false) : "");
+    const std::string heat = coupling_tests::multiphysics_conduction() +
+                             coupling_tests::multiphysics_heat_start() + R"(
 subsection Solver
   set Type = )" + std::string(kind == Kind::implicit_heat ? "implicit" : "explicit") +
                              R"(
 end
-)" +
-                             std::string(coupled ? R"(
-subsection Finite elements
-  set Physics = heat
-  set Density = 1
-  subsection heat
-    set Conductivity  = 50
-    set Specific heat = 1
-  end
-end
-)" :
-                                                   "");
-    std::string text = R"(
-set Dimension = 2
-subsection Discretization
-  set Lattice spacing = 1e-3
-  set Thickness       = 1e-3
-  set Body            = plate
-end
-subsection Regions
-  set Names = plate, left, right
-  subsection plate
-    set Lower corner = 0, 0
-    set Upper corner = 0.02, 0.01
-  end
-  subsection left
-    set Lower corner = 0, 0
-    set Upper corner = 0.003, 0.01
-  end
-  subsection right
-    set Lower corner = 0.017, 0
-    set Upper corner = 0.02, 0.01
-  end
-end
+)" + (coupled ? coupling_tests::multiphysics_fe(true) : "");
+    std::string text = coupling_tests::multiphysics_plate() + R"(
 subsection Time stepping
   set End time = 2e-6
 end
 )";
     text += mechanics;
     if (with_heat)
-      text += "subsection Physics\n  set List = heat\nend\nsubsection Heat\n" + heat + "end\n";
+      text += coupling_tests::with_heat(heat);
     return text;
   }
 

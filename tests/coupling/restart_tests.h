@@ -27,7 +27,9 @@
 // their largest value, and each statistics column to 1e-10 of its largest value plus 10 times
 // the difference between the uninterrupted runs on 1 and 2 ranks (columns that vanish by
 // symmetry, the x reactions and the force balance, are round-off themselves and differ by as
-// much between the rank counts as they are large).
+// much between the rank counts as they are large). With a second physics of <Physics/List>
+// (restart_multiphysics_02) its particle and FE fields are checked the same way, and its XDMF
+// records are files of the comparison too.
 // ---------------------------------------------------------------------
 #ifndef perideal_tests_restart_tests_h
 #define perideal_tests_restart_tests_h
@@ -65,7 +67,9 @@ namespace restart_tests
 
   struct Result
   {
-    std::vector<double> u, U;
+    // The first physics' particle and FE fields; those of a second physics of <Physics/List>
+    // (particles, then FE dofs; empty without one).
+    std::vector<double> u, U, T;
     unsigned int        n_steps = 0;
   };
 
@@ -101,6 +105,12 @@ namespace restart_tests
         const auto &U = problem.fe_displacement();
         result.u.assign(u.begin(), u.begin() + u.locally_owned_size());
         result.U.assign(U.begin(), U.begin() + U.locally_owned_size());
+        const auto &physics = problem.get_physics();
+        if (physics.size() > 1)
+          for (const auto *field : {&physics[1]->state->u, &physics[1]->state->U})
+            result.T.insert(result.T.end(),
+                            field->begin(),
+                            field->begin() + field->locally_owned_size());
         // "Time step: dt s, steps: N", "Static solve: n unknowns (...), N load step(s)" or
         // "Adaptive dynamic relaxation: n unknowns (...), N load step(s)" (rank 0 prints).
         const std::string text = log.str();
@@ -211,9 +221,14 @@ namespace restart_tests
     const Result restarted          = run(MPI_COMM_WORLD, c.text, c.name + "_stopped", 0, true);
     const double du                 = relative_difference(full.u, restarted.u, MPI_COMM_WORLD);
     const double dU                 = relative_difference(full.U, restarted.U, MPI_COMM_WORLD);
+    const double dT                 = relative_difference(full.T, restarted.T, MPI_COMM_WORLD);
     if (root)
       {
-        const std::vector<std::string> files{"statistics.csv", "particles.xdmf", "solution.xdmf"};
+        const std::vector<std::string> files{"statistics.csv",
+                                             "particles.xdmf",
+                                             "solution.xdmf",
+                                             "particles_heat.xdmf",
+                                             "solution_heat.xdmf"};
         deallog << c.name << ": " << full.n_steps << " steps, stopped after " << stop
                 << " (statistics.csv: " << rows_at_stop
                 << " lines), restarted: " << n_lines(c.name + "_stopped/statistics.csv")
@@ -223,6 +238,10 @@ namespace restart_tests
         deallog << "  largest difference of the particle displacements " << du
                 << ", of the FE displacements " << dU << ": "
                 << coupling_tests::ok(du == 0. && dU == 0.) << std::endl;
+        if (!full.T.empty())
+          deallog << "  largest difference of the heat's temperatures " << dT << ": "
+                  << coupling_tests::ok(dT == 0. && restarted.T.size() == full.T.size())
+                  << std::endl;
         for (const auto &file : files)
           if (std::filesystem::exists(c.name + "_full/" + file))
             {
@@ -246,17 +265,19 @@ namespace restart_tests
         const MPI_Comm on        = from_one ? MPI_COMM_WORLD : one;
         const Result   restarted = run(on, c.text, directory, 0, true);
         const Result  &reference = from_one ? full : full_one;
-        double         du = 0., dU = 0.;
+        double         du = 0., dU = 0., dT = 0.;
         if (on != MPI_COMM_NULL)
           {
             du = relative_difference(reference.u, restarted.u, on);
             dU = relative_difference(reference.U, restarted.U, on);
+            dT = relative_difference(reference.T, restarted.T, on);
           }
         if (root)
           deallog << "  stopped on " << (from_one ? 1 : 2) << " rank(s), restarted on "
                   << (from_one ? 2 : 1) << ": particle and FE displacements within "
                   << c.cross_rank_tolerance << " of the largest value: "
-                  << coupling_tests::ok(du < c.cross_rank_tolerance && dU < c.cross_rank_tolerance)
+                  << coupling_tests::ok(du < c.cross_rank_tolerance &&
+                                        dU < c.cross_rank_tolerance && dT < c.cross_rank_tolerance)
                   << ", statistics columns within round-off: "
                   << coupling_tests::ok(statistics_agree(c.name +
                                                            (from_one ? "_full" : "_full_one") +

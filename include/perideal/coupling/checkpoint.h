@@ -122,10 +122,10 @@ namespace perideal
                const RunPosition         &position);
 
     /**
-     * @brief Keep in memory what a checkpoint of @p position would hold (the stored parts and
-     * bond histories of @p state and of every physics of add_physics(), the broken bonds and the
-     * postprocessors' state): a quasi-static run keeps each converged load step before it (and
-     * the other physics) advance to the next one. Collective.
+     * @brief Keep in memory what a checkpoint of @p position would hold (each state keeps its
+     * own, CoupledState::keep(): @p state's and every physics' of add_physics(); here the
+     * broken bonds and the postprocessors' state): a quasi-static run keeps each converged load
+     * step before it (and the other physics) advance to the next one. Collective.
      */
     void
     keep(CoupledState<dim>         &state,
@@ -167,20 +167,10 @@ namespace perideal
     std::vector<CoupledState<dim> *>
     all_states(CoupledState<dim> &state) const;
 
-    /// What keep() keeps of one state: copies of its stored parts and of its bond histories.
-    struct KeptState
-    {
-      std::vector<ParticleVector> particle_vectors;
-      std::vector<double>         energy_density;
-      std::vector<FEVector>       fe_vectors;
-      std::vector<double>         sums;
-      std::vector<double>         history;
-    };
-
-    /// What keep() keeps: every state, the bond states, the postprocessors.
+    /// What keep() keeps besides the states (CoupledState::keep()): the bond states, the
+    /// postprocessors.
     struct Kept
     {
-      std::vector<KeptState>    states;
       std::vector<std::uint8_t> intact;
       std::string               postprocessors;
       RunPosition               position;

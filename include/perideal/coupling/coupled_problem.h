@@ -214,20 +214,25 @@ namespace perideal
 
     /**
      * @brief The sub-steps of the physics @p k of <Physics/List> within a step of the first
-     * physics (sub_steps) and its step (CoupledState::time_step): the fewest whose step is at
-     * most the one its solver chose (the safety factor times its stable step); logged. At the
-     * set-up and after each conversion of the adaptive PD region.
+     * physics: the fewest whose step is at most the one its solver chose (the safety factor
+     * times its stable step); their length goes to its CoupledState::time_step and to
+     * sub_steps; logged. At the set-up and after each conversion of the adaptive PD region.
      */
     void
     choose_sub_steps(const unsigned int k);
 
     /**
-     * @brief Advance the physics of <Physics/List> by operator splitting to the end of step
-     * @p step of the first physics (step 0: their initial state), their energies computed if
-     * @p with_energy (CoupledState::advance_other_physics).
+     * @brief Advance the physics of <Physics/List> by operator splitting over step @p step of
+     * the first physics, from @p time by @p dt (step 0: their initial state), their energies
+     * computed if @p with_energy (CoupledState::advance_other_physics): the fewest equal
+     * steps of at most its step of setup_other_physics() (the sub-steps of an explicit physics
+     * in a step of split_step(); fewer over a cut load step).
      */
     void
-    advance_other_physics(const unsigned int step, const bool with_energy);
+    advance_other_physics(const unsigned int step,
+                          const double       time,
+                          const double       dt,
+                          const bool         with_energy);
 
     /**
      * @brief The time a step of the first physics spans [s]: its explicit step as its run
@@ -268,9 +273,9 @@ namespace perideal
     ///@}
     /// <Solver/Control>: how a quasi-static run advances its load, and its load point.
     QuasiStaticControl control;
-    /// Per physics of <Physics/List>: the sub-steps of its explicit step in one step of the
-    /// first physics.
-    std::vector<unsigned int> sub_steps;
+    /// Per physics of <Physics/List>: the length of its steps [s] (its explicit sub-step, which
+    /// divides a step of the first physics; that step otherwise).
+    std::vector<double> sub_steps;
     /// What the physics publish for each other, and the bonds they share.
     PhysicsExchange<dim> exchange;
     std::string          blending_expression;

@@ -265,6 +265,22 @@ namespace perideal
     void
     load(CheckpointReader &reader, const std::string &prefix);
 
+    /**
+     * @brief Keep in memory what save() writes of this state (its stored parts and sums, the
+     * bond histories of its model), for restore_kept(): a quasi-static run keeps each converged
+     * load step (Checkpoint::keep()). The bond states are the bond list's, which the physics
+     * share: Checkpoint keeps them once.
+     */
+    void
+    keep();
+
+    /**
+     * @brief Put the state of the last keep() back; after the bond states (the model's
+     * histories belong to them).
+     */
+    void
+    restore_kept();
+
     /// The problem: its communicator, its log (written on rank 0, is_root), its settings, its
     /// particle and FE regions and its coupling method.
     ///@{
@@ -345,16 +361,29 @@ namespace perideal
     /**
      * @brief Runs with several physics (<Physics/List>; empty otherwise), set by CoupledProblem
      * on the first physics' state: its solver calls it with step 0 once the initial state is
-     * set, then with each step and whether the step computes energies (explicit: after the
-     * step, when it writes statistics or fields; quasi-static: before the load step's solve);
-     * it advances the other physics to the end of the step by operator splitting.
+     * set, then with each step, the time it starts at and its length [s], and whether the step
+     * computes energies (explicit: after the step, when it writes statistics or fields;
+     * quasi-static: before the load step's solve, over the time from the last converged load
+     * factor to the one solved, each times <Time stepping/End time>); it advances the other
+     * physics over that time by operator splitting.
      */
-    std::function<void(unsigned int, bool)> advance_other_physics;
+    std::function<void(unsigned int, double, double, bool)> advance_other_physics;
     /// Runs with several physics: where accumulate_dissipated_energy() records the bonds the
     /// force evaluation broke, for the physics that share them (PhysicsExchange::record()).
     std::vector<unsigned int> *broken_bond_record = nullptr;
 
   private:
+    /// What keep() keeps: copies of the stored parts, of the sums and of the bond histories.
+    struct Kept
+    {
+      std::vector<ParticleVector> particle_vectors;
+      std::vector<double>         energy_density;
+      std::vector<FEVector>       fe_vectors;
+      std::vector<double>         sums;
+      std::vector<double>         history;
+    };
+    /// The copy of the last keep().
+    Kept kept;
     // The state at the previous accumulate_work() and the work done so far on this rank.
     FEVector       previous_fe_load, previous_U;
     ParticleVector previous_u, previous_load;

@@ -287,7 +287,7 @@ namespace perideal
     state.start_work();
     state.fe_support.equ(-1., state.residual);
     if (state.advance_other_physics)
-      state.advance_other_physics(0, true);
+      state.advance_other_physics(0, 0., 0., true);
   }
 
   template <int dim>
@@ -370,7 +370,10 @@ namespace perideal
                 dt,
                 data.write_statistics || data.write_fields || check_regions);
         if (state.advance_other_physics)
-          state.advance_other_physics(step, data.write_statistics || data.write_fields);
+          state.advance_other_physics(step,
+                                      (step - 1) * dt,
+                                      dt,
+                                      data.write_statistics || data.write_fields);
 
         if (data.write_statistics)
           state.fe_support.equ(-1., state.residual);

@@ -267,7 +267,7 @@ namespace perideal
                 [&]() {
                   state.start_work();
                   if (state.advance_other_physics)
-                    state.advance_other_physics(0, true);
+                    state.advance_other_physics(0, 0., 0., true);
                 });
     // Without cutting, step k applies k/N; with cutting the load factor advances by increment.
     const double nominal   = 1. / n_steps;
@@ -275,14 +275,24 @@ namespace perideal
     unsigned int cuts = 0;
     for (unsigned int step = start.step + 1; cutting ? reached < 1. : step <= n_steps; ++step)
       {
-        // The state after the last converged step, for a checkpoint if this one fails (every
-        // physics', before the others advance).
+        // The state after the last converged step, for a checkpoint if this one fails and to
+        // go back to if it is cut (every physics', before the others advance).
         checkpoint.keep(state, postprocessors, {step - 1, reached, step});
-        // The other physics of a problem with several (their solve to the step's time first).
-        if (state.advance_other_physics)
-          state.advance_other_physics(step, true);
         const double factor = cutting ? std::min(1., reached + increment) : double(step) / n_steps;
-        const auto   broken_at_start = n_broken_bonds(ps);
+        // The other physics of a problem with several advance first, to the time of the load
+        // factor solved (load factor x End time; k/N of it without cuts).
+        if (state.advance_other_physics)
+          {
+            const double span = settings.end_time / n_steps;
+            if (cutting)
+              state.advance_other_physics(step,
+                                          reached * settings.end_time,
+                                          factor * settings.end_time - reached * settings.end_time,
+                                          true);
+            else
+              state.advance_other_physics(step, (step - 1) * span, span, true);
+          }
+        const auto broken_at_start = n_broken_bonds(ps);
 
         StepSolves solves;
         bool       failed = false;
@@ -382,7 +392,6 @@ namespace perideal
   {
     conditions_at(state, state.settings.end_time);
     state.start_work();
-    split_steps = 0;
   }
 
   template <int dim>
@@ -392,17 +401,12 @@ namespace perideal
                              const double       dt,
                              const bool)
   {
+    // The load factor of the time reached (load factor x End time), in load step k of N if it
+    // lies in ((k-1)/N, k/N].
     const auto        &settings = state.settings;
-    const unsigned int step     = ++split_steps;
-    const double       factor   = double(step) / settings.load_steps;
-    AssertThrow(step <= settings.load_steps &&
-                  std::abs(time + dt - factor * settings.end_time) <= 1e-12 * settings.end_time,
-                ExcMessage("A steady physics takes load step k of <Solver/Load steps> = " +
-                           std::to_string(settings.load_steps) +
-                           " at the time k/N <Time "
-                           "stepping/End time>; asked for its step " +
-                           std::to_string(step) + " to end at " +
-                           ParameterUtilities::format_number(time + dt) + " s."));
+    const double       factor   = (time + dt) / settings.end_time;
+    const unsigned int step     = static_cast<unsigned int>(
+      std::max(1., std::ceil(factor * settings.load_steps * (1. - 1e-12))));
     solve_load_step(state, factor, step);
     equilibrium_state(state);
   }

@@ -25,6 +25,11 @@ namespace perideal
    * steps>. The load factor is then the time column of the statistics (rows numbered by step),
    * and checkpoints are refused (the increment is not stored).
    *
+   * With several physics (<Physics/List>) the others advance before each solve
+   * (CoupledState::advance_other_physics), from the time of the last converged load factor to
+   * that of the one solved (load factor x <Time stepping/End time>); a step that is undone
+   * takes them back too, and they advance again to the cut load factor's time.
+   *
    * Refused before any work: velocity conditions (a quasi-static solve applies displacements),
    * no displacement condition at all, and for the static solve a translation that no
    * displacement condition holds (a singular system). After each step the postprocessors see
@@ -64,9 +69,9 @@ namespace perideal
     start_state(CoupledState<dim> &state) override;
 
     /**
-     * @brief Operator splitting: the next load step k of <Solver/Load steps> N, which must end
-     * at @p time + @p dt = k/N <Time stepping/End time> (the first physics' load step): its
-     * solve at load factor k/N, as run() takes it, and its equilibrium forces. Refused after N.
+     * @brief Operator splitting: the solve at the load factor of the time reached, (@p time +
+     * @p dt) / <Time stepping/End time> (the first physics' load factor: k/N of load step k of
+     * N, or a cut one), as run() solves a load step, and its equilibrium forces.
      */
     void
     advance(CoupledState<dim> &state,
@@ -157,8 +162,6 @@ namespace perideal
     /// The prescribed values and the loads at End time (particles, FE dofs).
     ParticleVector target, full_load;
     FEVector       fe_target, fe_full_load;
-    /// Operator splitting: the load steps advance() took.
-    unsigned int split_steps = 0;
   };
 } // namespace perideal
 

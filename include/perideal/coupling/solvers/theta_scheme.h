@@ -57,8 +57,9 @@ namespace perideal
     start_state(CoupledState<dim> &state) override;
 
     /**
-     * @brief One step from @p time to @p time + @p dt; @p dt must be the step of setup()
-     * (CoupledState::time_step: the diagonal D holds it); the energies are always computed.
+     * @brief One step from @p time to @p time + @p dt; a @p dt other than the last step's
+     * (CoupledState::time_step, which the diagonal D holds: a cut load step of the first
+     * physics) sets D anew (set_step()); the energies are always computed.
      */
     void
     advance(CoupledState<dim> &state,
@@ -82,6 +83,11 @@ namespace perideal
     /// The forces of the first step at @p time (after the initial state or a restart).
     void
     first_forces(CoupledState<dim> &state, const double time);
+
+    /// Steps of @p dt: CoupledState::time_step and the diagonal D = C / (theta dt) with the
+    /// particle convection's conductance, given to the method.
+    void
+    set_step(CoupledState<dim> &state, const double dt);
 
     /// The step that ends at @p time, from the state of the previous one.
     void
