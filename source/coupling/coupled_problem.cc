@@ -405,6 +405,7 @@ namespace perideal
     inputs.control            = control;
     inputs.exact_displacement = exact_displacement;
     inputs.exact_tolerance    = exact_tolerance;
+    inputs.method             = method.get();
     postprocessors            = std::make_unique<Postprocessors<dim>>(postprocessor_names, inputs);
     postprocessors->initialize(*state);
     check_other_physics();

@@ -100,6 +100,7 @@ namespace perideal
         field.solver->check(*field.state);
         PostprocessorInputs<dim> inputs;
         inputs.control       = control;
+        inputs.method        = field.method.get();
         field.postprocessors = std::make_unique<Postprocessors<dim>>(postprocessor_names, inputs);
         field.postprocessors->initialize(*field.state);
       }

@@ -19,6 +19,7 @@ namespace perideal
   {
     exact     = inputs.exact_displacement;
     tolerance = inputs.exact_tolerance;
+    method    = inputs.method;
   }
 
   template <int dim>
@@ -90,8 +91,9 @@ namespace perideal
     U_exact.update_ghost_values();
     state.method.interpolate_to_particles(U_exact, u_exact);
     u_exact.update_ghost_values();
-    state.method
-      .equilibrium_forces(U_exact, u_exact, state.f_ext, state.external_force, fe_residual, force);
+    Assert(method == &state.method, ExcMessage("ExactError needs the state's method."));
+    method
+      ->equilibrium_forces(U_exact, u_exact, state.f_ext, state.external_force, fe_residual, force);
     const auto &mask    = state.fe.prescribed_mask();
     double      largest = 0., scale = 0.;
     for (unsigned int k = 0; k < U_exact.locally_owned_size(); ++k)

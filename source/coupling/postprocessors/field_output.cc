@@ -93,20 +93,14 @@ namespace perideal
     state.U.update_ghost_values();
     if (settings.write_hdf5)
       {
-        // A file of its own has only its own record: the run's are set aside meanwhile.
-        const std::string records = state.fe.save_output_records();
-        if (data.not_converged)
-          {
-            const std::vector<char> none = Utilities::pack(std::vector<XDMFEntry>(), false);
-            state.fe.load_output_records(std::string(none.begin(), none.end()));
-          }
-        state.fe.write_output(state.settings.output_directory,
-                              state.settings.solution_name + suffix,
+        // A file of its own has only its own record: the run's are left as they are.
+        std::vector<XDMFEntry> own_record;
+        state.fe.write_output(settings.output_directory,
+                              settings.solution_name + suffix,
                               data.output_index,
                               data.time,
-                              state.U);
-        if (data.not_converged)
-          state.fe.load_output_records(records);
+                              state.U,
+                              data.not_converged ? own_record : fe_records);
       }
   }
 
@@ -127,12 +121,13 @@ namespace perideal
 
   template <int dim>
   std::string
-  FieldOutput<dim>::save_state(const CoupledState<dim> &state) const
+  FieldOutput<dim>::save_state(const CoupledState<dim> &) const
   {
+    const std::vector<char> fe_packed = Utilities::pack(fe_records, false);
     const std::vector<char> packed =
       Utilities::pack(std::make_pair(particle_output ? particle_output->save_records() :
                                                        std::string(),
-                                     state.fe.save_output_records()),
+                                     std::string(fe_packed.begin(), fe_packed.end())),
                       false);
     return std::string(packed.begin(), packed.end());
   }
@@ -153,7 +148,9 @@ namespace perideal
         if (particle_output)
           particle_output->load_records(records.first);
       }
-    state.fe.load_output_records(records.second);
+    fe_records = Utilities::unpack<std::vector<XDMFEntry>>(std::vector<char>(records.second.begin(),
+                                                                             records.second.end()),
+                                                           false);
   }
 
   template class FieldOutput<2>;
