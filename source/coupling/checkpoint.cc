@@ -44,7 +44,7 @@ namespace perideal
     unsigned int
     history_values(CoupledState<dim> &state)
     {
-      return state.pd.has_body() ? state.pd.material().n_bond_history_values() : 0;
+      return state.pd().has_body() ? state.pd().material().n_bond_history_values() : 0;
     }
 
     // @p lines ("key = value" lines) with every key prefixed by @p prefix.
@@ -184,10 +184,10 @@ namespace perideal
           for (const double *sum : *part)
             copy.sums.push_back(*sum);
         copy.history = history_values(*states[s]) > 0 ?
-                         states[s]->pd.material().bond_history(states[s]->pd.particles()) :
+                         states[s]->pd().material().bond_history(states[s]->pd().particles()) :
                          std::vector<double>();
       }
-    kept.intact         = state.pd.particles().bonds().intact;
+    kept.intact         = state.pd().particles().bonds().intact;
     kept.postprocessors = postprocessors.save_state(state);
     kept.position       = position;
     kept.valid          = true;
@@ -200,7 +200,7 @@ namespace perideal
     Assert(kept.valid, ExcMessage("restore_kept() without keep()."));
     const auto states = all_states(state);
     // The bonds first: the models' histories belong to the states of the bonds.
-    state.pd.particles().bonds().set_states(kept.intact);
+    state.pd().particles().bonds().set_states(kept.intact);
     for (unsigned int s = 0; s < states.size(); ++s)
       {
         auto             parts = states[s]->stored_parts();
@@ -215,7 +215,7 @@ namespace perideal
           for (double *value : *part)
             *value = *sum++;
         if (history_values(*states[s]) > 0)
-          states[s]->pd.material().set_bond_history(states[s]->pd.particles(), copy.history);
+          states[s]->pd().material().set_bond_history(states[s]->pd().particles(), copy.history);
       }
     return kept.position;
   }
@@ -235,7 +235,7 @@ namespace perideal
                          const std::string &postprocessor_state,
                          const RunPosition &position) const
   {
-    const MPI_Comm   comm = state.comm;
+    const MPI_Comm   comm = state.comm();
     CheckpointWriter writer(comm);
     for (const auto &[key, value] : parse_lines(fingerprint(state)))
       writer.add_line(key, value);
@@ -244,26 +244,26 @@ namespace perideal
     writer.add_line("time", exact_number(position.time));
     writer.add_line("next output", std::to_string(position.next_output));
     // The bonds once (the physics share them), then each physics' state.
-    state.pd.save_bond_states(writer, "broken bonds");
+    state.pd().save_bond_states(writer, "broken bonds");
     state.save(writer, "");
     for (const auto &other : others)
       other.state->save(writer, other.name + "/");
     // The postprocessors' state: rank 0's.
     writer.add_bytes("postprocessors",
-                     state.is_root ?
+                     state.is_root() ?
                        std::vector<char>(postprocessor_state.begin(), postprocessor_state.end()) :
                        std::vector<char>());
 
     const std::string temporary = file + ".tmp";
-    if (state.is_root)
-      std::filesystem::create_directories(state.settings.output_directory);
+    if (state.is_root())
+      std::filesystem::create_directories(state.settings().output_directory);
     writer.write(temporary);
     // Complete on every rank: replace the previous checkpoint (rename is atomic).
     MPI_Barrier(comm);
-    if (state.is_root)
+    if (state.is_root())
       {
         std::filesystem::rename(temporary, file);
-        state.log << "Checkpoint of step " << position.step << ": " << file << std::endl;
+        state.log() << "Checkpoint of step " << position.step << ": " << file << std::endl;
       }
     MPI_Barrier(comm);
   }
@@ -272,7 +272,7 @@ namespace perideal
   RunPosition
   Checkpoint<dim>::load(CoupledState<dim> &state, Postprocessors<dim> &postprocessors)
   {
-    CheckpointReader in(state.comm,
+    CheckpointReader in(state.comm(),
                         file,
                         ", so the run cannot restart (--restart continues from the checkpoint in "
                         "<Output/Directory>, written by <Output/Checkpoint interval> or "
@@ -293,7 +293,7 @@ namespace perideal
                       "or start the run without --restart. Nothing was written."));
       }
 
-    state.pd.load_bond_states(in, "broken bonds");
+    state.pd().load_bond_states(in, "broken bonds");
     state.load(in, "");
     for (const auto &other : others)
       other.state->load(in, other.name + "/");
@@ -307,9 +307,9 @@ namespace perideal
     position.time        = std::stod(header.at("time"));
     position.next_output = in.number("next output");
     previous_time        = position.time;
-    if (state.is_root)
-      state.log << "Restart from the checkpoint of step " << position.step << ": " << file
-                << std::endl;
+    if (state.is_root())
+      state.log() << "Restart from the checkpoint of step " << position.step << ": " << file
+                  << std::endl;
     return position;
   }
 

@@ -423,10 +423,11 @@ namespace perideal
       log << "Coupling: " << method_name << ", " << coupling_summary << std::endl;
     if (adaptive.enabled())
       {
-        state->adapt_regions = [this](const unsigned int step, const double time) {
-          return convert_regions(step, time);
-        };
-        state->adaptation_interval = adaptive.check_interval();
+        state->set_adaptive_region(
+          [this](const unsigned int step, const double time) {
+            return convert_regions(step, time);
+          },
+          adaptive.check_interval());
       }
     solver->setup(*state);
     setup_other_physics();

@@ -144,10 +144,11 @@ namespace perideal
           if (field.layout.kind(c) == ComponentKind::temperature)
             exchange.publish("temperature", field.state->u, field.state->U, field.layout, c);
       }
-    state->broken_bond_record    = &exchange.record();
-    state->advance_other_physics = [this](const unsigned int step, const bool with_energy) {
-      advance_other_physics(step, with_energy);
-    };
+    state->set_other_physics(
+      [this](const unsigned int step, const bool with_energy) {
+        advance_other_physics(step, with_energy);
+      },
+      exchange.record());
   }
 
   template <int dim>

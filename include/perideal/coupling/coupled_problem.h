@@ -215,7 +215,7 @@ namespace perideal
     /**
      * @brief Advance the physics of <Physics/List> by operator splitting to the end of step
      * @p step of the first physics (step 0: their initial state), their energies computed if
-     * @p with_energy (CoupledState::advance_other_physics).
+     * @p with_energy (CoupledState::advance_other_physics()).
      */
     void
     advance_other_physics(const unsigned int step, const bool with_energy);
@@ -229,7 +229,7 @@ namespace perideal
     split_step() const;
 
     /**
-     * @brief The adaptive PD region of an explicit run (CoupledState::adapt_regions) after step
+     * @brief The adaptive PD region of an explicit run (CoupledState::adapt_regions()) after step
      * @p step at @p time: the criterion's seeds, if any, grow the PD region; the particles, the
      * FE space, the coupling and the state are rebuilt and the unknowns carried over (free
      * particles keep theirs and their broken bonds, the others take the FE field's, the FE dofs

@@ -25,7 +25,7 @@ namespace perideal
   {
     if (!data.write_fields)
       return;
-    const auto &settings = state.settings;
+    const auto &settings = state.settings();
     // The state of a step that did not converge: files of their own, outside the run's series.
     const std::string                    suffix = data.not_converged ? "_not_converged" : "";
     std::unique_ptr<ParticleOutput<dim>> separate;
@@ -36,12 +36,12 @@ namespace perideal
     ParticleOutput<dim> *const writer = data.not_converged ? separate.get() : particle_output.get();
     if (writer)
       {
-        const auto        &ps      = state.pd.particles();
+        const auto        &ps      = state.pd().particles();
         const unsigned int n_owned = ps.n_owned(), nc = state.n_components();
         const auto        &x = ps.positions();
         // The particles slaved to the FE field move with it: show its velocity there.
         ParticleVector velocity(state.v);
-        state.method.interpolate_to_particles(state.V, velocity);
+        state.method().interpolate_to_particles(state.V, velocity);
         writer->clear_fields();
         writer->set_points(std::vector<Point<dim>>(x.begin(), x.begin() + n_owned));
         // The fields of each group of components (output_names()): displacement, velocity and
@@ -53,7 +53,7 @@ namespace perideal
           std::vector<unsigned int>  components;
           std::array<std::string, 3> names;
         };
-        const FieldLayout &layout = state.layout;
+        const FieldLayout &layout = state.layout();
         std::vector<Group> groups;
         for (unsigned int c = 0; c < nc; ++c)
           {
@@ -83,7 +83,7 @@ namespace perideal
               writer->add_vector_field(group.names[2], n, values(state.internal_force));
             }
         state.u.update_ghost_values();
-        for (const auto &field : state.pd.material().derived_fields(ps, state.u))
+        for (const auto &field : state.pd().material().derived_fields(ps, state.u))
           writer->add_vector_field(field.name, field.n_components, field.values);
         writer->add_scalar_field("damage", damage_index(ps));
         if (state.energy_density.size() == n_owned)
@@ -95,12 +95,12 @@ namespace perideal
       {
         // A file of its own has only its own record: the run's are left as they are.
         std::vector<XDMFEntry> own_record;
-        state.fe.write_output(settings.output_directory,
-                              settings.solution_name + suffix,
-                              data.output_index,
-                              data.time,
-                              state.U,
-                              data.not_converged ? own_record : fe_records);
+        state.fe().write_output(settings.output_directory,
+                                settings.solution_name + suffix,
+                                data.output_index,
+                                data.time,
+                                state.U,
+                                data.not_converged ? own_record : fe_records);
       }
   }
 
@@ -109,9 +109,9 @@ namespace perideal
   FieldOutput<dim>::create_particle_output(const CoupledState<dim> &state,
                                            const std::string       &base_name)
   {
-    const auto &settings = state.settings;
-    if (state.pd.has_body() && (settings.write_hdf5 || settings.write_vtu))
-      return std::make_unique<ParticleOutput<dim>>(state.comm,
+    const auto &settings = state.settings();
+    if (state.pd().has_body() && (settings.write_hdf5 || settings.write_vtu))
+      return std::make_unique<ParticleOutput<dim>>(state.comm(),
                                                    settings.output_directory,
                                                    base_name,
                                                    settings.write_hdf5,
@@ -144,7 +144,7 @@ namespace perideal
     // at the last load step only); the writer is then created by the first output.
     if (!records.first.empty())
       {
-        particle_output = create_particle_output(state, state.settings.base_name);
+        particle_output = create_particle_output(state, state.settings().base_name);
         if (particle_output)
           particle_output->load_records(records.first);
       }
