@@ -29,7 +29,7 @@ namespace perideal
     std::ostringstream when;
     when << "At step " << step << " (t = " << time << " s)";
     const auto seeds = adaptive.propose_seeds(
-      *state,
+      state(),
       [this](const Point<dim> &x) { return blending(x); },
       [this](const Point<dim> &x) { return pd.in_body(x); },
       precrack_damage,
@@ -45,7 +45,7 @@ namespace perideal
     const unsigned int nc     = layout.n_components();
     auto              &ps     = pd.particles();
     const auto        &x      = ps.positions();
-    const auto        &slaved = method->slaved_particles();
+    const auto        &slaved = method().slaved_particles();
     std::unordered_map<Key, std::vector<double>, typename Lattice<dim>::KeyHash> free_values;
     for (unsigned int i = 0; i < ps.n_owned(); ++i)
       if (!slaved[i])
@@ -53,8 +53,8 @@ namespace perideal
           std::vector<double> &values = free_values[lattice.key(x[i])];
           for (unsigned int c = 0; c < nc; ++c)
             {
-              values.push_back(state->u.local_element(i * nc + c));
-              values.push_back(state->v.local_element(i * nc + c));
+              values.push_back(state().u.local_element(i * nc + c));
+              values.push_back(state().v.local_element(i * nc + c));
             }
         }
     std::set<std::pair<Key, Key>> broken;
@@ -67,7 +67,7 @@ namespace perideal
     }
     const unsigned int n_particles_before = ps.n_global();
     const auto         n_dofs_before      = fe.n_dofs();
-    const FEVector     U_before = state->U, V_before = state->V;
+    const FEVector     U_before = state().U, V_before = state().V;
     U_before.update_ghost_values();
     V_before.update_ghost_values();
     std::map<CellId, std::pair<Vector<double>, Vector<double>>> cell_values;
@@ -121,16 +121,16 @@ namespace perideal
     }
 
     // The FE space without the cells that became PD only, the coupling and the state.
-    fe.reweight([this](const Point<dim> &p) { return method->fe_weight(blending(p)); });
-    method->initialize(coupled_regions(*physics[0]));
-    state->setup();
+    fe.reweight([this](const Point<dim> &p) { return method().fe_weight(blending(p)); });
+    method().initialize(coupled_regions(*physics[0]));
+    state().setup();
     for (unsigned int k = 0; k < std::size_t(ps.n_owned()) * nc; ++k)
       {
-        state->u.local_element(k) = u_new.local_element(k);
-        state->v.local_element(k) = v_new.local_element(k);
+        state().u.local_element(k) = u_new.local_element(k);
+        state().v.local_element(k) = v_new.local_element(k);
       }
-    state->u.update_ghost_values();
-    state->v.update_ghost_values();
+    state().u.update_ghost_values();
+    state().v.update_ghost_values();
     std::vector<types::global_dof_index> dofs;
     for (const auto &cell : fe.get_dof_handler().active_cell_iterators())
       if (cell->is_locally_owned() && cell->active_fe_index() == 0)
@@ -141,15 +141,15 @@ namespace perideal
           dofs.resize(cell->get_fe().n_dofs_per_cell());
           cell->get_dof_indices(dofs);
           for (unsigned int k = 0; k < dofs.size(); ++k)
-            if (state->U.locally_owned_elements().is_element(dofs[k]))
+            if (state().U.locally_owned_elements().is_element(dofs[k]))
               {
-                state->U(dofs[k]) = found->second.first[k];
-                state->V(dofs[k]) = found->second.second[k];
+                state().U(dofs[k]) = found->second.first[k];
+                state().V(dofs[k]) = found->second.second[k];
               }
         }
-    state->U.update_ghost_values();
-    state->V.update_ghost_values();
-    postprocessors->initialize(*state);
+    state().U.update_ghost_values();
+    state().V.update_ghost_values();
+    postprocessors().initialize(state());
 
     if (is_root)
       log << when.str() << ": the PD region grew by " << seeds.size() << " disk"

@@ -81,28 +81,29 @@ namespace perideal
         Physics<dim> &field = *physics[k];
         field.with_entry_names([&]() {
           field.fe.setup(
-            [&field, this](const Point<dim> &x) { return field.method->fe_weight(blending(x)); });
+            [&field, this](const Point<dim> &x) { return field.method().fe_weight(blending(x)); });
           // The particles are the first physics': only this physics' model is set up on them.
           field.pd.setup({}, {}, false);
         });
         if (is_root && field.pd.has_body())
           log << "Material (" << field.name << "): " << field.pd.material().summary() << std::endl;
-        field.method->initialize(coupled_regions(field));
-        field.state = std::make_unique<CoupledState<dim>>(comm,
-                                                          log,
-                                                          field.settings,
-                                                          field.layout,
-                                                          field.pd,
-                                                          field.fe,
-                                                          *field.method);
-        field.state->setup();
-        field.solver = create_solver<dim>(field.settings.solver_type, control);
-        field.solver->check(*field.state);
+        field.method().initialize(coupled_regions(field));
+        field.set_state(std::make_unique<CoupledState<dim>>(comm,
+                                                            log,
+                                                            field.settings,
+                                                            field.layout,
+                                                            field.pd,
+                                                            field.fe,
+                                                            field.method()));
+        field.state().setup();
+        field.set_solver(create_solver<dim>(field.settings.solver_type, control));
+        field.solver().check(field.state());
         PostprocessorInputs<dim> inputs;
-        inputs.control       = control;
-        inputs.method        = field.method.get();
-        field.postprocessors = std::make_unique<Postprocessors<dim>>(postprocessor_names, inputs);
-        field.postprocessors->initialize(*field.state);
+        inputs.control = control;
+        inputs.method  = &field.method();
+        field.set_postprocessors(
+          std::make_unique<Postprocessors<dim>>(postprocessor_names, inputs));
+        field.postprocessors().initialize(field.state());
       }
   }
 
@@ -122,29 +123,29 @@ namespace perideal
         // take it.
         if (field.settings.solver_type == SolverType::implicit)
           field.settings.time_step = split_step();
-        field.solver->setup(*field.state);
+        field.solver().setup(field.state());
         // A steady physics solves once per load step.
         const double step_length = split_step();
         if (field.settings.solver_type == SolverType::static_linear)
-          field.state->time_step = step_length;
+          field.state().time_step = step_length;
         // The largest step of at most its own (the safety factor times its stable step) that
         // divides the first physics' step, as its run takes it.
 
         const auto n = static_cast<unsigned int>(
-          std::max(1., std::ceil(step_length / field.state->time_step * (1. - 1e-12))));
-        field.state->time_step = step_length / n;
-        sub_steps[k - 1]       = n;
+          std::max(1., std::ceil(step_length / field.state().time_step * (1. - 1e-12))));
+        field.state().time_step = step_length / n;
+        sub_steps[k - 1]        = n;
         if (is_root && field.settings.solver_type == SolverType::static_linear)
           log << "  a steady solve before each load step of the first physics" << std::endl;
         else if (is_root)
-          log << "  " << n << " step" << (n > 1 ? "s" : "") << " of " << field.state->time_step
+          log << "  " << n << " step" << (n > 1 ? "s" : "") << " of " << field.state().time_step
               << " s per step of the first physics" << std::endl;
-        postprocessors->add_physics(field.name, *field.state, *field.postprocessors);
+        postprocessors().add_physics(field.name, field.state(), field.postprocessors());
         for (unsigned int c = 0; c < field.layout.n_components(); ++c)
           if (field.layout.kind(c) == ComponentKind::temperature)
-            exchange.publish("temperature", field.state->u, field.state->U, field.layout, c);
+            exchange.publish("temperature", field.state().u, field.state().U, field.layout, c);
       }
-    state->set_other_physics(
+    state().set_other_physics(
       [this](const unsigned int step, const bool with_energy) {
         advance_other_physics(step, with_energy);
       },
@@ -162,20 +163,20 @@ namespace perideal
         Physics<dim> &field = *physics[k];
         if (step == 0)
           {
-            field.solver->start_state(*field.state);
+            field.solver().start_state(field.state());
             continue;
           }
         const unsigned int n     = sub_steps[k - 1];
-        const double       dt    = field.state->time_step;
+        const double       dt    = field.state().time_step;
         const double       start = (step - 1) * split_step();
         if (resume_other_physics)
-          field.solver->resume_state(*field.state, start);
+          field.solver().resume_state(field.state(), start);
         for (unsigned int s = 0; s < n; ++s)
-          field.solver->advance(*field.state, start + s * dt, dt, with_energy && s + 1 == n);
+          field.solver().advance(field.state(), start + s * dt, dt, with_energy && s + 1 == n);
         // The force of the supports, for the reactions (explicit runs keep it from the last
         // step's residual).
         if (with_energy && field.settings.solver_type == SolverType::explicit_dynamics)
-          field.state->fe_support.equ(-1., field.state->residual);
+          field.state().fe_support.equ(-1., field.state().residual);
       }
     resume_other_physics = resume_other_physics && step == 0;
   }
@@ -186,7 +187,7 @@ namespace perideal
   {
     if (settings.solver_type != SolverType::explicit_dynamics)
       return settings.end_time / settings.load_steps;
-    double dt = state->time_step;
+    double dt = state().time_step;
     ParameterUtilities::equal_time_steps(settings.end_time, dt);
     return dt;
   }

@@ -204,7 +204,7 @@ end
     const auto                     &ps      = problem.particles();
     const auto                     &physics = problem.get_physics();
     const perideal::ParticleVector *temperature =
-      fields == Fields::both ? &physics[1]->state->u :
+      fields == Fields::both ? &physics[1]->state().u :
       fields == Fields::heat ? &problem.particle_displacement() :
                                nullptr;
     if (fields != Fields::heat)

@@ -25,6 +25,7 @@
 #include <memory>
 #include <ostream>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace perideal
@@ -246,14 +247,13 @@ namespace perideal
     /// The physics, the first one (of the top-level sections) first.
     std::vector<std::unique_ptr<Physics<dim>>> physics;
     /// The first physics' parts: its settings (the problem's), unknowns, regions (which own the
-    /// geometry the other physics share) and coupling method.
+    /// geometry the other physics share) and <Coupling/Method>.
     ///@{
-    ProblemSettings<dim>                 &settings;
-    FieldLayout                          &layout;
-    ParticleRegion<dim>                  &pd;
-    FERegion<dim>                        &fe;
-    std::string                          &method_name;
-    std::unique_ptr<CouplingMethod<dim>> &method;
+    ProblemSettings<dim> &settings;
+    FieldLayout          &layout;
+    ParticleRegion<dim>  &pd;
+    FERegion<dim>        &fe;
+    std::string          &method_name;
     ///@}
     /// <Solver/Control>: how a quasi-static run advances its load, and its load point.
     QuasiStaticControl control;
@@ -280,11 +280,43 @@ namespace perideal
     /// first step (Solver::resume_state()).
     bool resume_other_physics = false;
 
-    /// The first physics' state, solver and postprocessors.
+    /// The first physics' coupling method, state, solver and postprocessors (its accessors).
     ///@{
-    std::unique_ptr<CoupledState<dim>>   &state;
-    std::unique_ptr<Solver<dim>>         &solver;
-    std::unique_ptr<Postprocessors<dim>> &postprocessors;
+    CouplingMethod<dim> &
+    method()
+    {
+      return physics[0]->method();
+    }
+
+    const CouplingMethod<dim> &
+    method() const
+    {
+      return std::as_const(*physics[0]).method();
+    }
+
+    CoupledState<dim> &
+    state()
+    {
+      return physics[0]->state();
+    }
+
+    const CoupledState<dim> &
+    state() const
+    {
+      return std::as_const(*physics[0]).state();
+    }
+
+    Solver<dim> &
+    solver()
+    {
+      return physics[0]->solver();
+    }
+
+    Postprocessors<dim> &
+    postprocessors()
+    {
+      return physics[0]->postprocessors();
+    }
     ///@}
   };
 } // namespace perideal
