@@ -42,7 +42,7 @@ namespace perideal
     // The number of values per bond of the material model's bond histories (0 without one).
     template <int dim>
     unsigned int
-    history_values(CoupledState<dim> &state)
+    history_values(const CoupledState<dim> &state)
     {
       return state.pd().has_body() ? state.pd().material().n_bond_history_values() : 0;
     }
@@ -115,7 +115,7 @@ namespace perideal
 
   template <int dim>
   std::string
-  Checkpoint<dim>::fingerprint(CoupledState<dim> &state) const
+  Checkpoint<dim>::fingerprint(const CoupledState<dim> &state) const
   {
     std::string list;
     for (const auto &other : others)
@@ -231,9 +231,9 @@ namespace perideal
 
   template <int dim>
   void
-  Checkpoint<dim>::write(CoupledState<dim> &state,
-                         const std::string &postprocessor_state,
-                         const RunPosition &position) const
+  Checkpoint<dim>::write(const CoupledState<dim> &state,
+                         const std::string       &postprocessor_state,
+                         const RunPosition       &position) const
   {
     const MPI_Comm   comm = state.comm();
     CheckpointWriter writer(comm);

@@ -167,14 +167,43 @@ namespace perideal
   }
 
   template <int dim>
+  template <typename State>
+  typename CoupledState<dim>::template Parts<std::is_const_v<State>>
+  CoupledState<dim>::parts_of(State &state)
+  {
+    return {{&state.u,
+             &state.v,
+             &state.a,
+             &state.internal_force,
+             &state.external_force,
+             &state.previous_u,
+             &state.previous_load},
+            &state.energy_density,
+            {&state.U,
+             &state.V,
+             &state.A,
+             &state.f_ext,
+             &state.residual,
+             &state.fe_load,
+             &state.fe_support,
+             &state.previous_fe_load,
+             &state.previous_U},
+            {&state.local_work, &state.local_dissipated, &state.local_heat_in},
+            {&state.stored_heat_at_start}};
+  }
+
+  template <int dim>
   typename CoupledState<dim>::StoredParts
   CoupledState<dim>::stored_parts()
   {
-    return {{&u, &v, &a, &internal_force, &external_force, &previous_u, &previous_load},
-            &energy_density,
-            {&U, &V, &A, &f_ext, &residual, &fe_load, &fe_support, &previous_fe_load, &previous_U},
-            {&local_work, &local_dissipated, &local_heat_in},
-            {&stored_heat_at_start}};
+    return parts_of(*this);
+  }
+
+  template <int dim>
+  typename CoupledState<dim>::ConstStoredParts
+  CoupledState<dim>::stored_parts() const
+  {
+    return parts_of(*this);
   }
 
   template <int dim>

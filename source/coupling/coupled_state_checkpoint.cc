@@ -11,7 +11,7 @@ namespace perideal
 
   template <int dim>
   std::string
-  CoupledState<dim>::fingerprint(const std::string &prefix)
+  CoupledState<dim>::fingerprint(const std::string &prefix) const
   {
     const auto         parts = stored_parts();
     const unsigned int fe_dofs_per_cell =
@@ -33,7 +33,7 @@ namespace perideal
 
   template <int dim>
   void
-  CoupledState<dim>::save(CheckpointWriter &writer, const std::string &prefix)
+  CoupledState<dim>::save(CheckpointWriter &writer, const std::string &prefix) const
   {
     const auto          parts = stored_parts();
     std::vector<double> sums;
@@ -97,9 +97,9 @@ namespace perideal
     U.update_ghost_values();
   }
 
-#define PERIDEAL_INSTANTIATE(dim)                                                        \
-  template std::string CoupledState<dim>::fingerprint(const std::string &);              \
-  template void        CoupledState<dim>::save(CheckpointWriter &, const std::string &); \
+#define PERIDEAL_INSTANTIATE(dim)                                                              \
+  template std::string CoupledState<dim>::fingerprint(const std::string &) const;              \
+  template void        CoupledState<dim>::save(CheckpointWriter &, const std::string &) const; \
   template void        CoupledState<dim>::load(CheckpointReader &, const std::string &);
   PERIDEAL_INSTANTIATE(2)
   PERIDEAL_INSTANTIATE(3)

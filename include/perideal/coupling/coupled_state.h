@@ -17,6 +17,7 @@
 #include <functional>
 #include <ostream>
 #include <string>
+#include <type_traits>
 #include <vector>
 
 namespace perideal
@@ -215,30 +216,45 @@ namespace perideal
                  const double       local_largest,
                  const double       local_scale) const;
 
-    /// Pointers to the parts of the state that change during a run (stored_parts()).
-    struct StoredParts
+    /// Pointers to the parts of the state that change during a run (stored_parts()), to const
+    /// parts if @p constant.
+    template <bool constant>
+    struct Parts
     {
+      /// A pointer to a part.
+      template <typename T>
+      using Pointer = std::conditional_t<constant, const T *, T *>;
       /// Every particle vector, and the particles' strain-energy density.
       ///@{
-      std::vector<ParticleVector *> particle_vectors;
-      std::vector<double>          *energy_density;
+      std::vector<Pointer<ParticleVector>> particle_vectors;
+      Pointer<std::vector<double>>         energy_density;
       ///@}
       /// Every FE vector.
-      std::vector<FEVector *> fe_vectors;
+      std::vector<Pointer<FEVector>> fe_vectors;
       /// This rank's sums of the work of the loads, of the dissipated energy and of the heat in
       /// through the conditions.
-      std::vector<double *> sums;
+      std::vector<Pointer<double>> sums;
       /// What is the same on every rank: the stored heat at start_work().
-      std::vector<double *> totals;
+      std::vector<Pointer<double>> totals;
     };
+    /// The parts to change (a restart) and the parts to read (a checkpoint).
+    ///@{
+    using StoredParts      = Parts<false>;
+    using ConstStoredParts = Parts<true>;
+    ///@}
 
     /**
      * @brief What a checkpoint holds of this state: everything that changes during a run, the
      * previous state of the work of the loads and this rank's partial sums included, so that a
      * restarted run repeats the uninterrupted one bit for bit on the same number of ranks.
      */
+    ///@{
     StoredParts
     stored_parts();
+
+    ConstStoredParts
+    stored_parts() const;
+    ///@}
 
     /**
      * @brief The lines "key = value" of this state in a checkpoint's fingerprint, each key
@@ -246,7 +262,7 @@ namespace perideal
      * the stored vectors and the values per bond history of the model. Collective.
      */
     std::string
-    fingerprint(const std::string &prefix);
+    fingerprint(const std::string &prefix) const;
 
     /**
      * @brief Add the sections of this state to @p writer, named with @p prefix: this rank's sums,
@@ -256,7 +272,7 @@ namespace perideal
      * physics). Collective.
      */
     void
-    save(CheckpointWriter &writer, const std::string &prefix);
+    save(CheckpointWriter &writer, const std::string &prefix) const;
 
     /**
      * @brief Restore what save() wrote with @p prefix from @p reader (on another number of ranks
@@ -471,6 +487,11 @@ namespace perideal
     ///@}
 
   private:
+    // The parts of stored_parts() of @p state, a CoupledState or a const one.
+    template <typename State>
+    static Parts<std::is_const_v<State>>
+    parts_of(State &state);
+
     // The problem's parts (the accessors above).
     const MPI_Comm              mpi_communicator;
     std::ostream               &log_stream;

@@ -277,9 +277,9 @@ namespace perideal
      * any number of ranks). Collective.
      */
     void
-    save_dof_values(CheckpointWriter              &writer,
-                    const std::string             &name,
-                    const std::vector<FEVector *> &vectors) const;
+    save_dof_values(CheckpointWriter                    &writer,
+                    const std::string                   &name,
+                    const std::vector<const FEVector *> &vectors) const;
 
     /// Read the values of save_dof_values() into @p vectors (owned entries; every rank reads
     /// the whole section). Collective.
