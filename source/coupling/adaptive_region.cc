@@ -267,12 +267,12 @@ namespace perideal
     };
 
     // FE cells whose principal strain exceeds the fraction of the critical stretch.
-    const auto &fe = state.fe;
+    const auto &fe = state.fe();
     if ((criterion == Criterion::principal_strain ||
          criterion == Criterion::principal_strain_and_damage) &&
         fe.n_dofs() > 0)
       {
-        const double         limit = strain_fraction * state.pd.critical_stretch();
+        const double         limit = strain_fraction * state.pd().critical_stretch();
         const MappingQ1<dim> mapping;
         Point<dim>           unit_centre;
         for (unsigned int d = 0; d < dim; ++d)
@@ -310,7 +310,7 @@ namespace perideal
     // Damaged particles near the edge of the PD-only zone.
     if (criterion == Criterion::damage || criterion == Criterion::principal_strain_and_damage)
       {
-        const auto &ps         = state.pd.particles();
+        const auto &ps         = state.pd().particles();
         const auto &x          = ps.positions();
         const auto  damage     = damage_index(ps);
         const auto  directions = edge_directions<dim>();
@@ -350,11 +350,11 @@ namespace perideal
                 }
               flag(centre);
             }
-        check_crack_inside(least_beta, where, state.comm, when);
+        check_crack_inside(least_beta, where, state.comm(), when);
       }
 
     // The same list on every rank, in lexicographic order, thinned to one point per R/2.
-    const auto              all = Utilities::MPI::all_gather(state.comm, flagged);
+    const auto              all = Utilities::MPI::all_gather(state.comm(), flagged);
     std::vector<Point<dim>> points;
     for (const auto &part : all)
       for (std::size_t k = 0; k + dim <= part.size(); k += dim)

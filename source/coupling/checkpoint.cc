@@ -107,7 +107,7 @@ namespace perideal
 
   template <int dim>
   std::string
-  Checkpoint<dim>::fingerprint(CoupledState<dim> &state) const
+  Checkpoint<dim>::fingerprint(const CoupledState<dim> &state) const
   {
     std::string list;
     for (const auto &other : others)
@@ -160,7 +160,7 @@ namespace perideal
   {
     for (auto *each : all_states(state))
       each->keep();
-    kept.intact         = state.pd.particles().bonds().intact;
+    kept.intact         = state.pd().particles().bonds().intact;
     kept.postprocessors = postprocessors.save_state(state);
     kept.position       = position;
     kept.valid          = true;
@@ -171,12 +171,10 @@ namespace perideal
   Checkpoint<dim>::restore_kept(CoupledState<dim> &state) const
   {
     Assert(kept.valid, ExcMessage("restore_kept() without keep()."));
-    // The bonds first: the models' histories belong to the states of the bonds. Those broken
-    // since keep() are intact again, so the record of them for the other physics goes too
-    // (set_states() shows every physics' kernel the kept states).
-    state.pd.particles().bonds().set_states(kept.intact);
-    if (state.broken_bond_record != nullptr)
-      state.broken_bond_record->clear();
+    // The bonds first: the models' histories belong to the states of the bonds (set_states()
+    // shows every physics' kernel the kept states; CoupledState::restore_kept() drops the record
+    // of the bonds broken since keep()).
+    state.pd().particles().bonds().set_states(kept.intact);
     for (auto *each : all_states(state))
       each->restore_kept();
     return kept.position;
@@ -193,11 +191,11 @@ namespace perideal
 
   template <int dim>
   void
-  Checkpoint<dim>::write(CoupledState<dim> &state,
-                         const std::string &postprocessor_state,
-                         const RunPosition &position) const
+  Checkpoint<dim>::write(const CoupledState<dim> &state,
+                         const std::string       &postprocessor_state,
+                         const RunPosition       &position) const
   {
-    const MPI_Comm   comm = state.comm;
+    const MPI_Comm   comm = state.comm();
     CheckpointWriter writer(comm);
     for (const auto &[key, value] : parse_lines(fingerprint(state)))
       writer.add_line(key, value);
@@ -206,26 +204,26 @@ namespace perideal
     writer.add_line("time", exact_number(position.time));
     writer.add_line("next output", std::to_string(position.next_output));
     // The bonds once (the physics share them), then each physics' state.
-    state.pd.save_bond_states(writer, "broken bonds");
+    state.pd().save_bond_states(writer, "broken bonds");
     state.save(writer, "");
     for (const auto &other : others)
       other.state->save(writer, other.name + "/");
     // The postprocessors' state: rank 0's.
     writer.add_bytes("postprocessors",
-                     state.is_root ?
+                     state.is_root() ?
                        std::vector<char>(postprocessor_state.begin(), postprocessor_state.end()) :
                        std::vector<char>());
 
     const std::string temporary = file + ".tmp";
-    if (state.is_root)
-      std::filesystem::create_directories(state.settings.output_directory);
+    if (state.is_root())
+      std::filesystem::create_directories(state.settings().output_directory);
     writer.write(temporary);
     // Complete on every rank: replace the previous checkpoint (rename is atomic).
     MPI_Barrier(comm);
-    if (state.is_root)
+    if (state.is_root())
       {
         std::filesystem::rename(temporary, file);
-        state.log << "Checkpoint of step " << position.step << ": " << file << std::endl;
+        state.log() << "Checkpoint of step " << position.step << ": " << file << std::endl;
       }
     MPI_Barrier(comm);
   }
@@ -234,7 +232,7 @@ namespace perideal
   RunPosition
   Checkpoint<dim>::load(CoupledState<dim> &state, Postprocessors<dim> &postprocessors)
   {
-    CheckpointReader in(state.comm,
+    CheckpointReader in(state.comm(),
                         file,
                         ", so the run cannot restart (--restart continues from the checkpoint in "
                         "<Output/Directory>, written by <Output/Checkpoint interval> or "
@@ -255,7 +253,7 @@ namespace perideal
                       "or start the run without --restart. Nothing was written."));
       }
 
-    state.pd.load_bond_states(in, "broken bonds");
+    state.pd().load_bond_states(in, "broken bonds");
     state.load(in, "");
     for (const auto &other : others)
       other.state->load(in, other.name + "/");
@@ -269,9 +267,9 @@ namespace perideal
     position.time        = std::stod(header.at("time"));
     position.next_output = in.number("next output");
     previous_time        = position.time;
-    if (state.is_root)
-      state.log << "Restart from the checkpoint of step " << position.step << ": " << file
-                << std::endl;
+    if (state.is_root())
+      state.log() << "Restart from the checkpoint of step " << position.step << ": " << file
+                  << std::endl;
     return position;
   }
 

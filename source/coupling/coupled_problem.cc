@@ -43,10 +43,6 @@ namespace perideal
     , pd(physics[0]->pd)
     , fe(physics[0]->fe)
     , method_name(physics[0]->method_name)
-    , method(physics[0]->method)
-    , state(physics[0]->state)
-    , solver(physics[0]->solver)
-    , postprocessors(physics[0]->postprocessors)
   {}
 
   template <int dim>
@@ -227,21 +223,21 @@ namespace perideal
   double
   CoupledProblem<dim>::time_step() const
   {
-    return state->time_step;
+    return state().time_step;
   }
 
   template <int dim>
   const ParticleVector &
   CoupledProblem<dim>::particle_displacement() const
   {
-    return state->u;
+    return state().u;
   }
 
   template <int dim>
   const FEVector &
   CoupledProblem<dim>::fe_displacement() const
   {
-    return state->U;
+    return state().U;
   }
 
   template <int dim>
@@ -300,7 +296,7 @@ namespace perideal
       const auto found = beta_at.find(key);
       if (found != beta_at.end())
         return found->second;
-      return beta_at[key] = method->particle_weight(snap_to_bounds(beta->value(y)));
+      return beta_at[key] = method().particle_weight(snap_to_bounds(beta->value(y)));
     };
     // The disks of an adaptive region by their distance (a lattice scan at every conversion
     // would cost more than the run), the blending function at the offsets (not the constant 0).
@@ -316,7 +312,7 @@ namespace perideal
     };
     pd.setup(
       in_pd_region,
-      [this](const Point<dim> &x) { return method->particle_weight(blending(x)); },
+      [this](const Point<dim> &x) { return method().particle_weight(blending(x)); },
       log_summary);
   }
 
@@ -370,7 +366,7 @@ namespace perideal
   void
   CoupledProblem<dim>::check()
   {
-    fe.setup([this](const Point<dim> &x) { return method->fe_weight(blending(x)); });
+    fe.setup([this](const Point<dim> &x) { return method().fe_weight(blending(x)); });
     setup_particles();
     check_blending();
     check_twist_axis();
@@ -394,19 +390,22 @@ namespace perideal
                                           "With <Coupling/Adaptive region/Initial seeds>");
         precrack_damage = damage_index(pd.particles());
       }
-    method->initialize(coupled_regions(*physics[0]));
-    state = std::make_unique<CoupledState<dim>>(comm, log, settings, layout, pd, fe, *method);
-    state->setup();
-    solver = create_solver<dim>(settings.solver_type, control);
-    solver->check(*state);
+    method().initialize(coupled_regions(*physics[0]));
+    physics[0]->set_state(
+      std::make_unique<CoupledState<dim>>(comm, log, settings, layout, pd, fe, method()));
+    state().setup();
+    physics[0]->set_solver(create_solver<dim>(settings.solver_type, control));
+    solver().check(state());
     // The postprocessors' own checks (probe points on particles, the load point and size of the
     // fracture measures) need only the state: --validate makes them too.
     PostprocessorInputs<dim> inputs;
     inputs.control            = control;
     inputs.exact_displacement = exact_displacement;
     inputs.exact_tolerance    = exact_tolerance;
-    postprocessors            = std::make_unique<Postprocessors<dim>>(postprocessor_names, inputs);
-    postprocessors->initialize(*state);
+    inputs.method             = &method();
+    physics[0]->set_postprocessors(
+      std::make_unique<Postprocessors<dim>>(postprocessor_names, inputs));
+    postprocessors().initialize(state());
     check_other_physics();
   }
 
@@ -415,19 +414,20 @@ namespace perideal
   CoupledProblem<dim>::setup()
   {
     check();
-    const std::string fe_summary = fe.summary(), coupling_summary = method->summary();
+    const std::string fe_summary = fe.summary(), coupling_summary = method().summary();
     if (is_root && fe.has_mesh())
       log << fe_summary << std::endl;
-    if (is_root && state->is_coupled())
+    if (is_root && state().is_coupled())
       log << "Coupling: " << method_name << ", " << coupling_summary << std::endl;
     if (adaptive.enabled())
       {
-        state->adapt_regions = [this](const unsigned int step, const double time) {
-          return convert_regions(step, time);
-        };
-        state->adaptation_interval = adaptive.check_interval();
+        state().set_adaptive_region(
+          [this](const unsigned int step, const double time) {
+            return convert_regions(step, time);
+          },
+          adaptive.check_interval());
       }
-    solver->setup(*state);
+    solver().setup(state());
     setup_other_physics();
   }
 
@@ -457,8 +457,8 @@ namespace perideal
                                (physics[k]->settings.solver_type == SolverType::implicit ?
                                   "implicit\n" :
                                   "explicit\n"),
-                             *physics[k]->state);
-    solver->run(*state, *postprocessors, checkpoint);
+                             physics[k]->state());
+    solver().run(state(), postprocessors(), checkpoint);
   }
 
   template class CoupledProblem<2>;

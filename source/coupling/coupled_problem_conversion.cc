@@ -46,11 +46,11 @@ namespace perideal
     keep(const Physics<dim> &field, const Lattice<dim> &lattice)
     {
       CarriedState<dim>  carried;
-      const auto        &state  = *field.state;
+      const auto        &state  = field.state();
       const unsigned int nc     = state.n_components();
       const auto        &ps     = field.pd.particles();
       const auto        &x      = ps.positions();
-      const auto        &slaved = field.method->slaved_particles();
+      const auto        &slaved = field.method().slaved_particles();
       for (unsigned int i = 0; i < ps.n_owned(); ++i)
         if (!slaved[i])
           {
@@ -121,7 +121,7 @@ namespace perideal
     void
     restore(Physics<dim> &field, const CarriedState<dim> &carried)
     {
-      auto &state = *field.state;
+      auto &state = field.state();
       for (unsigned int k = 0; k < carried.u.locally_owned_size(); ++k)
         {
           state.u.local_element(k) = carried.u.local_element(k);
@@ -160,7 +160,7 @@ namespace perideal
     std::ostringstream when;
     when << "At step " << step << " (t = " << time << " s)";
     const auto seeds = adaptive.propose_seeds(
-      *state,
+      state(),
       [this](const Point<dim> &x) { return blending(x); },
       [this](const Point<dim> &x) { return pd.in_body(x); },
       precrack_damage,
@@ -185,7 +185,7 @@ namespace perideal
     for (const auto &field : physics)
       {
         carried.push_back(keep(*field, lattice));
-        stored_before.push_back(field->state->stored_heat());
+        stored_before.push_back(field->state().stored_heat());
       }
     std::set<std::pair<Key, Key>> broken;
     {
@@ -225,11 +225,11 @@ namespace perideal
         if (k > 0)
           field.with_entry_names([&field]() { field.pd.setup({}, {}, false); });
         field.fe.reweight(
-          [&field, this](const Point<dim> &p) { return field.method->fe_weight(blending(p)); });
-        field.method->initialize(coupled_regions(field));
-        field.state->setup();
+          [&field, this](const Point<dim> &p) { return field.method().fe_weight(blending(p)); });
+        field.method().initialize(coupled_regions(field));
+        field.state().setup();
         restore(field, carried[k]);
-        field.postprocessors->initialize(*field.state);
+        field.postprocessors().initialize(field.state());
       }
 
     if (is_root)
@@ -246,12 +246,12 @@ namespace perideal
         Physics<dim> &field = *physics[k];
         if (is_root)
           log << "  Physics " << field.name << ":" << std::endl;
-        field.solver->renew_regions(*field.state, time);
+        field.solver().renew_regions(field.state(), time);
         choose_sub_steps(k);
         if (!field.layout.has_temperature())
           continue;
-        const double change = field.state->stored_heat() - stored_before[k];
-        field.state->conversion_energy += change;
+        const double change = field.state().stored_heat() - stored_before[k];
+        field.state().conversion_energy += change;
         if (is_root)
           log << "  stored heat before " << stored_before[k] << " J, after "
               << stored_before[k] + change << " J, change " << change << " J" << std::endl;

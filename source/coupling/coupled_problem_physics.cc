@@ -83,7 +83,7 @@ namespace perideal
         Physics<dim> &field = *physics[k];
         field.with_entry_names([&]() {
           field.fe.setup(
-            [&field, this](const Point<dim> &x) { return field.method->fe_weight(blending(x)); });
+            [&field, this](const Point<dim> &x) { return field.method().fe_weight(blending(x)); });
           // The particles are the first physics': only this physics' model is set up on them.
           field.pd.setup({}, {}, false);
         });
@@ -96,21 +96,23 @@ namespace perideal
                                             Physics<dim>::section(field.name) + "/");
         if (is_root && field.pd.has_body())
           log << "Material (" << field.name << "): " << field.pd.material().summary() << std::endl;
-        field.method->initialize(coupled_regions(field));
-        field.state = std::make_unique<CoupledState<dim>>(comm,
-                                                          log,
-                                                          field.settings,
-                                                          field.layout,
-                                                          field.pd,
-                                                          field.fe,
-                                                          *field.method);
-        field.state->setup();
-        field.solver = create_solver<dim>(field.settings.solver_type, control);
-        field.solver->check(*field.state);
+        field.method().initialize(coupled_regions(field));
+        field.set_state(std::make_unique<CoupledState<dim>>(comm,
+                                                            log,
+                                                            field.settings,
+                                                            field.layout,
+                                                            field.pd,
+                                                            field.fe,
+                                                            field.method()));
+        field.state().setup();
+        field.set_solver(create_solver<dim>(field.settings.solver_type, control));
+        field.solver().check(field.state());
         PostprocessorInputs<dim> inputs;
-        inputs.control       = control;
-        field.postprocessors = std::make_unique<Postprocessors<dim>>(postprocessor_names, inputs);
-        field.postprocessors->initialize(*field.state);
+        inputs.control = control;
+        inputs.method  = &field.method();
+        field.set_postprocessors(
+          std::make_unique<Postprocessors<dim>>(postprocessor_names, inputs));
+        field.postprocessors().initialize(field.state());
       }
   }
 
@@ -130,20 +132,21 @@ namespace perideal
         // take it.
         if (field.settings.solver_type == SolverType::implicit)
           field.settings.time_step = split_step();
-        field.solver->setup(*field.state);
+        field.solver().setup(field.state());
         choose_sub_steps(k);
         // Through a conversion of the adaptive PD region too (convert_regions()).
-        field.state->adaptation_interval = state->adaptation_interval;
-        postprocessors->add_physics(field.name, *field.state, *field.postprocessors);
+        if (state().adaptation_interval() > 0)
+          field.state().set_adaptive_region({}, state().adaptation_interval());
+        postprocessors().add_physics(field.name, field.state(), field.postprocessors());
         for (unsigned int c = 0; c < field.layout.n_components(); ++c)
           if (field.layout.kind(c) == ComponentKind::temperature)
-            exchange.publish("temperature", field.state->u, field.state->U, field.layout, c);
+            exchange.publish("temperature", field.state().u, field.state().U, field.layout, c);
       }
-    state->broken_bond_record = &exchange.record();
-    state->advance_other_physics =
+    state().set_other_physics(
       [this](const unsigned int step, const double time, const double dt, const bool with_energy) {
         advance_other_physics(step, time, dt, with_energy);
-      };
+      });
+    state().set_broken_bond_record(exchange.record());
   }
 
   template <int dim>
@@ -154,17 +157,17 @@ namespace perideal
     // A steady physics solves once per load step.
     const double step_length = split_step();
     if (field.settings.solver_type == SolverType::static_linear)
-      field.state->time_step = step_length;
+      field.state().time_step = step_length;
     // The largest step of at most its own (the safety factor times its stable step) that
     // divides the first physics' step, as its run takes it.
     const auto n = static_cast<unsigned int>(
-      std::max(1., std::ceil(step_length / field.state->time_step * (1. - 1e-12))));
-    field.state->time_step = step_length / n;
-    sub_steps[k - 1]       = field.state->time_step;
+      std::max(1., std::ceil(step_length / field.state().time_step * (1. - 1e-12))));
+    field.state().time_step = step_length / n;
+    sub_steps[k - 1]       = field.state().time_step;
     if (is_root && field.settings.solver_type == SolverType::static_linear)
       log << "  a steady solve before each load step of the first physics" << std::endl;
     else if (is_root)
-      log << "  " << n << " step" << (n > 1 ? "s" : "") << " of " << field.state->time_step
+      log << "  " << n << " step" << (n > 1 ? "s" : "") << " of " << field.state().time_step
           << " s per step of the first physics" << std::endl;
   }
 
@@ -182,7 +185,7 @@ namespace perideal
         Physics<dim> &field = *physics[k];
         if (step == 0)
           {
-            field.solver->start_state(*field.state);
+            field.solver().start_state(field.state());
             continue;
           }
         // The fewest equal steps of at most the set-up's one: its n steps over a step of the
@@ -191,13 +194,13 @@ namespace perideal
           static_cast<unsigned int>(std::max(1., std::ceil(dt / sub_steps[k - 1] * (1. - 1e-12))));
         const double length = dt / n;
         if (resume_other_physics)
-          field.solver->resume_state(*field.state, time);
+          field.solver().resume_state(field.state(), time);
         for (unsigned int s = 0; s < n; ++s)
-          field.solver->advance(*field.state, time + s * length, length, with_energy && s + 1 == n);
+          field.solver().advance(field.state(), time + s * length, length, with_energy && s + 1 == n);
         // The force of the supports, for the reactions (explicit runs keep it from the last
         // step's residual).
         if (with_energy && field.settings.solver_type == SolverType::explicit_dynamics)
-          field.state->fe_support.equ(-1., field.state->residual);
+          field.state().fe_support.equ(-1., field.state().residual);
       }
     resume_other_physics = resume_other_physics && step == 0;
   }
@@ -208,7 +211,7 @@ namespace perideal
   {
     if (settings.solver_type != SolverType::explicit_dynamics)
       return settings.end_time / settings.load_steps;
-    double dt = state->time_step;
+    double dt = state().time_step;
     ParameterUtilities::equal_time_steps(settings.end_time, dt);
     return dt;
   }

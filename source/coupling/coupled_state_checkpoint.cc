@@ -12,30 +12,29 @@ namespace perideal
 
   template <int dim>
   std::string
-  CoupledState<dim>::fingerprint(const std::string &prefix)
+  CoupledState<dim>::fingerprint(const std::string &prefix) const
   {
     const auto         parts = stored_parts();
     const unsigned int fe_dofs_per_cell =
-      fe.n_dofs() > 0 ? fe.get_dof_handler().get_fe_collection()[0].n_dofs_per_cell() : 0;
+      fe().n_dofs() > 0 ? fe().get_dof_handler().get_fe_collection()[0].n_dofs_per_cell() : 0;
     std::ostringstream out;
-    out << prefix << "unknowns = " << layout.description() << '\n'
-        << prefix << "particles = " << pd.particles().n_global() << '\n'
-        << prefix << "bonds = " << pd.particles().n_global_bonds() << '\n'
-        << prefix << "FE cells with unknowns = " << fe.n_cells_with_unknowns() << '\n'
-        << prefix << "FE dofs = " << fe.n_dofs() << '\n'
+    out << prefix << "unknowns = " << layout().description() << '\n'
+        << prefix << "particles = " << pd().particles().n_global() << '\n'
+        << prefix << "bonds = " << pd().particles().n_global_bonds() << '\n'
+        << prefix << "FE cells with unknowns = " << fe().n_cells_with_unknowns() << '\n'
+        << prefix << "FE dofs = " << fe().n_dofs() << '\n'
         << prefix << "FE dofs per cell = " << fe_dofs_per_cell << '\n'
         << prefix << "particle fields = " << parts.particle_vectors.size() << " x "
         << n_components() << " + 1\n"
         << prefix << "FE fields = " << parts.fe_vectors.size() << '\n'
-        << prefix
-        << "bond history values = " << (pd.has_body() ? pd.material().n_bond_history_values() : 0)
-        << '\n';
+        << prefix << "bond history values = "
+        << (pd().has_body() ? pd().material().n_bond_history_values() : 0) << '\n';
     return out.str();
   }
 
   template <int dim>
   void
-  CoupledState<dim>::save(CheckpointWriter &writer, const std::string &prefix)
+  CoupledState<dim>::save(CheckpointWriter &writer, const std::string &prefix) const
   {
     const auto          parts = stored_parts();
     std::vector<double> sums;
@@ -45,17 +44,17 @@ namespace perideal
     std::vector<char> data;
     append_bytes(data, sums.data(), sums.size());
     writer.add_records(prefix + "sums",
-                       Utilities::MPI::n_mpi_processes(comm),
+                       Utilities::MPI::n_mpi_processes(comm()),
                        sums.size() * sizeof(double),
-                       {Utilities::MPI::this_mpi_process(comm)},
+                       {Utilities::MPI::this_mpi_process(comm())},
                        std::move(data));
-    pd.save_particle_records(writer,
-                             prefix + "particles",
-                             parts.particle_vectors,
-                             n_components(),
-                             {parts.energy_density});
-    pd.save_bond_histories(writer, prefix + "bond histories");
-    fe.save_dof_values(writer, prefix + "FE", parts.fe_vectors);
+    pd().save_particle_records(writer,
+                               prefix + "particles",
+                               parts.particle_vectors,
+                               n_components(),
+                               {parts.energy_density});
+    pd().save_bond_histories(writer, prefix + "bond histories");
+    fe().save_dof_values(writer, prefix + "FE", parts.fe_vectors);
   }
 
   template <int dim>
@@ -63,8 +62,8 @@ namespace perideal
   CoupledState<dim>::load(CheckpointReader &reader, const std::string &prefix)
   {
     const auto         parts   = stored_parts();
-    const unsigned int n_ranks = Utilities::MPI::n_mpi_processes(comm);
-    const unsigned int rank    = Utilities::MPI::this_mpi_process(comm);
+    const unsigned int n_ranks = Utilities::MPI::n_mpi_processes(comm());
+    const unsigned int rank    = Utilities::MPI::this_mpi_process(comm());
     const std::size_t  n_sums  = parts.sums.size() + parts.totals.size();
     // This rank's partial sums; on another number of ranks their totals on rank 0 and the
     // totals (the same on every rank) from the first record.
@@ -88,13 +87,13 @@ namespace perideal
     for (std::size_t k = 0; k < parts.totals.size(); ++k)
       *parts.totals[k] = records[parts.sums.size() + k];
 
-    pd.load_particle_records(reader,
-                             prefix + "particles",
-                             parts.particle_vectors,
-                             n_components(),
-                             {parts.energy_density});
-    pd.load_bond_histories(reader, prefix + "bond histories");
-    fe.load_dof_values(reader, prefix + "FE", parts.fe_vectors);
+    pd().load_particle_records(reader,
+                               prefix + "particles",
+                               parts.particle_vectors,
+                               n_components(),
+                               {parts.energy_density});
+    pd().load_bond_histories(reader, prefix + "bond histories");
+    fe().load_dof_values(reader, prefix + "FE", parts.fe_vectors);
     u.update_ghost_values();
     U.update_ghost_values();
   }
@@ -116,8 +115,8 @@ namespace perideal
       for (const double *sum : *part)
         kept.sums.push_back(*sum);
     kept.history.clear();
-    if (pd.has_body() && pd.material().n_bond_history_values() > 0)
-      kept.history = pd.material().bond_history(pd.particles());
+    if (pd().has_body() && pd().material().n_bond_history_values() > 0)
+      kept.history = pd().material().bond_history(pd().particles());
   }
 
   template <int dim>
@@ -135,14 +134,17 @@ namespace perideal
       for (double *value : *part)
         *value = *sum++;
     if (!kept.history.empty())
-      pd.material().set_bond_history(pd.particles(), kept.history);
+      pd().material().set_bond_history(pd().particles(), kept.history);
+    // The bonds broken since keep() are intact again: not broken for the other physics either.
+    if (broken_bond_record != nullptr)
+      broken_bond_record->clear();
   }
 
-#define PERIDEAL_INSTANTIATE(dim)                                                        \
-  template std::string CoupledState<dim>::fingerprint(const std::string &);              \
-  template void        CoupledState<dim>::save(CheckpointWriter &, const std::string &); \
-  template void        CoupledState<dim>::load(CheckpointReader &, const std::string &); \
-  template void        CoupledState<dim>::keep();                                        \
+#define PERIDEAL_INSTANTIATE(dim)                                                              \
+  template std::string CoupledState<dim>::fingerprint(const std::string &) const;              \
+  template void        CoupledState<dim>::save(CheckpointWriter &, const std::string &) const; \
+  template void        CoupledState<dim>::load(CheckpointReader &, const std::string &);       \
+  template void        CoupledState<dim>::keep();                                              \
   template void        CoupledState<dim>::restore_kept();
   PERIDEAL_INSTANTIATE(2)
   PERIDEAL_INSTANTIATE(3)

@@ -16,7 +16,7 @@ namespace perideal
   FractureMeasures<dim>::initialize(const CoupledState<dim>  &state,
                                     const QuasiStaticControl &control)
   {
-    const auto &pd = state.pd;
+    const auto &pd = state.pd();
     if (pd.has_body())
       {
         std::vector<Tensor<1, dim>> xi;
@@ -35,7 +35,7 @@ namespace perideal
     // The condition: a displacement condition of the particles or of the FE region.
     const auto              &conditions = pd.boundary_conditions();
     const auto               held       = conditions.names_of(Quantity::value);
-    const auto              &fe_list    = state.fe.conditions();
+    const auto              &fe_list    = state.fe().conditions();
     std::vector<std::string> accepted(held);
     for (const auto &c : fe_list)
       if (c.type == Quantity::value)
@@ -57,7 +57,7 @@ namespace perideal
     fe_condition         = (std::find(held.begin(), held.end(), control.load_point) == held.end());
 
     // The component, among those the condition prescribes.
-    const FieldLayout        &layout = state.layout;
+    const FieldLayout        &layout = state.layout();
     std::vector<unsigned int> prescribed;
     if (fe_condition)
       {
@@ -90,10 +90,10 @@ namespace perideal
     // Its size: the volume of its particles or the number of its dofs of that component.
     if (fe_condition)
       {
-        state.fe.initialize_vector(fe_ones);
+        state.fe().initialize_vector(fe_ones);
         for (unsigned int k = 0; k < fe_ones.locally_owned_size(); ++k)
           fe_ones.local_element(k) = 1.;
-        size = state.fe.reactions(fe_ones)[condition][component];
+        size = state.fe().reactions(fe_ones)[condition][component];
       }
     else
       {
@@ -123,21 +123,21 @@ namespace perideal
   FractureMeasures<dim>::measure(const CoupledState<dim> &state) const
   {
     Values values;
-    if (state.pd.has_body())
+    if (state.pd().has_body())
       {
-        values.broken_bonds = n_broken_bonds(state.pd.particles());
+        values.broken_bonds = n_broken_bonds(state.pd().particles());
         values.crack_length = double(values.broken_bonds) / crossing_density;
       }
     if (!active)
       return values;
     if (fe_condition)
       {
-        values.load         = state.fe.reactions(state.fe_support)[condition][component];
-        values.displacement = state.fe.reactions(state.U)[condition][component] / size;
+        values.load         = state.fe().reactions(state.fe_support)[condition][component];
+        values.displacement = state.fe().reactions(state.U)[condition][component] / size;
       }
     else
       {
-        const auto &conditions = state.pd.boundary_conditions();
+        const auto &conditions = state.pd().boundary_conditions();
         values.load         = conditions.reactions(state.internal_force)[condition][reaction_index];
         values.displacement = -conditions.reactions(state.u)[condition][reaction_index] / size;
       }

@@ -9,6 +9,7 @@
 #include <algorithm>
 #include <cctype>
 #include <sstream>
+#include <utility>
 
 namespace perideal
 {
@@ -282,14 +283,101 @@ namespace perideal
   Physics<dim>::parse_method(ParameterHandler &prm)
   {
     prm.enter_subsection("Coupling");
-    method_name = prm.get("Method");
-    method      = PluginRegistry<CouplingMethod<dim>>::create(method_name, "Coupling/Method");
+    method_name     = prm.get("Method");
+    coupling_method = PluginRegistry<CouplingMethod<dim>>::create(method_name, "Coupling/Method");
     prm.enter_subsection(method_name);
-    method->parse_parameters(prm);
+    coupling_method->parse_parameters(prm);
     prm.leave_subsection();
     prm.leave_subsection();
-    method->check_solver(settings.solver_type);
+    coupling_method->check_solver(settings.solver_type);
     model_lines += "coupling method = " + method_name + "\n";
+  }
+
+  template <int dim>
+  const CouplingMethod<dim> &
+  Physics<dim>::method() const
+  {
+    Assert(coupling_method, ExcMessage("The method of the physics " + name + " is not made yet."));
+    return *coupling_method;
+  }
+
+  template <int dim>
+  CouplingMethod<dim> &
+  Physics<dim>::method()
+  {
+    Assert(coupling_method, ExcMessage("The method of the physics " + name + " is not made yet."));
+    return *coupling_method;
+  }
+
+  template <int dim>
+  const CoupledState<dim> &
+  Physics<dim>::state() const
+  {
+    Assert(coupled_state, ExcMessage("The state of the physics " + name + " is not made yet."));
+    return *coupled_state;
+  }
+
+  template <int dim>
+  CoupledState<dim> &
+  Physics<dim>::state()
+  {
+    Assert(coupled_state, ExcMessage("The state of the physics " + name + " is not made yet."));
+    return *coupled_state;
+  }
+
+  template <int dim>
+  const Solver<dim> &
+  Physics<dim>::solver() const
+  {
+    Assert(physics_solver, ExcMessage("The solver of the physics " + name + " is not made yet."));
+    return *physics_solver;
+  }
+
+  template <int dim>
+  Solver<dim> &
+  Physics<dim>::solver()
+  {
+    Assert(physics_solver, ExcMessage("The solver of the physics " + name + " is not made yet."));
+    return *physics_solver;
+  }
+
+  template <int dim>
+  const Postprocessors<dim> &
+  Physics<dim>::postprocessors() const
+  {
+    Assert(physics_postprocessors,
+           ExcMessage("The postprocessors of the physics " + name + " is not made yet."));
+    return *physics_postprocessors;
+  }
+
+  template <int dim>
+  Postprocessors<dim> &
+  Physics<dim>::postprocessors()
+  {
+    Assert(physics_postprocessors,
+           ExcMessage("The postprocessors of the physics " + name + " is not made yet."));
+    return *physics_postprocessors;
+  }
+
+  template <int dim>
+  void
+  Physics<dim>::set_state(std::unique_ptr<CoupledState<dim>> new_state)
+  {
+    coupled_state = std::move(new_state);
+  }
+
+  template <int dim>
+  void
+  Physics<dim>::set_solver(std::unique_ptr<Solver<dim>> new_solver)
+  {
+    physics_solver = std::move(new_solver);
+  }
+
+  template <int dim>
+  void
+  Physics<dim>::set_postprocessors(std::unique_ptr<Postprocessors<dim>> new_postprocessors)
+  {
+    physics_postprocessors = std::move(new_postprocessors);
   }
 
   template class Physics<2>;

@@ -36,9 +36,9 @@ namespace perideal
 
   template <int dim>
   void
-  FERegion<dim>::save_dof_values(CheckpointWriter              &writer,
-                                 const std::string             &name,
-                                 const std::vector<FEVector *> &vectors) const
+  FERegion<dim>::save_dof_values(CheckpointWriter                    &writer,
+                                 const std::string                   &name,
+                                 const std::vector<const FEVector *> &vectors) const
   {
     // Ghosted copies, so that the dofs other ranks own are current (the vectors are left as
     // they are).
@@ -111,13 +111,13 @@ namespace perideal
         }
   }
 
-#define PERIDEAL_INSTANTIATE(dim)                                                               \
-  template std::uint64_t FERegion<dim>::n_cells_with_unknowns() const;                          \
-  template void          FERegion<dim>::save_dof_values(CheckpointWriter &,                     \
-                                               const std::string &,                    \
-                                               const std::vector<FEVector *> &) const; \
-  template void          FERegion<dim>::load_dof_values(CheckpointReader &,                     \
-                                               const std::string &,                    \
+#define PERIDEAL_INSTANTIATE(dim)                                                                     \
+  template std::uint64_t FERegion<dim>::n_cells_with_unknowns() const;                                \
+  template void          FERegion<dim>::save_dof_values(CheckpointWriter &,                           \
+                                               const std::string &,                          \
+                                               const std::vector<const FEVector *> &) const; \
+  template void          FERegion<dim>::load_dof_values(CheckpointReader &,                           \
+                                               const std::string &,                          \
                                                const std::vector<FEVector *> &) const;
   PERIDEAL_INSTANTIATE(2)
   PERIDEAL_INSTANTIATE(3)

@@ -60,11 +60,12 @@ namespace perideal
 
   template <int dim>
   void
-  FERegion<dim>::write_output(const std::string &directory,
-                              const std::string &base_name,
-                              const unsigned int step,
-                              const double       time,
-                              const FEVector    &u)
+  FERegion<dim>::write_output(const std::string      &directory,
+                              const std::string      &base_name,
+                              const unsigned int      step,
+                              const double            time,
+                              const FEVector         &u,
+                              std::vector<XDMFEntry> &records) const
   {
     if (n_dofs() == 0)
       return;
@@ -118,24 +119,7 @@ namespace perideal
                          base_name,
                          step,
                          time,
-                         xdmf_entries);
-  }
-
-  template <int dim>
-  std::string
-  FERegion<dim>::save_output_records() const
-  {
-    const std::vector<char> packed = Utilities::pack(xdmf_entries, false);
-    return std::string(packed.begin(), packed.end());
-  }
-
-  template <int dim>
-  void
-  FERegion<dim>::load_output_records(const std::string &packed)
-  {
-    xdmf_entries =
-      Utilities::unpack<std::vector<XDMFEntry>>(std::vector<char>(packed.begin(), packed.end()),
-                                                false);
+                         records);
   }
 
   template <int dim>
@@ -164,15 +148,14 @@ namespace perideal
   }
 
   // The members defined in this file (the class is instantiated in fe_region.cc).
-#define PERIDEAL_INSTANTIATE(dim)                                                       \
-  template void                FERegion<dim>::write_output(const std::string &,         \
-                                            const std::string &,         \
-                                            const unsigned int,          \
-                                            const double,                \
-                                            const FEVector &);           \
-  template std::string         FERegion<dim>::summary() const;                          \
-  template std::string         FERegion<dim>::save_output_records() const;              \
-  template void                FERegion<dim>::load_output_records(const std::string &); \
+#define PERIDEAL_INSTANTIATE(dim)                                                           \
+  template void                FERegion<dim>::write_output(const std::string &,             \
+                                            const std::string &,             \
+                                            const unsigned int,              \
+                                            const double,                    \
+                                            const FEVector &,                \
+                                            std::vector<XDMFEntry> &) const; \
+  template std::string         FERegion<dim>::summary() const;                              \
   template std::vector<double> FERegion<dim>::section_integrals(const FEVector &) const;
   PERIDEAL_INSTANTIATE(2)
   PERIDEAL_INSTANTIATE(3)

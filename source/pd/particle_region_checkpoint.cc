@@ -53,11 +53,11 @@ namespace perideal
   template <int dim>
   void
   ParticleRegion<dim>::save_particle_records(
-    CheckpointWriter                         &writer,
-    const std::string                        &name,
-    const std::vector<ParticleVector *>      &vectors,
-    const unsigned int                        n_components,
-    const std::vector<std::vector<double> *> &per_particle) const
+    CheckpointWriter                               &writer,
+    const std::string                              &name,
+    const std::vector<const ParticleVector *>      &vectors,
+    const unsigned int                              n_components,
+    const std::vector<const std::vector<double> *> &per_particle) const
   {
     const auto                &ps    = particles();
     const std::size_t          width = vectors.size() * n_components + per_particle.size();
@@ -227,9 +227,9 @@ namespace perideal
   template void ParticleRegion<dim>::save_particle_records(                                       \
     CheckpointWriter &,                                                                           \
     const std::string &,                                                                          \
-    const std::vector<ParticleVector *> &,                                                        \
+    const std::vector<const ParticleVector *> &,                                                  \
     const unsigned int,                                                                           \
-    const std::vector<std::vector<double> *> &) const;                                            \
+    const std::vector<const std::vector<double> *> &) const;                                      \
   template void ParticleRegion<dim>::load_particle_records(                                       \
     CheckpointReader &,                                                                           \
     const std::string &,                                                                          \

@@ -116,9 +116,9 @@ end
   snapshot(const perideal::Physics<2> &heat, const double uniform)
   {
     Snapshot    result;
-    const auto &state  = *heat.state;
+    const auto &state  = heat.state();
     const auto &ps     = heat.pd.particles();
-    const auto &slaved = heat.method->slaved_particles();
+    const auto &slaved = heat.method().slaved_particles();
     double      local  = 0.;
     for (unsigned int i = 0; i < ps.n_owned(); ++i)
       {
@@ -309,13 +309,13 @@ end
     const auto physics = problem.get_physics().size();
     if (physics > 1)
       {
-        auto      &mechanics = *problem.get_physics()[0]->state;
-        const auto convert   = mechanics.adapt_regions;
-        mechanics.adapt_regions =
+        auto      &mechanics = problem.get_physics()[0]->state();
+        const auto convert   = mechanics.adaptive_region();
+        mechanics.set_adaptive_region(
           [&problem, &result, convert, uniform, cut](const unsigned int step, const double time) {
             perideal::Physics<2> &heat   = *problem.get_physics()[1];
             const Snapshot        before = snapshot(heat, uniform);
-            const double stored = heat.state->stored_heat(), summed = heat.state->conversion_energy;
+            const double stored = heat.state().stored_heat(), summed = heat.state().conversion_energy;
             const bool   first = result.inspection.conversions == 0;
             if (cut && first && result.cut_bonds == 0)
               result.cut_bonds = break_cut(heat.pd.particles());
@@ -328,14 +328,15 @@ end
             for (const auto &[key, T] : before.fe)
               scale = std::max(scale, std::abs(T));
             compare(before, after, scale, result.inspection);
-            const double jump = heat.state->stored_heat() - stored;
+            const double jump = heat.state().stored_heat() - stored;
             result.inspection.heat_jump_error =
               std::max(result.inspection.heat_jump_error,
-                       std::abs(jump - (heat.state->conversion_energy - summed)));
+                       std::abs(jump - (heat.state().conversion_energy - summed)));
             result.inspection.heat_jump = std::max(result.inspection.heat_jump, std::abs(jump));
             ++result.inspection.conversions;
             return true;
-          };
+          },
+          mechanics.adaptation_interval());
       }
     problem.run();
     result.log             = log.str();

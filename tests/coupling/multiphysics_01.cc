@@ -164,7 +164,7 @@ end
     const auto                     &ps      = problem.particles();
     const auto                     &physics = problem.get_physics();
     const perideal::ParticleVector *temperature =
-      fields == Fields::both ? &physics[1]->state->u :
+      fields == Fields::both ? &physics[1]->state().u :
       fields == Fields::heat ? &problem.particle_displacement() :
                                nullptr;
     const unsigned int nc = fields == Fields::heat ? 1 : 2;
@@ -187,8 +187,8 @@ end
     result.heat       = Utilities::MPI::sum(result.heat, MPI_COMM_WORLD);
     if (fields == Fields::both)
       {
-        result.heat_step = physics[1]->state->time_step;
-        result.step      = physics[0]->state->time_step;
+        result.heat_step = physics[1]->state().time_step;
+        result.step      = physics[0]->state().time_step;
       }
     return result;
   }

@@ -231,7 +231,7 @@ end
     const auto                     &ps      = problem.particles();
     const auto                     &physics = problem.get_physics();
     const perideal::ParticleVector *temperature =
-      fields == Fields::both ? &physics[1]->state->u :
+      fields == Fields::both ? &physics[1]->state().u :
       fields == Fields::heat ? &problem.particle_displacement() :
                                nullptr;
     if (fields != Fields::heat)
@@ -248,9 +248,9 @@ end
       return std::vector<double>(v.begin(), v.begin() + v.locally_owned_size());
     };
     if (fields != Fields::heat)
-      result.U = owned(physics[0]->state->U);
+      result.U = owned(physics[0]->state().U);
     if (fields != Fields::mechanics)
-      result.FE_T = owned(physics.back()->state->U);
+      result.FE_T = owned(physics.back()->state().U);
     result.row = last_row("results/statistics.csv");
     return result;
   }

@@ -180,17 +180,17 @@ end
     set_up(problem, fields, heat_solver);
     Result      result;
     const auto &physics = problem.get_physics();
-    auto       &state   = *physics[0]->state;
+    auto       &state   = physics[0]->state();
     if (fields == Fields::both)
       {
         // Each step of the heat with the bond states it sees (one bond list for both physics).
-        auto advance = state.advance_other_physics;
-        state.advance_other_physics =
+        const auto advance = state.other_physics();
+        state.set_other_physics(
           [&, advance](const unsigned int step, const double time, const double dt, const bool e) {
             if (step > 0)
-              result.heat_steps.push_back({time, dt, state.pd.particles().bonds().intact});
+              result.heat_steps.push_back({time, dt, state.pd().particles().bonds().intact});
             advance(step, time, dt, e);
-          };
+          });
       }
     deallog.push("run");
     problem.run();
@@ -201,8 +201,8 @@ end
     result.u = owned(state.u);
     if (fields == Fields::both)
       {
-        result.T         = owned(physics[1]->state->u);
-        result.heat_step = physics[1]->state->time_step;
+        result.T         = owned(physics[1]->state().u);
+        result.heat_step = physics[1]->state().time_step;
       }
     std::istringstream lines(log.str());
     for (std::string line; std::getline(lines, line);)
@@ -235,7 +235,7 @@ end
     set_up(problem, Fields::heat, heat_solver);
     auto &field = *problem.get_physics()[0];
     deallog.push("run");
-    field.solver->start_state(*field.state);
+    field.solver().start_state(field.state());
     for (std::size_t k = 0; k < steps.size(); ++k)
       {
         if (k + 1 < steps.size() && steps[k + 1].time == steps[k].time)
@@ -244,10 +244,10 @@ end
         const double       time = steps[k].time, dt = steps[k].dt;
         const unsigned int n = std::max(1., std::ceil(dt / step * (1. - 1e-12)));
         for (unsigned int s = 0; s < n; ++s)
-          field.solver->advance(*field.state, time + s * (dt / n), dt / n, s + 1 == n);
+          field.solver().advance(field.state(), time + s * (dt / n), dt / n, s + 1 == n);
       }
     deallog.pop();
-    const auto &T = field.state->u;
+    const auto &T = field.state().u;
     return std::vector<double>(T.begin(), T.begin() + T.locally_owned_size());
   }
 

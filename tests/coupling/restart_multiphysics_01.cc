@@ -142,12 +142,12 @@ end
     const auto  owned   = [](const perideal::FEVector &v) {
       return std::vector<double>(v.begin(), v.begin() + v.locally_owned_size());
     };
-    result.u = owned(physics[0]->state->u);
-    result.U = owned(physics[0]->state->U);
+    result.u = owned(physics[0]->state().u);
+    result.U = owned(physics[0]->state().U);
     if (physics.size() > 1)
       {
-        result.T    = owned(physics[1]->state->u);
-        result.FE_T = owned(physics[1]->state->U);
+        result.T    = owned(physics[1]->state().u);
+        result.FE_T = owned(physics[1]->state().U);
       }
     result.log = log.str();
     MPI_Barrier(MPI_COMM_WORLD);

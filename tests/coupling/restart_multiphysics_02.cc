@@ -140,11 +140,11 @@ subsection Solver
       }
     deallog.pop();
     const auto &physics = problem.get_physics();
-    for (const auto *field : {&physics[0]->state->u, &physics[0]->state->U})
+    for (const auto *field : {&physics[0]->state().u, &physics[0]->state().U})
       outcome.u.insert(outcome.u.end(),
                        field->begin(),
                        field->begin() + field->locally_owned_size());
-    for (const auto *field : {&physics[1]->state->u, &physics[1]->state->U})
+    for (const auto *field : {&physics[1]->state().u, &physics[1]->state().U})
       outcome.T.insert(outcome.T.end(),
                        field->begin(),
                        field->begin() + field->locally_owned_size());

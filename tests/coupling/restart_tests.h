@@ -107,7 +107,7 @@ namespace restart_tests
         result.U.assign(U.begin(), U.begin() + U.locally_owned_size());
         const auto &physics = problem.get_physics();
         if (physics.size() > 1)
-          for (const auto *field : {&physics[1]->state->u, &physics[1]->state->U})
+          for (const auto *field : {&physics[1]->state().u, &physics[1]->state().U})
             result.T.insert(result.T.end(),
                             field->begin(),
                             field->begin() + field->locally_owned_size());

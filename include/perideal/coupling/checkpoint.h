@@ -151,9 +151,9 @@ namespace perideal
     /// Write the checkpoint of @p position (to the temporary name, then renamed), with the
     /// postprocessors' state @p postprocessor_state (Postprocessors::save_state()).
     void
-    write(CoupledState<dim> &state,
-          const std::string &postprocessor_state,
-          const RunPosition &position) const;
+    write(const CoupledState<dim> &state,
+          const std::string       &postprocessor_state,
+          const RunPosition       &position) const;
 
     /// Whether a checkpoint is due after the step of @p position by the intervals.
     bool
@@ -161,7 +161,7 @@ namespace perideal
 
     /// The fingerprint of the problem of @p state and the other physics: "key = value" lines.
     std::string
-    fingerprint(CoupledState<dim> &state) const;
+    fingerprint(const CoupledState<dim> &state) const;
 
     /// Every physics' state: @p state (the first one's) and those of add_physics().
     std::vector<CoupledState<dim> *>

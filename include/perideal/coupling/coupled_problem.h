@@ -25,6 +25,7 @@
 #include <memory>
 #include <ostream>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace perideal
@@ -224,7 +225,7 @@ namespace perideal
     /**
      * @brief Advance the physics of <Physics/List> by operator splitting over step @p step of
      * the first physics, from @p time by @p dt (step 0: their initial state), their energies
-     * computed if @p with_energy (CoupledState::advance_other_physics): the fewest equal
+     * computed if @p with_energy (CoupledState::advance_other_physics()): the fewest equal
      * steps of at most its step of setup_other_physics() (the sub-steps of an explicit physics
      * in a step of split_step(); fewer over a cut load step).
      */
@@ -243,7 +244,7 @@ namespace perideal
     split_step() const;
 
     /**
-     * @brief The adaptive PD region of an explicit run (CoupledState::adapt_regions) after step
+     * @brief The adaptive PD region of an explicit run (CoupledState::adapt_regions()) after step
      * @p step at @p time: the criterion's seeds, if any, grow the PD region; the particles, the
      * FE spaces, the couplings and the states of every physics are rebuilt and the unknowns
      * carried over (free particles keep theirs and their broken bonds, the others take the FE
@@ -262,14 +263,13 @@ namespace perideal
     /// The physics, the first one (of the top-level sections) first.
     std::vector<std::unique_ptr<Physics<dim>>> physics;
     /// The first physics' parts: its settings (the problem's), unknowns, regions (which own the
-    /// geometry the other physics share) and coupling method.
+    /// geometry the other physics share) and <Coupling/Method>.
     ///@{
-    ProblemSettings<dim>                 &settings;
-    FieldLayout                          &layout;
-    ParticleRegion<dim>                  &pd;
-    FERegion<dim>                        &fe;
-    std::string                          &method_name;
-    std::unique_ptr<CouplingMethod<dim>> &method;
+    ProblemSettings<dim> &settings;
+    FieldLayout          &layout;
+    ParticleRegion<dim>  &pd;
+    FERegion<dim>        &fe;
+    std::string          &method_name;
     ///@}
     /// <Solver/Control>: how a quasi-static run advances its load, and its load point.
     QuasiStaticControl control;
@@ -296,11 +296,43 @@ namespace perideal
     /// first step (Solver::resume_state()).
     bool resume_other_physics = false;
 
-    /// The first physics' state, solver and postprocessors.
+    /// The first physics' coupling method, state, solver and postprocessors (its accessors).
     ///@{
-    std::unique_ptr<CoupledState<dim>>   &state;
-    std::unique_ptr<Solver<dim>>         &solver;
-    std::unique_ptr<Postprocessors<dim>> &postprocessors;
+    CouplingMethod<dim> &
+    method()
+    {
+      return physics[0]->method();
+    }
+
+    const CouplingMethod<dim> &
+    method() const
+    {
+      return std::as_const(*physics[0]).method();
+    }
+
+    CoupledState<dim> &
+    state()
+    {
+      return physics[0]->state();
+    }
+
+    const CoupledState<dim> &
+    state() const
+    {
+      return std::as_const(*physics[0]).state();
+    }
+
+    Solver<dim> &
+    solver()
+    {
+      return physics[0]->solver();
+    }
+
+    Postprocessors<dim> &
+    postprocessors()
+    {
+      return physics[0]->postprocessors();
+    }
     ///@}
   };
 } // namespace perideal

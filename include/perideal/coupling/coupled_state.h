@@ -17,6 +17,7 @@
 #include <functional>
 #include <ostream>
 #include <string>
+#include <type_traits>
 #include <vector>
 
 namespace perideal
@@ -75,7 +76,7 @@ namespace perideal
     unsigned int
     n_components() const
     {
-      return layout.n_components();
+      return field_layout.n_components();
     }
 
     /**
@@ -115,8 +116,8 @@ namespace perideal
     /**
      * @brief Add the energy that the bonds broken by the last force evaluation released at the
      * particle displacement u (MaterialModel::released_energy(): nothing to do unless bonds
-     * broke), recording the bonds in broken_bond_record if set. Call it on every rank after
-     * each force evaluation that may break bonds.
+     * broke), recording the bonds for the other physics (set_broken_bond_record()). Call it on every
+     * rank after each force evaluation that may break bonds.
      */
     void
     accumulate_dissipated_energy();
@@ -215,30 +216,45 @@ namespace perideal
                  const double       local_largest,
                  const double       local_scale) const;
 
-    /// Pointers to the parts of the state that change during a run (stored_parts()).
-    struct StoredParts
+    /// Pointers to the parts of the state that change during a run (stored_parts()), to const
+    /// parts if @p constant.
+    template <bool constant>
+    struct Parts
     {
+      /// A pointer to a part.
+      template <typename T>
+      using Pointer = std::conditional_t<constant, const T *, T *>;
       /// Every particle vector, and the particles' strain-energy density.
       ///@{
-      std::vector<ParticleVector *> particle_vectors;
-      std::vector<double>          *energy_density;
+      std::vector<Pointer<ParticleVector>> particle_vectors;
+      Pointer<std::vector<double>>         energy_density;
       ///@}
       /// Every FE vector.
-      std::vector<FEVector *> fe_vectors;
+      std::vector<Pointer<FEVector>> fe_vectors;
       /// This rank's sums of the work of the loads, of the dissipated energy and of the heat in
       /// through the conditions.
-      std::vector<double *> sums;
+      std::vector<Pointer<double>> sums;
       /// What is the same on every rank: the stored heat at start_work().
-      std::vector<double *> totals;
+      std::vector<Pointer<double>> totals;
     };
+    /// The parts to change (a restart) and the parts to read (a checkpoint).
+    ///@{
+    using StoredParts      = Parts<false>;
+    using ConstStoredParts = Parts<true>;
+    ///@}
 
     /**
      * @brief What a checkpoint holds of this state: everything that changes during a run, the
      * previous state of the work of the loads and this rank's partial sums included, so that a
      * restarted run repeats the uninterrupted one bit for bit on the same number of ranks.
      */
+    ///@{
     StoredParts
     stored_parts();
+
+    ConstStoredParts
+    stored_parts() const;
+    ///@}
 
     /**
      * @brief The lines "key = value" of this state in a checkpoint's fingerprint, each key
@@ -246,7 +262,7 @@ namespace perideal
      * the stored vectors and the values per bond history of the model. Collective.
      */
     std::string
-    fingerprint(const std::string &prefix);
+    fingerprint(const std::string &prefix) const;
 
     /**
      * @brief Add the sections of this state to @p writer, named with @p prefix: this rank's sums,
@@ -256,7 +272,7 @@ namespace perideal
      * physics). Collective.
      */
     void
-    save(CheckpointWriter &writer, const std::string &prefix);
+    save(CheckpointWriter &writer, const std::string &prefix) const;
 
     /**
      * @brief Restore what save() wrote with @p prefix from @p reader (on another number of ranks
@@ -276,46 +292,208 @@ namespace perideal
 
     /**
      * @brief Put the state of the last keep() back; after the bond states (the model's
-     * histories belong to them).
+     * histories belong to them). The record of the bonds broken since (set_broken_bond_record())
+     * is dropped: they are intact again.
      */
     void
     restore_kept();
 
-    /// The problem: its communicator, its log (written on rank 0, is_root), its settings, its
-    /// particle and FE regions and its coupling method.
+    /// @name The problem's parts
+    /// The parts of the problem the state works on, each behind an accessor pair: a
+    /// <tt>const CoupledState &</tt> (every postprocessor's) gives them const.
     ///@{
-    const MPI_Comm              comm;
-    std::ostream               &log;
-    const bool                  is_root;
-    const ProblemSettings<dim> &settings;
-    ParticleRegion<dim>        &pd;
-    FERegion<dim>              &fe;
-    CouplingMethod<dim>        &method;
-    ///@}
-    /// The particles' unknowns (the FE nodes' are its first components: FERegion::field_layout()).
-    const FieldLayout layout;
 
-    /// What the set-up derives: the motion of each owned particle component.
-    std::vector<Motion> motion;
-    /// Whether any particle (on any rank) is slaved to the FE field.
-    bool any_particle_slaved = false;
-    /// Factors from the internal and the applied force density to the load that does work:
-    /// -V_i and 0 on prescribed components (the support balances the internal force), 0 and
-    /// V_i on the others (particles slaved to the FE field too: they move with it); in runs in
-    /// time (explicit, implicit) 0 on temperature components, whose heat flows the heat factors
-    /// take instead (empty without a temperature and in quasi-static runs, whose temperature's
-    /// balance is that of the work).
+    /// The communicator of the problem.
+    MPI_Comm
+    comm() const
+    {
+      return mpi_communicator;
+    }
+
+    /**
+     * @brief The log of the run (written on rank 0, is_root()). Not a part of the state: a
+     * const state writes to it too.
+     */
+    std::ostream &
+    log() const
+    {
+      return log_stream;
+    }
+
+    /// Whether this rank writes the log (rank 0 of comm()).
+    bool
+    is_root() const
+    {
+      return root;
+    }
+
+    /// The problem's settings (this physics' initial conditions and body force).
+    const ProblemSettings<dim> &
+    settings() const
+    {
+      return problem_settings;
+    }
+
+    /// The particle region.
     ///@{
-    std::vector<double> internal_work_factor, applied_work_factor;
-    std::vector<double> internal_heat_factor, applied_heat_factor;
+    const ParticleRegion<dim> &
+    pd() const
+    {
+      return particle_region;
+    }
+
+    ParticleRegion<dim> &
+    pd()
+    {
+      return particle_region;
+    }
     ///@}
+
+    /// The FE region.
+    ///@{
+    const FERegion<dim> &
+    fe() const
+    {
+      return fe_region;
+    }
+
+    FERegion<dim> &
+    fe()
+    {
+      return fe_region;
+    }
+    ///@}
+
+    /// The coupling method.
+    ///@{
+    const CouplingMethod<dim> &
+    method() const
+    {
+      return coupling_method;
+    }
+
+    CouplingMethod<dim> &
+    method()
+    {
+      return coupling_method;
+    }
+    ///@}
+
+    /// The particles' unknowns (the FE nodes' are its first components:
+    /// FERegion::field_layout()).
+    const FieldLayout &
+    layout() const
+    {
+      return field_layout;
+    }
+    ///@}
+
+    /// @name What setup() derives
+    ///@{
+
+    /// The motion of each owned particle component.
+    const std::vector<Motion> &
+    motion() const
+    {
+      return component_motion;
+    }
+
+    /// Whether any particle (on any rank) is slaved to the FE field.
+    bool
+    any_particle_slaved() const
+    {
+      return slaved_anywhere;
+    }
+
+    /**
+     * @brief Per component of the layout: its inertia over the mass (1 for translations and
+     * scalars; for a rotation the model's rotational inertia density over the mass density
+     * [m^2], MaterialModel::inertia_densities()); the inertia of component c of particle i is
+     * particle_mass[i] * inertia_ratio()[c].
+     */
+    const std::vector<double> &
+    inertia_ratio() const
+    {
+      return inertia_ratios;
+    }
+    ///@}
+
+    /// @name The hooks CoupledProblem wires
+    ///@{
+
+    /**
+     * @brief Explicit runs with an adaptive PD region (<Coupling/Adaptive region>), set by
+     * CoupledProblem: @p adapt is called every @p interval steps after the postprocessors,
+     * with the step and the time; it grows the PD region if the criterion asks for it and
+     * carries the unknowns over; it returns whether the regions changed (then the solver
+     * renews what it derives from them: masses, forces, the previous state of the work).
+     * On the states of the other physics of <Physics/List>, whose regions the first physics'
+     * conversions rebuild, @p adapt is empty and @p interval the first physics'.
+     */
+    void
+    set_adaptive_region(std::function<bool(unsigned int, double)> adapt,
+                        const unsigned int                        interval);
+
+    /// Whether set_adaptive_region() set an adaptive PD region that this state's solver calls.
+    bool
+    has_adaptive_region() const;
+
+    /// The hook of set_adaptive_region() (empty without one; a test may wrap it).
+    const std::function<bool(unsigned int, double)> &
+    adaptive_region() const;
+
+    /// The steps between two calls of adapt_regions() (Coupling/Adaptive region/Check
+    /// interval; 0 without an adaptive region); set on the states of the other physics too.
+    unsigned int
+    adaptation_interval() const;
+
+    /// Call the adaptive region of set_adaptive_region() (which must be set) after step
+    /// @p step at @p time: whether the regions changed.
+    bool
+    adapt_regions(const unsigned int step, const double time);
+
+    /**
+     * @brief Runs with several physics (<Physics/List>), set by CoupledProblem on the first
+     * physics' state: @p advance advances the other physics over a step by operator splitting
+     * (advance_other_physics()).
+     */
+    void
+    set_other_physics(std::function<void(unsigned int, double, double, bool)> advance);
+
+    /// The hook of set_other_physics() (empty without one; a test may wrap it).
+    const std::function<void(unsigned int, double, double, bool)> &
+    other_physics() const;
+
+    /**
+     * @brief Runs with several physics: accumulate_dissipated_energy() records the bonds the
+     * force evaluation broke in @p broken_bonds, for the physics that share them
+     * (PhysicsExchange::record()); restore_kept() clears it.
+     */
+    void
+    set_broken_bond_record(std::vector<unsigned int> &broken_bonds);
+
+    /**
+     * @brief Advance the other physics of set_other_physics() (nothing without): the solver
+     * calls it with step 0 once the initial state is set, then with each step, the @p time it
+     * starts at and its length @p dt [s], and whether the step computes energies (explicit:
+     * after the step, when it writes statistics or fields; quasi-static: before the load
+     * step's solve, over the time from the last converged load factor to the one solved, each
+     * times <Time stepping/End time>).
+     */
+    void
+    advance_other_physics(const unsigned int step,
+                          const double       time,
+                          const double       dt,
+                          const bool         with_energy);
+    ///@}
+
+    /// @name The values the solvers advance and derive
+    /// Public members: they are values, so a <tt>const CoupledState &</tt> gives them const
+    /// (doc/architecture/07_driver.md).
+    ///@{
+
     /// The particles' masses of explicit runs (per owned particle; for free particles).
     std::vector<double> particle_mass;
-    /// Per component of the layout: its inertia over the mass (1 for translations and scalars;
-    /// for a rotation the model's rotational inertia density over the mass density [m^2],
-    /// MaterialModel::inertia_densities()); the inertia of component c of particle i is
-    /// particle_mass[i] * inertia_ratio[c].
-    std::vector<double> inertia_ratio;
     /// The lumped FE masses of explicit runs.
     FEVector mass;
     /// The stable explicit time step of the coupled system and the one taken [s] (explicit
@@ -323,6 +501,10 @@ namespace perideal
     ///@{
     double stable_dt = 0., time_step = 0.;
     ///@}
+    /// The change at the conversions of the adaptive region so far (summed) [J]: of the kinetic
+    /// plus strain energy, or of a temperature's stored_heat() (the interpolation of the old FE
+    /// field into the new particles), which the heat balance takes out.
+    double conversion_energy = 0.;
 
     /// FE region: displacement, velocity, acceleration; the external load; the residual
     /// f_ext - K U + P^T f (explicit) or K U - f - P^T f (quasi-static); the loads that do work
@@ -340,37 +522,7 @@ namespace perideal
     /// equilibrium_forces(), set by equilibrium_state()) [J], for a physics of <Physics/List>
     /// whose statistics its own solver does not write.
     double equilibrium_particle_energy = 0.;
-
-    /**
-     * @brief Explicit runs with an adaptive PD region (<Coupling/Adaptive region>; empty
-     * otherwise), set by CoupledProblem: called every adaptation_interval steps after the
-     * postprocessors, with the step and the time, it grows the PD region if the criterion asks
-     * for it and carries the unknowns over; it returns whether the regions changed (then the
-     * solver renews what it derives from them: masses, forces, the previous state of the work).
-     */
-    std::function<bool(unsigned int, double)> adapt_regions;
-    /// The steps between two calls of adapt_regions (Coupling/Adaptive region/Check interval);
-    /// set on the states of the other physics of <Physics/List> too, whose regions the
-    /// conversions rebuild (0 without an adaptive region).
-    unsigned int adaptation_interval = 0;
-    /// The change at the conversions so far (summed) [J]: of the kinetic plus strain energy,
-    /// or of a temperature's stored_heat() (the interpolation of the old FE field into the new
-    /// particles), which the heat balance takes out.
-    double conversion_energy = 0.;
-
-    /**
-     * @brief Runs with several physics (<Physics/List>; empty otherwise), set by CoupledProblem
-     * on the first physics' state: its solver calls it with step 0 once the initial state is
-     * set, then with each step, the time it starts at and its length [s], and whether the step
-     * computes energies (explicit: after the step, when it writes statistics or fields;
-     * quasi-static: before the load step's solve, over the time from the last converged load
-     * factor to the one solved, each times <Time stepping/End time>); it advances the other
-     * physics over that time by operator splitting.
-     */
-    std::function<void(unsigned int, double, double, bool)> advance_other_physics;
-    /// Runs with several physics: where accumulate_dissipated_energy() records the bonds the
-    /// force evaluation broke, for the physics that share them (PhysicsExchange::record()).
-    std::vector<unsigned int> *broken_bond_record = nullptr;
+    ///@}
 
   private:
     /// What keep() keeps: copies of the stored parts, of the sums and of the bond histories.
@@ -384,6 +536,41 @@ namespace perideal
     };
     /// The copy of the last keep().
     Kept kept;
+
+    // The parts of stored_parts() of @p state, a CoupledState or a const one.
+    template <typename State>
+    static Parts<std::is_const_v<State>>
+    parts_of(State &state);
+
+    // The problem's parts (the accessors above).
+    const MPI_Comm              mpi_communicator;
+    std::ostream               &log_stream;
+    const bool                  root;
+    const ProblemSettings<dim> &problem_settings;
+    ParticleRegion<dim>        &particle_region;
+    FERegion<dim>              &fe_region;
+    CouplingMethod<dim>        &coupling_method;
+    const FieldLayout           field_layout;
+
+    // What setup() derives: motion(), any_particle_slaved(), inertia_ratio(), and the factors
+    // from the internal and the applied force density to the load that does work: -V_i and 0
+    // on prescribed components (the support balances the internal force), 0 and V_i on the
+    // others (particles slaved to the FE field too: they move with it); in runs in time
+    // (explicit, implicit) 0 on temperature components, whose heat flows the heat factors take
+    // instead (empty without a temperature and in quasi-static runs, whose temperature's
+    // balance is that of the work).
+    std::vector<Motion> component_motion;
+    bool                slaved_anywhere = false;
+    std::vector<double> inertia_ratios;
+    std::vector<double> internal_work_factor, applied_work_factor;
+    std::vector<double> internal_heat_factor, applied_heat_factor;
+
+    // The hooks of set_adaptive_region(), set_other_physics() and set_broken_bond_record().
+    std::function<bool(unsigned int, double)> adaptation;
+    unsigned int                              check_interval = 0;
+    std::function<void(unsigned int, double, double, bool)> advance_physics;
+    std::vector<unsigned int>                *broken_bond_record = nullptr;
+
     // The state at the previous accumulate_work() and the work done so far on this rank.
     FEVector       previous_fe_load, previous_U;
     ParticleVector previous_u, previous_load;

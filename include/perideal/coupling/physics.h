@@ -150,19 +150,64 @@ namespace perideal
     ParticleRegion<dim> pd;
     /// The FE part (on the first physics' mesh if not the first).
     FERegion<dim> fe;
-    /// <Coupling/Method> and the method.
-    ///@{
-    std::string                          method_name;
-    std::unique_ptr<CouplingMethod<dim>> method;
-    ///@}
+    /// <Coupling/Method>.
+    std::string method_name;
     /// The fingerprint's lines of the models (Checkpoint).
     std::string model_lines;
-    /// What CoupledProblem::check() makes: the state, the solver and the postprocessors.
+
+    /// @name The parts this physics owns
+    /// Each behind an accessor pair (a const Physics gives const parts); an accessor of a part
+    /// not made yet stops (in debug mode).
     ///@{
-    std::unique_ptr<CoupledState<dim>>   state;
-    std::unique_ptr<Solver<dim>>         solver;
-    std::unique_ptr<Postprocessors<dim>> postprocessors;
+
+    /// The coupling method of <Coupling/Method> (made by parse_method()).
+    ///@{
+    const CouplingMethod<dim> &
+    method() const;
+
+    CouplingMethod<dim> &
+    method();
     ///@}
+
+    /// The state, the solver and the postprocessors (made by CoupledProblem::check()).
+    ///@{
+    const CoupledState<dim> &
+    state() const;
+
+    CoupledState<dim> &
+    state();
+
+    const Solver<dim> &
+    solver() const;
+
+    Solver<dim> &
+    solver();
+
+    const Postprocessors<dim> &
+    postprocessors() const;
+
+    Postprocessors<dim> &
+    postprocessors();
+    ///@}
+
+    /// Take the state, the solver and the postprocessors CoupledProblem::check() makes.
+    ///@{
+    void
+    set_state(std::unique_ptr<CoupledState<dim>> new_state);
+
+    void
+    set_solver(std::unique_ptr<Solver<dim>> new_solver);
+
+    void
+    set_postprocessors(std::unique_ptr<Postprocessors<dim>> new_postprocessors);
+    ///@}
+    ///@}
+
+  private:
+    std::unique_ptr<CouplingMethod<dim>> coupling_method;
+    std::unique_ptr<CoupledState<dim>>   coupled_state;
+    std::unique_ptr<Solver<dim>>         physics_solver;
+    std::unique_ptr<Postprocessors<dim>> physics_postprocessors;
   };
 } // namespace perideal
 

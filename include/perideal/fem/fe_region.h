@@ -258,25 +258,17 @@ namespace perideal
      * @brief Write the field (translations as the vector 'displacement', other components
      * by their names) and the physics' derived quantities of the FE-carrying cells as
      * `<directory>/<base_name>_<step>.h5` plus `<base_name>.xdmf` (nothing without FE unknowns).
+     * @p records holds the XDMF records of the series written so far, to which the step's is
+     * added (the caller keeps them: a checkpoint carries them, so that a restarted run continues
+     * the record).
      */
     void
-    write_output(const std::string &directory,
-                 const std::string &base_name,
-                 const unsigned int step,
-                 const double       time,
-                 const FEVector    &u);
-
-    /**
-     * @brief The XDMF records of the steps write_output() wrote so far, packed: a checkpoint
-     * keeps them, so that a restarted run continues the record (load_output_records()).
-     */
-    std::string
-    save_output_records() const;
-
-    /// Continue the records of save_output_records() (the steps a restarted run does not write
-    /// again).
-    void
-    load_output_records(const std::string &packed);
+    write_output(const std::string              &directory,
+                 const std::string              &base_name,
+                 const unsigned int              step,
+                 const double                    time,
+                 const FEVector                 &u,
+                 std::vector<dealii::XDMFEntry> &records) const;
 
     /**
      * @brief Checkpoints (source/fem/fe_region_checkpoint.cc): the bytes section @p name of the
@@ -285,9 +277,9 @@ namespace perideal
      * any number of ranks). Collective.
      */
     void
-    save_dof_values(CheckpointWriter              &writer,
-                    const std::string             &name,
-                    const std::vector<FEVector *> &vectors) const;
+    save_dof_values(CheckpointWriter                    &writer,
+                    const std::string                   &name,
+                    const std::vector<const FEVector *> &vectors) const;
 
     /// Read the values of save_dof_values() into @p vectors (owned entries; every rank reads
     /// the whole section). Collective.
@@ -485,8 +477,7 @@ namespace perideal
     std::vector<dealii::types::global_dof_index> interior_dofs;
     std::vector<std::pair<unsigned int, double>> interior_values;
     /// The owned dof held at 0 at the physics' held_point() (none if not owned or not held).
-    std::optional<unsigned int>    held_dof;
-    std::vector<dealii::XDMFEntry> xdmf_entries;
+    std::optional<unsigned int> held_dof;
   };
 } // namespace perideal
 

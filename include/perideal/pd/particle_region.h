@@ -161,11 +161,11 @@ namespace perideal
      * the value of every per-particle array of @p per_particle. Collective.
      */
     void
-    save_particle_records(CheckpointWriter                         &writer,
-                          const std::string                        &name,
-                          const std::vector<ParticleVector *>      &vectors,
-                          const unsigned int                        n_components,
-                          const std::vector<std::vector<double> *> &per_particle) const;
+    save_particle_records(CheckpointWriter                               &writer,
+                          const std::string                              &name,
+                          const std::vector<const ParticleVector *>      &vectors,
+                          const unsigned int                              n_components,
+                          const std::vector<const std::vector<double> *> &per_particle) const;
 
     /// Read the records of save_particle_records() into @p vectors and @p per_particle (owned
     /// entries).

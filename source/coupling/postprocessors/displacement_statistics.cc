@@ -17,12 +17,12 @@ namespace perideal
   {
     if (!data.write_statistics)
       return;
-    const auto   broken    = n_broken_bonds(state.pd.particles());
+    const auto   broken    = n_broken_bonds(state.pd().particles());
     const double max_u     = state.max_particle_displacement();
     const double max_fe_u  = state.U.linfty_norm();
-    const bool   particles = state.has_particles(), fe = state.fe.n_dofs() > 0;
+    const bool   particles = state.has_particles(), fe = state.fe().n_dofs() > 0;
     // A temperature field: the largest |T| [K] under its own name.
-    const bool        temperature = state.layout.has_temperature();
+    const bool        temperature = state.layout().has_temperature();
     const std::string name        = temperature ? "temperature" : "displacement";
     const std::string unit        = temperature ? " K" : " m";
     if (particles)
@@ -32,9 +32,9 @@ namespace perideal
       }
     if (fe)
       statistics.add_value("max_fe_" + name, max_fe_u);
-    if (!state.is_root || !data.final_row)
+    if (!state.is_root() || !data.final_row)
       return;
-    std::ostream &log   = state.log;
+    std::ostream &log   = state.log();
     const auto    flags = log.flags();
     log << std::scientific << std::setprecision(6);
     if (particles)

@@ -21,15 +21,15 @@ namespace perideal
       return;
     const double work = state.external_work();
     // The energy of the broken bonds, for runs that can break them.
-    const bool    breaks     = state.pd.has_body() && std::isfinite(state.pd.critical_stretch());
+    const bool    breaks = state.pd().has_body() && std::isfinite(state.pd().critical_stretch());
     const double  dissipated = state.dissipated_energy();
-    std::ostream &log        = state.log;
+    std::ostream &log        = state.log();
     const auto    flags      = log.flags();
     log << std::scientific << std::setprecision(6);
 
     if (data.quasi_static)
       {
-        const CoupledEnergy energy       = state.method.strain_energy(state.U, data.pd_energy);
+        const CoupledEnergy energy       = state.method().strain_energy(state.U, data.pd_energy);
         const double        strain       = energy.fe + energy.particles;
         const double        energy_error = work - strain - dissipated;
         // Relative to the work, unless the energies are below 1e-10 of the force scale times the
@@ -48,7 +48,7 @@ namespace perideal
         if (breaks)
           statistics.add_value("dissipated_energy", dissipated);
         statistics.add_value("energy_error", energy_error);
-        if (state.is_root && data.final_row)
+        if (state.is_root() && data.final_row)
           {
             log << "Strain energy: " << strain << " J";
             if (state.is_coupled())
@@ -59,7 +59,7 @@ namespace perideal
               log << "Dissipated energy: " << dissipated << " J\n";
             // The particles' twist does no tracked work (in a coupled run the FE twist load
             // does, against only part of the energy): no balance.
-            if (state.pd.has_body() && state.pd.material().has_prestrain())
+            if (state.pd().has_body() && state.pd().material().has_prestrain())
               log << "Energy error: not defined (the twist of torsion is a prestrain, not a "
                      "load whose work is tracked; check T psi = 2E of the section integrals)\n";
             else
@@ -72,7 +72,7 @@ namespace perideal
               }
           }
       }
-    else if (state.layout.has_temperature())
+    else if (state.layout().has_temperature())
       {
         // The thermal balance of the time steps: the change of the heat stored in the body
         // (free particles and FE dofs) against the heat in through the conditions
@@ -81,19 +81,19 @@ namespace perideal
         // an adaptive PD region made (CoupledState::conversion_energy).
         const double stored     = state.stored_heat() - state.initial_stored_heat();
         const double heat       = state.heat_in();
-        const bool   converts   = state.adaptation_interval > 0;
+        const bool   converts   = state.adaptation_interval() > 0;
         const double conversion = state.conversion_energy;
         statistics.add_value("stored_heat", stored);
         statistics.add_value("heat_in", heat);
         if (converts)
           statistics.add_value("conversion_heat", conversion);
         statistics.add_value("heat_error", stored - heat - conversion);
-        if (state.is_root && data.final_row)
+        if (state.is_root() && data.final_row)
           {
             // Printed to the accuracy of the steps (relative to the heat exchanged): round-off
             // for forward Euler, the solution's accuracy for the theta scheme (0, not -0, when
             // it rounds to nothing).
-            const double accuracy = state.settings.solver_type == SolverType::explicit_dynamics ?
+            const double accuracy = state.settings().solver_type == SolverType::explicit_dynamics ?
                                       1e-12 :
                                       state.solution_accuracy();
             const double scale = std::max({std::abs(stored), std::abs(heat), std::abs(conversion)});
@@ -129,17 +129,17 @@ namespace perideal
         statistics.add_value("external_work", balance.work());
         if (breaks)
           statistics.add_value("dissipated_energy", dissipated);
-        if (state.adapt_regions)
+        if (state.has_adaptive_region())
           statistics.add_value("conversion_energy", state.conversion_energy);
         statistics.add_value("energy_error", balance.error());
-        if (state.is_root && data.final_row)
+        if (state.is_root() && data.final_row)
           {
             log << "Kinetic energy: " << kinetic.total << " J\n"
                 << "Strain energy: " << strain << " J\n"
                 << "External work: " << balance.work() << " J\n";
             if (breaks)
               log << "Dissipated energy: " << dissipated << " J\n";
-            if (state.adapt_regions)
+            if (state.has_adaptive_region())
               log << "Energy change of the conversions: " << state.conversion_energy << " J\n";
             log << "Energy error: " << balance.error() << " J\n";
           }

@@ -25,7 +25,7 @@ namespace perideal
   {
     if (!data.write_fields)
       return;
-    const auto &settings = state.settings;
+    const auto &settings = state.settings();
     // The state of a step that did not converge: files of their own, outside the run's series.
     const std::string                    suffix = data.not_converged ? "_not_converged" : "";
     std::unique_ptr<ParticleOutput<dim>> separate;
@@ -36,12 +36,12 @@ namespace perideal
     ParticleOutput<dim> *const writer = data.not_converged ? separate.get() : particle_output.get();
     if (writer)
       {
-        const auto        &ps      = state.pd.particles();
+        const auto        &ps      = state.pd().particles();
         const unsigned int n_owned = ps.n_owned(), nc = state.n_components();
         const auto        &x = ps.positions();
         // The particles slaved to the FE field move with it: show its velocity there.
         ParticleVector velocity(state.v);
-        state.method.interpolate_to_particles(state.V, velocity);
+        state.method().interpolate_to_particles(state.V, velocity);
         writer->clear_fields();
         writer->set_points(std::vector<Point<dim>>(x.begin(), x.begin() + n_owned));
         // The fields of each group of components (output_names()): displacement, velocity and
@@ -53,7 +53,7 @@ namespace perideal
           std::vector<unsigned int>  components;
           std::array<std::string, 3> names;
         };
-        const FieldLayout &layout = state.layout;
+        const FieldLayout &layout = state.layout();
         std::vector<Group> groups;
         for (unsigned int c = 0; c < nc; ++c)
           {
@@ -83,7 +83,7 @@ namespace perideal
               writer->add_vector_field(group.names[2], n, values(state.internal_force));
             }
         state.u.update_ghost_values();
-        for (const auto &field : state.pd.material().derived_fields(ps, state.u))
+        for (const auto &field : state.pd().material().derived_fields(ps, state.u))
           writer->add_vector_field(field.name, field.n_components, field.values);
         writer->add_scalar_field("damage", damage_index(ps));
         if (state.energy_density.size() == n_owned)
@@ -93,20 +93,14 @@ namespace perideal
     state.U.update_ghost_values();
     if (settings.write_hdf5)
       {
-        // A file of its own has only its own record: the run's are set aside meanwhile.
-        const std::string records = state.fe.save_output_records();
-        if (data.not_converged)
-          {
-            const std::vector<char> none = Utilities::pack(std::vector<XDMFEntry>(), false);
-            state.fe.load_output_records(std::string(none.begin(), none.end()));
-          }
-        state.fe.write_output(state.settings.output_directory,
-                              state.settings.solution_name + suffix,
-                              data.output_index,
-                              data.time,
-                              state.U);
-        if (data.not_converged)
-          state.fe.load_output_records(records);
+        // A file of its own has only its own record: the run's are left as they are.
+        std::vector<XDMFEntry> own_record;
+        state.fe().write_output(settings.output_directory,
+                                settings.solution_name + suffix,
+                                data.output_index,
+                                data.time,
+                                state.U,
+                                data.not_converged ? own_record : fe_records);
       }
   }
 
@@ -115,9 +109,9 @@ namespace perideal
   FieldOutput<dim>::create_particle_output(const CoupledState<dim> &state,
                                            const std::string       &base_name)
   {
-    const auto &settings = state.settings;
-    if (state.pd.has_body() && (settings.write_hdf5 || settings.write_vtu))
-      return std::make_unique<ParticleOutput<dim>>(state.comm,
+    const auto &settings = state.settings();
+    if (state.pd().has_body() && (settings.write_hdf5 || settings.write_vtu))
+      return std::make_unique<ParticleOutput<dim>>(state.comm(),
                                                    settings.output_directory,
                                                    base_name,
                                                    settings.write_hdf5,
@@ -127,12 +121,13 @@ namespace perideal
 
   template <int dim>
   std::string
-  FieldOutput<dim>::save_state(const CoupledState<dim> &state) const
+  FieldOutput<dim>::save_state(const CoupledState<dim> &) const
   {
+    const std::vector<char> fe_packed = Utilities::pack(fe_records, false);
     const std::vector<char> packed =
       Utilities::pack(std::make_pair(particle_output ? particle_output->save_records() :
                                                        std::string(),
-                                     state.fe.save_output_records()),
+                                     std::string(fe_packed.begin(), fe_packed.end())),
                       false);
     return std::string(packed.begin(), packed.end());
   }
@@ -149,11 +144,13 @@ namespace perideal
     // at the last load step only); the writer is then created by the first output.
     if (!records.first.empty())
       {
-        particle_output = create_particle_output(state, state.settings.base_name);
+        particle_output = create_particle_output(state, state.settings().base_name);
         if (particle_output)
           particle_output->load_records(records.first);
       }
-    state.fe.load_output_records(records.second);
+    fe_records = Utilities::unpack<std::vector<XDMFEntry>>(std::vector<char>(records.second.begin(),
+                                                                             records.second.end()),
+                                                           false);
   }
 
   template class FieldOutput<2>;

@@ -19,8 +19,8 @@ namespace perideal
   void
   FractureStatistics<dim>::initialize(const CoupledState<dim> &state)
   {
-    if (state.settings.solver_type != SolverType::explicit_dynamics &&
-        state.settings.solver_type != SolverType::implicit)
+    if (state.settings().solver_type != SolverType::explicit_dynamics &&
+        state.settings().solver_type != SolverType::implicit)
       measures.initialize(state, control);
   }
 
@@ -35,19 +35,19 @@ namespace perideal
     const auto values = measures.measure(state);
     statistics.add_value("load", values.load);
     statistics.add_value("load_point_displacement", values.displacement);
-    if (state.pd.has_body())
+    if (state.pd().has_body())
       statistics.add_value("crack_length", values.crack_length);
-    if (state.is_root && data.final_row)
+    if (state.is_root() && data.final_row)
       {
-        const auto flags = state.log.flags();
-        state.log << std::scientific << std::setprecision(6) << "Load point " << control.load_point
-                  << " (" << control.load_component << "): load " << values.load
-                  << " N, displacement " << values.displacement << " m\n";
-        if (state.pd.has_body())
-          state.log << "Crack length measure: " << values.crack_length
-                    << (dim == 2 ? " m\n" : " m^2\n");
-        state.log << std::flush;
-        state.log.flags(flags);
+        const auto flags = state.log().flags();
+        state.log() << std::scientific << std::setprecision(6) << "Load point "
+                    << control.load_point << " (" << control.load_component << "): load "
+                    << values.load << " N, displacement " << values.displacement << " m\n";
+        if (state.pd().has_body())
+          state.log() << "Crack length measure: " << values.crack_length
+                      << (dim == 2 ? " m\n" : " m^2\n");
+        state.log() << std::flush;
+        state.log().flags(flags);
       }
   }
 

@@ -91,33 +91,33 @@ namespace perideal
         if (data.quasi_static)
           statistics->add_value("iterations", data.iterations);
       }
-    if (data.final_row && state.is_root)
+    if (data.final_row && state.is_root())
       {
-        const auto flags = state.log.flags();
-        state.log << std::scientific << std::setprecision(6);
+        const auto flags = state.log().flags();
+        state.log() << std::scientific << std::setprecision(6);
         if (data.quasi_static)
-          state.log << "Load factor: " << data.time << "\n";
+          state.log() << "Load factor: " << data.time << "\n";
         else
-          state.log << "Final time: " << data.time << " s\n";
-        state.log.flags(flags);
+          state.log() << "Final time: " << data.time << " s\n";
+        state.log().flags(flags);
       }
     for (const auto &postprocessor : postprocessors)
       postprocessor->execute(state, data, *statistics);
     for (const auto &[name, other_state, others] : physics)
       {
-        if (data.final_row && state.is_root)
-          state.log << "Physics " << name << ":\n";
+        if (data.final_row && state.is_root())
+          state.log() << "Physics " << name << ":\n";
         // The other physics advance in time within the load steps of a quasi-static run (step
         // k of N ends at k/N of the end time), or take the same load steps (a steady physics:
         // its own equilibrium energy).
         StepData   other_data = data;
-        const bool steady     = other_state->settings.solver_type == SolverType::static_linear;
+        const bool steady     = other_state->settings().solver_type == SolverType::static_linear;
         if (steady)
           other_data.pd_energy = other_state->equilibrium_particle_energy;
         else if (data.quasi_static)
           {
             other_data.quasi_static = false;
-            other_data.time         = data.time * other_state->settings.end_time;
+            other_data.time         = data.time * other_state->settings().end_time;
           }
         statistics->set_column_prefix(name + ".");
         for (const auto &postprocessor : others->postprocessors)
@@ -141,11 +141,11 @@ namespace perideal
   void
   Postprocessors<dim>::create_statistics(const CoupledState<dim> &state)
   {
-    if (state.is_root)
-      std::filesystem::create_directories(state.settings.output_directory);
+    if (state.is_root())
+      std::filesystem::create_directories(state.settings().output_directory);
     statistics =
-      std::make_unique<StatisticsFile>(state.comm,
-                                       state.settings.output_directory + "/statistics.csv");
+      std::make_unique<StatisticsFile>(state.comm(),
+                                       state.settings().output_directory + "/statistics.csv");
   }
 
   template <int dim>

@@ -19,9 +19,9 @@ namespace perideal
   Probes<dim>::initialize(const CoupledState<dim> &state)
   {
     // Per probe and rank: the distance to the nearest owned particle, then its coordinates.
-    const auto               &points   = state.settings.probe_points;
+    const auto               &points   = state.settings().probe_points;
     const unsigned int        n_probes = points.size(), width = dim + 1;
-    const auto               &ps = state.pd.particles();
+    const auto               &ps = state.pd().particles();
     const auto               &x  = ps.positions();
     std::vector<double>       nearest(n_probes * width, std::numeric_limits<double>::max());
     std::vector<unsigned int> nearest_index(n_probes, numbers::invalid_unsigned_int);
@@ -41,10 +41,10 @@ namespace perideal
               nearest_index[p] = i;
             }
         }
-    const auto all = Utilities::MPI::all_gather(state.comm, nearest);
-    const auto me  = Utilities::MPI::this_mpi_process(state.comm);
+    const auto all = Utilities::MPI::all_gather(state.comm(), nearest);
+    const auto me  = Utilities::MPI::this_mpi_process(state.comm());
 
-    const double spacing = state.pd.discretization().spacing;
+    const double spacing = state.pd().discretization().spacing;
     probe_particles.resize(n_probes);
     probe_local_index.assign(n_probes, numbers::invalid_unsigned_int);
     for (unsigned int p = 0; p < n_probes; ++p)
@@ -82,22 +82,22 @@ namespace perideal
   {
     if (!(data.final_row || data.write_statistics) || probe_particles.empty())
       return;
-    const auto         &points = state.settings.probe_points;
+    const auto         &points = state.settings().probe_points;
     const unsigned int  nc     = state.n_components();
     std::vector<double> values(points.size() * nc, 0.);
     for (unsigned int p = 0; p < points.size(); ++p)
       if (probe_local_index[p] != numbers::invalid_unsigned_int)
         for (unsigned int c = 0; c < nc; ++c)
           values[p * nc + c] = state.u.local_element(probe_local_index[p] * nc + c);
-    Utilities::MPI::sum(values, state.comm, values);
-    const FieldLayout &layout = state.layout;
+    Utilities::MPI::sum(values, state.comm(), values);
+    const FieldLayout &layout = state.layout();
     // Every statistics row: the values in SI units (m, rad, K).
     if (data.write_statistics)
       for (unsigned int p = 0; p < points.size(); ++p)
         for (unsigned int c = 0; c < nc; ++c)
           statistics.add_value("probe" + std::to_string(p + 1) + "_" + layout.name(c),
                                values[p * nc + c]);
-    if (!data.final_row || !state.is_root)
+    if (!data.final_row || !state.is_root())
       return;
     // The summary: translations and scalars in micrometres, rotations in microradians, a
     // temperature in kelvin.
@@ -107,7 +107,7 @@ namespace perideal
                                                   "displacement [um]" :
                                                   "field (" + layout.names() + ") [um, urad]";
     const double      scale       = temperature ? 1. : 1e6;
-    std::ostream     &log         = state.log;
+    std::ostream     &log         = state.log();
     const auto        flags       = log.flags();
     for (unsigned int p = 0; p < points.size(); ++p)
       {

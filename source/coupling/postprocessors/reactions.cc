@@ -16,7 +16,7 @@ namespace perideal
   void
   Reactions<dim>::initialize(const CoupledState<dim> &state)
   {
-    const auto modes = state.fe.component_masks();
+    const auto modes = state.fe().component_masks();
     fe_dof_component.assign(state.U.locally_owned_size(), 0);
     for (unsigned int d = 0; d < modes.size(); ++d)
       for (unsigned int k = 0; k < fe_dof_component.size(); ++k)
@@ -32,14 +32,14 @@ namespace perideal
   {
     if (!data.write_statistics)
       return;
-    const FieldLayout &layout        = state.layout;
+    const FieldLayout &layout        = state.layout();
     const unsigned int nc            = state.n_components();
-    const auto        &pd_conditions = state.pd.boundary_conditions();
+    const auto        &pd_conditions = state.pd().boundary_conditions();
     const auto        &pd_names      = pd_conditions.names();
     const auto         pd_reactions  = pd_conditions.reactions(state.internal_force);
-    const auto        &fe_conditions = state.fe.conditions();
+    const auto        &fe_conditions = state.fe().conditions();
     // The FE region's reactions per component of the layout (its dofs' components).
-    const auto fe_reactions = state.fe.reactions(state.fe_support);
+    const auto fe_reactions = state.fe().reactions(state.fe_support);
     for (unsigned int k = 0; k < pd_reactions.size(); ++k)
       for (unsigned int j = 0; j < pd_reactions[k].size(); ++j)
         statistics.add_value("reaction_" + pd_names[k] + "_" +
@@ -60,14 +60,14 @@ namespace perideal
     double       floor    = 0.;
     if (data.quasi_static)
       {
-        const auto &ps     = state.pd.particles();
+        const auto &ps     = state.pd().particles();
         const auto &volume = ps.volumes();
         for (unsigned int k = 0; k < state.f_ext.locally_owned_size(); ++k)
           applied[fe_dof_component[k]] += state.f_ext.local_element(k);
         for (unsigned int i = 0; i < ps.n_owned(); ++i)
           for (unsigned int c = 0; c < nc; ++c)
             applied[c] += state.external_force.local_element(i * nc + c) * volume[i];
-        Utilities::MPI::sum(applied, state.comm, applied);
+        Utilities::MPI::sum(applied, state.comm(), applied);
         const auto norm = [&](const std::vector<double>       &values,
                               const std::vector<unsigned int> *components) {
           double sum = 0.;
@@ -108,9 +108,9 @@ namespace perideal
         statistics.add_value("force_balance", balance);
       }
 
-    if (!state.is_root || !data.final_row)
+    if (!state.is_root() || !data.final_row)
       return;
-    std::ostream &log   = state.log;
+    std::ostream &log   = state.log();
     const auto    flags = log.flags();
     log << std::scientific << std::setprecision(6);
     for (unsigned int k = 0; k < pd_reactions.size(); ++k)

@@ -15,7 +15,7 @@ namespace perideal
   {
     if (!data.write_statistics || !data.quasi_static)
       return;
-    std::ostream &log   = state.log;
+    std::ostream &log   = state.log();
     const auto    flags = log.flags();
     log << std::scientific << std::setprecision(6);
     const auto report = [&](const std::string              &region,
@@ -23,7 +23,7 @@ namespace perideal
                             const std::vector<double>      &values) {
       for (unsigned int k = 0; k < names.size(); ++k)
         statistics.add_value(region + "_" + names[k], values[k]);
-      if (!state.is_root || !data.final_row || names.empty())
+      if (!state.is_root() || !data.final_row || names.empty())
         return;
       log << "Section integrals (" << region << "):";
       for (unsigned int k = 0; k < names.size(); ++k)
@@ -32,18 +32,18 @@ namespace perideal
     };
     std::vector<std::string> fe_names, pd_names;
     std::vector<double>      fe_values, pd_values;
-    if (state.fe.n_dofs() > 0)
+    if (state.fe().n_dofs() > 0)
       {
-        fe_names  = state.fe.physics().integral_names();
-        fe_values = state.fe.section_integrals(state.U);
+        fe_names  = state.fe().physics().integral_names();
+        fe_values = state.fe().section_integrals(state.U);
         report("fe", fe_names, fe_values);
       }
     if (state.has_particles())
       {
-        const auto &model = state.pd.material();
+        const auto &model = state.pd().material();
         state.u.update_ghost_values();
         pd_names  = model.integral_names();
-        pd_values = model.section_integrals(state.pd.particles(), state.u, data.pd_energy);
+        pd_values = model.section_integrals(state.pd().particles(), state.u, data.pd_energy);
         report("pd", pd_names, pd_values);
       }
     // A coupled body: the FE integrands carry 1 - beta, the particles beta, so an integral both

@@ -10,9 +10,9 @@ namespace perideal
   condition_names(const CoupledState<dim> &state)
   {
     std::string names;
-    for (const auto &c : state.fe.conditions())
+    for (const auto &c : state.fe().conditions())
       names += (names.empty() ? "" : ", ") + c.name;
-    for (const auto &name : state.pd.boundary_conditions().names())
+    for (const auto &name : state.pd().boundary_conditions().names())
       names += (names.empty() ? "" : ", ") + name;
     return names;
   }
@@ -21,16 +21,16 @@ namespace perideal
   double
   equilibrium_state(CoupledState<dim> &state)
   {
-    const double pd_energy = state.method.equilibrium_forces(state.U,
-                                                             state.u,
-                                                             state.f_ext,
-                                                             state.external_force,
-                                                             state.residual,
-                                                             state.internal_force);
+    const double pd_energy = state.method().equilibrium_forces(state.U,
+                                                               state.u,
+                                                               state.f_ext,
+                                                               state.external_force,
+                                                               state.residual,
+                                                               state.internal_force);
 
     // The loads that do work: the applied ones, and on prescribed components the support
     // forces (the FE residual K z - F there; minus the internal force on particles).
-    const auto &mask = state.fe.prescribed_mask();
+    const auto &mask = state.fe().prescribed_mask();
     for (unsigned int k = 0; k < state.U.locally_owned_size(); ++k)
       state.fe_load.local_element(k) =
         state.f_ext.local_element(k) + (mask[k] ? state.residual.local_element(k) : 0.);
@@ -44,17 +44,17 @@ namespace perideal
   void
   check_convection_on_free_particles(const CoupledState<dim> &state, const std::string &solver)
   {
-    const auto &conditions = state.pd.boundary_conditions();
+    const auto &conditions = state.pd().boundary_conditions();
     if (!conditions.has_convection())
       return;
     ParticleVector conductance;
-    state.pd.particles().reinit_vector(conductance, state.n_components());
+    state.pd().particles().reinit_vector(conductance, state.n_components());
     conditions.add_convection_conductance(conductance);
     std::uint64_t n_slaved = 0;
-    for (std::size_t k = 0; k < state.motion.size(); ++k)
-      n_slaved +=
-        (state.motion[k] == CoupledState<dim>::Motion::slaved && conductance.local_element(k) > 0.);
-    n_slaved = dealii::Utilities::MPI::sum(n_slaved, state.comm);
+    for (std::size_t k = 0; k < state.motion().size(); ++k)
+      n_slaved += (state.motion()[k] == CoupledState<dim>::Motion::slaved &&
+                   conductance.local_element(k) > 0.);
+    n_slaved = dealii::Utilities::MPI::sum(n_slaved, state.comm());
     AssertThrow(n_slaved == 0,
                 dealii::ExcMessage(
                   "A 'convection' condition of <Boundary conditions> acts on " +

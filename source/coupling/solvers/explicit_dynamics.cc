@@ -25,23 +25,23 @@ namespace perideal
   ExplicitDynamics<dim>::setup(CoupledState<dim> &state)
   {
     derive_from_regions(state);
-    const auto &ps = state.pd.particles();
-    AssertThrow(!state.layout.has_temperature() || state.settings.damping == 0.,
+    const auto &ps = state.pd().particles();
+    AssertThrow(!state.layout().has_temperature() || state.settings().damping == 0.,
                 ExcMessage("The parameter <Time stepping/Damping> is " +
-                           ParameterUtilities::format_number(state.settings.damping) +
+                           ParameterUtilities::format_number(state.settings().damping) +
                            ", but the field of this problem is a temperature (first order in "
                            "time, no velocity to damp): accepted value 0."));
-    state.time_step = ParameterUtilities::choose_time_step(state.settings.time_step,
-                                                           state.settings.safety_factor,
+    state.time_step = ParameterUtilities::choose_time_step(state.settings().time_step,
+                                                           state.settings().safety_factor,
                                                            state.stable_dt);
-    if (state.is_root)
+    if (state.is_root())
       {
-        state.log << "Stable time step:";
-        if (state.fe.n_dofs() > 0)
-          state.log << " FE " << fe_dt << " s" << (ps.n_global() > 0 ? "," : "");
+        state.log() << "Stable time step:";
+        if (state.fe().n_dofs() > 0)
+          state.log() << " FE " << fe_dt << " s" << (ps.n_global() > 0 ? "," : "");
         if (ps.n_global() > 0)
-          state.log << " PD " << pd_dt << " s";
-        state.log << std::endl;
+          state.log() << " PD " << pd_dt << " s";
+        state.log() << std::endl;
       }
   }
 
@@ -51,46 +51,46 @@ namespace perideal
   {
     using Motion          = typename CoupledState<dim>::Motion;
     const unsigned int nc = state.n_components();
-    auto              &ps = state.pd.particles();
-    state.fe.initialize_vector(state.mass);
+    auto              &ps = state.pd().particles();
+    state.fe().initialize_vector(state.mass);
     ps.reinit_vector(nodal_force, nc);
-    state.method.lumped_masses(state.mass, state.particle_mass);
+    state.method().lumped_masses(state.mass, state.particle_mass);
     // The factor from force (moment) density to acceleration: V_i over the inertia of the
     // component (m_i, or m_i times the ratio of a rotational inertia) on the components that
     // move by their acceleration, 0 on the others.
     const auto &volume = ps.volumes();
-    acceleration_factor.assign(state.motion.size(), 0.);
+    acceleration_factor.assign(state.motion().size(), 0.);
     first_order_components.clear();
-    for (std::size_t k = 0; k < state.motion.size(); ++k)
-      if (state.motion[k] == Motion::moves)
+    for (std::size_t k = 0; k < state.motion().size(); ++k)
+      if (state.motion()[k] == Motion::moves)
         {
           acceleration_factor[k] =
-            volume[k / nc] / (state.particle_mass[k / nc] * state.inertia_ratio[k % nc]);
-          if (state.layout.kind(k % nc) == ComponentKind::temperature)
+            volume[k / nc] / (state.particle_mass[k / nc] * state.inertia_ratio()[k % nc]);
+          if (state.layout().kind(k % nc) == ComponentKind::temperature)
             first_order_components.push_back(k);
         }
     // The FE dofs carry the problem's field: a temperature moves by forward Euler.
-    fe_first_order = state.layout.has_temperature();
+    fe_first_order = state.layout().has_temperature();
 
     // The stable step: the smaller of the two regions'.
-    fe_dt = state.fe.stable_time_step(&state.mass);
-    pd_dt = state.pd.stable_time_step();
+    fe_dt = state.fe().stable_time_step(&state.mass);
+    pd_dt = state.pd().stable_time_step();
     // A convection h (T_inf - T) / d adds h / d to the bound B of its layer's particles:
     // dt <= 2 rho c / (B + h / d) >= 1 / (1 / dt_B + h / (2 rho c d)) (conservative; rho c the
     // smallest of the particles, MaterialModel::inertia_scales()).
-    const double convection = state.pd.boundary_conditions().convection_bound();
+    const double convection = state.pd().boundary_conditions().convection_bound();
     if (convection > 0.)
       {
-        const auto scales = state.pd.material().inertia_scales(ps, state.pd.density());
+        const auto scales = state.pd().material().inertia_scales(ps, state.pd().density());
         double     smallest =
           scales.empty() && ps.n_owned() > 0 ? 1. : std::numeric_limits<double>::max();
         for (const double scale : scales)
           smallest = std::min(smallest, scale);
-        smallest = Utilities::MPI::min(smallest, state.comm);
+        smallest = Utilities::MPI::min(smallest, state.comm());
         for (unsigned int c = 0; c < nc; ++c)
-          if (state.layout.kind(c) == ComponentKind::temperature)
-            pd_dt = 1. / (1. / pd_dt + convection / (2. * smallest * state.pd.density() *
-                                                     state.inertia_ratio[c]));
+          if (state.layout().kind(c) == ComponentKind::temperature)
+            pd_dt = 1. / (1. / pd_dt + convection / (2. * smallest * state.pd().density() *
+                                                     state.inertia_ratio()[c]));
       }
     state.stable_dt = std::min(fe_dt, pd_dt);
   }
@@ -120,12 +120,13 @@ namespace perideal
     const auto   strain  = state.strain_energy();
     const double after   = kinetic.total + strain.fe + strain.particles;
     state.conversion_energy += after - before;
-    if (state.is_root)
-      state.log << "  energy before " << before << " J (kinetic " << kinetic_before.total
-                << ", strain " << strain_before.fe + strain_before.particles << "), after " << after
-                << " J (kinetic " << kinetic.total << ", strain " << strain.fe + strain.particles
-                << "), change " << after - before << " J, relative "
-                << (before != 0. ? (after - before) / before : 0.) << std::endl;
+    if (state.is_root())
+      state.log() << "  energy before " << before << " J (kinetic " << kinetic_before.total
+                  << ", strain " << strain_before.fe + strain_before.particles << "), after "
+                  << after << " J (kinetic " << kinetic.total << ", strain "
+                  << strain.fe + strain.particles << "), change " << after - before
+                  << " J, relative " << (before != 0. ? (after - before) / before : 0.)
+                  << std::endl;
   }
 
   template <int dim>
@@ -133,7 +134,7 @@ namespace perideal
   ExplicitDynamics<dim>::renew_forces(CoupledState<dim> &state, const double time)
   {
     compute_acceleration(state, time, true);
-    if (state.settings.damping > 0.)
+    if (state.settings().damping > 0.)
       add_damping(state);
     state.carry_work();
   }
@@ -152,8 +153,8 @@ namespace perideal
                                               const double       time,
                                               const bool         with_energy)
   {
-    auto &pd = state.pd;
-    state.method.interpolate_to_particles(state.U, state.u);
+    auto &pd = state.pd();
+    state.method().interpolate_to_particles(state.U, state.u);
     state.u.update_ghost_values();
     pd.material().compute_forces(pd.particles(),
                                  state.u,
@@ -172,7 +173,7 @@ namespace perideal
       }
     // Particles: a = f V / m on the components that move by it (one pass, no branches); the
     // nodal forces f V only if some particle is slaved to the FE field (zero otherwise).
-    const std::size_t n        = state.motion.size();
+    const std::size_t n        = state.motion().size();
     const double     *internal = state.internal_force.begin();
     const double     *applied  = state.external_force.begin();
     const double     *factor   = acceleration_factor.data();
@@ -183,10 +184,10 @@ namespace perideal
     else
       for (std::size_t k = 0; k < n; ++k)
         a[k] = internal[k] * factor[k];
-    auto &fe = state.fe;
+    auto &fe = state.fe();
     if (fe.n_dofs() == 0)
       return;
-    if (state.any_particle_slaved)
+    if (state.any_particle_slaved())
       {
         const unsigned int nc     = state.n_components();
         const auto        &volume = pd.particles().volumes();
@@ -200,7 +201,7 @@ namespace perideal
     fe.assemble_load(time, state.f_ext);
     fe.stiffness_matrix().vmult(state.residual, state.U);
     state.residual.sadd(-1., 1., state.f_ext);
-    state.method.add_particle_forces(nodal_force, state.residual);
+    state.method().add_particle_forces(nodal_force, state.residual);
     const auto &mask = fe.prescribed_mask();
     for (unsigned int k = 0; k < state.U.locally_owned_size(); ++k)
       if (mask[k])
@@ -224,7 +225,7 @@ namespace perideal
       state.v.local_element(k) = state.a.local_element(k);
     if (fe_first_order)
       {
-        const auto &mask = state.fe.prescribed_mask();
+        const auto &mask = state.fe().prescribed_mask();
         for (unsigned int k = 0; k < state.U.locally_owned_size(); ++k)
           if (!mask[k])
             state.V.local_element(k) = state.A.local_element(k);
@@ -238,13 +239,13 @@ namespace perideal
     // a -= c v with the half-step velocity on the dofs and particle components that move by
     // their acceleration.
     using Motion      = typename CoupledState<dim>::Motion;
-    const double c    = state.settings.damping;
-    const auto  &mask = state.fe.prescribed_mask();
+    const double c    = state.settings().damping;
+    const auto  &mask = state.fe().prescribed_mask();
     for (unsigned int k = 0; k < state.U.locally_owned_size(); ++k)
       if (!mask[k])
         state.A.local_element(k) -= c * state.V.local_element(k);
-    for (std::size_t k = 0; k < state.motion.size(); ++k)
-      if (state.motion[k] == Motion::moves)
+    for (std::size_t k = 0; k < state.motion().size(); ++k)
+      if (state.motion()[k] == Motion::moves)
         state.a.local_element(k) -= c * state.v.local_element(k);
   }
 
@@ -259,15 +260,15 @@ namespace perideal
     // the residual is the ghost force of the coupling.
     using Motion               = typename CoupledState<dim>::Motion;
     const unsigned int nc      = state.n_components();
-    const auto        &mask    = state.fe.prescribed_mask();
+    const auto        &mask    = state.fe().prescribed_mask();
     double             largest = 0.;
     state.U.update_ghost_values();
     for (unsigned int k = 0; k < state.U.locally_owned_size(); ++k)
       if (!mask[k])
         largest = std::max(largest, std::abs(state.residual.local_element(k)));
-    const auto &volume = state.pd.particles().volumes();
-    for (std::size_t k = 0; k < state.motion.size(); ++k)
-      if (state.motion[k] == Motion::moves)
+    const auto &volume = state.pd().particles().volumes();
+    for (std::size_t k = 0; k < state.motion().size(); ++k)
+      if (state.motion()[k] == Motion::moves)
         largest = std::max(largest,
                            std::abs(state.internal_force.local_element(k) +
                                     state.external_force.local_element(k)) *
@@ -286,8 +287,7 @@ namespace perideal
       report_initial_residual(state);
     state.start_work();
     state.fe_support.equ(-1., state.residual);
-    if (state.advance_other_physics)
-      state.advance_other_physics(0, 0., 0., true);
+    state.advance_other_physics(0, 0., 0., true);
   }
 
   template <int dim>
@@ -298,8 +298,8 @@ namespace perideal
                                  const bool         with_energy)
   {
     using Motion     = typename CoupledState<dim>::Motion;
-    auto &fe         = state.fe;
-    auto &conditions = state.pd.boundary_conditions();
+    auto &fe         = state.fe();
+    auto &conditions = state.pd().boundary_conditions();
     auto &U = state.U, &V = state.V, &A = state.A;
     auto &u = state.u, &v = state.v, &a = state.a;
     // The heat in over the step from the heat flows at its start (forward Euler).
@@ -313,18 +313,18 @@ namespace perideal
     fe.prescribe(time + 0.5 * dt, U, V);
     conditions.prescribe_step_velocity(time, dt, v);
     U.add(dt, V);
-    if (!state.any_particle_slaved)
+    if (!state.any_particle_slaved())
       u.add(dt, v);
     else
-      for (std::size_t k = 0; k < state.motion.size(); ++k)
-        if (state.motion[k] != Motion::slaved)
+      for (std::size_t k = 0; k < state.motion().size(); ++k)
+        if (state.motion()[k] != Motion::slaved)
           u.local_element(k) += dt * v.local_element(k);
     fe.prescribe(time + dt, U, V);
     conditions.prescribe_displacement(time + dt, u);
     U.update_ghost_values();
 
     compute_acceleration(state, time + dt, with_energy);
-    if (state.settings.damping > 0.)
+    if (state.settings().damping > 0.)
       add_damping(state);
     V.add(0.5 * dt, A);
     v.add(0.5 * dt, a);
@@ -340,12 +340,12 @@ namespace perideal
                              Postprocessors<dim> &postprocessors,
                              Checkpoint<dim>     &checkpoint)
   {
-    const auto        &settings = state.settings;
+    const auto        &settings = state.settings();
     const unsigned int n_steps =
       ParameterUtilities::equal_time_steps(settings.end_time, state.time_step);
     const double dt = state.time_step;
-    if (state.is_root)
-      state.log << "Time step: " << dt << " s, steps: " << n_steps << std::endl;
+    if (state.is_root())
+      state.log() << "Time step: " << dt << " s, steps: " << n_steps << std::endl;
     std::ostringstream run_description;
     run_description << "explicit dynamics, " << n_steps << " steps of " << std::setprecision(17)
                     << dt << " s";
@@ -354,26 +354,25 @@ namespace perideal
     const RunPosition start =
       run.start(run_description.str(), n_steps, [&]() { start_state(state); });
 
-    ProgressReporter progress(state.comm,
-                              state.log,
+    ProgressReporter progress(state.comm(),
+                              state.log(),
                               n_steps,
                               settings.end_time,
-                              settings.show_progress && state.is_root);
+                              settings.show_progress && state.is_root());
     const auto       start_time = std::chrono::steady_clock::now();
     for (unsigned int step = start.step + 1; step <= n_steps; ++step)
       {
         StepData   data = run.plan(step, step * dt, step == n_steps);
         const bool check_regions =
-          state.adapt_regions && !data.final_row && step % state.adaptation_interval == 0;
+          state.has_adaptive_region() && !data.final_row && step % state.adaptation_interval() == 0;
         advance(state,
                 (step - 1) * dt,
                 dt,
                 data.write_statistics || data.write_fields || check_regions);
-        if (state.advance_other_physics)
-          state.advance_other_physics(step,
-                                      (step - 1) * dt,
-                                      dt,
-                                      data.write_statistics || data.write_fields);
+        state.advance_other_physics(step,
+                                    (step - 1) * dt,
+                                    dt,
+                                    data.write_statistics || data.write_fields);
 
         if (data.write_statistics)
           state.fe_support.equ(-1., state.residual);
@@ -386,32 +385,32 @@ namespace perideal
       }
     const double seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start_time).count();
-    const std::uint64_t n_bonds = state.pd.particles().n_global_bonds();
+    const std::uint64_t n_bonds = state.pd().particles().n_global_bonds();
     if (!settings.show_progress)
       return;
     // The peak resident memory of the processes (VmHWM), summed over the ranks, and the part
     // above the resident memory before the particles were generated, per bond and particle.
     Utilities::System::MemoryStats memory;
     Utilities::System::get_memory_stats(memory);
-    const auto  &particles = state.pd.particles();
-    const double peak      = Utilities::MPI::sum(static_cast<double>(memory.VmHWM), state.comm);
+    const auto  &particles = state.pd().particles();
+    const double peak      = Utilities::MPI::sum(static_cast<double>(memory.VmHWM), state.comm());
     const double above =
       peak -
-      Utilities::MPI::sum(static_cast<double>(particles.resident_memory_before()), state.comm);
+      Utilities::MPI::sum(static_cast<double>(particles.resident_memory_before()), state.comm());
     const double megabytes = peak / 1024.;
-    if (state.is_root)
+    if (state.is_root())
       {
-        state.log << "Wall time of the time loop: " << seconds << " s" << std::endl;
+        state.log() << "Wall time of the time loop: " << seconds << " s" << std::endl;
         if (n_bonds > 0)
-          state.log << "bond updates per second: "
-                    << double(n_bonds) * (n_steps - start.step) / seconds << std::endl;
-        state.log << "Peak memory: " << megabytes << " MB (resident, summed over the ranks)"
-                  << std::endl;
-        if (n_bonds > 0)
-          state.log << "Peak memory above the program without particles: " << above / 1024.
-                    << " MB, " << 1024. * above / double(n_bonds) << " B per bond, "
-                    << 1024. * above / double(particles.n_global()) << " B per particle"
+          state.log() << "bond updates per second: "
+                      << double(n_bonds) * (n_steps - start.step) / seconds << std::endl;
+        state.log() << "Peak memory: " << megabytes << " MB (resident, summed over the ranks)"
                     << std::endl;
+        if (n_bonds > 0)
+          state.log() << "Peak memory above the program without particles: " << above / 1024.
+                      << " MB, " << 1024. * above / double(n_bonds) << " B per bond, "
+                      << 1024. * above / double(particles.n_global()) << " B per particle"
+                      << std::endl;
       }
   }
 

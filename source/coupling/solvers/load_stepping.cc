@@ -32,8 +32,8 @@ namespace perideal
   LoadStepping<dim>::check(const CoupledState<dim> &state) const
   {
     using Motion                  = typename CoupledState<dim>::Motion;
-    const auto        &fe         = state.fe;
-    const auto        &conditions = state.pd.boundary_conditions();
+    const auto        &fe         = state.fe();
+    const auto        &conditions = state.pd().boundary_conditions();
     const unsigned int nc         = state.n_components();
 
     CoupledStaticSolver<dim>::check_mesh(fe);
@@ -44,10 +44,10 @@ namespace perideal
     for (const auto &c : fe.conditions())
       AssertThrow(c.type != Quantity::rate,
                   ExcMessage("The FE boundary condition <" + c.name + "> is of type '" +
-                             quantity_name(state.layout.kind(c.components[0]), Quantity::rate) +
+                             quantity_name(state.layout().kind(c.components[0]), Quantity::rate) +
                              "', which a quasi-static solve (<Solver/Type> = static or adaptive "
                              "dynamic relaxation) cannot apply; use '" +
-                             quantity_name(state.layout.kind(c.components[0]), Quantity::value) +
+                             quantity_name(state.layout().kind(c.components[0]), Quantity::value) +
                              "' (scaled by the load factor) instead."));
     // A convection's heat flux depends on the temperature: the static solve holds its
     // conductance in the matrix (setup()); the relaxation has no matrix term for it.
@@ -72,7 +72,7 @@ namespace perideal
     const std::string solver_name = relax ? "adaptive dynamic relaxation" : "static";
     check_convection_on_free_particles(state, solver_name);
 
-    AssertThrow(control.history != LoadHistory::time || state.settings.end_time > 0.,
+    AssertThrow(control.history != LoadHistory::time || state.settings().end_time > 0.,
                 ExcMessage("<Solver/Control/Load history> = time evaluates the conditions at t = "
                            "load factor x <Time stepping/End time>, which is 0: set End time > 0 "
                            "(the t at which the last load step ends)."));
@@ -92,13 +92,13 @@ namespace perideal
           constrained[component] += 1.;
     if (conditions.has_convection())
       for (unsigned int c = 0; c < nc; ++c)
-        constrained[c] += state.layout.kind(c) == ComponentKind::temperature ? 1. : 0.;
-    for (std::size_t k = 0; k < state.motion.size(); ++k)
-      if (state.motion[k] == Motion::prescribed)
+        constrained[c] += state.layout().kind(c) == ComponentKind::temperature ? 1. : 0.;
+    for (std::size_t k = 0; k < state.motion().size(); ++k)
+      if (state.motion()[k] == Motion::prescribed)
         constrained[k % nc] += 1.;
     // Particle rotations the FE field lacks follow 1/2 curl of the FE displacement where
     // particles are slaved to it: the FE conditions that hold the translations hold them too.
-    if (state.any_particle_slaved && fe.has_mesh())
+    if (state.any_particle_slaved() && fe.has_mesh())
       for (unsigned int c = n_fe; c < nc; ++c)
         constrained[c] += 1.;
     // A component no displacement condition holds leaves a rigid mode free: the static system
@@ -119,10 +119,11 @@ namespace perideal
     double n_constrained = 0.;
     for (unsigned int c = 0; c < nc; ++c)
       {
-        constrained[c] = Utilities::MPI::sum(constrained[c], state.comm);
+        constrained[c] = Utilities::MPI::sum(constrained[c], state.comm());
         n_constrained += constrained[c];
-        const std::string &name = state.layout.name(c);
-        AssertThrow(constrained[c] > 0. || relax || state.layout.kind(c) == ComponentKind::rotation,
+        const std::string &name = state.layout().name(c);
+        AssertThrow(constrained[c] > 0. || relax ||
+                      state.layout().kind(c) == ComponentKind::rotation,
                     ExcMessage("No displacement condition prescribes the " + name +
                                " component anywhere" + conditions_named +
                                ", so a rigid translation in " + name +
@@ -145,19 +146,19 @@ namespace perideal
   {
     using Motion = typename CoupledState<dim>::Motion;
     this->check(state);
-    const auto        &fe = state.fe;
+    const auto        &fe = state.fe();
     const unsigned int nc = state.n_components();
-    state.pd.particles().reinit_vector(prescribed, nc);
+    state.pd().particles().reinit_vector(prescribed, nc);
     // The conditions at one time (conditions_at()).
-    state.pd.particles().reinit_vector(target, nc);
-    state.pd.particles().reinit_vector(full_load, nc);
+    state.pd().particles().reinit_vector(target, nc);
+    state.pd().particles().reinit_vector(full_load, nc);
     fe.initialize_vector(fe_target);
     fe.initialize_vector(fe_full_load);
-    for (std::size_t k = 0; k < state.motion.size(); ++k)
-      if (state.motion[k] == Motion::prescribed)
+    for (std::size_t k = 0; k < state.motion().size(); ++k)
+      if (state.motion()[k] == Motion::prescribed)
         prescribed.local_element(k) = 1.;
 
-    const auto              &settings = state.settings;
+    const auto              &settings = state.settings();
     EquilibriumSettings<dim> equilibrium;
     equilibrium.type                      = type;
     equilibrium.linear.linear_solver      = settings.linear_solver;
@@ -165,28 +166,28 @@ namespace perideal
     equilibrium.linear.max_iterations     = settings.max_iterations;
     equilibrium.relaxation.tolerance      = settings.tolerance;
     equilibrium.relaxation.max_iterations = settings.max_iterations;
-    equilibrium.relaxation.length_scale   = state.pd.discretization().horizon;
+    equilibrium.relaxation.length_scale   = state.pd().discretization().horizon;
     equilibrium.relaxation_safety         = settings.density_safety_factor;
-    state.method.initialize_equilibrium(prescribed, equilibrium, condition_names(state));
+    state.method().initialize_equilibrium(prescribed, equilibrium, condition_names(state));
     const bool relax = (type == SolverType::adaptive_dynamic_relaxation);
     // A particle convection h (T_inf - T) / d: its conductance h V / d in the system's diagonal,
     // its ambient part h T_inf / d a load (conditions_at()).
-    if (state.pd.boundary_conditions().has_convection())
+    if (state.pd().boundary_conditions().has_convection())
       {
         FEVector       fe_diagonal;
         ParticleVector conductance;
         fe.initialize_vector(fe_diagonal);
-        state.pd.particles().reinit_vector(conductance, nc);
-        state.pd.boundary_conditions().add_convection_conductance(conductance);
-        state.method.set_equilibrium_diagonal(fe_diagonal, conductance);
+        state.pd().particles().reinit_vector(conductance, nc);
+        state.pd().boundary_conditions().add_convection_conductance(conductance);
+        state.method().set_equilibrium_diagonal(fe_diagonal, conductance);
       }
-    if (state.is_root)
-      state.log << (relax ? "Adaptive dynamic relaxation: " : "Static solve: ")
-                << state.method.n_unknowns() << " unknowns ("
-                << (state.is_coupled() ? "FE dofs and free particle components" :
-                    fe.has_mesh()      ? "FE dofs" :
-                                         "particle components")
-                << "), " << settings.load_steps << " load step(s)" << std::endl;
+    if (state.is_root())
+      state.log() << (relax ? "Adaptive dynamic relaxation: " : "Static solve: ")
+                  << state.method().n_unknowns() << " unknowns ("
+                  << (state.is_coupled() ? "FE dofs and free particle components" :
+                      fe.has_mesh()      ? "FE dofs" :
+                                           "particle components")
+                  << "), " << settings.load_steps << " load step(s)" << std::endl;
   }
 
   template <int dim>
@@ -194,11 +195,11 @@ namespace perideal
   LoadStepping<dim>::conditions_at(CoupledState<dim> &state, const double time)
   {
     full_load = 0.;
-    state.pd.boundary_conditions().prescribe_displacement(time, target);
-    state.pd.boundary_conditions().add_loads(time, full_load);
-    state.pd.boundary_conditions().add_convection(time, nullptr, full_load);
-    state.fe.prescribe(time, fe_target, state.V);
-    state.fe.assemble_load(time, fe_full_load);
+    state.pd().boundary_conditions().prescribe_displacement(time, target);
+    state.pd().boundary_conditions().add_loads(time, full_load);
+    state.pd().boundary_conditions().add_convection(time, nullptr, full_load);
+    state.fe().prescribe(time, fe_target, state.V);
+    state.fe().assemble_load(time, fe_full_load);
   }
 
   template <int dim>
@@ -208,12 +209,12 @@ namespace perideal
     double scale = factor;
     if (control.history == LoadHistory::time)
       {
-        conditions_at(state, factor * state.settings.end_time);
+        conditions_at(state, factor * state.settings().end_time);
         scale = 1.;
       }
     auto       &U    = state.U;
     auto       &u    = state.u;
-    const auto &mask = state.fe.prescribed_mask();
+    const auto &mask = state.fe().prescribed_mask();
     scale_loads(state, scale);
     for (unsigned int k = 0; k < U.locally_owned_size(); ++k)
       if (mask[k])
@@ -237,8 +238,8 @@ namespace perideal
                          Postprocessors<dim> &postprocessors,
                          Checkpoint<dim>     &checkpoint)
   {
-    const auto        &settings = state.settings;
-    auto              &pd       = state.pd;
+    const auto        &settings = state.settings();
+    auto              &pd       = state.pd();
     auto              &ps       = pd.particles();
     const bool         relax    = (type == SolverType::adaptive_dynamic_relaxation);
     const unsigned int n_steps  = settings.load_steps;
@@ -266,8 +267,7 @@ namespace perideal
                 n_steps,
                 [&]() {
                   state.start_work();
-                  if (state.advance_other_physics)
-                    state.advance_other_physics(0, 0., 0., true);
+                  state.advance_other_physics(0, 0., 0., true);
                 });
     // Without cutting, step k applies k/N; with cutting the load factor advances by increment.
     const double nominal   = 1. / n_steps;
@@ -281,17 +281,14 @@ namespace perideal
         const double factor = cutting ? std::min(1., reached + increment) : double(step) / n_steps;
         // The other physics of a problem with several advance first, to the time of the load
         // factor solved (load factor x End time; k/N of it without cuts).
-        if (state.advance_other_physics)
-          {
-            const double span = settings.end_time / n_steps;
-            if (cutting)
-              state.advance_other_physics(step,
-                                          reached * settings.end_time,
-                                          factor * settings.end_time - reached * settings.end_time,
-                                          true);
-            else
-              state.advance_other_physics(step, (step - 1) * span, span, true);
-          }
+        const double span = settings.end_time / n_steps;
+        if (cutting)
+          state.advance_other_physics(step,
+                                      reached * settings.end_time,
+                                      factor * settings.end_time - reached * settings.end_time,
+                                      true);
+        else
+          state.advance_other_physics(step, (step - 1) * span, span, true);
         const auto broken_at_start = n_broken_bonds(ps);
 
         StepSolves solves;
@@ -312,11 +309,11 @@ namespace perideal
           {
             // Undo the step and solve it again with half the increment.
             checkpoint.restore_kept(state);
-            if (state.is_root)
-              state.log << "Load step " << step << " (load factor " << factor << "): "
-                        << (failed ? std::string("no convergence") :
-                                     std::to_string(broken_in_step) + " bonds broke")
-                        << ", cut to an increment of " << increment / 2. << std::endl;
+            if (state.is_root())
+              state.log() << "Load step " << step << " (load factor " << factor << "): "
+                          << (failed ? std::string("no convergence") :
+                                       std::to_string(broken_in_step) + " bonds broke")
+                          << ", cut to an increment of " << increment / 2. << std::endl;
             increment /= 2.;
             ++cuts;
             --step;
@@ -328,20 +325,20 @@ namespace perideal
         // Solves and broken bonds per step always (they are the same on every rank count);
         // iteration counts only with progress output.
         const auto broken = n_broken_bonds(ps);
-        if (state.is_root)
+        if (state.is_root())
           {
-            state.log << "Load step " << step;
+            state.log() << "Load step " << step;
             if (cutting)
-              state.log << " (load factor " << factor << ")";
+              state.log() << " (load factor " << factor << ")";
             else
-              state.log << "/" << n_steps;
-            state.log << ": " << solves.passes + 1 << " solve(s)";
+              state.log() << "/" << n_steps;
+            state.log() << ": " << solves.passes + 1 << " solve(s)";
             if (pd.has_body())
-              state.log << ", " << broken << " broken bonds";
+              state.log() << ", " << broken << " broken bonds";
             if (settings.show_progress)
-              state.log << ", " << solves.iterations << (relax ? " relaxation" : " CG")
-                        << " iterations";
-            state.log << std::endl;
+              state.log() << ", " << solves.iterations << (relax ? " relaxation" : " CG")
+                          << " iterations";
+            state.log() << std::endl;
           }
         StepData data   = run.plan(step, factor, cutting ? factor >= 1. : (step == n_steps));
         data.iterations = solves.iterations;
@@ -361,7 +358,7 @@ namespace perideal
                                      const double       factor,
                                      const unsigned int step)
   {
-    auto      &pd = state.pd;
+    auto      &pd = state.pd();
     auto      &ps = pd.particles();
     StepSolves solves;
     for (;; ++solves.passes)
@@ -369,7 +366,7 @@ namespace perideal
         const auto broken_before = n_broken_bonds(ps);
         apply_load_factor(state, factor);
         solves.iterations +=
-          state.method.solve_equilibrium(state.f_ext, state.external_force, state.U, state.u);
+          state.method().solve_equilibrium(state.f_ext, state.external_force, state.U, state.u);
         // The model's own forces and energy density at the solution (breaks bonds).
         pd.material().compute_forces(ps,
                                      state.u,
@@ -390,7 +387,7 @@ namespace perideal
   void
   LoadStepping<dim>::start_state(CoupledState<dim> &state)
   {
-    conditions_at(state, state.settings.end_time);
+    conditions_at(state, state.settings().end_time);
     state.start_work();
   }
 
@@ -403,7 +400,7 @@ namespace perideal
   {
     // The load factor of the time reached (load factor x End time), in load step k of N if it
     // lies in ((k-1)/N, k/N].
-    const auto        &settings = state.settings;
+    const auto        &settings = state.settings();
     const double       factor   = (time + dt) / settings.end_time;
     const unsigned int step     = static_cast<unsigned int>(
       std::max(1., std::ceil(factor * settings.load_steps * (1. - 1e-12))));
@@ -419,18 +416,18 @@ namespace perideal
                                         const double         factor,
                                         const std::string   &what) const
   {
-    const auto        &settings  = state.settings;
+    const auto        &settings  = state.settings();
     const std::string &directory = settings.output_directory;
-    auto              &ps        = state.pd.particles();
+    auto              &ps        = state.pd().particles();
 
     // The last iterate for inspection: its forces and energy density (no bond breaks), its
     // fields in files of their own (FieldOutput); no statistics row.
-    if (state.pd.has_body())
-      state.pd.material().compute_forces(ps,
-                                         state.u,
-                                         state.internal_force,
-                                         &state.energy_density,
-                                         std::numeric_limits<double>::infinity());
+    if (state.pd().has_body())
+      state.pd().material().compute_forces(ps,
+                                           state.u,
+                                           state.internal_force,
+                                           &state.energy_density,
+                                           std::numeric_limits<double>::infinity());
     StepData data;
     data.quasi_static  = true;
     data.step          = step;
@@ -440,26 +437,26 @@ namespace perideal
     data.not_converged = true;
     postprocessors.execute(state, data);
     std::vector<std::string> files;
-    if (state.pd.has_body() && settings.write_hdf5)
+    if (state.pd().has_body() && settings.write_hdf5)
       files.push_back(directory + "/" + settings.base_name + "_not_converged.xdmf");
-    if (state.pd.has_body() && settings.write_vtu)
+    if (state.pd().has_body() && settings.write_vtu)
       files.push_back(directory + "/" + settings.base_name + "_not_converged.pvd");
-    if (state.fe.n_dofs() > 0 && settings.write_hdf5)
+    if (state.fe().n_dofs() > 0 && settings.write_hdf5)
       files.push_back(directory + "/solution_not_converged.xdmf");
     std::string file_list;
     for (const auto &file : files)
       file_list += (file_list.empty() ? "" : ", ") + file;
     const auto broken = n_broken_bonds(ps);
-    if (state.is_root)
+    if (state.is_root())
       {
-        state.log << what << " did not converge";
-        if (state.pd.has_body())
-          state.log << " (" << broken << " broken bonds at its last iterate)";
-        state.log << "; its last iterate: "
-                  << (files.empty() ? std::string("no field files (<Output/Write HDF5> and "
-                                                  "<Output/Write VTU> are false)") :
-                                      file_list + " (output index " + std::to_string(step) + ")")
-                  << std::endl;
+        state.log() << what << " did not converge";
+        if (state.pd().has_body())
+          state.log() << " (" << broken << " broken bonds at its last iterate)";
+        state.log() << "; its last iterate: "
+                    << (files.empty() ? std::string("no field files (<Output/Write HDF5> and "
+                                                    "<Output/Write VTU> are false)") :
+                                        file_list + " (output index " + std::to_string(step) + ")")
+                    << std::endl;
       }
     return files.empty() ? std::string("no field files") : file_list;
   }
@@ -486,7 +483,7 @@ namespace perideal
                                               const double           factor,
                                               const ExcNotConverged &failure) const
   {
-    const unsigned int n_steps = state.settings.load_steps;
+    const unsigned int n_steps = state.settings().load_steps;
     const bool         cutting = control.cut_threshold > 0;
     const std::string  name    = "Load step " + std::to_string(step) +
                              (cutting ? " (load factor " + std::to_string(factor) + ", after " +
@@ -512,9 +509,9 @@ namespace perideal
           " in the parameter file and run 'perideal-solid --restart FILE.prm'; the problem, "
           "<Solver/Type> and <Solver/Load steps> must stay as they are (other load steps need a new "
           "run).";
-    if (state.is_root)
-      state.log << "Load step " << converged.step << " is the last converged one. " << how
-                << std::endl;
+    if (state.is_root())
+      state.log() << "Load step " << converged.step << " is the last converged one. " << how
+                  << std::endl;
 
     AssertThrow(false,
                 ExcNotConverged(

@@ -43,7 +43,7 @@ namespace perideal
   StepData
   RunControl<dim>::plan(const unsigned int step, const double time, const bool final_row) const
   {
-    const auto &settings = state.settings;
+    const auto &settings = state.settings();
     StepData    data;
     data.quasi_static     = quasi_static;
     data.step             = step;

@@ -27,10 +27,10 @@ namespace perideal
   SequentiallyLinear<dim>::check(const CoupledState<dim> &state) const
   {
     const std::string method = "<Solver/Control/Method> = sequentially linear";
-    AssertThrow(state.pd.has_body(),
+    AssertThrow(state.pd().has_body(),
                 ExcMessage(method + " needs particles (<Discretization/Body>): bonds are what "
                                     "breaks."));
-    const auto &material = state.pd.material();
+    const auto &material = state.pd().material();
     AssertThrow(material.capabilities().sequentially_linear,
                 ExcMessage(method +
                            " breaks bonds by the linearized stretch of a displacement field "
@@ -38,7 +38,7 @@ namespace perideal
                            "<Material/Model> accepted: " +
                            material_models_with<dim>(&ModelCapabilities::sequentially_linear) +
                            "."));
-    AssertThrow(std::isfinite(state.pd.critical_stretch()),
+    AssertThrow(std::isfinite(state.pd().critical_stretch()),
                 ExcMessage(method + " needs bonds that break: <Material/Damage model> = none; use "
                                     "'critical stretch'."));
     LoadStepping<dim>::check(state);
@@ -50,21 +50,21 @@ namespace perideal
   {
     LoadStepping<dim>::setup(state);
     measures.initialize(state, this->control);
-    bond_factor.assign(state.pd.particles().bonds().size(), 0.);
-    intact_bonds.assign(state.pd.particles().n_owned(), 0);
+    bond_factor.assign(state.pd().particles().bonds().size(), 0.);
+    intact_bonds.assign(state.pd().particles().n_owned(), 0);
   }
 
   template <int dim>
   double
   SequentiallyLinear<dim>::critical_factors(const CoupledState<dim> &state)
   {
-    const auto        &ps       = state.pd.particles();
+    const auto        &ps       = state.pd().particles();
     const auto        &bonds    = ps.bonds();
     const auto        &x        = ps.positions();
     const auto        &u        = state.u;
     const unsigned int nc       = state.n_components();
-    const double       s0       = state.pd.critical_stretch();
-    const auto         scale    = state.pd.material().breaking_factors(ps);
+    const double       s0       = state.pd().critical_stretch();
+    const auto         scale    = state.pd().material().breaking_factors(ps);
     const double       infinity = std::numeric_limits<double>::infinity();
     double             smallest = infinity;
     for (unsigned int i = 0; i < ps.n_owned(); ++i)
@@ -85,7 +85,7 @@ namespace perideal
           bond_factor[b] = factor;
           smallest       = std::min(smallest, factor);
         }
-    return Utilities::MPI::min(smallest, state.comm);
+    return Utilities::MPI::min(smallest, state.comm());
   }
 
   template <int dim>
@@ -93,7 +93,7 @@ namespace perideal
   SequentiallyLinear<dim>::loose_particles(const CoupledState<dim> &state, const double limit)
   {
     using Motion             = typename CoupledState<dim>::Motion;
-    const auto        &ps    = state.pd.particles();
+    const auto        &ps    = state.pd().particles();
     const auto        &bonds = ps.bonds();
     const unsigned int n     = ps.n_owned();
     std::fill(intact_bonds.begin(), intact_bonds.end(), 0u);
@@ -107,16 +107,16 @@ namespace perideal
           }
     unsigned long loose = 0;
     for (unsigned int i = 0; i < n; ++i)
-      if (intact_bonds[i] == 0 && state.motion[i * state.n_components()] == Motion::moves)
+      if (intact_bonds[i] == 0 && state.motion()[i * state.n_components()] == Motion::moves)
         ++loose;
-    return Utilities::MPI::sum(loose, state.comm);
+    return Utilities::MPI::sum(loose, state.comm());
   }
 
   template <int dim>
   void
   SequentiallyLinear<dim>::break_bonds(CoupledState<dim> &state, const double limit) const
   {
-    auto &bonds = state.pd.particles().bonds();
+    auto &bonds = state.pd().particles().bonds();
     for (std::size_t b = 0; b < bonds.size(); ++b)
       if (bonds.intact[b] == 1 && bond_factor[b] <= limit)
         bonds.break_bond(static_cast<unsigned int>(b), true);
@@ -128,14 +128,14 @@ namespace perideal
                                Postprocessors<dim> &postprocessors,
                                Checkpoint<dim>     &checkpoint)
   {
-    const auto &settings = state.settings;
+    const auto &settings = state.settings();
     AssertThrow(!checkpoint.restarting() && settings.checkpoint_interval == 0 &&
                   settings.checkpoint_time_interval == 0.,
                 ExcMessage("<Solver/Control/Method> = sequentially linear writes no checkpoints "
                            "yet (its peak load is not stored): set <Output/Checkpoint interval> "
                            "and <Output/Checkpoint time interval> to 0 and run without "
                            "--restart."));
-    auto        &pd       = state.pd;
+    auto        &pd       = state.pd();
     auto        &ps       = pd.particles();
     const double infinity = std::numeric_limits<double>::infinity();
     const auto   number   = [](const double x) { return ParameterUtilities::format_number(x); };
@@ -153,7 +153,7 @@ namespace perideal
         try
           {
             iterations =
-              state.method.solve_equilibrium(state.f_ext, state.external_force, state.U, state.u);
+              state.method().solve_equilibrium(state.f_ext, state.external_force, state.U, state.u);
           }
         catch (const ExcNotConverged &failure)
           {
@@ -213,10 +213,10 @@ namespace perideal
           reason = "<Solver/Control/Maximum events> = " + std::to_string(this->control.max_events) +
                    " reached before the body separated";
 
-        if (state.is_root && settings.show_progress)
-          state.log << "Event " << event << ": load factor " << factor << ", load " << values.load
-                    << " N, " << values.broken_bonds << " broken bonds, " << iterations
-                    << " CG iterations" << std::endl;
+        if (state.is_root() && settings.show_progress)
+          state.log() << "Event " << event << ": load factor " << factor << ", load " << values.load
+                      << " N, " << values.broken_bonds << " broken bonds, " << iterations
+                      << " CG iterations" << std::endl;
         // Fields after the last event only (no checkpoints: run.checkpoint() is not called).
         StepData data     = run.plan(event, factor, !reason.empty());
         data.write_fields = data.final_row;
@@ -225,10 +225,11 @@ namespace perideal
         run.write(data);
         if (data.final_row)
           {
-            if (state.is_root)
-              state.log << "Sequentially linear control: " << event << " events, peak load "
-                        << number(peak) << " N at event " << peak_event << " (load factor "
-                        << number(peak_factor) << "); the run ends: " << reason << "." << std::endl;
+            if (state.is_root())
+              state.log() << "Sequentially linear control: " << event << " events, peak load "
+                          << number(peak) << " N at event " << peak_event << " (load factor "
+                          << number(peak_factor) << "); the run ends: " << reason << "."
+                          << std::endl;
             return;
           }
 

@@ -19,11 +19,11 @@ namespace perideal
   void
   ThetaScheme<dim>::check(const CoupledState<dim> &state) const
   {
-    AssertThrow(state.layout.n_components(ComponentKind::temperature) == state.n_components(),
+    AssertThrow(state.layout().n_components(ComponentKind::temperature) == state.n_components(),
                 ExcMessage("<Solver/Type> = implicit advances a first-order field (a "
                            "temperature: <Finite elements/Physics> = heat, or a PD conduction "
                            "model), but the problem's field is " +
-                           state.layout.description() +
+                           state.layout().description() +
                            ", of second order in time; accepted <Solver/Type> for it: explicit, "
                            "static, adaptive dynamic relaxation."));
     check_convection_on_free_particles(state, "implicit");
@@ -36,38 +36,38 @@ namespace perideal
     using Motion = typename CoupledState<dim>::Motion;
     this->check(state);
     const unsigned int nc       = state.n_components();
-    const auto        &settings = state.settings;
-    auto              &ps       = state.pd.particles();
+    const auto        &settings = state.settings();
+    auto              &ps       = state.pd().particles();
 
     // The solve of the method with the prescribed components of free particles.
     ParticleVector prescribed;
     ps.reinit_vector(prescribed, nc);
-    for (std::size_t k = 0; k < state.motion.size(); ++k)
-      if (state.motion[k] == Motion::prescribed)
+    for (std::size_t k = 0; k < state.motion().size(); ++k)
+      if (state.motion()[k] == Motion::prescribed)
         prescribed.local_element(k) = 1.;
     EquilibriumSettings<dim> equilibrium;
     equilibrium.type                  = SolverType::static_linear;
     equilibrium.linear.linear_solver  = settings.linear_solver;
     equilibrium.linear.tolerance      = settings.tolerance;
     equilibrium.linear.max_iterations = settings.max_iterations;
-    state.method.initialize_equilibrium(prescribed, equilibrium, condition_names(state));
+    state.method().initialize_equilibrium(prescribed, equilibrium, condition_names(state));
 
     // C, the lumped capacity: the method's lumped masses times the components' inertia ratio
     // (the specific heat of a temperature) on the particles; the FE lumped mass is rho c
     // already (FEPhysics::mass_factor()).
-    state.fe.initialize_vector(state.mass);
-    state.method.lumped_masses(state.mass, state.particle_mass);
-    free_factor.assign(state.motion.size(), 0.);
-    for (std::size_t k = 0; k < state.motion.size(); ++k)
-      free_factor[k] = state.motion[k] != Motion::slaved ? 1. : 0.;
+    state.fe().initialize_vector(state.mass);
+    state.method().lumped_masses(state.mass, state.particle_mass);
+    free_factor.assign(state.motion().size(), 0.);
+    for (std::size_t k = 0; k < state.motion().size(); ++k)
+      free_factor[k] = state.motion()[k] != Motion::slaved ? 1. : 0.;
     double dt = settings.time_step;
     ParameterUtilities::equal_time_steps(settings.end_time, dt);
     set_step(state, dt);
-    state.fe.initialize_vector(fe_rhs);
+    state.fe().initialize_vector(fe_rhs);
     ps.reinit_vector(pd_rhs, nc);
-    if (state.is_root)
-      state.log << "Implicit theta scheme: theta = " << settings.theta << ", "
-                << state.method.n_unknowns() << " unknowns per step" << std::endl;
+    if (state.is_root())
+      state.log() << "Implicit theta scheme: theta = " << settings.theta << ", "
+                << state.method().n_unknowns() << " unknowns per step" << std::endl;
   }
 
   template <int dim>
@@ -75,28 +75,28 @@ namespace perideal
   ThetaScheme<dim>::set_step(CoupledState<dim> &state, const double dt)
   {
     const unsigned int nc     = state.n_components();
-    auto              &ps     = state.pd.particles();
-    const double       factor = 1. / (state.settings.theta * dt);
+    auto              &ps     = state.pd().particles();
+    const double       factor = 1. / (state.settings().theta * dt);
     state.time_step           = dt;
     // D = C / (theta dt). A particle convection h (T_inf - T) / d adds its conductance h V / d
     // to the diagonal (its ambient part h T_inf / d is a load); not to D, which multiplies T_n.
-    state.fe.initialize_vector(fe_diagonal);
+    state.fe().initialize_vector(fe_diagonal);
     fe_diagonal.equ(factor, state.mass);
     ParticleVector diagonal, conductance;
     ps.reinit_vector(diagonal, nc);
     ps.reinit_vector(conductance, nc);
     ps.reinit_vector(particle_diagonal, nc);
-    state.pd.boundary_conditions().add_convection_conductance(conductance);
+    state.pd().boundary_conditions().add_convection_conductance(conductance);
     const auto &volume = ps.volumes();
     for (std::size_t k = 0; k < free_factor.size(); ++k)
       if (free_factor[k] != 0.)
         {
           particle_diagonal.local_element(k) =
-            factor * state.particle_mass[k / nc] * state.inertia_ratio[k % nc] / volume[k / nc];
+            factor * state.particle_mass[k / nc] * state.inertia_ratio()[k % nc] / volume[k / nc];
           diagonal.local_element(k) =
             particle_diagonal.local_element(k) * volume[k / nc] + conductance.local_element(k);
         }
-    state.method.set_equilibrium_diagonal(fe_diagonal, diagonal);
+    state.method().set_equilibrium_diagonal(fe_diagonal, diagonal);
   }
 
   template <int dim>
@@ -105,9 +105,9 @@ namespace perideal
   {
     state.f_ext          = 0.;
     state.external_force = 0.;
-    state.fe.assemble_load(time, state.f_ext);
-    state.pd.boundary_conditions().add_loads(time, state.external_force);
-    state.pd.boundary_conditions().add_convection(time, &state.u, state.external_force);
+    state.fe().assemble_load(time, state.f_ext);
+    state.pd().boundary_conditions().add_loads(time, state.external_force);
+    state.pd().boundary_conditions().add_convection(time, &state.u, state.external_force);
     equilibrium_state(state);
   }
 
@@ -117,9 +117,9 @@ namespace perideal
   {
     FEVector       U_start(state.U);
     ParticleVector u_start(state.u);
-    state.fe.assemble_load(time, fe_rhs);
+    state.fe().assemble_load(time, fe_rhs);
     pd_rhs = 0.;
-    state.method.solve_equilibrium(fe_rhs, pd_rhs, U_start, u_start);
+    state.method().solve_equilibrium(fe_rhs, pd_rhs, U_start, u_start);
     forces_at(state, time);
   }
 
@@ -152,10 +152,10 @@ namespace perideal
   void
   ThetaScheme<dim>::step_to(CoupledState<dim> &state, const double time)
   {
-    auto             &fe         = state.fe;
-    auto             &conditions = state.pd.boundary_conditions();
+    auto             &fe         = state.fe();
+    auto             &conditions = state.pd().boundary_conditions();
     auto             &U = state.U, &u = state.u;
-    const double      theta      = state.settings.theta;
+    const double      theta      = state.settings().theta;
     const double      old_weight = (1. - theta) / theta;
     const std::size_t n_particle = free_factor.size();
     // The heat in over the step, theta-weighted as the step: (1 - theta) dt of the heat flows at
@@ -180,7 +180,7 @@ namespace perideal
     pd_rhs += state.external_force;
     fe.prescribe(time, U, state.V);
     conditions.prescribe_displacement(time, u);
-    iterations = state.method.solve_equilibrium(fe_rhs, pd_rhs, U, u);
+    iterations = state.method().solve_equilibrium(fe_rhs, pd_rhs, U, u);
     forces_at(state, time);
     state.accumulate_heat(theta * state.time_step);
   }
@@ -204,11 +204,11 @@ namespace perideal
                         Postprocessors<dim> &postprocessors,
                         Checkpoint<dim>     &checkpoint)
   {
-    const auto        &settings = state.settings;
+    const auto        &settings = state.settings();
     double             dt       = settings.time_step;
     const unsigned int n_steps  = ParameterUtilities::equal_time_steps(settings.end_time, dt);
-    if (state.is_root)
-      state.log << "Time step: " << dt << " s, steps: " << n_steps << std::endl;
+    if (state.is_root())
+      state.log() << "Time step: " << dt << " s, steps: " << n_steps << std::endl;
     std::ostringstream run_description;
     run_description << "implicit, theta " << settings.theta << ", " << n_steps << " steps of "
                     << std::setprecision(17) << dt << " s";

@@ -37,6 +37,9 @@ namespace perideal
   private:
     std::shared_ptr<const dealii::Function<dim>> exact;
     double                                       tolerance = 0.;
+    /// The physics' method, which evaluates the forces of the exact field
+    /// (PostprocessorInputs::method).
+    CouplingMethod<dim> *method = nullptr;
   };
 } // namespace perideal
 

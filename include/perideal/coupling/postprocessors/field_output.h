@@ -4,11 +4,14 @@
 #ifndef perideal_coupling_postprocessors_field_output_h
 #define perideal_coupling_postprocessors_field_output_h
 
+#include <deal.II/base/data_out_base.h>
+
 #include <perideal/base/particle_output.h>
 #include <perideal/coupling/postprocessors/postprocessor.h>
 
 #include <memory>
 #include <string>
+#include <vector>
 
 namespace perideal
 {
@@ -48,6 +51,9 @@ namespace perideal
 
     /// The particle writer, created at the first output.
     std::unique_ptr<ParticleOutput<dim>> particle_output;
+    /// The XDMF records of the FE files of the run's series written so far
+    /// (FERegion::write_output()).
+    std::vector<dealii::XDMFEntry> fe_records;
   };
 } // namespace perideal
 

@@ -65,6 +65,13 @@ namespace perideal
     std::shared_ptr<const dealii::Function<dim>> exact_displacement;
     double                                       exact_tolerance = 0.;
     ///@}
+    /**
+     * @brief The physics' coupling method, for a postprocessor that evaluates the forces of a
+     * field of its own (ExactError: the residual of the exact field). A force evaluation
+     * changes the method's work vectors, which the const state does not allow: this is the
+     * one way to it, and it is never the state's unknowns.
+     */
+    CouplingMethod<dim> *method = nullptr;
   };
 
   /**

@@ -25,7 +25,7 @@ namespace perideal
    * density to acceleration is V_i / m_i where the component moves by its acceleration and 0
    * where it is slaved to the FE field or prescribed, so the pass has no branches.
    *
-   * With an adaptive PD region (CoupledState::adapt_regions), every check step computes the
+   * With an adaptive PD region (CoupledState::adapt_regions()), every check step computes the
    * energies, lets the region grow and, if it did, renews the masses and factors (the step stays;
    * a conversion that lowers the stable step below it stops the run), the forces and the previous
    * state of the work, and logs the change of kinetic plus strain energy, which the energy
@@ -46,7 +46,7 @@ namespace perideal
     /**
      * @brief The initial state of a run: the initial conditions, the prescribed values at
      * t = 0, the forces and rates, the start of the work; then (CoupledState::
-     * advance_other_physics) the initial state of the other physics.
+     * advance_other_physics()) the initial state of the other physics.
      */
     void
     start_state(CoupledState<dim> &state) override;
@@ -79,7 +79,7 @@ namespace perideal
 
     /**
      * @brief After step @p step at @p time: let the adaptive region grow
-     * (CoupledState::adapt_regions) and, if it did, renew what the step derives from the
+     * (CoupledState::adapt_regions()) and, if it did, renew what the step derives from the
      * regions and log the energy change.
      */
     void
