@@ -299,7 +299,8 @@ namespace perideal
     restore_kept();
 
     /// @name The problem's parts
-    /// The parts of the problem the state works on, each behind an accessor pair: a
+    /// The parts of the problem the state works on, each behind an accessor (a const and a
+    /// non-const one for the parts that change: pd(), fe(), method()): a
     /// <tt>const CoupledState &</tt> (every postprocessor's) gives them const.
     ///@{
 
