@@ -114,7 +114,7 @@ namespace
     const std::string z0 = dim == 3 ? ", 0" : "", z1 = dim == 3 ? ", 0.01" : "";
     const std::vector<std::pair<std::vector<std::string>, std::pair<std::string, std::string>>>
       values = {{{"Discretization"}, {"Lattice spacing", "1e-3"}},
-                {{"Discretization"}, {"Thickness", "1e-3"}},
+                {{"Discretization"}, {"Thickness", dim == 2 ? "1e-3" : "1"}},
                 {{"Discretization"}, {"Body", "body"}},
                 {{"Regions"}, {"Names", "body, edge"}},
                 {{"Regions", "body"}, {"Lower corner", "0, 0" + z0}},

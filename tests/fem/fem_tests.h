@@ -63,8 +63,8 @@ namespace fem_tests
 
   /**
    * The lines of a static, FE-only problem besides <Finite elements>: dimension, planar
-   * assumption, body force, solver tolerance; statistics in results/, no field output, no
-   * progress lines.
+   * assumption (2D only: a 3D problem refuses one), body force, solver tolerance; statistics in
+   * results/, no field output, no progress lines.
    */
   inline std::string
   static_problem(const unsigned int dim,
@@ -74,10 +74,8 @@ namespace fem_tests
   {
     return "set Dimension = " + std::to_string(dim) +
            "\n"
-           "subsection Material\n"
-           "  set Planar assumption = " +
-           planar +
-           "\n"
+           "subsection Material\n" +
+           (dim == 2 ? "  set Planar assumption = " + planar + "\n" : std::string()) +
            "end\n"
            "subsection Body force\n"
            "  set Function = " +
