@@ -163,7 +163,7 @@ namespace perideal
     const auto n = static_cast<unsigned int>(
       std::max(1., std::ceil(step_length / field.state().time_step * (1. - 1e-12))));
     field.state().time_step = step_length / n;
-    sub_steps[k - 1]       = field.state().time_step;
+    sub_steps[k - 1]        = field.state().time_step;
     if (is_root && field.settings.solver_type == SolverType::static_linear)
       log << "  a steady solve before each load step of the first physics" << std::endl;
     else if (is_root)
@@ -196,7 +196,10 @@ namespace perideal
         if (resume_other_physics)
           field.solver().resume_state(field.state(), time);
         for (unsigned int s = 0; s < n; ++s)
-          field.solver().advance(field.state(), time + s * length, length, with_energy && s + 1 == n);
+          field.solver().advance(field.state(),
+                                 time + s * length,
+                                 length,
+                                 with_energy && s + 1 == n);
         // The force of the supports, for the reactions (explicit runs keep it from the last
         // step's residual).
         if (with_energy && field.settings.solver_type == SolverType::explicit_dynamics)

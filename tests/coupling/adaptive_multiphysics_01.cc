@@ -315,8 +315,9 @@ end
           [&problem, &result, convert, uniform, cut](const unsigned int step, const double time) {
             perideal::Physics<2> &heat   = *problem.get_physics()[1];
             const Snapshot        before = snapshot(heat, uniform);
-            const double stored = heat.state().stored_heat(), summed = heat.state().conversion_energy;
-            const bool   first = result.inspection.conversions == 0;
+            const double          stored = heat.state().stored_heat(),
+                         summed          = heat.state().conversion_energy;
+            const bool first             = result.inspection.conversions == 0;
             if (cut && first && result.cut_bonds == 0)
               result.cut_bonds = break_cut(heat.pd.particles());
             if (!convert(step, time))

@@ -116,8 +116,8 @@ namespace perideal
     /**
      * @brief Add the energy that the bonds broken by the last force evaluation released at the
      * particle displacement u (MaterialModel::released_energy(): nothing to do unless bonds
-     * broke), recording the bonds for the other physics (set_broken_bond_record()). Call it on every
-     * rank after each force evaluation that may break bonds.
+     * broke), recording the bonds for the other physics (set_broken_bond_record()). Call it on
+     * every rank after each force evaluation that may break bonds.
      */
     void
     accumulate_dissipated_energy();
@@ -567,10 +567,10 @@ namespace perideal
     std::vector<double> internal_heat_factor, applied_heat_factor;
 
     // The hooks of set_adaptive_region(), set_other_physics() and set_broken_bond_record().
-    std::function<bool(unsigned int, double)> adaptation;
-    unsigned int                              check_interval = 0;
+    std::function<bool(unsigned int, double)>               adaptation;
+    unsigned int                                            check_interval = 0;
     std::function<void(unsigned int, double, double, bool)> advance_physics;
-    std::vector<unsigned int>                *broken_bond_record = nullptr;
+    std::vector<unsigned int>                              *broken_bond_record = nullptr;
 
     // The state at the previous accumulate_work() and the work done so far on this rank.
     FEVector       previous_fe_load, previous_U;

@@ -67,7 +67,7 @@ namespace perideal
     ps.reinit_vector(pd_rhs, nc);
     if (state.is_root())
       state.log() << "Implicit theta scheme: theta = " << settings.theta << ", "
-                << state.method().n_unknowns() << " unknowns per step" << std::endl;
+                  << state.method().n_unknowns() << " unknowns per step" << std::endl;
   }
 
   template <int dim>
