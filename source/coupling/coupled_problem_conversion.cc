@@ -185,7 +185,8 @@ namespace perideal
     for (const auto &field : physics)
       {
         carried.push_back(keep(*field, lattice));
-        stored_before.push_back(field->state().stored_heat());
+        stored_before.push_back(field->layout.has_temperature() ? field->state().stored_heat() :
+                                                                  0.);
       }
     std::set<std::pair<Key, Key>> broken;
     {

@@ -350,9 +350,12 @@ namespace perideal
                            body,
                     pre_cracks,
                     regions.union_of(no_fail_regions, "Material/No-fail regions"),
-                    [&](const std::uint64_t n_particles) {
-                      warn_if_bonds_exceed_memory(n_particles);
-                    });
+                    // At the first set-up only, not at each regeneration of a growing region.
+                    log_summary ?
+                      std::function<void(std::uint64_t)>([&](const std::uint64_t n_particles) {
+                        warn_if_bonds_exceed_memory(n_particles);
+                      }) :
+                      std::function<void(std::uint64_t)>());
         // A coupled problem may leave the PD region empty (beta = 0 on the whole body).
         AssertThrow(keep || ps.n_global() > 0,
                     ExcMessage("The body (<Discretization/Body>) holds no particle: its regions "
