@@ -231,6 +231,7 @@ namespace perideal
                       "z-x-z Euler angles phi, theta, psi [degrees] of the material axes with "
                       "respect to the global axes. In 2D only phi keeps the plane a symmetry "
                       "plane of the material.");
+    ThermalExpansion::declare_parameters(prm, true);
   }
 
   void
@@ -330,6 +331,7 @@ namespace perideal
     rotation          = rotation_from_euler_angles(angles[0], angles[1], angles[2]);
     if (angles[0] != 0. || angles[1] != 0. || angles[2] != 0.)
       stiffness = rotate_voigt_stiffness(stiffness, rotation);
+    expansion.parse_parameters(prm, section, true);
   }
 
   ElasticMaterial
@@ -378,6 +380,18 @@ namespace perideal
     return nu;
   }
 
+  SymmetricTensor<2, 3>
+  ElasticMaterial::thermal_expansion() const
+  {
+    return expansion.tensor(rotation);
+  }
+
+  const ThermalExpansion &
+  ElasticMaterial::thermal_expansion_entry() const
+  {
+    return expansion;
+  }
+
   std::string
   ElasticMaterial::summary() const
   {
@@ -388,6 +402,8 @@ namespace perideal
     else
       out << ", C11 = " << stiffness(0, 0) << " Pa, C22 = " << stiffness(1, 1)
           << " Pa, C66 = " << stiffness(5, 5) << " Pa (global axes)";
+    if (!expansion.is_zero())
+      out << ", " << expansion.summary();
     return out.str();
   }
 

@@ -253,6 +253,29 @@ namespace perideal
   }
 
   template <int dim>
+  dealii::SymmetricTensor<2, dim>
+  MaterialModel<dim>::thermal_expansion() const
+  {
+    return dealii::SymmetricTensor<2, dim>();
+  }
+
+  template <int dim>
+  void
+  MaterialModel<dim>::set_temperature_change(const ParticleVector *temperature_change)
+  {
+    Assert(temperature_change == nullptr || capabilities().thermal_strain,
+           dealii::ExcMessage("This model has no thermal strain."));
+    delta_T = temperature_change;
+  }
+
+  template <int dim>
+  const ParticleVector *
+  MaterialModel<dim>::temperature_change() const
+  {
+    return delta_T;
+  }
+
+  template <int dim>
   ModelCapabilities
   MaterialModel<dim>::capabilities() const
   {

@@ -9,6 +9,7 @@
 #include <deal.II/lac/full_matrix.h>
 
 #include <perideal/base/parameter_utilities.h>
+#include <perideal/base/thermal_expansion.h>
 
 #include <string>
 
@@ -74,6 +75,21 @@ namespace perideal
   dealii::Tensor<2, 3>
   rotation_from_euler_angles(const double phi, const double theta, const double psi);
 
+  /**
+   * @brief The thermal expansion a @p dim dimensional model reproduces: the strain of a free
+   * body per kelvin, for the 3D expansion @p alpha and 3D stiffness @p voigt (Voigt, 6 x 6),
+   * both in the global axes, under @p planar. In 3D, alpha. In plane stress, the in-plane block
+   * of alpha (the stresses out of the plane vanish). In plane strain (eps_33 = eps_13 = eps_23
+   * = 0), C_p^-1 (C alpha)_p with C_p the in-plane block of the stiffness and (C alpha)_p the
+   * in-plane part of the 3D thermal stress: (1 + nu) alpha for an isotropic material. The
+   * in-plane thermal stress is then C_2D : alpha_2D for the reduced tensor C_2D of
+   * reduce_elasticity_tensor().
+   */
+  template <int dim>
+  dealii::SymmetricTensor<2, dim>
+  planar_thermal_expansion(const dealii::SymmetricTensor<2, 3> &alpha,
+                           const dealii::FullMatrix<double>    &voigt,
+                           const PlanarAssumption               planar);
   /**
    * @brief An elastic material read from a parameter section: the symmetry class, its
    * constants and the orientation of its axes.
@@ -145,6 +161,19 @@ namespace perideal
     ///@}
 
     /**
+     * @brief The thermal expansion alpha [1/K] in the global axes (<Thermal expansion>, in the
+     * material axes: ThermalExpansion); zero for none.
+     */
+    dealii::SymmetricTensor<2, 3>
+    thermal_expansion() const;
+
+    /**
+     * @brief The thermal expansion as read (ThermalExpansion: isotropic or not, its summary).
+     */
+    const ThermalExpansion &
+    thermal_expansion_entry() const;
+
+    /**
      * @brief One line describing the material, for the log.
      */
     std::string
@@ -165,6 +194,7 @@ namespace perideal
     double                     E = 0., nu = 0.;
     dealii::FullMatrix<double> stiffness;
     dealii::Tensor<2, 3>       rotation;
+    ThermalExpansion           expansion;
   };
 } // namespace perideal
 

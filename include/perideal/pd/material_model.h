@@ -63,6 +63,10 @@ namespace perideal
     /// It calibrates its critical values on the actual lattice when ModelContext says
     /// lattice_fracture (<Material/critical stretch/Fracture energy calibration> = lattice).
     bool lattice_fracture = false;
+    /// It declares <Thermal expansion> and measures its strains from the thermal strain of a
+    /// temperature change (set_temperature_change(); doc/theory/thermal_strain.md). A model
+    /// without it (antiplane shear, conduction) refuses a temperature source.
+    bool thermal_strain = false;
   };
 
   /**
@@ -255,6 +259,32 @@ namespace perideal
                    ParticleVector       &force,
                    std::vector<double>  *energy_density,
                    const double          critical_stretch) = 0;
+
+    /**
+     * @brief The thermal expansion the model's strains are measured from
+     * (doc/theory/thermal_strain.md): its <Thermal expansion> in the global axes, in 2D the
+     * in-plane expansion of its planar assumption (planar_thermal_expansion()); zero (the
+     * default) for none. Known after initialize().
+     */
+    virtual dealii::SymmetricTensor<2, dim>
+    thermal_expansion() const;
+
+    /**
+     * @brief The temperature change Delta T = T - T_ref [K] that compute_forces(),
+     * released_energy(), derived_fields() and the offsets of linearize() read from now on:
+     * one value per particle, local_element(i) of local particle i (owned and ghost, ghost
+     * values current); nullptr (the default) for none. The vector is the caller's: it must
+     * outlive the calls and is updated in place between evaluations. Only for a model whose
+     * capabilities() say thermal_strain.
+     */
+    void
+    set_temperature_change(const ParticleVector *delta_T);
+
+    /**
+     * @brief The temperature change of set_temperature_change(), nullptr for none.
+     */
+    const ParticleVector *
+    temperature_change() const;
 
     /**
      * @brief The strain energy that the bonds broken since the last call released
@@ -473,6 +503,9 @@ namespace perideal
      */
     virtual std::string
     summary() const = 0;
+
+  private:
+    const ParticleVector *delta_T = nullptr;
   };
 
   /**
