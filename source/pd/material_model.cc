@@ -18,15 +18,17 @@ namespace perideal
     row_start.assign(1, 0);
     entries.clear();
     weights.clear();
+    offsets.clear();
     scale.assign(n_owned, 0.);
   }
 
   void
-  LinearizedModel::add_row(const double weight, const std::vector<Entry> &row)
+  LinearizedModel::add_row(const double weight, const std::vector<Entry> &row, const double offset)
   {
     entries.insert(entries.end(), row.begin(), row.end());
     row_start.push_back(entries.size());
     weights.push_back(weight);
+    offsets.push_back(offset);
   }
 
   unsigned int
@@ -45,6 +47,12 @@ namespace perideal
   LinearizedModel::weight(const std::size_t r) const
   {
     return weights[r];
+  }
+
+  double
+  LinearizedModel::offset(const std::size_t r) const
+  {
+    return offsets[r];
   }
 
   const LinearizedModel::Entry *

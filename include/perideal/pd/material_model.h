@@ -95,10 +95,12 @@ namespace perideal
 
   /**
    * @brief The small-displacement linearization of a model about the reference configuration,
-   * as the rows of its strain operator G with their weights w (what a model gives to assemble
-   * its stiffness matrix K = G^T diag(w) G):
-   *   E = 1/2 sum_r w_r (G_r u)^2,   G_r u = sum_{(p, c, g) in row r} g u_{p,c},
-   * so that the nodal force (force density times V_p) is -dE/du. A row is a list of entries
+   * as the rows of its strain operator G with their weights w and offsets o (what a model gives
+   * to assemble its stiffness matrix K = G^T diag(w) G and load G^T diag(w) o):
+   *   E = 1/2 sum_r w_r (G_r u - o_r)^2,   G_r u = sum_{(p, c, g) in row r} g u_{p,c},
+   * so that the nodal force (force density times V_p) is -dE/du. The offset is the row's
+   * strain at which it stores no energy: the thermal strain of a temperature change
+   * (MaterialModel::set_temperature_change()), 0 without one. A row is a list of entries
    * (local particle p, owned or ghost; component c of the model's field_layout(); coefficient
    * g); entries of one row that name the same unknown add up, in their order. The model
    * decides what a row is: a bond's linearized extension n . (u_j - u_i) (PMB, LPS), a
@@ -129,10 +131,10 @@ namespace perideal
     reinit(const unsigned int n_components, const unsigned int n_owned);
 
     /**
-     * @brief Append a row of weight @p weight with the entries @p entries.
+     * @brief Append a row of weight @p weight and offset @p offset with the entries @p entries.
      */
     void
-    add_row(const double weight, const std::vector<Entry> &entries);
+    add_row(const double weight, const std::vector<Entry> &entries, const double offset = 0.);
 
     /**
      * @brief The number of unknowns per particle (the columns of a particle).
@@ -151,6 +153,12 @@ namespace perideal
      */
     double
     weight(const std::size_t r) const;
+
+    /**
+     * @brief The offset o_r of row @p r (its strain of no energy).
+     */
+    double
+    offset(const std::size_t r) const;
 
     /**
      * @brief The first entry of row @p r; row_end(r) is one past its last.
@@ -184,6 +192,7 @@ namespace perideal
     std::vector<size_t> row_start{0};
     std::vector<Entry>  entries;
     std::vector<double> weights;
+    std::vector<double> offsets;
     std::vector<double> scale;
   };
 
