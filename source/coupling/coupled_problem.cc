@@ -88,6 +88,7 @@ namespace perideal
     prm.leave_subsection();
     Postprocessors<dim>::declare_parameters(prm);
     Physics<dim>::declare_parameters(prm, physics_condition_names);
+    TemperatureSource<dim>::declare_parameters(prm);
   }
 
   template <int dim>
@@ -189,6 +190,7 @@ namespace perideal
                                "over yet; use brittle bonds or the criterion none."));
       }
     parse_other_physics(prm);
+    parse_thermal_strain(prm);
   }
 
   template <int dim>
@@ -427,6 +429,9 @@ namespace perideal
           },
           adaptive.check_interval());
       }
+    connect_temperature();
+    if (is_root && temperature.active())
+      log << temperature.summary() << std::endl;
     solver().setup(state());
     setup_other_physics();
   }

@@ -232,6 +232,9 @@ namespace perideal
         restore(field, carried[k]);
         field.postprocessors().initialize(field.state());
       }
+    // The temperature on the new particles and FE space (the first physics' solver renews its
+    // forces with it).
+    connect_temperature();
 
     if (is_root)
       log << when.str() << ": the PD region grew by " << seeds.size() << " disk"

@@ -140,7 +140,8 @@ namespace perideal
         postprocessors().add_physics(field.name, field.state(), field.postprocessors());
         for (unsigned int c = 0; c < field.layout.n_components(); ++c)
           if (field.layout.kind(c) == ComponentKind::temperature)
-            exchange.publish("temperature", field.state().u, field.state().U, field.layout, c);
+            exchange.publish(
+              "temperature", field.state().u, field.state().U, field.fe, field.layout, c);
       }
     state().set_other_physics(
       [this](const unsigned int step, const double time, const double dt, const bool with_energy) {

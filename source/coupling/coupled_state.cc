@@ -190,6 +190,48 @@ namespace perideal
   }
 
   template <int dim>
+  void
+  CoupledState<dim>::set_temperature(std::function<void(double)> update)
+  {
+    temperature_update = std::move(update);
+    fe_thermal         = fe().n_dofs() > 0 && fe().has_thermal_strain();
+    if (fe_thermal)
+      {
+        fe().initialize_vector(thermal_load);
+        fe().initialize_vector(fe_total_load);
+      }
+  }
+
+  template <int dim>
+  bool
+  CoupledState<dim>::has_temperature() const
+  {
+    return static_cast<bool>(temperature_update);
+  }
+
+  template <int dim>
+  void
+  CoupledState<dim>::update_temperature(const double time)
+  {
+    if (!temperature_update)
+      return;
+    temperature_update(time);
+    if (fe_thermal)
+      thermal_energy = fe().assemble_thermal_load(time, thermal_load);
+  }
+
+  template <int dim>
+  const FEVector &
+  CoupledState<dim>::fe_equation_load()
+  {
+    if (!fe_thermal)
+      return f_ext;
+    fe_total_load = f_ext;
+    fe_total_load += thermal_load;
+    return fe_total_load;
+  }
+
+  template <int dim>
   template <typename State>
   typename CoupledState<dim>::template Parts<std::is_const_v<State>>
   CoupledState<dim>::parts_of(State &state)
@@ -436,7 +478,11 @@ namespace perideal
     double      particle_energy = 0.;
     for (unsigned int i = 0; i < pd().particles().n_owned(); ++i)
       particle_energy += energy_density[i] * volume[i];
-    return method().strain_energy(U, Utilities::MPI::sum(particle_energy, comm()));
+    CoupledEnergy energy = method().strain_energy(U, Utilities::MPI::sum(particle_energy, comm()));
+    // The FE energy of the mechanical strain: 1/2 U.K.U - U.f_th + the thermal strain's.
+    if (fe_thermal)
+      energy.fe += thermal_energy - (U * thermal_load);
+    return energy;
   }
 
   template <int dim>

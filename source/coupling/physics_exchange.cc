@@ -12,6 +12,7 @@ namespace perideal
   PhysicsExchange<dim>::publish(const std::string    &name,
                                 const ParticleVector &particles,
                                 const FEVector       &fe,
+                                const FERegion<dim>  &region,
                                 const FieldLayout    &layout,
                                 const unsigned int    component)
   {
@@ -20,6 +21,7 @@ namespace perideal
     Quantity &quantity = quantities[name];
     quantity.particles = &particles;
     quantity.fe        = &fe;
+    quantity.region    = &region;
     quantity.layout    = layout;
     quantity.component = component;
   }

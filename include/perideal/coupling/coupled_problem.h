@@ -17,6 +17,7 @@
 #include <perideal/coupling/postprocessors/postprocessor.h>
 #include <perideal/coupling/solvers/quasi_static_control.h>
 #include <perideal/coupling/solvers/solver.h>
+#include <perideal/coupling/temperature_source.h>
 #include <perideal/fem/fe_region.h>
 #include <perideal/pd/particle_region.h>
 
@@ -214,6 +215,22 @@ namespace perideal
     setup_other_physics();
 
     /**
+     * @brief Read <Temperature> and check the thermal strain against the models, the FE
+     * physics, the physics list and the solver (coupled_problem_thermal.cc): every refusal
+     * before any heavy work, naming the entries.
+     */
+    void
+    parse_thermal_strain(dealii::ParameterHandler &prm);
+
+    /**
+     * @brief Give the first physics its temperature (TemperatureSource::connect()) and its
+     * state the hook that updates it; nothing without a source. Again after a conversion of the
+     * adaptive region.
+     */
+    void
+    connect_temperature();
+
+    /**
      * @brief The sub-steps of the physics @p k of <Physics/List> within a step of the first
      * physics: the fewest whose step is at most the one its solver chose (the safety factor
      * times its stable step); their length goes to its CoupledState::time_step and to
@@ -278,6 +295,8 @@ namespace perideal
     std::vector<double> sub_steps;
     /// What the physics publish for each other, and the bonds they share.
     PhysicsExchange<dim> exchange;
+    // The temperature of the first physics' thermal strain.
+    TemperatureSource<dim> temperature;
     std::string          blending_expression;
     /// <Coupling/Adaptive region>: where the PD region grows during an explicit run.
     AdaptiveRegion<dim> adaptive;

@@ -486,6 +486,34 @@ namespace perideal
                           const double       time,
                           const double       dt,
                           const bool         with_energy);
+
+    /**
+     * @brief A thermal strain (<Temperature>, doc/architecture/16_multiphysics.md "Thermal
+     * strain"), set by CoupledProblem: @p update brings the temperature change of the particles
+     * and of the FE cells to a time (TemperatureSource::update()).
+     */
+    void
+    set_temperature(std::function<void(double)> update);
+
+    /// Whether the state has a thermal strain (set_temperature()).
+    bool
+    has_temperature() const;
+
+    /**
+     * @brief The temperature change at @p time [s] (nothing without set_temperature()): the
+     * particles' model reads it in its next force evaluation, and the FE thermal load
+     * (thermal_load, thermal_energy) is assembled at it if the FE region has a thermal strain.
+     * The solvers call it before each force evaluation, with its time.
+     */
+    void
+    update_temperature(const double time);
+
+    /**
+     * @brief The FE loads an equilibrium solve takes: the applied f_ext, plus the thermal load
+     * if the FE region has a thermal strain (then in a vector of the state's own).
+     */
+    const FEVector &
+    fe_equation_load();
     ///@}
 
     /// @name The values the solvers advance and derive
@@ -519,6 +547,15 @@ namespace perideal
     ///@}
     /// The particles' strain-energy density (per owned particle) [J/m^3].
     std::vector<double> energy_density;
+    /// The FE thermal load at the time of the last update_temperature() (zero without a
+    /// thermal strain of the FE region): internal, part of K U - thermal_load, not external
+    /// work; and the energy of the thermal strain, int (1 - beta) 1/2 eps_th : C : eps_th, so
+    /// that the FE strain energy of the mechanical strain is 1/2 U.K.U - U.thermal_load +
+    /// thermal_energy (FERegion::assemble_thermal_load()).
+    ///@{
+    FEVector thermal_load;
+    double   thermal_energy = 0.;
+    ///@}
     /// Quasi-static runs: the particles' strain energy at the last equilibrium (the method's
     /// equilibrium_forces(), set by equilibrium_state()) [J], for a physics of <Physics/List>
     /// whose statistics its own solver does not write.
@@ -571,6 +608,11 @@ namespace perideal
     unsigned int                                            check_interval = 0;
     std::function<void(unsigned int, double, double, bool)> advance_physics;
     std::vector<unsigned int>                              *broken_bond_record = nullptr;
+    // The hook of set_temperature(), whether the FE thermal load is assembled, and the applied
+    // plus thermal FE loads of fe_equation_load().
+    std::function<void(double)> temperature_update;
+    bool                        fe_thermal = false;
+    FEVector                    fe_total_load;
 
     // The state at the previous accumulate_work() and the work done so far on this rank.
     FEVector       previous_fe_load, previous_U;

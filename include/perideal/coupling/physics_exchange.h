@@ -6,6 +6,7 @@
 
 #include <perideal/base/field_layout.h>
 #include <perideal/base/linear_algebra.h>
+#include <perideal/fem/fe_region.h>
 #include <perideal/pd/particle_system.h>
 
 #include <map>
@@ -41,6 +42,8 @@ namespace perideal
       const ParticleVector *particles = nullptr;
       const FEVector       *fe        = nullptr;
       ///@}
+      /// The publisher's FE region, whose DoFHandler numbers @p fe.
+      const FERegion<dim> *region = nullptr;
       /// The publisher's layout and the component of it.
       ///@{
       FieldLayout  layout;
@@ -50,13 +53,14 @@ namespace perideal
 
     /**
      * @brief Publish @p name: component @p component of @p layout, whose values are
-     * @p particles and @p fe (kept by reference: they must outlive the exchange). A name is
-     * published once.
+     * @p particles and @p fe on the dofs of @p region (kept by reference: they must outlive the
+     * exchange). A name is published once.
      */
     void
     publish(const std::string    &name,
             const ParticleVector &particles,
             const FEVector       &fe,
+            const FERegion<dim>  &region,
             const FieldLayout    &layout,
             const unsigned int    component);
 

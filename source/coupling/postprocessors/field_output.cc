@@ -86,6 +86,14 @@ namespace perideal
         for (const auto &field : state.pd().material().derived_fields(ps, state.u))
           writer->add_vector_field(field.name, field.n_components, field.values);
         writer->add_scalar_field("damage", damage_index(ps));
+        // The temperature change of a thermal strain (<Temperature>) as the model read it.
+        if (const ParticleVector *delta_T = state.pd().material().temperature_change())
+          {
+            std::vector<double> values(n_owned);
+            for (unsigned int i = 0; i < n_owned; ++i)
+              values[i] = delta_T->local_element(i);
+            writer->add_scalar_field("temperature_change", values);
+          }
         if (state.energy_density.size() == n_owned)
           writer->add_scalar_field("strain_energy_density", state.energy_density);
         writer->write(data.output_index, data.time);

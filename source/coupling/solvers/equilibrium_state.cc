@@ -23,7 +23,7 @@ namespace perideal
   {
     const double pd_energy = state.method().equilibrium_forces(state.U,
                                                                state.u,
-                                                               state.f_ext,
+                                                               state.fe_equation_load(),
                                                                state.external_force,
                                                                state.residual,
                                                                state.internal_force);

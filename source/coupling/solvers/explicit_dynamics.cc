@@ -156,6 +156,7 @@ namespace perideal
     auto &pd = state.pd();
     state.method().interpolate_to_particles(state.U, state.u);
     state.u.update_ghost_values();
+    state.update_temperature(time);
     pd.material().compute_forces(pd.particles(),
                                  state.u,
                                  state.internal_force,
@@ -196,11 +197,12 @@ namespace perideal
           nodal[k] = (internal[k] + applied[k]) * volume[k / nc];
       }
 
-    // FE: R = f_ext - K U + P^T f (the method's P^T); prescribed dofs do not move by it, and the
-    // work their supports do is that of K U - P^T f (the part of R they balance).
+    // FE: R = f_ext + f_th - K U + P^T f (the method's P^T; f_th the thermal load); prescribed
+    // dofs do not move by it, and the work their supports do is that of K U - f_th - P^T f (the
+    // part of R they balance).
     fe.assemble_load(time, state.f_ext);
     fe.stiffness_matrix().vmult(state.residual, state.U);
-    state.residual.sadd(-1., 1., state.f_ext);
+    state.residual.sadd(-1., 1., state.fe_equation_load());
     state.method().add_particle_forces(nodal_force, state.residual);
     const auto &mask = fe.prescribed_mask();
     for (unsigned int k = 0; k < state.U.locally_owned_size(); ++k)
@@ -280,6 +282,8 @@ namespace perideal
   void
   ExplicitDynamics<dim>::start_state(CoupledState<dim> &state)
   {
+    // The other physics start first: a thermal strain reads the initial temperature.
+    state.advance_other_physics(0, 0., 0., true);
     state.apply_initial_conditions();
     compute_acceleration(state, 0., true);
     set_first_order_rates(state);
@@ -287,7 +291,6 @@ namespace perideal
       report_initial_residual(state);
     state.start_work();
     state.fe_support.equ(-1., state.residual);
-    state.advance_other_physics(0, 0., 0., true);
   }
 
   template <int dim>

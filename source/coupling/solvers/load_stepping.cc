@@ -206,6 +206,8 @@ namespace perideal
   void
   LoadStepping<dim>::apply_load_factor(CoupledState<dim> &state, const double factor)
   {
+    // The temperature of the thermal strain is that of the time of the load factor.
+    state.update_temperature(factor * state.settings().end_time);
     double scale = factor;
     if (control.history == LoadHistory::time)
       {
@@ -366,7 +368,10 @@ namespace perideal
         const auto broken_before = n_broken_bonds(ps);
         apply_load_factor(state, factor);
         solves.iterations +=
-          state.method().solve_equilibrium(state.f_ext, state.external_force, state.U, state.u);
+          state.method().solve_equilibrium(state.fe_equation_load(),
+                                           state.external_force,
+                                           state.U,
+                                           state.u);
         // The model's own forces and energy density at the solution (breaks bonds).
         pd.material().compute_forces(ps,
                                      state.u,

@@ -1,0 +1,128 @@
+// ---------------------------------------------------------------------
+// PeriDeal: the thermal strain of the first physics (<Temperature>): its checks and its
+// connection to the particles' model, the FE region and the state.
+// ---------------------------------------------------------------------
+#include <perideal/base/thermal_expansion.h>
+#include <perideal/coupling/coupled_problem.h>
+
+namespace perideal
+{
+  using namespace dealii;
+
+  namespace
+  {
+    // The <Thermal expansion> of subsection @p path (entered from the root), named @p section
+    // in messages.
+    ThermalExpansion
+    expansion_in(ParameterHandler &prm, const std::vector<std::string> &path, const std::string &section)
+    {
+      for (const auto &name : path)
+        prm.enter_subsection(name);
+      ThermalExpansion expansion;
+      try
+        {
+          expansion.parse_parameters(prm, section, true);
+        }
+      catch (...)
+        {
+          for (unsigned int k = 0; k < path.size(); ++k)
+            prm.leave_subsection();
+          throw;
+        }
+      for (unsigned int k = 0; k < path.size(); ++k)
+        prm.leave_subsection();
+      return expansion;
+    }
+  } // namespace
+
+  template <int dim>
+  void
+  CoupledProblem<dim>::parse_thermal_strain(ParameterHandler &prm)
+  {
+    temperature.parse_parameters(prm);
+    const std::string source = "<Temperature/Source> = " + prm.get({"Temperature"}, "Source");
+
+    // The thermal expansion of each part: the particles' model's entry (a model with a thermal
+    // strain declares it), the FE elasticity's (its own entry, or the particles' material).
+    const std::string model = pd.has_body() ? prm.get({"Material"}, "Model") : "";
+    const bool        pd_thermal = pd.has_body() && pd.material().capabilities().thermal_strain;
+    const std::string pd_entry   = "<Material/" + model + "/Thermal expansion>";
+    ThermalExpansion  pd_expansion, fe_expansion;
+    if (pd_thermal)
+      pd_expansion = expansion_in(prm, {"Material", model}, "Material/" + model);
+    const bool fe_elastic =
+      fe.has_mesh() && fe.field_layout().kind(0) == ComponentKind::translation;
+    const bool fe_shared = fe_elastic && fe.physics().shares_particle_material();
+    const std::string fe_entry =
+      fe_shared ? pd_entry : "<Finite elements/Elasticity/Thermal expansion>";
+    if (fe_elastic)
+      fe_expansion = fe_shared ? pd_expansion :
+                                 expansion_in(prm,
+                                              {"Finite elements", "Elasticity"},
+                                              "Finite elements/Elasticity");
+    const bool expands = !pd_expansion.is_zero() || !fe_expansion.is_zero();
+
+    if (!temperature.active())
+      {
+        AssertThrow(!expands,
+                    ExcMessage((!pd_expansion.is_zero() ? pd_entry : fe_entry) +
+                               " is set, but <Temperature/Source> = none: the thermal strain "
+                               "needs a temperature. Accepted <Temperature/Source>: function (a "
+                               "prescribed T(x, t)), heat (the temperature of the physics heat "
+                               "of <Physics/List>); or the thermal expansion 0."));
+        return;
+      }
+    AssertThrow(!pd.has_body() || pd_thermal,
+                ExcMessage(source + ", but <Material/Model> = " + model +
+                           " has no thermal strain; accepted models: " +
+                           material_models_with<dim>(&ModelCapabilities::thermal_strain) +
+                           " (or <Temperature/Source> = none)."));
+    AssertThrow(!fe.has_mesh() || fe_elastic,
+                ExcMessage(source + ", but <Finite elements/Physics> = " +
+                           prm.get({"Finite elements"}, "Physics") +
+                           " has no thermal strain; accepted: elasticity (or <Temperature/Source> "
+                           "= none)."));
+    AssertThrow(expands,
+                ExcMessage(source + ", but no thermal expansion is set: the temperature would "
+                                    "act on nothing. Set " +
+                           (pd.has_body() ? pd_entry : fe_entry) +
+                           (pd.has_body() && fe.has_mesh() && !fe_shared ? " and " + fe_entry :
+                                                                           std::string()) +
+                           " (alpha [1/K]), or <Temperature/Source> = none."));
+    AssertThrow(!pd.has_body() || !fe_elastic ||
+                  (pd_expansion.tensor() - fe_expansion.tensor()).norm() <=
+                    1e-12 * pd_expansion.tensor().norm(),
+                ExcMessage(pd_entry + " and " + fe_entry +
+                           " differ: the particles and the FE region are one material, joined "
+                           "in the overlap; accepted: the same thermal expansion in both."));
+    const auto &list = prm.get({"Physics"}, "List");
+    AssertThrow(temperature.kind() != TemperatureSource<dim>::Kind::heat ||
+                  list.find("heat") != std::string::npos,
+                ExcMessage(source + " reads the temperature of the physics heat, but <Physics/"
+                                    "List> = " +
+                           list +
+                           " does not list it; accepted: <Physics/List> = heat (and its "
+                           "subsection Heat), or <Temperature/Source> = function."));
+    AssertThrow(control.method == LoadControl::load_steps,
+                ExcMessage(source +
+                           ": <Solver/Control/Method> = sequentially linear scales the whole "
+                           "load of one linear solve by each event's load factor, and a "
+                           "thermal strain is a load of its own time; accepted with a "
+                           "temperature: <Solver/Control/Method> = load steps."));
+  }
+
+  template <int dim>
+  void
+  CoupledProblem<dim>::connect_temperature()
+  {
+    if (!temperature.active())
+      return;
+    temperature.connect(pd, fe, exchange);
+    state().set_temperature([this](const double time) { temperature.update(time); });
+  }
+
+  template void CoupledProblem<2>::parse_thermal_strain(ParameterHandler &);
+  template void CoupledProblem<3>::parse_thermal_strain(ParameterHandler &);
+  template void CoupledProblem<2>::connect_temperature();
+  template void CoupledProblem<3>::connect_temperature();
+} // namespace perideal
