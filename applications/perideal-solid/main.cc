@@ -105,7 +105,8 @@ namespace
    * A small coupled problem that --print-parameters fills in, so that the template validates
    * and runs as printed: a bar 40 mm long, clamped at x = 0 in the FE region, particles where
    * x > 15 mm (beta ramps from 0 to 1 over 10 mm), pulled at its right end by a velocity of
-   * 1 m/s, 2 us of explicit dynamics.
+   * 1 m/s and heated from 20 to 120 degrees C over the run (a prescribed temperature; the steel's
+   * thermal expansion 1.2e-5 1/K in both regions), 2 us of explicit dynamics.
    */
   template <int dim>
   void
@@ -123,6 +124,7 @@ namespace
                 {{"Regions", "edge"}, {"Upper corner", "0.04, 0.01" + z1}},
                 {{"Material"}, {"Density", "7800"}},
                 {{"Material", "bond based"}, {"Young's modulus", "200e9"}},
+                {{"Material", "bond based"}, {"Thermal expansion", "1.2e-5"}},
                 {{"Boundary conditions"}, {"Names", "support"}},
                 {{"Boundary conditions", "support"}, {"Region", "edge"}},
                 {{"Boundary conditions", "support"}, {"Type", "velocity"}},
@@ -137,9 +139,13 @@ namespace
                 {{"Finite elements", "Elasticity"}, {"Young's modulus", "200e9"}},
                 {{"Finite elements", "Elasticity"},
                  {"Poisson's ratio", dim == 2 ? "0.3333333333" : "0.25"}},
+                {{"Finite elements", "Elasticity"}, {"Thermal expansion", "1.2e-5"}},
                 {{"Finite elements", "Boundary conditions"}, {"Names", "clamp"}},
                 {{"Finite elements", "Boundary conditions", "clamp"}, {"Boundary ids", "0"}},
                 {{"Coupling"}, {"Blending function", "min(1, max(0, (x - 0.015) / 0.01))"}},
+                {{"Temperature"}, {"Source", "function"}},
+                {{"Temperature"}, {"Function", "20 + 100 * t / 2e-6"}},
+                {{"Temperature"}, {"Reference temperature", "20"}},
                 {{"Time stepping"}, {"End time", "2e-6"}}};
     for (const auto &[path, entry] : values)
       {
