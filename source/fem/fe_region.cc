@@ -2,8 +2,9 @@
 // PeriDeal: the finite-element region: its parameters (mesh, degree, density, physics), the
 // body force, and what it answers about itself. The algorithms are in their own files:
 // fe_region_setup.cc (mesh, FE_Nothing activation, dofs), fe_region_assembly.cc (stiffness,
-// lumped mass, loads, stable step), fe_region_conditions.cc (boundary conditions, interior
-// values, reactions) and fe_region_output.cc (summary and field output).
+// lumped mass, loads, stable step), fe_region_thermal.cc (the thermal strain's load and energy),
+// fe_region_conditions.cc (boundary conditions, interior values, reactions) and
+// fe_region_output.cc (summary and field output).
 // ---------------------------------------------------------------------
 #include <deal.II/base/utilities.h>
 

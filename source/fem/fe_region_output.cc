@@ -1,7 +1,7 @@
 // ---------------------------------------------------------------------
 // PeriDeal: what the finite-element region reports: its summary line, the physics' section
 // integrals and the field output (the solution and the physics' derived quantities on the
-// FE-carrying cells, HDF5/XDMF).
+// FE-carrying cells, with a thermal strain from the mechanical strain; HDF5/XDMF).
 // ---------------------------------------------------------------------
 #include <deal.II/base/quadrature_lib.h>
 #include <deal.II/numerics/data_out.h>
@@ -69,7 +69,9 @@ namespace perideal
   {
     if (n_dofs() == 0)
       return;
-    const auto   derived = physics_model->postprocessor();
+    // With a thermal strain, the stress of the mechanical strain and the temperature change
+    // (without, point_temperature_change() is empty: the physics' postprocessor()).
+    const auto   derived = physics_model->thermal_postprocessor(point_temperature_change(time));
     DataOut<dim> data_out;
     data_out.attach_dof_handler(dof_handler);
     // Only the locally owned cells that carry FE unknowns (not the FE_Nothing ones).

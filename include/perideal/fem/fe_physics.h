@@ -6,6 +6,7 @@
 
 #include <deal.II/base/parameter_handler.h>
 #include <deal.II/base/types.h>
+#include <deal.II/dofs/dof_handler.h>
 #include <deal.II/fe/fe_values.h>
 #include <deal.II/lac/full_matrix.h>
 #include <deal.II/numerics/data_postprocessor.h>
@@ -14,6 +15,7 @@
 #include <perideal/base/field_layout.h>
 #include <perideal/base/plugin_registry.h>
 
+#include <functional>
 #include <memory>
 #include <optional>
 #include <string>
@@ -22,6 +24,18 @@
 
 namespace perideal
 {
+  /**
+   * @brief The temperature change Delta T = T - T_ref [K] at points of a cell, for the output
+   * of a physics with a thermal strain (FEPhysics::thermal_postprocessor()): given a cell of the
+   * region's DoFHandler and points of it (real coordinates), fill @p delta_T (sized by the
+   * caller) with Delta T at each point (FERegion::point_temperature_change()).
+   */
+  template <int dim>
+  using PointTemperatureChange =
+    std::function<void(const typename dealii::DoFHandler<dim>::cell_iterator &cell,
+                       const std::vector<dealii::Point<dim>>                 &points,
+                       std::vector<double>                                   &delta_T)>;
+
   /**
    * @brief What a physics of the FE region (FERegion) supplies: only what differs between
    * physics. The region owns the mesh, the FE space (one FE_Q(p) per component of
@@ -92,6 +106,49 @@ namespace perideal
                   const dealii::types::material_id material_id,
                   const std::vector<double>       &weights,
                   dealii::Vector<double>          &cell_rhs) const;
+
+    /**
+     * @brief Whether the physics has a thermal strain eps_th = alpha Delta T (its
+     * <Thermal expansion> is not zero): then add_cell_thermal_load(), thermal_energy_density()
+     * and thermal_postprocessor() take a temperature change into account (false by default).
+     */
+    virtual bool
+    has_thermal_strain() const;
+
+    /**
+     * @brief Add the load of the thermal strain, sum_q @p weights[q] eps(phi_i) : C : eps_th(x_q)
+     * with eps_th = alpha Delta T_q (in 2D the reduced expansion of the planar assumption), to
+     * @p cell_rhs, for the temperature change @p delta_T [K] at the quadrature points of
+     * @p fe_values (values, gradients, quadrature points) on a cell of material id
+     * @p material_id. The weights hold the FE weight 1 - beta, the thickness and JxW. It is part
+     * of the strain energy of the mechanical strain eps - eps_th (not an external load):
+     * 1/2 int (eps - eps_th) : C : (eps - eps_th) = 1/2 u.K.u - u.f_th + int
+     * thermal_energy_density(). None by default.
+     */
+    virtual void
+    add_cell_thermal_load(const dealii::FEValues<dim>     &fe_values,
+                          const dealii::types::material_id material_id,
+                          const std::vector<double>       &weights,
+                          const std::vector<double>       &delta_T,
+                          dealii::Vector<double>          &cell_rhs) const;
+
+    /**
+     * @brief The strain-energy density [J/m^3] of the thermal strain alone, 1/2 eps_th : C :
+     * eps_th for the temperature change @p delta_T [K] in material @p material_id: the energy
+     * of a body held at u = 0, the constant of the energy of the mechanical strain (see
+     * add_cell_thermal_load()). 0 by default.
+     */
+    virtual double
+    thermal_energy_density(const dealii::types::material_id material_id,
+                           const double                     delta_T) const;
+
+    /**
+     * @brief The postprocessor of the output when a temperature change is set: the derived
+     * quantities of postprocessor() from the mechanical strain, with the temperature change
+     * @p delta_T at the points of a cell. postprocessor() by default (no thermal strain).
+     */
+    virtual std::unique_ptr<dealii::DataPostprocessor<dim>>
+    thermal_postprocessor(const PointTemperatureChange<dim> &delta_T) const;
 
     /**
      * @brief A point of the section where the field is held at 0 when no condition prescribes
@@ -165,6 +222,36 @@ namespace perideal
                                 const std::vector<double> &,
                                 dealii::Vector<double> &) const
   {}
+
+  template <int dim>
+  bool
+  FEPhysics<dim>::has_thermal_strain() const
+  {
+    return false;
+  }
+
+  template <int dim>
+  void
+  FEPhysics<dim>::add_cell_thermal_load(const dealii::FEValues<dim> &,
+                                        const dealii::types::material_id,
+                                        const std::vector<double> &,
+                                        const std::vector<double> &,
+                                        dealii::Vector<double> &) const
+  {}
+
+  template <int dim>
+  double
+  FEPhysics<dim>::thermal_energy_density(const dealii::types::material_id, const double) const
+  {
+    return 0.;
+  }
+
+  template <int dim>
+  std::unique_ptr<dealii::DataPostprocessor<dim>>
+  FEPhysics<dim>::thermal_postprocessor(const PointTemperatureChange<dim> &) const
+  {
+    return postprocessor();
+  }
 
   template <int dim>
   double

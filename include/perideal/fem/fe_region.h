@@ -61,8 +61,9 @@ namespace perideal
    *
    * The implementation is split by algorithm: fe_region.cc (parameters, accessors),
    * fe_region_setup.cc (mesh, FE_Nothing activation, dofs, sparsity), fe_region_assembly.cc
-   * (stiffness, lumped mass, loads, stable step), fe_region_conditions.cc (boundary
-   * conditions, interior values, reactions) and fe_region_output.cc (summary, field output).
+   * (stiffness, lumped mass, loads, stable step), fe_region_thermal.cc (the thermal strain's
+   * load and energy), fe_region_conditions.cc (boundary conditions, interior values, reactions)
+   * and fe_region_output.cc (summary, field output).
    */
   template <int dim>
   class FERegion
@@ -89,6 +90,17 @@ namespace perideal
 
     /// The weight 1 - beta(x) of the FE energy; cells where it is 0 everywhere are FE_Nothing.
     using WeightFunction = std::function<double(const dealii::Point<dim> &)>;
+
+    /**
+     * The temperature change Delta T = T - T_ref [K] at time @p time at the quadrature points of
+     * @p fe_values into @p delta_T (sized by the caller to the number of points). @p fe_values
+     * has at least the quadrature points; its cell (get_cell()) is a cell of get_dof_handler()
+     * and its quadrature (get_quadrature()) the points in the unit cell, so that a field on
+     * another DoFHandler of the same mesh (the heat physics' temperature) can be evaluated there.
+     */
+    using TemperatureChange = std::function<void(const dealii::FEValues<dim> &fe_values,
+                                                 const double                 time,
+                                                 std::vector<double>         &delta_T)>;
 
     /// @brief An empty region on the ranks of @p comm; parse_parameters() and setup() fill it.
     explicit FERegion(const MPI_Comm comm);
@@ -202,6 +214,41 @@ namespace perideal
     assemble_load(const double time, FEVector &f) const;
 
     /**
+     * @brief Set the temperature change of the thermal strain (source/fem/fe_region_thermal.cc);
+     * an empty function (the default) for none.
+     */
+    void
+    set_temperature_change(const TemperatureChange &delta_T);
+
+    /**
+     * @brief Whether the physics has a thermal strain (FEPhysics::has_thermal_strain(): its
+     * <Thermal expansion> is not zero) and a temperature change is set.
+     */
+    bool
+    has_thermal_strain() const;
+
+    /**
+     * @brief The load of the thermal strain at @p time, f_th,i = int (1 - beta) h eps(phi_i) :
+     * C : eps_th (FEPhysics::add_cell_thermal_load(), h the thickness of a 2D problem) into
+     * @p f_th (ghosts compressed like assemble_load(); zero without thermal strain), and return
+     * the constant c_th = int (1 - beta) h 1/2 eps_th : C : eps_th
+     * (FEPhysics::thermal_energy_density()), summed over the ranks (collective), such that the
+     * strain energy of the mechanical strain eps(u) - eps_th is 1/2 u.K.u - u.f_th + c_th. The
+     * equilibrium is K u = f + f_th with the external load f of assemble_load(): the thermal
+     * load is part of the strain energy, not external work.
+     */
+    double
+    assemble_thermal_load(const double time, FEVector &f_th) const;
+
+    /**
+     * @brief The temperature change of set_temperature_change() at time @p time at points of a
+     * cell given in real coordinates (for the output: FEPhysics::thermal_postprocessor()); an
+     * empty function without thermal strain.
+     */
+    PointTemperatureChange<dim>
+    point_temperature_change(const double time) const;
+
+    /**
      * @brief Set the prescribed components at @p time: of @p u for displacement (value)
      * conditions and interior values, of @p v for velocity (rate) conditions (owned entries;
      * the caller integrates u from v).
@@ -256,7 +303,9 @@ namespace perideal
 
     /**
      * @brief Write the field (translations as the vector 'displacement', other components
-     * by their names) and the physics' derived quantities of the FE-carrying cells as
+     * by their names) and the physics' derived quantities of the FE-carrying cells (with
+     * thermal strain those of FEPhysics::thermal_postprocessor() at @p time: the stress of the
+     * mechanical strain, the temperature change) as
      * `<directory>/<base_name>_<step>.h5` plus `<base_name>.xdmf` (nothing without FE unknowns).
      * @p records holds the XDMF records of the series written so far, to which the step's is
      * added (the caller keeps them: a checkpoint carries them, so that a restarted run continues
@@ -459,7 +508,8 @@ namespace perideal
     std::unique_ptr<FEPhysics<dim>>        physics_model;
     FieldLayout                            layout;
     std::vector<Condition>                 condition_list;
-    std::shared_ptr<dealii::Function<dim>> body_force; // null: none
+    std::shared_ptr<dealii::Function<dim>> body_force;         // null: none
+    TemperatureChange                      temperature_change; // empty: none
     std::vector<std::pair<dealii::types::boundary_id, dealii::Point<2>>> circular_boundaries;
 
     // State.

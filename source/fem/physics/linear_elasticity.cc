@@ -11,17 +11,28 @@ namespace perideal
 
   namespace
   {
-    // Strain, stress and von Mises stress from the displacement gradient.
+    // Strain, stress and von Mises stress from the displacement gradient; with a temperature
+    // change, the stress of the mechanical strain, the temperature change and the mechanical
+    // strain.
     template <int dim>
     class StressPostprocessor : public DataPostprocessor<dim>
     {
     public:
-      StressPostprocessor(const SymmetricTensor<4, dim> &C,
-                          const FullMatrix<double>      &voigt,
-                          const PlanarAssumption         planar)
+      // The thermal members are only read with a non-empty delta_T.
+      StressPostprocessor(const SymmetricTensor<4, dim>     &C,
+                          const FullMatrix<double>          &voigt,
+                          const PlanarAssumption             planar,
+                          const SymmetricTensor<2, dim>     &alpha,
+                          const SymmetricTensor<2, dim>     &thermal_stress,
+                          const double                       thermal_stress_zz,
+                          const PointTemperatureChange<dim> &delta_T)
         : C(C)
         , voigt(voigt)
         , planar(planar)
+        , alpha(alpha)
+        , thermal_stress(thermal_stress)
+        , thermal_stress_zz(thermal_stress_zz)
+        , delta_T(delta_T)
       {}
 
       std::vector<std::string>
@@ -36,6 +47,13 @@ namespace perideal
         if (dim == 2)
           names.push_back("stress_zz");
         names.push_back("von_mises_stress");
+        if (delta_T)
+          {
+            names.push_back("temperature_change");
+            for (unsigned int i = 0; i < dim; ++i)
+              for (unsigned int j = i; j < dim; ++j)
+                names.push_back(std::string("mechanical_strain_") + axes[i] + axes[j]);
+          }
         return names;
       }
 
@@ -50,30 +68,34 @@ namespace perideal
       UpdateFlags
       get_needed_update_flags() const override
       {
-        return update_gradients;
+        return delta_T ? update_gradients | update_quadrature_points : update_gradients;
       }
 
       void
       evaluate_vector_field(const DataPostprocessorInputs::Vector<dim> &inputs,
                             std::vector<dealii::Vector<double>>        &computed) const override
       {
+        std::vector<double> dT(inputs.solution_gradients.size(), 0.);
+        if (delta_T)
+          delta_T(inputs.template get_cell<dim>(), inputs.evaluation_points, dT);
         for (unsigned int q = 0; q < inputs.solution_gradients.size(); ++q)
           {
             Tensor<2, dim> grad;
             for (unsigned int c = 0; c < dim; ++c)
               grad[c] = inputs.solution_gradients[q][c];
             const SymmetricTensor<2, dim> eps   = symmetrize(grad);
-            const SymmetricTensor<2, dim> sigma = C * eps;
+            const SymmetricTensor<2, dim> sigma = C * eps - dT[q] * thermal_stress;
             unsigned int                  k     = 0;
             for (const auto *t : {&eps, &sigma})
               for (unsigned int i = 0; i < dim; ++i)
                 for (unsigned int j = i; j < dim; ++j)
                   computed[q][k++] = (*t)[i][j];
-            // The out-of-plane stress: 0 in plane stress, C_33kl eps_kl in plane strain.
+            // The out-of-plane stress: 0 in plane stress, C_33kl eps_kl - (C alpha)_33 Delta T
+            // in plane strain.
             double s33 = 0.;
             if (dim == 2 && planar == PlanarAssumption::plane_strain)
               s33 = voigt(2, 0) * eps[0][0] + voigt(2, 1) * eps[1][1] +
-                    voigt(2, 5) * 2. * eps[0][dim - 1];
+                    voigt(2, 5) * 2. * eps[0][dim - 1] - thermal_stress_zz * dT[q];
             if (dim == 2)
               computed[q][k++] = s33;
             SymmetricTensor<2, 3> s3;
@@ -84,13 +106,25 @@ namespace perideal
               s3[2][2] = s33;
             const SymmetricTensor<2, 3> dev = deviator(s3);
             computed[q][k++]                = std::sqrt(1.5 * (dev * dev));
+            if (delta_T)
+              {
+                computed[q][k++]                         = dT[q];
+                const SymmetricTensor<2, dim> mechanical = eps - dT[q] * alpha;
+                for (unsigned int i = 0; i < dim; ++i)
+                  for (unsigned int j = i; j < dim; ++j)
+                    computed[q][k++] = mechanical[i][j];
+              }
           }
       }
 
     private:
-      const SymmetricTensor<4, dim> C;
-      const FullMatrix<double>      voigt;
-      const PlanarAssumption        planar;
+      const SymmetricTensor<4, dim>     C;
+      const FullMatrix<double>          voigt;
+      const PlanarAssumption            planar;
+      const SymmetricTensor<2, dim>     alpha;
+      const SymmetricTensor<2, dim>     thermal_stress;
+      const double                      thermal_stress_zz;
+      const PointTemperatureChange<dim> delta_T;
     };
   } // namespace
 
@@ -103,10 +137,11 @@ namespace perideal
     prm.declare_entry("Same material as the particles",
                       "false",
                       Patterns::Bool(),
-                      "true: take the symmetry class, constants and orientation from the "
-                      "particles' material subsection <Material/<Model>> (the models with these "
-                      "entries: anisotropic bond based, anisotropic plane stress), so that one "
-                      "block serves both regions; the other entries here are then not read. "
+                      "true: take the symmetry class, constants, orientation and thermal "
+                      "expansion from the particles' material subsection <Material/<Model>> (the "
+                      "models with these entries: anisotropic bond based, anisotropic plane "
+                      "stress), so that one block serves both regions; the other entries here "
+                      "are then not read. "
                       "false: the entries of this subsection.");
     prm.leave_subsection();
   }
@@ -144,6 +179,20 @@ namespace perideal
         prm.enter_subsection("Finite elements");
       }
     C = material.tensor<dim>(planar);
+    // The thermal strain (doc/theory/thermal_strain_fe.md): the stress C : alpha_2D per kelvin
+    // of the reduced expansion, and the energy 1/2 alpha : C : alpha per kelvin squared of the
+    // 3D body (plane strain: with its out-of-plane part).
+    const SymmetricTensor<2, 3> alpha_3d = material.thermal_expansion();
+    const auto                  C_3d =
+      reduce_elasticity_tensor<3>(material.voigt_stiffness(), PlanarAssumption::three_dimensional);
+    thermal_stress =
+      C * planar_thermal_expansion<dim>(alpha_3d, material.voigt_stiffness(), planar);
+    thermal_stress_zz = (C_3d * alpha_3d)[2][2];
+    for (unsigned int i = 0; i < dim; ++i)
+      for (unsigned int j = i; j < dim; ++j)
+        alpha[i][j] = alpha_3d[i][j];
+    thermal_energy =
+      planar == PlanarAssumption::plane_stress ? alpha * C * alpha : alpha_3d * C_3d * alpha_3d;
   }
 
   template <int dim>
@@ -190,10 +239,57 @@ namespace perideal
   }
 
   template <int dim>
+  bool
+  LinearElasticity<dim>::has_thermal_strain() const
+  {
+    return !material.thermal_expansion_entry().is_zero();
+  }
+
+  template <int dim>
+  void
+  LinearElasticity<dim>::add_cell_thermal_load(const FEValues<dim> &fe_values,
+                                               const types::material_id,
+                                               const std::vector<double> &weights,
+                                               const std::vector<double> &delta_T,
+                                               dealii::Vector<double>    &cell_rhs) const
+  {
+    const FEValuesExtractors::Vector displacements(0);
+    for (const unsigned int q : fe_values.quadrature_point_indices())
+      {
+        const double w = weights[q] * delta_T[q];
+        if (w == 0.)
+          continue;
+        for (unsigned int i = 0; i < fe_values.dofs_per_cell; ++i)
+          cell_rhs(i) += (fe_values[displacements].symmetric_gradient(i, q) * thermal_stress) * w;
+      }
+  }
+
+  template <int dim>
+  double
+  LinearElasticity<dim>::thermal_energy_density(const types::material_id,
+                                                const double delta_T) const
+  {
+    return 0.5 * thermal_energy * delta_T * delta_T;
+  }
+
+  template <int dim>
   std::unique_ptr<DataPostprocessor<dim>>
   LinearElasticity<dim>::postprocessor() const
   {
-    return std::make_unique<StressPostprocessor<dim>>(C, material.voigt_stiffness(), planar);
+    return thermal_postprocessor({});
+  }
+
+  template <int dim>
+  std::unique_ptr<DataPostprocessor<dim>>
+  LinearElasticity<dim>::thermal_postprocessor(const PointTemperatureChange<dim> &delta_T) const
+  {
+    return std::make_unique<StressPostprocessor<dim>>(C,
+                                                      material.voigt_stiffness(),
+                                                      planar,
+                                                      alpha,
+                                                      thermal_stress,
+                                                      thermal_stress_zz,
+                                                      delta_T);
   }
 
   template <int dim>

@@ -22,6 +22,18 @@ namespace perideal
    * Sect. 3.9); conditions: 'displacement' [m], 'velocity' [m/s], 'traction' [Pa] = sigma n.
    * Output: strain_ij, stress_ij [Pa], in 2D stress_zz (0 in plane stress, C_33kl eps_kl in
    * plane strain) and the von Mises stress of the 3D stress.
+   *
+   * A thermal strain eps_th = alpha Delta T (<Thermal expansion> of the material, isotropic or a
+   * tensor in the material axes; doc/theory/thermal_strain_fe.md) makes the stress that of the
+   * mechanical strain, sigma = C : (eps(u) - alpha_2D Delta T), with alpha_2D the expansion
+   * of the planar assumption (planar_thermal_expansion(): the in-plane block of alpha in plane
+   * stress, C_p^-1 (C alpha)_p in plane strain); its load is int eps(v) : C : alpha_2D Delta T
+   * (Timoshenko and Goodier, Theory of Elasticity, 3rd ed., 1970, ch. 13; the initial strain of
+   * Zienkiewicz, Taylor and Zhu, The Finite Element Method: Its Basis and Fundamentals, 6th ed.,
+   * 2005, ch. 2). With a
+   * temperature change the output adds temperature_change [K] and mechanical_strain_ij = eps_ij -
+   * alpha_ij Delta T (the in-plane block of the 3D alpha), and stress_zz of plane strain is
+   * C_33kl eps_kl - (C alpha)_33 Delta T.
    */
   template <int dim>
   class LinearElasticity : public FEPhysics<dim>
@@ -46,9 +58,36 @@ namespace perideal
                        const std::vector<double>       &weights,
                        dealii::FullMatrix<double>      &cell_matrix) const override;
 
+    /// @brief Whether <Thermal expansion> is not zero.
+    bool
+    has_thermal_strain() const override;
+
+    /// @brief sum_q w_q Delta T_q eps(phi_i) : C : alpha_2D.
+    void
+    add_cell_thermal_load(const dealii::FEValues<dim>     &fe_values,
+                          const dealii::types::material_id material_id,
+                          const std::vector<double>       &weights,
+                          const std::vector<double>       &delta_T,
+                          dealii::Vector<double>          &cell_rhs) const override;
+
+    /**
+     * @brief 1/2 Delta T^2 alpha : C : alpha of the 3D body: in 3D and in plane strain the 3D
+     * alpha and C (plane strain: with the energy of the held out-of-plane strain, so that a
+     * free plate stores 1/2 E alpha^2 Delta T^2 per volume), in plane stress the in-plane block
+     * of alpha and the reduced C.
+     */
+    double
+    thermal_energy_density(const dealii::types::material_id material_id,
+                           const double                     delta_T) const override;
+
     /// @brief Strain, stress, stress_zz (2D) and von Mises stress.
     std::unique_ptr<dealii::DataPostprocessor<dim>>
     postprocessor() const override;
+
+    /// @brief The same from the mechanical strain, with temperature_change and
+    /// mechanical_strain_ij.
+    std::unique_ptr<dealii::DataPostprocessor<dim>>
+    thermal_postprocessor(const PointTemperatureChange<dim> &delta_T) const override;
 
     /// @brief "material <the elastic material's summary>".
     std::string
@@ -67,6 +106,14 @@ namespace perideal
     ElasticMaterial                 material;
     bool                            shared = false;
     dealii::SymmetricTensor<4, dim> C;
+    /// The in-plane block of the 3D thermal expansion alpha [1/K] (global axes).
+    dealii::SymmetricTensor<2, dim> alpha;
+    /// C : alpha_2D, the stress per kelvin of a held body [Pa/K]; (C alpha)_33 of the 3D
+    /// tensors (stress_zz of plane strain).
+    dealii::SymmetricTensor<2, dim> thermal_stress;
+    double                          thermal_stress_zz = 0.;
+    /// alpha : C : alpha [Pa/K^2] of thermal_energy_density().
+    double thermal_energy = 0.;
   };
 } // namespace perideal
 
