@@ -76,7 +76,7 @@ namespace perideal
     // The PD part (G T_f)^T diag(w) (G T_f) of the linearization about the reference state.
     LinearizedModel linearized;
     material.linearize(*particles, linearized);
-    StaticSolver<dim>::extension_matrix(*particles, linearized, G, weights);
+    StaticSolver<dim>::extension_matrix(*particles, linearized, G, weights, offsets);
     SparseMatrix pd_part, GT;
     G.mmult(GT, T_free);
     weighted_gram(GT, weights, z_owned, comm, pd_part);
@@ -183,7 +183,8 @@ namespace perideal
       T.Tvmult(F, load);
       for (std::size_t k = 0; k < n_fe_owned; ++k)
         F.begin()[k] += f_fe.local_element(k);
-      // K g of the unconstrained operator: E^T K_FE E g + T^T G^T diag(w) G T g.
+      // K g of the unconstrained operator less the load of the offsets:
+      // E^T K_FE E g + T^T G^T diag(w) (G T g - o).
       SolverVector g_fe(fe_owned, comm), Kg_fe(fe_owned, comm), Tg(particle_rows, comm),
         Gg(weights), GtGg(particle_rows, comm), Kg(z_owned, comm);
       for (std::size_t k = 0; k < n_fe_owned; ++k)
@@ -191,6 +192,7 @@ namespace perideal
       fe->stiffness_matrix().vmult(Kg_fe, g_fe);
       T.vmult(Tg, g);
       G.vmult(Gg, Tg);
+      Gg -= offsets;
       Gg.scale(weights);
       G.Tvmult(GtGg, Gg);
       T.Tvmult(Kg, GtGg);
@@ -257,10 +259,11 @@ namespace perideal
                                    ParticleVector       &pd_force) const
   {
     const auto &volume = particles->volumes();
-    // Particles: e = G u, energy 1/2 e^T diag(w) e, force -G^T diag(w) e.
+    // Particles: e = G u - o, energy 1/2 e^T diag(w) e, force -G^T diag(w) e.
     SolverVector up, extension(weights), stress(weights), force(particle_rows, comm);
     gather_particles(u, up);
     G.vmult(extension, up);
+    extension -= offsets;
     stress.scale(extension);
     const double energy = 0.5 * (stress * extension);
     stress              = extension;

@@ -36,9 +36,11 @@ namespace perideal
      * @brief The pair law of the linearized bond (StretchPairLaw's side, its own strain): pair
      * force k s n on the particle side (-k s n on the neighbour), k = c(n) G chi V_i V_j per lane,
      * and, if @p with_energy, the pair energy k s^2 |xi| / 4 at both ends; if @p breaks, a bond
-     * breaks where s times its factor (per lane) exceeds the reference critical stretch.
+     * breaks where s times its factor (per lane) exceeds the reference critical stretch. With
+     * @p thermal, s is the mechanical stretch, less n . alpha . n Delta T_b (per lane, Delta T_b
+     * the bond's mean temperature change, the loop's input dim: bond_temperature_change()).
      */
-    template <int dim, bool with_energy, bool breaks>
+    template <int dim, bool with_energy, bool breaks, bool thermal>
     struct LinearizedPairLaw : StretchPairLaw<dim>
     {
       static constexpr unsigned int n_outputs    = dim + (with_energy ? 1 : 0);
@@ -46,6 +48,8 @@ namespace perideal
       /// k and the breaking factor per lane.
       const double *coefficient;
       const double *break_factor;
+      /// n . alpha . n per lane (thermal only).
+      const double *expansion;
 
       /// The linearized stretch (hides StretchPairLaw's deformed bond).
       template <typename Bond>
@@ -59,7 +63,10 @@ namespace perideal
         Vector e = 0.;
         for (unsigned int d = 0; d < dim; ++d)
           e += bond.xi[d] * (u_b[d] - u_a[d]);
-        const Vector s = e * (bond.inverse_length * bond.inverse_length);
+        Vector s = e * (bond.inverse_length * bond.inverse_length);
+        if constexpr (thermal)
+          s -= Vector(expansion + first_lane, stdx::element_aligned) *
+               bond_temperature_change(u_a, u_b, dim);
         if constexpr (breaks)
           return {s, s * Vector(break_factor + first_lane, stdx::element_aligned)};
         else
@@ -99,49 +106,65 @@ namespace perideal
   struct AnisotropicBondBased<dim>::Kernel
   {
     /// The bonds in SIMD blocks, bond_coefficient and the breaking factor
-    /// sqrt(|c_b| / (c_mean g_b)) per lane (g_b: the weight of the fracture energies).
+    /// sqrt(|c_b| / (c_mean g_b)) per lane (g_b: the weight of the fracture energies), and
+    /// bond_expansion per lane (empty without a thermal expansion).
     BondBlocks<dim>                 blocks;
-    typename BondBlocks<dim>::Array lane_coefficient, lane_break_factor;
-    /// Kernel-order work fields: displacement, force, energy density.
-    typename BondBlocks<dim>::Array u_field, f_field, w_field;
+    typename BondBlocks<dim>::Array lane_coefficient, lane_break_factor, lane_expansion;
+    /// Kernel-order work fields: displacement, force, energy density, and the temperature
+    /// change (sized on its first use).
+    typename BondBlocks<dim>::Array u_field, f_field, w_field, t_field;
 
     /**
      * @brief The loop of LinearizedPairLaw (energy density if @p with_energy, bond breaking
-     * if @p breaks).
+     * if @p breaks, the thermal stretch of the kernel-order temperature change @p delta_T if
+     * @p thermal).
      */
-    template <bool with_energy, bool breaks>
+    template <bool with_energy, bool breaks, bool thermal>
     void
-    run_loop(BondList &bonds, const double critical_stretch)
+    run_loop(BondList &bonds, const double critical_stretch, const double *delta_T)
     {
-      using Law = LinearizedPairLaw<dim, with_energy, breaks>;
-      std::array<const double *, dim>      u;
+      using Law = LinearizedPairLaw<dim, with_energy, breaks, thermal>;
+      constexpr unsigned int               n_input = dim + (thermal ? 1 : 0);
+      std::array<const double *, n_input>  u;
       std::array<double *, Law::n_outputs> out;
       for (unsigned int d = 0; d < dim; ++d)
         {
           u[d]   = blocks.component(u_field, d);
           out[d] = blocks.component(f_field, d);
         }
+      if constexpr (thermal)
+        u[dim] = delta_T;
       if constexpr (with_energy)
         out[dim] = blocks.component(w_field, 0);
-      for_each_bond_block<dim>(blocks,
-                               u,
-                               out,
-                               Law{{}, lane_coefficient.data(), lane_break_factor.data()},
-                               bonds,
-                               critical_stretch);
+      for_each_bond_block<n_input>(
+        blocks,
+        u,
+        out,
+        Law{{}, lane_coefficient.data(), lane_break_factor.data(), lane_expansion.data()},
+        bonds,
+        critical_stretch);
     }
 
     /**
-     * @brief run_loop() with breaking only for a finite @p critical_stretch.
+     * @brief run_loop() with breaking only for a finite @p critical_stretch, thermal only with
+     * a temperature change @p delta_T (kernel order; nullptr for none).
      */
     template <bool with_energy>
     void
-    force_loop(BondList &bonds, const double critical_stretch)
+    force_loop(BondList &bonds, const double critical_stretch, const double *delta_T)
     {
-      if (std::isfinite(critical_stretch))
-        run_loop<with_energy, true>(bonds, critical_stretch);
+      const bool breaks = std::isfinite(critical_stretch);
+      if (delta_T != nullptr)
+        {
+          if (breaks)
+            run_loop<with_energy, true, true>(bonds, critical_stretch, delta_T);
+          else
+            run_loop<with_energy, false, true>(bonds, critical_stretch, delta_T);
+        }
+      else if (breaks)
+        run_loop<with_energy, true, false>(bonds, critical_stretch, nullptr);
       else
-        run_loop<with_energy, false>(bonds, critical_stretch);
+        run_loop<with_energy, false, false>(bonds, critical_stretch, nullptr);
     }
   };
 
@@ -334,8 +357,54 @@ namespace perideal
           }
       k.blocks.to_lanes(factor, k.lane_break_factor);
     }
+    set_bond_expansions(particles);
+    k.t_field.clear();
     fit_report = apply_surface_correction<dim>(*this, particles, context);
     set_bond_coefficients(particles, true);
+  }
+
+  template <int dim>
+  SymmetricTensor<2, dim>
+  AnisotropicBondBased<dim>::grain_expansion(const unsigned int g) const
+  {
+    const ElasticMaterial grain = material.rotated(grains.rotation(g));
+    return planar_thermal_expansion<dim>(grain.thermal_expansion(),
+                                         grain.voigt_stiffness(),
+                                         context.planar);
+  }
+
+  template <int dim>
+  SymmetricTensor<2, dim>
+  AnisotropicBondBased<dim>::thermal_expansion() const
+  {
+    return planar_thermal_expansion<dim>(material.thermal_expansion(),
+                                         material.voigt_stiffness(),
+                                         context.planar);
+  }
+
+  template <int dim>
+  void
+  AnisotropicBondBased<dim>::set_bond_expansions(const ParticleSystem<dim> &particles)
+  {
+    bond_expansion.clear();
+    kernel->lane_expansion.clear();
+    if (material.thermal_expansion_entry().is_zero())
+      return;
+    // n . alpha . n of the bond's grain, the mean of its two grains' across a boundary.
+    std::vector<SymmetricTensor<2, dim>> alpha;
+    for (unsigned int g = 0; g < grains.size(); ++g)
+      alpha.push_back(grain_expansion(g));
+    const BondList &bonds = particles.bonds();
+    const auto     &x     = particles.positions();
+    bond_expansion.assign(bonds.size(), 0.);
+    for (unsigned int i = 0; i < particles.n_owned(); ++i)
+      for (unsigned int b = bonds.row_start[i]; b < bonds.row_start[i + 1]; ++b)
+        {
+          const unsigned int   gi = particle_grain[i], gj = particle_grain[bonds.neighbor[b]];
+          const Tensor<1, dim> n((x[bonds.neighbor[b]] - x[i]) / bonds.length[b]);
+          bond_expansion[b] = 0.5 * (n * (alpha[gi] * n) + n * (alpha[gj] * n));
+        }
+    kernel->blocks.to_lanes(bond_expansion, kernel->lane_expansion);
   }
 
   template <int dim>
@@ -379,6 +448,7 @@ namespace perideal
     ModelCapabilities capabilities;
     capabilities.stiffness_fit       = grains.size() <= 1;
     capabilities.sequentially_linear = true;
+    capabilities.thermal_strain      = true;
     return capabilities;
   }
 
@@ -448,19 +518,26 @@ namespace perideal
                                             const double          critical_stretch)
   {
     Kernel &k = *kernel;
-    evaluate_bond_kernel<dim>(
-      k.blocks,
-      particles,
-      u,
-      dim,
-      k.u_field,
-      k.f_field,
-      k.w_field,
-      force,
-      energy_density,
-      [&](auto with_energy) {
-        k.template force_loop<decltype(with_energy)::value>(particles.bonds(), critical_stretch);
-      });
+    // Without an expansion, a temperature change strains nothing: the loop of today.
+    const ParticleVector *delta_T = this->temperature_change();
+    const double         *t_field = delta_T != nullptr && !bond_expansion.empty() ?
+                                      gather_temperature_change(k.blocks, *delta_T, k.t_field) :
+                                      nullptr;
+    evaluate_bond_kernel<dim>(k.blocks,
+                              particles,
+                              u,
+                              dim,
+                              k.u_field,
+                              k.f_field,
+                              k.w_field,
+                              force,
+                              energy_density,
+                              [&](auto with_energy) {
+                                k.template force_loop<decltype(with_energy)::value>(
+                                  particles.bonds(),
+                                  critical_stretch,
+                                  t_field);
+                              });
   }
 
   template <int dim>

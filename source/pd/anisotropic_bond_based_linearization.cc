@@ -29,17 +29,29 @@ namespace perideal
   }
 
   // Anisotropic linearized bond (the model is linear): PMB's rows with k_b = c(n_b) G chi V_i
-  // V_j / |xi|.
+  // V_j / |xi| and, with a temperature change, the offsets n . alpha . n Delta T_b |xi|.
   template <int dim>
   void
   AnisotropicBondBased<dim>::linearize(const ParticleSystem<dim> &particles,
                                        LinearizedModel           &linearized) const
   {
     linearized.reinit(this->field_layout().n_components(), particles.n_owned());
+    const BondList       &bonds   = particles.bonds();
+    const ParticleVector *delta_T = this->temperature_change();
+    std::vector<double>   offset;
+    if (delta_T != nullptr && !bond_expansion.empty())
+      {
+        offset.assign(bonds.size(), 0.);
+        for (unsigned int i = 0; i < particles.n_owned(); ++i)
+          for (std::size_t b = bonds.row_start[i]; b < bonds.row_start[i + 1]; ++b)
+            offset[b] = bond_expansion[b] * bonds.length[b] * 0.5 *
+                        (delta_T->local_element(i) + delta_T->local_element(bonds.neighbor[b]));
+      }
     add_bond_rows(particles,
-                  intact_bond_stiffness(particles.bonds(), bond_coefficient),
+                  intact_bond_stiffness(bonds, bond_coefficient),
                   extension_row<dim>(particles),
-                  linearized);
+                  linearized,
+                  offset.empty() ? nullptr : &offset);
   }
 
   template void

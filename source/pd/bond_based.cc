@@ -25,14 +25,33 @@ namespace perideal
      * @brief The PMB pair law of for_each_bond_block(): pair force F = k s (xi + eta)/|xi + eta|
      * on the particle side (-F on the neighbour) and, if @p with_energy, the pair energy
      * k s^2 |xi| / 4 at both ends, with k = c G chi V_i V_j per lane; breaks bonds by stretch.
+     * With @p thermal, s is the mechanical stretch s - alpha Delta T_b (Delta T_b the bond's
+     * mean temperature change, the loop's input dim: bond_temperature_change()); without, the
+     * law is today's, instantiated apart (no per-lane branch).
      */
-    template <int dim, bool with_energy>
+    template <int dim, bool with_energy, bool thermal>
     struct PMBPairLaw : StretchPairLaw<dim>
     {
       static constexpr unsigned int n_outputs    = dim + (with_energy ? 1 : 0);
       static constexpr bool         breaks_bonds = true;
       /// k per lane.
       const double *coefficient;
+      /// The thermal expansion alpha of the bonds (thermal only).
+      double expansion;
+
+      /// The deformed bond, its stretch less the thermal stretch if thermal.
+      template <typename Bond>
+      DeformedBond<dim>
+      strain(const Bond              &bond,
+             const std::size_t        first_lane,
+             const bond_simd::Vector *u_a,
+             const bond_simd::Vector *u_b) const
+      {
+        DeformedBond<dim> y = StretchPairLaw<dim>::strain(bond, first_lane, u_a, u_b);
+        if constexpr (thermal)
+          y.stretch -= expansion * bond_temperature_change(u_a, u_b, dim);
+        return y;
+      }
 
       template <typename Bond>
       void
@@ -70,32 +89,41 @@ namespace perideal
     /// keeps none per bond).
     BondBlocks<dim>                 blocks;
     typename BondBlocks<dim>::Array lane_coefficient;
-    /// Kernel-order work fields: displacement, force, energy density.
-    typename BondBlocks<dim>::Array u_field, f_field, w_field;
+    /// Kernel-order work fields: displacement, force, energy density, and the temperature
+    /// change (sized on its first use).
+    typename BondBlocks<dim>::Array u_field, f_field, w_field, t_field;
 
     /**
      * @brief The force loop of PMBPairLaw; the energy density is accumulated only if
-     * @p with_energy.
+     * @p with_energy; with @p thermal, the stretch is measured from the thermal stretch
+     * @p expansion Delta T_b of the temperature change @p delta_T (kernel order).
      */
-    template <bool with_energy>
+    template <bool with_energy, bool thermal>
     void
-    force_loop(BondList &bonds, const double critical_stretch)
+    force_loop(BondList     &bonds,
+               const double  critical_stretch,
+               const double  expansion,
+               const double *delta_T)
     {
-      std::array<const double *, dim>                               u;
-      std::array<double *, PMBPairLaw<dim, with_energy>::n_outputs> out;
+      using Law                                    = PMBPairLaw<dim, with_energy, thermal>;
+      constexpr unsigned int               n_input = dim + (thermal ? 1 : 0);
+      std::array<const double *, n_input>  u;
+      std::array<double *, Law::n_outputs> out;
       for (unsigned int d = 0; d < dim; ++d)
         {
           u[d]   = blocks.component(u_field, d);
           out[d] = blocks.component(f_field, d);
         }
+      if constexpr (thermal)
+        u[dim] = delta_T;
       if constexpr (with_energy)
         out[dim] = blocks.component(w_field, 0);
-      for_each_bond_block<dim>(blocks,
-                               u,
-                               out,
-                               PMBPairLaw<dim, with_energy>{{}, lane_coefficient.data()},
-                               bonds,
-                               critical_stretch);
+      for_each_bond_block<n_input>(blocks,
+                                   u,
+                                   out,
+                                   Law{{}, lane_coefficient.data(), expansion},
+                                   bonds,
+                                   critical_stretch);
     }
   };
 
@@ -116,6 +144,7 @@ namespace perideal
                       Patterns::Double(0.),
                       "Young's modulus E [Pa]. The model implies nu = 1/4 in 3D and plane strain, "
                       "nu = 1/3 in plane stress.");
+    ThermalExpansion::declare_parameters(prm, false);
   }
 
   template <int dim>
@@ -124,6 +153,7 @@ namespace perideal
   {
     youngs_modulus = prm.get_double("Young's modulus");
     ParameterUtilities::require_positive(youngs_modulus, "Material/bond based/Young's modulus");
+    expansion.parse_parameters(prm, "Material/bond based", false);
   }
 
   template <int dim>
@@ -167,6 +197,7 @@ namespace perideal
     blocks.reinit_field(kernel->u_field, dim);
     blocks.reinit_field(kernel->f_field, dim);
     blocks.reinit_field(kernel->w_field, 1);
+    kernel->t_field.clear();
     fit_report           = apply_surface_correction<dim>(*this,
                                                particles,
                                                context,
@@ -253,7 +284,11 @@ namespace perideal
                                  std::vector<double>  *energy_density,
                                  const double          critical_stretch)
   {
-    Kernel &k = *kernel;
+    Kernel               &k       = *kernel;
+    const ParticleVector *delta_T = this->temperature_change();
+    const double         *t_field =
+      delta_T != nullptr ? gather_temperature_change(k.blocks, *delta_T, k.t_field) : nullptr;
+    const double alpha = bond_expansion();
     evaluate_bond_kernel<dim>(
       k.blocks,
       particles,
@@ -265,8 +300,41 @@ namespace perideal
       force,
       energy_density,
       [&](auto with_energy) {
-        k.template force_loop<decltype(with_energy)::value>(particles.bonds(), critical_stretch);
+        constexpr bool e = decltype(with_energy)::value;
+        if (t_field != nullptr)
+          k.template force_loop<e, true>(particles.bonds(), critical_stretch, alpha, t_field);
+        else
+          k.template force_loop<e, false>(particles.bonds(), critical_stretch, 0., nullptr);
       });
+  }
+
+  template <int dim>
+  double
+  BondBased<dim>::bond_expansion() const
+  {
+    // The free in-plane strain per kelvin (planar_thermal_expansion() of the implied nu).
+    return context.planar == PlanarAssumption::plane_strain ?
+             (1. + implied_poisson_ratio()) * expansion.coefficient() :
+             expansion.coefficient();
+  }
+
+  template <int dim>
+  SymmetricTensor<2, dim>
+  BondBased<dim>::thermal_expansion() const
+  {
+    return bond_expansion() * unit_symmetric_tensor<dim>();
+  }
+
+  template <int dim>
+  double
+  BondBased<dim>::thermal_stretch(const ParticleSystem<dim> &particles, const std::size_t b) const
+  {
+    const ParticleVector *delta_T = this->temperature_change();
+    if (delta_T == nullptr)
+      return 0.;
+    const BondList &bonds = particles.bonds();
+    return bond_expansion() * 0.5 *
+           (delta_T->local_element(bonds.row_of(b)) + delta_T->local_element(bonds.neighbor[b]));
   }
 
   template <int dim>
@@ -284,7 +352,7 @@ namespace perideal
         Tensor<1, dim>     r = x[j] - x[i];
         for (unsigned int d = 0; d < dim; ++d)
           r[d] += u.local_element(j * dim + d) - u.local_element(i * dim + d);
-        const double s = r.norm() / bonds.length[b] - 1.;
+        const double s = r.norm() / bonds.length[b] - 1. - thermal_stretch(particles, b);
         released += particles.bond_share(b) * 0.5 * pair_coefficient(particles, i, b) * s * s *
                     bonds.length[b];
       }
@@ -326,6 +394,7 @@ namespace perideal
     capabilities.stiffness_fit       = true;
     capabilities.sequentially_linear = true;
     capabilities.lattice_fracture    = true;
+    capabilities.thermal_strain      = true;
     return capabilities;
   }
 
@@ -341,6 +410,11 @@ namespace perideal
     if (context.lattice_fracture)
       out << "; lattice calibration of the fracture energy: critical stretch " << fracture_factor
           << " times the continuum's";
+    if (!expansion.is_zero())
+      out << "; thermal expansion " << expansion.summary()
+          << (context.planar == PlanarAssumption::plane_strain ?
+                ", in plane (1 + nu) alpha = " + std::to_string(bond_expansion()) + " 1/K" :
+                std::string());
     return out.str();
   }
 

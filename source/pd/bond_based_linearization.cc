@@ -26,8 +26,9 @@ namespace perideal
       per_particle);
   }
 
-  // PMB linearized: f_i V_i = sum_j (c G chi / |xi|) V_i V_j n n^T (u_j - u_i), i.e. one row
-  // e_b = n_b . (u_j - u_i) per intact bond with weight k_b = c G chi V_i V_j / |xi|.
+  // PMB linearized: f_i V_i = sum_j (c G chi / |xi|) V_i V_j n n^T (u_j - u_i - s_th xi), i.e.
+  // one row e_b = n_b . (u_j - u_i) per intact bond with weight k_b = c G chi V_i V_j / |xi| and
+  // offset s_th |xi|, the thermal extension.
   template <int dim>
   void
   BondBased<dim>::linearize(const ParticleSystem<dim> &particles, LinearizedModel &linearized) const
@@ -37,10 +38,19 @@ namespace perideal
     std::vector<double> bond_coefficient(particles.bonds().size());
     for (std::size_t b = 0; b < bond_coefficient.size(); ++b)
       bond_coefficient[b] = coefficient(b);
+    std::vector<double> offset;
+    if (this->temperature_change() != nullptr)
+      {
+        const BondList &bonds = particles.bonds();
+        offset.assign(bonds.size(), 0.);
+        for (std::size_t b = 0; b < bonds.size(); ++b)
+          offset[b] = thermal_stretch(particles, b) * bonds.length[b];
+      }
     add_bond_rows(particles,
                   intact_bond_stiffness(particles.bonds(), bond_coefficient),
                   extension_row<dim>(particles),
-                  linearized);
+                  linearized,
+                  offset.empty() ? nullptr : &offset);
   }
 
   template void

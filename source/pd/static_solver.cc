@@ -21,8 +21,9 @@ namespace perideal
 
   namespace
   {
-    /// The rectangular matrix G (rows: the model's strain rows, then the constraint rows) and
-    /// its row weights; the columns of a prescribed component are left out if @p eliminate.
+    /// The rectangular matrix G (rows: the model's strain rows, then the constraint rows), its
+    /// row weights and, if @p offsets is given, its row offsets (0 for the constraint rows); the
+    /// columns of a prescribed component are left out if @p eliminate.
     template <int dim>
     void
     build_extension_matrix(const ParticleSystem<dim> &particles,
@@ -31,7 +32,8 @@ namespace perideal
                            const std::vector<double> &constraint_scale,
                            const bool                 eliminate,
                            SparseMatrix              &G,
-                           SolverVector              &weights)
+                           SolverVector              &weights,
+                           SolverVector              *offsets = nullptr)
     {
       const MPI_Comm     comm    = particles.get_communicator();
       const unsigned int n_owned = particles.n_owned();
@@ -42,11 +44,13 @@ namespace perideal
       {
         std::map<types::global_dof_index, double> entries;
         double                                    weight = 0.;
+        double                                    offset = 0.;
       };
       std::vector<Row> rows(linearized.n_rows());
       for (std::size_t r = 0; r < rows.size(); ++r)
         {
           rows[r].weight = linearized.weight(r);
+          rows[r].offset = linearized.offset(r);
           for (const auto *e = linearized.row_begin(r); e != linearized.row_end(r); ++e)
             if (!eliminate || prescribed.local_element(e->particle * nc + e->component) == 0.)
               rows[r].entries[particles.global_index(e->particle) * nc + e->component] +=
@@ -114,6 +118,13 @@ namespace perideal
       for (std::size_t r = 0; r < rows.size(); ++r)
         weights[first + r] = rows[r].weight;
       weights.compress(VectorOperation::insert);
+      if (offsets != nullptr)
+        {
+          offsets->reinit(row_set, comm);
+          for (std::size_t r = 0; r < rows.size(); ++r)
+            (*offsets)[first + r] = rows[r].offset;
+          offsets->compress(VectorOperation::insert);
+        }
     }
   } // namespace
 
@@ -164,7 +175,8 @@ namespace perideal
       if (s <= 0.)
         s = 1.;
 
-    // Right-hand side F_f - K_fc g with K g = G^T diag(w) G g of the unconstrained G.
+    // Right-hand side F_f - K_fc g + (G^T diag(w) o)_f with K g = G^T diag(w) G g of the
+    // unconstrained G and o its row offsets (the load of a thermal strain).
     SolverVector g(dofs, comm), rhs(dofs, comm), solution(dofs, comm);
     for (std::size_t k = 0; k < std::size_t(n_owned) * nc; ++k)
       if (prescribed.local_element(k) != 0.)
@@ -172,10 +184,18 @@ namespace perideal
     g.compress(VectorOperation::insert);
     {
       SparseMatrix G;
-      SolverVector weights;
-      build_extension_matrix<dim>(particles, linearized, prescribed, scale, false, G, weights);
+      SolverVector weights, offsets;
+      build_extension_matrix<dim>(particles,
+                                  linearized,
+                                  prescribed,
+                                  scale,
+                                  false,
+                                  G,
+                                  weights,
+                                  &offsets);
       SolverVector extension(weights);
       G.vmult(extension, g);
+      extension -= offsets;
       extension.scale(weights);
       G.Tvmult(rhs, extension);
       rhs *= -1.;
@@ -319,12 +339,13 @@ namespace perideal
   StaticSolver<dim>::extension_matrix(const ParticleSystem<dim> &particles,
                                       const LinearizedModel     &linearized,
                                       SparseMatrix              &G,
-                                      SolverVector              &weights)
+                                      SolverVector              &weights,
+                                      SolverVector              &offsets)
   {
     // Nothing is eliminated: the prescribed flags and constraint scales are not read.
     ParticleVector none;
     particles.reinit_vector(none, linearized.n_components());
-    build_extension_matrix<dim>(particles, linearized, none, {}, false, G, weights);
+    build_extension_matrix<dim>(particles, linearized, none, {}, false, G, weights, &offsets);
   }
 
   template <int dim>

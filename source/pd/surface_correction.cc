@@ -164,7 +164,12 @@ namespace perideal
     auto force = std::make_shared<ParticleVector>();
     particles.reinit_vector(*force, model.field_layout().n_components());
     return [&model, &particles, force](const ParticleVector &u, std::vector<double> &density) {
+      // The energy of the strain alone: no temperature change (a model re-initialized during a
+      // run keeps its set_temperature_change()).
+      const ParticleVector *delta_T = model.temperature_change();
+      model.set_temperature_change(nullptr);
       model.compute_forces(particles, u, *force, &density, std::numeric_limits<double>::infinity());
+      model.set_temperature_change(delta_T);
     };
   }
 

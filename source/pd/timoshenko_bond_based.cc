@@ -58,6 +58,8 @@ namespace perideal
       double *largest_growth      = nullptr;
       double  softening_parameter = 1.;
       bool    commit              = false;
+      /// The thermal expansion alpha of the bonds' stretch (thermal laws only).
+      double expansion = 0.;
     };
 
     /**
@@ -66,13 +68,18 @@ namespace perideal
      * the pair energy k w / 2 at both ends (k per lane = G chi V_i V_j). With @p softening,
      * each mode is scaled by its factor per lane (secant stiffness at the largest value
      * reached); if `commit`, the pair first raises the lanes' histories to the present values
-     * and updates their factors and dissipated energies.
+     * and updates their factors and dissipated energies. With @p thermal, the stretch s is the
+     * mechanical one, less alpha Delta T_b (Delta T_b the bond's mean temperature change, the
+     * loop's input after the unknowns: bond_temperature_change()); shear and bending take no
+     * thermal strain.
      */
-    template <int dim, bool with_energy, bool softening>
+    template <int dim, bool with_energy, bool softening, bool thermal>
     struct TimoshenkoPairLaw
     {
-      static constexpr unsigned int n_rot        = n_rotations(dim);
-      static constexpr unsigned int n_shear      = (dim == 2 ? 1 : 3);
+      static constexpr unsigned int n_rot   = n_rotations(dim);
+      static constexpr unsigned int n_shear = (dim == 2 ? 1 : 3);
+      /// The loop's inputs: the unknowns and, if thermal, the temperature change.
+      static constexpr unsigned int n_inputs     = dim + n_rot + (thermal ? 1 : 0);
       static constexpr unsigned int n_outputs    = dim + n_rot + (with_energy ? 1 : 0);
       static constexpr bool         breaks_bonds = true;
       static constexpr bool         softens      = softening;
@@ -136,6 +143,8 @@ namespace perideal
               }
           }
         y.s *= il;
+        if constexpr (thermal)
+          y.s -= p.expansion * bond_temperature_change(u_a, u_b, dim + n_rot);
         const Vector a  = axial_inverse_limit(y.s);
         const Vector x2 = stdx::max(y.s * y.s * (a * a),
                                     stdx::max(gamma2 * (p.inverse_limit[1] * p.inverse_limit[1]),
@@ -354,18 +363,39 @@ namespace perideal
       }
     base.softening_parameter = softening;
     base.commit              = breaks;
+    base.expansion           = bond_expansion();
     if (breaks)
       k.largest_growth = 0.;
-    const auto run = [&](auto with_energy) {
+    // Without an expansion, a temperature change strains nothing: the loop of today.
+    const ParticleVector *delta_T = this->temperature_change();
+    const double         *t_field = delta_T != nullptr && base.expansion != 0. ?
+                                      gather_temperature_change(k.blocks, *delta_T, k.t_field) :
+                                      nullptr;
+    const auto            run     = [&](auto with_energy) {
       constexpr bool e = decltype(with_energy)::value;
-      if (soft)
+      if (t_field != nullptr)
         {
-          k.force_loop(TimoshenkoPairLaw<dim, e, true>{base}, particles.bonds(), threshold);
+          if (soft)
+            k.force_loop(TimoshenkoPairLaw<dim, e, true, true>{base},
+                         particles.bonds(),
+                         threshold,
+                         t_field);
+          else
+            k.force_loop(TimoshenkoPairLaw<dim, e, false, true>{base},
+                         particles.bonds(),
+                         threshold,
+                         t_field);
         }
+      else if (soft)
+        k.force_loop(TimoshenkoPairLaw<dim, e, true, false>{base},
+                     particles.bonds(),
+                     threshold,
+                     nullptr);
       else
-        {
-          k.force_loop(TimoshenkoPairLaw<dim, e, false>{base}, particles.bonds(), threshold);
-        }
+        k.force_loop(TimoshenkoPairLaw<dim, e, false, false>{base},
+                     particles.bonds(),
+                     threshold,
+                     nullptr);
     };
     evaluate_bond_kernel<dim>(k.blocks,
                               particles,
@@ -454,6 +484,23 @@ namespace perideal
   }
 
   template <int dim>
+  double
+  TimoshenkoBondBased<dim>::bond_expansion() const
+  {
+    // The free in-plane strain per kelvin (planar_thermal_expansion() of an isotropic nu).
+    return context.planar == PlanarAssumption::plane_strain ?
+             (1. + poisson_ratio) * expansion.coefficient() :
+             expansion.coefficient();
+  }
+
+  template <int dim>
+  SymmetricTensor<2, dim>
+  TimoshenkoBondBased<dim>::thermal_expansion() const
+  {
+    return bond_expansion() * unit_symmetric_tensor<dim>();
+  }
+
+  template <int dim>
   const Timoshenko::Stiffness &
   TimoshenkoBondBased<dim>::stiffness() const
   {
@@ -467,6 +514,7 @@ namespace perideal
     ModelCapabilities capabilities;
     capabilities.stiffness_fit    = true;
     capabilities.lattice_fracture = true;
+    capabilities.thermal_strain   = true;
     return capabilities;
   }
 

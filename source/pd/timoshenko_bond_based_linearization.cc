@@ -53,13 +53,19 @@ namespace perideal
       }
     std::vector<Entry> entries;
     entries.reserve(4 * dim);
-    // Stretch: n . (u_j - u_i), weight k C_N / |xi|.
+    // Stretch: n . (u_j - u_i), weight k C_N / |xi|, offset the thermal extension.
     for (unsigned int d = 0; d < dim; ++d)
       {
         entries.push_back({i, d, -n[d]});
         entries.push_back({j, d, n[d]});
       }
-    emit(k * C.normal / r, entries, 0u);
+    const ParticleVector *delta_T = this->temperature_change();
+    emit(k * C.normal / r,
+         entries,
+         0u,
+         delta_T != nullptr ?
+           bond_expansion() * 0.5 * (delta_T->local_element(i) + delta_T->local_element(j)) * r :
+           0.);
     // Shear strains: e . (u_j - u_i) / |xi| - (n x e) . (theta_i + theta_j) / 2, weight
     // 12 k C_theta / |xi|.
     if (C.shear != 0.)
@@ -77,7 +83,7 @@ namespace perideal
               entries.push_back({i, n_trans + q, g});
               entries.push_back({j, n_trans + q, g});
             }
-          emit(12. * k * C.shear / r, entries, 1u);
+          emit(12. * k * C.shear / r, entries, 1u, 0.);
         }
     // Bending rotations: e . (theta_j - theta_i) (2D: rz_j - rz_i), weight k C_B / |xi|.
     if (C.bending != 0.)
@@ -90,7 +96,7 @@ namespace perideal
               entries.push_back({i, n_trans + q, -g});
               entries.push_back({j, n_trans + q, g});
             }
-          emit(k * C.bending / r, entries, 2u);
+          emit(k * C.bending / r, entries, 2u, 0.);
         }
   }
 
@@ -115,9 +121,12 @@ namespace perideal
             bond_rows(particles,
                       i,
                       b,
-                      [&](const double w, const auto &entries, const unsigned int mode) {
+                      [&](const double       w,
+                          const auto        &entries,
+                          const unsigned int mode,
+                          const double       offset) {
                         const double mu = factor[mode].empty() ? 1. : factor[mode][b];
-                        linearized.add_row(w * mu * particles.bond_share(b), entries);
+                        linearized.add_row(w * mu * particles.bond_share(b), entries, offset);
                       });
           }
     // The stiffness of a particle's prescribed rows: its axial bond stiffness.
@@ -148,17 +157,22 @@ namespace perideal
     for (unsigned int i = 0; i < n_owned; ++i)
       for (std::size_t b = bonds.row_start[i]; b < bonds.row_start[i + 1]; ++b)
         if (bonds.intact[b])
-          bond_rows(particles, i, b, [&](const double w, const auto &entries, unsigned int) {
-            for (const auto &entry : entries)
-              if (entry.particle < n_owned)
-                {
-                  double sum = 0.;
-                  for (const auto &other : entries)
-                    sum += std::abs(other.coefficient) * scale(entry.component, other.component);
-                  per_particle[entry.particle * nc + entry.component] +=
-                    w * std::abs(entry.coefficient) * sum / particles.volumes()[entry.particle];
-                }
-          });
+          bond_rows(particles,
+                    i,
+                    b,
+                    [&](const double w, const auto &entries, unsigned int, double) {
+                      for (const auto &entry : entries)
+                        if (entry.particle < n_owned)
+                          {
+                            double sum = 0.;
+                            for (const auto &other : entries)
+                              sum += std::abs(other.coefficient) *
+                                     scale(entry.component, other.component);
+                            per_particle[entry.particle * nc + entry.component] +=
+                              w * std::abs(entry.coefficient) * sum /
+                              particles.volumes()[entry.particle];
+                          }
+                    });
   }
 
   template <int dim>
@@ -167,7 +181,8 @@ namespace perideal
   {
     BondList &bonds    = particles.bonds();
     double    released = 0.;
-    // The bond energy 1/2 sum_r w_r (G_r u)^2 of each newly broken bond (factors as they were).
+    // The bond energy 1/2 sum_r w_r (G_r u - o_r)^2 of each newly broken bond (factors as they
+    // were).
     std::vector<double> factor[3];
     if (failure == FailureLaw::softening && !bonds.newly_broken.empty())
       for (unsigned int m = 0; m < 3; ++m)
@@ -179,17 +194,17 @@ namespace perideal
     for (const unsigned int b : bonds.newly_broken)
       {
         const unsigned int i = bonds.row_of(b);
-        bond_rows(particles,
-                  i,
-                  b,
-                  [&](const double w, const auto &entries, const unsigned int mode) {
-                    double strain = 0.;
-                    for (const auto &entry : entries)
-                      strain +=
-                        entry.coefficient * u.local_element(entry.particle * nc + entry.component);
-                    const double mu = factor[mode].empty() ? 1. : factor[mode][b];
-                    released += particles.bond_share(b) * 0.5 * w * mu * strain * strain;
-                  });
+        bond_rows(
+          particles,
+          i,
+          b,
+          [&](const double w, const auto &entries, const unsigned int mode, const double offset) {
+            double strain = -offset;
+            for (const auto &entry : entries)
+              strain += entry.coefficient * u.local_element(entry.particle * nc + entry.component);
+            const double mu = factor[mode].empty() ? 1. : factor[mode][b];
+            released += particles.bond_share(b) * 0.5 * w * mu * strain * strain;
+          });
       }
     bonds.newly_broken.clear();
     if (failure == FailureLaw::softening)

@@ -81,6 +81,7 @@ namespace perideal
                       "bond in compression, -sigma_c / E, beyond which it softens with the same "
                       "k (one history: the larger of s / s_0 and -s E / sigma_c). 0: compression "
                       "fails at -s_0 like tension (seed eq. 15 as printed).");
+    ThermalExpansion::declare_parameters(prm, false);
     prm.declare_entry("Softening tolerance",
                       "1e-3",
                       Patterns::Double(),
@@ -102,6 +103,7 @@ namespace perideal
                            ParameterUtilities::format_number(poisson_ratio) +
                            " must be > -1 (and at most 1/3 in plane stress, 1/4 in plane "
                            "strain and 3D)."));
+    expansion.parse_parameters(prm, "Material/timoshenko bond based", false);
     const std::string calibration_name = prm.get("Calibration");
     AssertThrow(calibration_name == "lattice" || calibration_name == "continuum",
                 ExcMessage("<" + section + "Calibration> = '" + calibration_name +
@@ -213,6 +215,7 @@ namespace perideal
     k.blocks.reinit_field(k.u_field, Kernel::n_components);
     k.blocks.reinit_field(k.f_field, Kernel::n_components);
     k.blocks.reinit_field(k.w_field, 1);
+    k.t_field.clear();
     if (failure == FailureLaw::softening)
       {
         // Sized like the lanes before the first force evaluation (the surface correction's).
@@ -297,6 +300,11 @@ namespace perideal
       out << ", compression limit " << compressive_strength / youngs_modulus;
     if (context.surface_correction && context.stiffness_fit)
       out << "; " << fit_report.summary();
+    if (!expansion.is_zero())
+      out << "; thermal expansion (axial) " << expansion.summary()
+          << (context.planar == PlanarAssumption::plane_strain ?
+                ", in plane (1 + nu) alpha = " + std::to_string(bond_expansion()) + " 1/K" :
+                std::string());
     if (context.lattice_fracture)
       out << "; lattice calibration of the fracture energy: limits s_0, gamma_0, kappa_0 "
           << fracture_factor[0] << ", " << fracture_factor[1] << ", " << fracture_factor[2]

@@ -33,13 +33,15 @@ namespace perideal
    * of the coupling (the blended energy of doc/theory/coupling.md; for a region alone, that
    * region's own energy), linearized,
    *
-   *   E(z) = 1/2 U^T K_FE U + 1/2 (G T z)^T diag(w) (G T z) - F^T z,
+   *   E(z) = 1/2 U^T K_FE U + 1/2 (G T z - o)^T diag(w) (G T z - o) - F^T z,
    *
-   * with K_FE the FE stiffness weighted by 1 - beta (FERegion) and G, w the extension matrix and
-   * row weights of the PD model's linearization (StaticSolver::extension_matrix(); the bond
-   * energies are already weighted by beta_b), has the stationarity condition K z = F with
+   * with K_FE the FE stiffness weighted by 1 - beta (FERegion) and G, w, o the extension matrix,
+   * row weights and row offsets (a thermal strain, taken at assemble()) of the PD model's
+   * linearization (StaticSolver::extension_matrix(); the bond energies are already weighted by
+   * beta_b), has the stationarity condition K z = F with
    *
-   *   K = E^T K_FE E + (G T)^T diag(w) (G T),   F = E^T f_FE + T^T (V f_PD),
+   *   K = E^T K_FE E + (G T)^T diag(w) (G T),
+   *   F = E^T f_FE + T^T (V f_PD) + (G T)^T diag(w) o,
    *
    * where E takes z to the FE dofs and V f_PD are the particle loads [N]. E^T K_FE E and G T
    * are Trilinos matrix products (TrilinosWrappers::SparseMatrix::mmult, Tmmult); (G T)^T diag(w)
@@ -228,7 +230,7 @@ namespace perideal
     /// The diagonal entry of the prescribed rows: the mean diagonal entry of the free rows.
     double       prescribed_scale = 1.;
     SparseMatrix T, T_free, fe_part, G, system_matrix;
-    SolverVector weights;
+    SolverVector weights, offsets;
     /// The factorization or preconditioner of system_matrix, built by the first solve after
     /// assemble().
     typename StaticSolver<dim>::LinearSystem linear_system;

@@ -53,6 +53,13 @@ namespace perideal
    * relation C66 = C12 (refused otherwise, or symmetrized); a 3D material whose reduced
    * stiffness does not is the domain of 'anisotropic plane stress'. Reference critical stretch
    * sqrt(4 G0 / (c_mean h delta^4)) (PMB's 2D relation G0 = c s0^2 h delta^4 / 4).
+   *
+   * A temperature change (set_temperature_change()) with the material's <Thermal expansion>
+   * alpha (in the material axes, turned with them; in 2D the in-plane expansion of the planar
+   * assumption, planar_thermal_expansion()): every measure of a bond takes the mechanical
+   * stretch s - n . alpha . n (Delta T_i + Delta T_j) / 2, with a grain's own alpha in a
+   * polycrystal and the mean of the two grains' n . alpha . n across a grain boundary
+   * (doc/theory/thermal_strain.md).
    */
   template <int dim>
   class AnisotropicBondBased : public MaterialModel<dim>
@@ -117,6 +124,11 @@ namespace perideal
      */
     dealii::SymmetricTensor<4, dim>
     elasticity_tensor() const override;
+
+    /// The material's expansion in the global axes, in 2D the in-plane one of the planar
+    /// assumption (a polycrystal's grains turn it with their orientations).
+    dealii::SymmetricTensor<2, dim>
+    thermal_expansion() const override;
 
     /**
      * @brief The reference critical stretch sqrt(10 G0 / (pi c_mean delta^5)), c_mean the mean
@@ -205,6 +217,8 @@ namespace perideal
     std::vector<unsigned int>                                particle_grain;
     /// k_b = c(n_b) G chi V_i V_j and the breaking factor per bond.
     std::vector<double> bond_coefficient, bond_break_factor;
+    /// n . alpha . n per bond (the thermal stretch per kelvin); empty without an expansion.
+    std::vector<double> bond_expansion;
     StiffnessFitReport  fit_report;
     /// The force kernel's data (bonds in SIMD blocks, per-lane k_b, per-class breaking
     /// factors): defined in anisotropic_bond_based.cc, compiled with the kernel options.
@@ -216,6 +230,19 @@ namespace perideal
      */
     void
     set_bond_coefficients(const ParticleSystem<dim> &particles, const bool with_surface_factor);
+
+    /**
+     * @brief The thermal expansion of grain @p g (the material turned by its orientation) in the
+     * global axes, in 2D the in-plane one of the planar assumption.
+     */
+    dealii::SymmetricTensor<2, dim>
+    grain_expansion(const unsigned int g) const;
+
+    /**
+     * @brief Set bond_expansion and the kernel's lanes of it (none without an expansion).
+     */
+    void
+    set_bond_expansions(const ParticleSystem<dim> &particles);
 
     /**
      * @brief Lambda and the fracture weights of every grain (the material rotated by the

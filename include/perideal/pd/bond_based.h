@@ -25,6 +25,10 @@ namespace perideal
    * Critical stretch from the fracture energy G0 (Silling & Askari 2005; 2D by the same
    * integral over a disk, seed note 002, sec. 4.2): 3D s0 = sqrt(5 G0 / (6 E delta)); plane
    * stress s0 = sqrt(4 pi G0 / (9 E delta)); plane strain s0 = sqrt(5 pi G0 / (12 E delta)).
+   * A temperature change (set_temperature_change()) with <Thermal expansion> alpha: every
+   * measure of a bond (force, energy, breaking, released energy, the offsets of linearize())
+   * takes the mechanical stretch s - alpha_p (Delta T_i + Delta T_j) / 2, alpha_p the in-plane
+   * expansion (plane strain (1 + nu) alpha; seed 002, eq. 4.93; doc/theory/thermal_strain.md).
    */
   template <int dim>
   class BondBased : public MaterialModel<dim>
@@ -41,7 +45,7 @@ namespace perideal
     ~BondBased() override;
 
     /**
-     * @brief Declare "Young's modulus".
+     * @brief Declare "Young's modulus" and "Thermal expansion" (one value).
      */
     static void
     declare_parameters(dealii::ParameterHandler &prm);
@@ -63,7 +67,8 @@ namespace perideal
      * @brief The energy of the bonds broken since the last call, as
      * MaterialModel::released_energy() defines it: the sum over BondList::newly_broken of the
      * bond energy k s^2 |xi| / 2 at @p u (k = c G chi V_i V_j, the pair energy of both ends, s
-     * the stretch), each times its share on this rank; no force evaluation, no communication.
+     * the mechanical stretch), each times its share on this rank; no force evaluation, no
+     * communication.
      */
     double
     released_energy(ParticleSystem<dim> &particles, const ParticleVector &u) override;
@@ -85,6 +90,10 @@ namespace perideal
 
     dealii::SymmetricTensor<4, dim>
     elasticity_tensor() const override;
+
+    /// alpha_p I, alpha_p the in-plane expansion of the bonds (bond_expansion()).
+    dealii::SymmetricTensor<2, dim>
+    thermal_expansion() const override;
 
     double
     critical_stretch(const double fracture_energy) const override;
@@ -151,9 +160,11 @@ namespace perideal
     implied_poisson_ratio() const;
 
   private:
-    double       youngs_modulus = 0.;
-    ModelContext context;
-    double       c = 0.;
+    double youngs_modulus = 0.;
+    /// <Thermal expansion> (isotropic).
+    ThermalExpansion expansion;
+    ModelContext     context;
+    double           c = 0.;
     /// The factor of the lattice calibration on the continuum's critical stretch (1 without it,
     /// ModelContext::lattice_fracture).
     double fracture_factor = 1.;
@@ -175,6 +186,20 @@ namespace perideal
     set_bond_coefficients(
       const ParticleSystem<dim>                                          &particles,
       const std::function<double(const unsigned int, const std::size_t)> &surface_factor);
+
+    /**
+     * @brief The free strain per kelvin of the bonds: alpha in 3D and plane stress, (1 + nu)
+     * alpha in plane strain (planar_thermal_expansion() with the implied nu).
+     */
+    double
+    bond_expansion() const;
+
+    /**
+     * @brief The thermal stretch bond_expansion() (Delta T_i + Delta T_j) / 2 of bond @p b of
+     * @p particles' bond list (0 without a temperature change).
+     */
+    double
+    thermal_stretch(const ParticleSystem<dim> &particles, const std::size_t b) const;
   };
 } // namespace perideal
 

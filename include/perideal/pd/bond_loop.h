@@ -217,6 +217,37 @@ namespace perideal
   }
 
   /**
+   * @brief The temperature change of the lanes' bonds, the mean (Delta T_a + Delta T_b) / 2 of
+   * their two ends (doc/theory/thermal_strain.md, "Choices"), for a pair law with a thermal
+   * strain: the loop hands it the kernel-order temperature change as the extra input component
+   * @p c after the unknowns (gather_temperature_change()).
+   */
+  inline bond_simd::Vector
+  bond_temperature_change(const bond_simd::Vector *u_a,
+                          const bond_simd::Vector *u_b,
+                          const unsigned int       c)
+  {
+    return 0.5 * (u_a[c] + u_b[c]);
+  }
+
+  /**
+   * @brief The temperature change @p delta_T (one value per local particle,
+   * MaterialModel::set_temperature_change()) in kernel order into @p field (sized here on first
+   * use), and its one component: the extra input of a thermal pair law (bond_temperature_change()).
+   */
+  template <int dim>
+  inline const double *
+  gather_temperature_change(const BondBlocks<dim>           &blocks,
+                            const ParticleVector            &delta_T,
+                            typename BondBlocks<dim>::Array &field)
+  {
+    if (field.empty())
+      blocks.reinit_field(field, 1);
+    blocks.gather(delta_T.begin(), 1, field);
+    return blocks.component(field, 0);
+  }
+
+  /**
    * @brief The deformed bond of a displacement model, per lane: r = xi + eta (eta = u_b - u_a
    * the relative displacement), rho = |xi| / |r| and the stretch s = |r| / |xi| - 1.
    */

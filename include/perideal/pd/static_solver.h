@@ -81,14 +81,16 @@ namespace perideal
      * @brief The unconstrained strain matrix G of @p linearized (rows: the model's rows, e.g.
      * the bonds with a stiffness and, for state-based models, the dilatations; columns: the
      * particle dofs, linearized.n_components() per particle) and its row weights, so that G^T
-     * diag(@p weights) G is the stiffness without boundary conditions. For solves that map the
-     * particle dofs to other unknowns (the coupled static solve: G T).
+     * diag(@p weights) G is the stiffness without boundary conditions, and its row offsets
+     * @p offsets (LinearizedModel::offset(): G^T diag(w) o is the load of a thermal strain). For
+     * solves that map the particle dofs to other unknowns (the coupled static solve: G T).
      */
     static void
     extension_matrix(const ParticleSystem<dim> &particles,
                      const LinearizedModel     &linearized,
                      SparseMatrix              &G,
-                     SolverVector              &weights);
+                     SolverVector              &weights,
+                     SolverVector              &offsets);
 
     /**
      * @brief The solves of one symmetric positive definite system K x = b of a static solve for

@@ -182,6 +182,11 @@ namespace perideal
    * work to separation is still G0's (doc/theory/models.md, "Tensile strength"). A
    * <Compressive strength> sigma_c then sets the stretch limit of compression, sigma_c / E
    * (seed note 003, A12; otherwise compression fails at -s_0, as printed).
+   *
+   * A temperature change (set_temperature_change()) with <Thermal expansion> alpha strains the
+   * bonds' axial part only: every measure takes the mechanical stretch s - alpha_p (Delta T_i +
+   * Delta T_j) / 2 (alpha_p = (1 + nu) alpha in plane strain); shear and bending take none
+   * (doc/theory/thermal_strain.md).
    */
   template <int dim>
   class TimoshenkoBondBased : public MaterialModel<dim>
@@ -276,6 +281,10 @@ namespace perideal
     dealii::SymmetricTensor<4, dim>
     elasticity_tensor() const override;
 
+    /// alpha_p I, alpha_p the in-plane expansion of the axial stretch (bond_expansion()).
+    dealii::SymmetricTensor<2, dim>
+    thermal_expansion() const override;
+
     /// s_0 of the fracture energy, times sqrt(k / (k + 2)) for the softening law; with a
     /// <Tensile strength> sigma_t / E, and k then follows from @p fracture_energy (set here).
     double
@@ -310,7 +319,9 @@ namespace perideal
 
   private:
     double youngs_modulus = 0., poisson_ratio = 0., bending_ratio = 0.;
-    double inertia_factor = 1. / 12.;
+    /// <Thermal expansion> (isotropic).
+    ThermalExpansion expansion;
+    double           inertia_factor = 1. / 12.;
     /// k: <Softening parameter>, or, with a <Tensile strength>, derived from the fracture energy
     /// by critical_stretch() (which the damage model asks once, after initialize(); NaN until
     /// then).
@@ -345,10 +356,18 @@ namespace perideal
     set_bond_coefficients(const ParticleSystem<dim> &particles, const bool with_surface_factor);
 
     /**
+     * @brief The free in-plane strain per kelvin of the axial stretch: alpha in 3D and plane
+     * stress, (1 + nu) alpha in plane strain.
+     */
+    double
+    bond_expansion() const;
+
+    /**
      * @brief The rows of the strain operator of bond @p b of owned particle @p i, handed to
-     * @p emit(weight, entries, mode) with the mode 0 (stretch), 1 (shear strains, dim - 1 rows,
-     * if C_theta != 0) or 2 (bending rotations, if C_B != 0); weights without the bond's share
-     * of the rank.
+     * @p emit(weight, entries, mode, offset) with the mode 0 (stretch), 1 (shear strains,
+     * dim - 1 rows, if C_theta != 0) or 2 (bending rotations, if C_B != 0); weights without the
+     * bond's share of the rank; offset the thermal extension bond_expansion() Delta T_b |xi| of
+     * the stretch row (0 for the others and without a temperature change).
      */
     template <typename Emit>
     void

@@ -26,9 +26,10 @@ namespace perideal
     BondBlocks<dim> blocks;
     /// Per lane the pair coefficient k = G chi V_i V_j.
     typename BondBlocks<dim>::Array lane_coefficient;
-    /// The unknowns, the forces and moments, and the pair energies, in kernel order.
+    /// The unknowns, the forces and moments, the pair energies, and the temperature change
+    /// (sized on its first use), in kernel order.
     ///@{
-    typename BondBlocks<dim>::Array u_field, f_field, w_field;
+    typename BondBlocks<dim>::Array u_field, f_field, w_field, t_field;
     ///@}
     /// Softening: per lane the histories and factors of the three modes, and the dissipated
     /// energy (lanes of bonds to ghosts count on both ranks).
@@ -44,19 +45,23 @@ namespace perideal
     /**
      * @brief One pass of the pair law @p law (the TimoshenkoPairLaw of
      * source/pd/timoshenko_bond_based.cc) over the bond blocks: forces and moments into
-     * f_field and, if the law has an energy output, the pair energies into w_field.
+     * f_field and, if the law has an energy output, the pair energies into w_field; a thermal
+     * law (an input more than the unknowns) reads the kernel-order temperature change
+     * @p delta_T.
      */
     template <typename Law>
     void
-    force_loop(Law law, BondList &bonds, const double threshold)
+    force_loop(Law law, BondList &bonds, const double threshold, const double *delta_T)
     {
-      std::array<const double *, n_components> u;
-      std::array<double *, Law::n_outputs>     out;
+      std::array<const double *, Law::n_inputs> u;
+      std::array<double *, Law::n_outputs>      out;
       for (unsigned int c = 0; c < n_components; ++c)
         {
           u[c]   = blocks.component(u_field, c);
           out[c] = blocks.component(f_field, c);
         }
+      if constexpr (Law::n_inputs > n_components)
+        u[n_components] = delta_T;
       if constexpr (Law::n_outputs > n_components)
         out[n_components] = blocks.component(w_field, 0);
       law.p.coefficient = lane_coefficient.data();
@@ -70,7 +75,7 @@ namespace perideal
           law.p.dissipated     = dissipated.data();
           law.p.largest_growth = &largest_growth;
         }
-      for_each_bond_block<n_components>(blocks, u, out, law, bonds, threshold);
+      for_each_bond_block<Law::n_inputs>(blocks, u, out, law, bonds, threshold);
     }
   };
 } // namespace perideal
