@@ -40,10 +40,10 @@ namespace perideal
 
     /**
      * @brief The strain of the plane-stress pair laws: the linearized stretch and, if
-     * @p thermal, less the bond's free thermal stretch n . alpha' . n DeltaT_b, DeltaT_b =
-     * (DeltaT_a + DeltaT_b)/2 read from the component after the displacement (u_a[2], u_b[2]),
-     * alpha' the in-plane expansion: the mechanical stretch, by which bonds break and from which
-     * both passes measure (doc/theory/thermal_strain_state_based.md).
+     * @p thermal, less the bond's free thermal stretch n . alpha' . n DeltaT_b, DeltaT_b the mean
+     * of the temperature changes of its ends, read from the component after the displacement
+     * (u_a[2], u_b[2]), alpha' the in-plane expansion: the mechanical stretch, by which bonds break
+     * and from which both passes measure (doc/theory/thermal_strain_state_based.md).
      */
     template <bool thermal>
     struct PlaneStressStrain : StretchPairLaw<2>

@@ -21,10 +21,11 @@ namespace perideal
   {
     /**
      * @brief The strain of the LPS pair laws: the deformed bond (StretchPairLaw); if
-     * @p thermal, its stretch less the free thermal stretch a DeltaT_b of the bond, DeltaT_b =
-     * (DeltaT_a + DeltaT_b)/2 read from the component after the displacement (u_a[dim] and
-     * u_b[dim]): the mechanical stretch, by which bonds break and from which the extension of
-     * both passes is e - a |xi| DeltaT_b (doc/theory/thermal_strain_state_based.md).
+     * @p thermal, its stretch less the free thermal stretch a DeltaT_b of the bond, DeltaT_b the
+     * mean of the temperature changes of its ends, read from the component after the
+     * displacement (u_a[dim] and u_b[dim]): the mechanical stretch, by which bonds break and from
+     * which the extension of both passes is e - a |xi| DeltaT_b
+     * (doc/theory/thermal_strain_state_based.md).
      */
     template <int dim, bool thermal>
     struct LPSStrain : StretchPairLaw<dim>
