@@ -39,16 +39,17 @@ namespace perideal
     }
 
     /**
-     * @brief Pass 1 as a pair law of for_each_bond_block(): breaks bonds by their linearized
-     * stretch, then adds g_b n . eta = g_b s |xi| (g_b = M:nn chi V_i V_j) at both ends (A V_i
-     * B_i before the division).
+     * @brief The strain of the plane-stress pair laws: the linearized stretch and, if
+     * @p thermal, less the bond's free thermal stretch n . alpha' . n DeltaT_b, DeltaT_b the mean
+     * of the temperature changes of its ends, read from the component after the displacement
+     * (u_a[2], u_b[2]), alpha' the in-plane expansion: the mechanical stretch, by which bonds break
+     * and from which both passes measure (doc/theory/thermal_strain_state_based.md).
      */
-    struct PlaneStressDilatationLaw : StretchPairLaw<2>
+    template <bool thermal>
+    struct PlaneStressStrain : StretchPairLaw<2>
     {
-      static constexpr unsigned int n_outputs    = 1;
-      static constexpr bool         breaks_bonds = true;
-      /// g per lane.
-      const double *g;
+      /// alpha'_11, alpha'_22, alpha'_12 [1/K] (read only if thermal).
+      std::array<double, 3> expansion;
 
       template <typename Bond>
       PlaneStressStretch
@@ -57,8 +58,28 @@ namespace perideal
              const bond_simd::Vector *u_a,
              const bond_simd::Vector *u_b) const
       {
-        return linear_stretch(bond, u_a, u_b);
+        PlaneStressStretch y = linear_stretch(bond, u_a, u_b);
+        if constexpr (thermal)
+          y.stretch -=
+            (expansion[0] * bond.xi[0] * bond.xi[0] + expansion[1] * bond.xi[1] * bond.xi[1] +
+             2. * expansion[2] * bond.xi[0] * bond.xi[1]) *
+            (bond.inverse_length * bond.inverse_length) * (0.5 * (u_a[2] + u_b[2]));
+        return y;
       }
+    };
+
+    /**
+     * @brief Pass 1 as a pair law of for_each_bond_block(): breaks bonds by their linearized
+     * (mechanical) stretch, then adds g_b n . eta = g_b s |xi| (g_b = M:nn chi V_i V_j) at both
+     * ends (A V_i B_i before the division).
+     */
+    template <bool thermal>
+    struct PlaneStressDilatationLaw : PlaneStressStrain<thermal>
+    {
+      static constexpr unsigned int n_outputs    = 1;
+      static constexpr bool         breaks_bonds = true;
+      /// g per lane.
+      const double *g;
 
       template <typename Bond>
       void
@@ -81,10 +102,10 @@ namespace perideal
     /**
      * @brief Pass 2: the pair force [k_b s - g_b (beta_i A_i + beta_j A_j)] n on the particle
      * side (its negative on the neighbour) and, if @p with_energy, the bond energy k_b s^2 |xi| / 4
-     * at both ends.
+     * at both ends; with @p thermal, s is the mechanical stretch (PlaneStressStrain).
      */
-    template <bool with_energy>
-    struct PlaneStressForceLaw : StretchPairLaw<2>
+    template <bool with_energy, bool thermal>
+    struct PlaneStressForceLaw : PlaneStressStrain<thermal>
     {
       static constexpr unsigned int n_outputs    = 2 + (with_energy ? 1 : 0);
       static constexpr bool         breaks_bonds = false;
@@ -100,16 +121,6 @@ namespace perideal
       side(const unsigned int a) const
       {
         return {bond_simd::Vector(beta_A + a, std::experimental::element_aligned)};
-      }
-
-      template <typename Bond>
-      PlaneStressStretch
-      strain(const Bond &bond,
-             const std::size_t /*first_lane*/,
-             const bond_simd::Vector *u_a,
-             const bond_simd::Vector *u_b) const
-      {
-        return linear_stretch(bond, u_a, u_b);
       }
 
       template <typename Bond>
@@ -220,29 +231,56 @@ namespace perideal
     /// The bonds in SIMD blocks, k and g per lane.
     BondBlocks<2>        blocks;
     BondBlocks<2>::Array lane_k, lane_g;
-    /// Kernel-order work fields: displacement, force, energy density, pass-1 sums, beta A.
-    BondBlocks<2>::Array u_field, f_field, w_field, a_field, beta_A_field;
+    /// Kernel-order work fields: displacement, force, energy density, pass-1 sums, beta A,
+    /// temperature change.
+    BondBlocks<2>::Array u_field, f_field, w_field, a_field, beta_A_field, delta_T_field;
+
+    /// The kernel-order unknowns of the laws: the displacement and, if @p thermal, the
+    /// temperature change.
+    template <bool thermal>
+    std::array<const double *, 2 + thermal>
+    unknowns()
+    {
+      std::array<const double *, 2 + thermal> u;
+      for (unsigned int d = 0; d < 2; ++d)
+        u[d] = blocks.component(u_field, d);
+      if constexpr (thermal)
+        u[2] = blocks.component(delta_T_field, 0);
+      return u;
+    }
+
+    /// Pass 1 (PlaneStressDilatationLaw) with in-plane expansion @p expansion if @p thermal.
+    template <bool thermal>
+    void
+    dilatation_loop(BondList                    &bonds,
+                    const double                 critical_stretch,
+                    const std::array<double, 3> &expansion)
+    {
+      for_each_bond_block<2 + thermal, 2>(blocks,
+                                          unknowns<thermal>(),
+                                          {{blocks.component(a_field, 0)}},
+                                          PlaneStressDilatationLaw<thermal>{{{}, expansion},
+                                                                            lane_g.data()},
+                                          bonds,
+                                          critical_stretch);
+    }
 
     /// Pass 2 (PlaneStressForceLaw), with the energy density if @p with_energy.
-    template <bool with_energy>
+    template <bool with_energy, bool thermal>
     void
-    force_loop(BondList &bonds)
+    force_loop(BondList &bonds, const std::array<double, 3> &expansion)
     {
-      using Law = PlaneStressForceLaw<with_energy>;
-      std::array<const double *, 2>        u;
+      using Law = PlaneStressForceLaw<with_energy, thermal>;
       std::array<double *, Law::n_outputs> out;
       for (unsigned int d = 0; d < 2; ++d)
-        {
-          u[d]   = blocks.component(u_field, d);
-          out[d] = blocks.component(f_field, d);
-        }
+        out[d] = blocks.component(f_field, d);
       if constexpr (with_energy)
         out[2] = blocks.component(w_field, 0);
-      for_each_bond_block<2>(
+      for_each_bond_block<2 + thermal, 2>(
         blocks,
-        u,
+        unknowns<thermal>(),
         out,
-        Law{{}, lane_k.data(), lane_g.data(), blocks.component(beta_A_field, 0)},
+        Law{{{}, expansion}, lane_k.data(), lane_g.data(), blocks.component(beta_A_field, 0)},
         bonds,
         0.);
     }
@@ -329,6 +367,21 @@ namespace perideal
     C_in = {{C3[0], C3[1], C3[3], C3[6], C3[7]}};
     P    = {{C3[4], C3[5], C3[8]}};
     C33  = C3[2];
+    // The thermal expansion in the global axes: the mirror plane z = 0 needs alpha_13 =
+    // alpha_23 = 0; the plane-stress model takes its in-plane block, eps_33 its alpha_33.
+    const SymmetricTensor<2, 3> alpha = material.thermal_expansion();
+    AssertThrow(std::abs(alpha[0][2]) <= 1e-8 * alpha.norm() &&
+                  std::abs(alpha[1][2]) <= 1e-8 * alpha.norm(),
+                ExcMessage("The thermal expansion of <" + section +
+                           "/Thermal expansion> has alpha_13 = " +
+                           ParameterUtilities::format_number(alpha[0][2]) +
+                           " 1/K and alpha_23 = " + ParameterUtilities::format_number(alpha[1][2]) +
+                           " 1/K in the global axes: the plate's mid-plane z = 0 is not a "
+                           "mirror plane of it. Accepted: an expansion whose material axes are "
+                           "rotated about z only (<Orientation> = phi, 0, 0), or isotropic."));
+    for (unsigned int a = 0; a < 3; ++a)
+      in_plane_expansion[a] = alpha[pair_index[a][0]][pair_index[a][1]];
+    expansion_33 = alpha[2][2];
   }
 
   void
@@ -437,12 +490,16 @@ namespace perideal
     k.blocks.reinit(particles);
     k.blocks.reinit_field(k.u_field, 2);
     k.blocks.reinit_field(k.f_field, 2);
-    for (auto *field : {&k.w_field, &k.a_field, &k.beta_A_field})
+    for (auto *field : {&k.w_field, &k.a_field, &k.beta_A_field, &k.delta_T_field})
       k.blocks.reinit_field(*field, 1);
 
     // The bond term near surfaces: the energy method on the whole model (B_i corrected), with
-    // the reduced stiffness C'_aaaa of the uniaxial test fields; its factors scale k_b.
+    // the reduced stiffness C'_aaaa of the uniaxial test fields; its factors scale k_b. The test
+    // fields are mechanical: no temperature change meanwhile.
+    const ParticleVector *delta_T = this->temperature_change();
+    this->set_temperature_change(nullptr);
     apply_surface_correction<2>(*this, particles, context);
+    this->set_temperature_change(delta_T);
     set_bond_coefficients(particles, true);
   }
 
@@ -489,17 +546,19 @@ namespace perideal
     const unsigned int n_owned = particles.n_owned();
     k.blocks.sync_state(bonds);
     k.blocks.gather(u.begin(), 2, k.u_field);
-    const std::array<const double *, 2> u_k = {
-      {k.blocks.component(k.u_field, 0), k.blocks.component(k.u_field, 1)}};
+    // With a temperature change, the instantiation of the laws that measures the stretches
+    // from the thermal ones; without one, the purely mechanical kernel.
+    const ParticleVector *delta_T = this->temperature_change();
+    const bool thermal = delta_T != nullptr && in_plane_expansion != std::array<double, 3>{};
+    if (thermal)
+      k.blocks.gather(delta_T->begin(), 1, k.delta_T_field);
 
     // Pass 1: break over-stretched bonds, then A_i = sum g_b n . eta / (V_i B_i).
     std::fill(k.a_field.begin(), k.a_field.end(), 0.);
-    for_each_bond_block<2>(k.blocks,
-                           u_k,
-                           {{k.blocks.component(k.a_field, 0)}},
-                           PlaneStressDilatationLaw{{}, k.lane_g.data()},
-                           bonds,
-                           critical_stretch);
+    if (thermal)
+      k.dilatation_loop<true>(bonds, critical_stretch, in_plane_expansion);
+    else
+      k.dilatation_loop<false>(bonds, critical_stretch, in_plane_expansion);
     ParticleVector A;
     particles.reinit_vector(A, 1);
     k.blocks.scatter_owned(k.a_field, 1, nullptr, A.begin());
@@ -514,12 +573,15 @@ namespace perideal
     // Pass 2: forces (and bond energies), summed per particle and divided by V_i.
     std::fill(k.f_field.begin(), k.f_field.end(), 0.);
     if (energy_density != nullptr)
-      {
-        std::fill(k.w_field.begin(), k.w_field.end(), 0.);
-        k.force_loop<true>(bonds);
-      }
+      std::fill(k.w_field.begin(), k.w_field.end(), 0.);
+    if (energy_density != nullptr && thermal)
+      k.force_loop<true, true>(bonds, in_plane_expansion);
+    else if (energy_density != nullptr)
+      k.force_loop<true, false>(bonds, in_plane_expansion);
+    else if (thermal)
+      k.force_loop<false, true>(bonds, in_plane_expansion);
     else
-      k.force_loop<false>(bonds);
+      k.force_loop<false, false>(bonds, in_plane_expansion);
     k.blocks.scatter_owned(k.f_field, 2, volume, force.begin());
     if (energy_density != nullptr)
       {
@@ -538,13 +600,14 @@ namespace perideal
     const auto         &x       = particles.positions();
     const auto         &volume  = particles.volumes();
     const unsigned int  n_owned = particles.n_owned();
+    const auto          offset  = thermal_extensions(particles);
     std::vector<double> sum(n_owned, 0.);
     for (unsigned int i = 0; i < n_owned; ++i)
       for (unsigned int b = bonds.row_start[i]; b < bonds.row_start[i + 1]; ++b)
         if (bonds.intact[b])
           {
             const unsigned int j = bonds.neighbor[b];
-            double             e = 0.;
+            double             e = -offset[b];
             for (unsigned int d = 0; d < 2; ++d)
               e += (x[j][d] - x[i][d]) / bonds.length[b] *
                    (u.local_element(j * 2 + d) - u.local_element(i * 2 + d));
@@ -552,8 +615,11 @@ namespace perideal
             if (j < n_owned)
               sum[j] += g[b] * e;
           }
+    // The mechanical eps_33 is -A; the thermal strain alpha_33 DeltaT adds to it.
+    const ParticleVector *delta_T = this->temperature_change();
     for (unsigned int i = 0; i < n_owned; ++i)
-      sum[i] = -sum[i] / (volume[i] * B[i]);
+      sum[i] = -sum[i] / (volume[i] * B[i]) +
+               (delta_T != nullptr ? expansion_33 * delta_T->local_element(i) : 0.);
     return sum;
   }
 
@@ -562,6 +628,43 @@ namespace perideal
                                          const ParticleVector    &u) const
   {
     return {{"out_of_plane_strain", 1, out_of_plane_strain(particles, u)}};
+  }
+
+  std::vector<double>
+  AnisotropicPlaneStress::thermal_extensions(const ParticleSystem<2> &particles) const
+  {
+    const BondList       &bonds   = particles.bonds();
+    const auto           &x       = particles.positions();
+    const ParticleVector *delta_T = this->temperature_change();
+    const auto            alpha   = thermal_expansion();
+    std::vector<double>   offset(bonds.size(), 0.);
+    if (delta_T != nullptr)
+      for (unsigned int i = 0; i < particles.n_owned(); ++i)
+        for (unsigned int b = bonds.row_start[i]; b < bonds.row_start[i + 1]; ++b)
+          {
+            const unsigned int j  = bonds.neighbor[b];
+            const Tensor<1, 2> xi = x[j] - x[i];
+            offset[b]             = xi * (alpha * xi) / bonds.length[b] * 0.5 *
+                        (delta_T->local_element(i) + delta_T->local_element(j));
+          }
+    return offset;
+  }
+
+  SymmetricTensor<2, 2>
+  AnisotropicPlaneStress::thermal_expansion() const
+  {
+    SymmetricTensor<2, 2> alpha;
+    for (unsigned int a = 0; a < 3; ++a)
+      alpha[pair_index[a][0]][pair_index[a][1]] = in_plane_expansion[a];
+    return alpha;
+  }
+
+  ModelCapabilities
+  AnisotropicPlaneStress::capabilities() const
+  {
+    ModelCapabilities capabilities;
+    capabilities.thermal_strain = true;
+    return capabilities;
   }
 
   SymmetricTensor<4, 2>

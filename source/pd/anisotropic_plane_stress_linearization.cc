@@ -17,7 +17,9 @@ namespace perideal
   // A_i = sum_b g_b e_b / (V_i B_i) over the intact bonds of i. Hence: one row e_b per intact
   // bond with weight k_b/|xi| (times the bond's share), one row A_i per owned particle with the
   // (negative) weight -beta_i V_i B_i. The A_i row collects the bonds stored in row i and in the
-  // rows of owned neighbours (e_b is the same seen from either end).
+  // rows of owned neighbours (e_b is the same seen from either end). With a temperature change
+  // e_b is the mechanical extension, less o_b = |xi| n . alpha' . n DeltaT_b: the bond row's
+  // offset is o_b, the A_i row's sum_b g_b o_b / (V_i B_i).
   void
   AnisotropicPlaneStress::linearize(const ParticleSystem<2> &particles,
                                     LinearizedModel         &linearized) const
@@ -29,6 +31,8 @@ namespace perideal
     const unsigned int                               n_owned = particles.n_owned();
     std::vector<std::vector<LinearizedModel::Entry>> A_rows(n_owned);
     std::vector<LinearizedModel::Entry>              row;
+    const std::vector<double>                        offset = thermal_extensions(particles);
+    std::vector<double>                              A_offset(n_owned, 0.);
     linearized.reinit(2, n_owned);
     std::vector<double> &scale = linearized.stiffness_scale();
     // Append factor * e_b (bond b of row i) to @p entries.
@@ -58,18 +62,22 @@ namespace perideal
             {
               row.clear();
               add_extension(i, b, 1., row);
-              linearized.add_row(k * particles.bond_share(b), row);
+              linearized.add_row(k * particles.bond_share(b), row, offset[b]);
             }
           if (g[b] != 0.)
             {
               add_extension(i, b, g[b] / (volume[i] * B[i]), A_rows[i]);
+              A_offset[i] += g[b] / (volume[i] * B[i]) * offset[b];
               if (j < n_owned)
-                add_extension(i, b, g[b] / (volume[j] * B[j]), A_rows[j]);
+                {
+                  add_extension(i, b, g[b] / (volume[j] * B[j]), A_rows[j]);
+                  A_offset[j] += g[b] / (volume[j] * B[j]) * offset[b];
+                }
             }
         }
     for (unsigned int i = 0; i < n_owned; ++i)
       if (beta[i] != 0. && !A_rows[i].empty())
-        linearized.add_row(-beta[i] * volume[i] * B[i], A_rows[i]);
+        linearized.add_row(-beta[i] * volume[i] * B[i], A_rows[i], A_offset[i]);
   }
 
   // The bond term: bond_pair_stiffness_bound() with |k_b| (c_0(n) may be negative). The A term

@@ -4,6 +4,7 @@
 #include <deal.II/base/numbers.h>
 
 #include <perideal/base/parameter_utilities.h>
+#include <perideal/base/thermal_expansion.h>
 #include <perideal/pd/bond_loop.h>
 #include <perideal/pd/lattice_fracture.h>
 #include <perideal/pd/linear_peridynamic_solid.h>
@@ -19,12 +20,40 @@ namespace perideal
   namespace
   {
     /**
-     * @brief Pass 1 of the LPS kernel as a pair law of for_each_bond_block(): breaks bonds by
-     * stretch, then adds the pair sum p omega chi V_i V_j |xi| e (e = |xi| s) at both ends
-     * (the dilatation before the factor n / (m_i V_i)).
+     * @brief The strain of the LPS pair laws: the deformed bond (StretchPairLaw); if
+     * @p thermal, its stretch less the free thermal stretch a DeltaT_b of the bond, DeltaT_b the
+     * mean of the temperature changes of its ends, read from the component after the
+     * displacement (u_a[dim] and u_b[dim]): the mechanical stretch, by which bonds break and from
+     * which the extension of both passes is e - a |xi| DeltaT_b
+     * (doc/theory/thermal_strain_state_based.md).
      */
-    template <int dim>
-    struct LPSDilatationLaw : StretchPairLaw<dim>
+    template <int dim, bool thermal>
+    struct LPSStrain : StretchPairLaw<dim>
+    {
+      /// The in-plane thermal expansion a [1/K] (read only if thermal).
+      double expansion;
+
+      template <typename Bond>
+      DeformedBond<dim>
+      strain(const Bond &bond,
+             const std::size_t /*first_lane*/,
+             const bond_simd::Vector *u_a,
+             const bond_simd::Vector *u_b) const
+      {
+        DeformedBond<dim> y = deformed_bond<dim>(bond, u_a, u_b);
+        if constexpr (thermal)
+          y.stretch -= (0.5 * expansion) * (u_a[dim] + u_b[dim]);
+        return y;
+      }
+    };
+
+    /**
+     * @brief Pass 1 of the LPS kernel as a pair law of for_each_bond_block(): breaks bonds by
+     * (mechanical) stretch, then adds the pair sum p omega chi V_i V_j |xi| e (e = |xi| s) at
+     * both ends (the dilatation before the factor n / (m_i V_i)).
+     */
+    template <int dim, bool thermal>
+    struct LPSDilatationLaw : LPSStrain<dim, thermal>
     {
       static constexpr unsigned int n_outputs    = 1;
       static constexpr bool         breaks_bonds = true;
@@ -55,10 +84,11 @@ namespace perideal
      * omega chi V_i V_j (xi + eta)/|xi + eta| on the particle side (its negative on the
      * neighbour) and, if @p with_energy, the deviatoric pair energies
      * alpha_i omega chi V_i V_j (e - theta_i |xi| / n)^2 / 2 at i and the same with j at j
-     * (theta / m and alpha carry the particles' energy weights).
+     * (theta / m and alpha carry the particles' energy weights); with @p thermal, e and theta
+     * are the mechanical ones (LPSStrain).
      */
-    template <int dim, bool with_energy>
-    struct LPSForceLaw : StretchPairLaw<dim>
+    template <int dim, bool with_energy, bool thermal>
+    struct LPSForceLaw : LPSStrain<dim, thermal>
     {
       static constexpr unsigned int n_outputs    = dim + (with_energy ? 1 : 0);
       static constexpr bool         breaks_bonds = false;
@@ -129,34 +159,65 @@ namespace perideal
     BondBlocks<dim>                 blocks;
     typename BondBlocks<dim>::Array lane_weight;
     /// Kernel-order work fields of compute_forces(): displacement, force, energy density,
-    /// dilatation, beta theta / m, beta alpha and beta / m (beta: the particles' energy weights).
+    /// dilatation, beta theta / m, beta alpha, beta / m (beta: the particles' energy weights) and
+    /// the temperature change.
     typename BondBlocks<dim>::Array u_field, f_field, w_field, theta_field, theta_over_m_field,
-      alpha_field, beta_over_m_field;
+      alpha_field, beta_over_m_field, delta_T_field;
+
+    /**
+     * @brief The kernel-order unknowns of the pair laws: the dim displacement components and,
+     * if @p thermal, the temperature change.
+     */
+    template <bool thermal>
+    std::array<const double *, dim + thermal>
+    unknowns()
+    {
+      std::array<const double *, dim + thermal> u;
+      for (unsigned int d = 0; d < dim; ++d)
+        u[d] = blocks.component(u_field, d);
+      if constexpr (thermal)
+        u[dim] = blocks.component(delta_T_field, 0);
+      return u;
+    }
+
+    /**
+     * @brief Pass 1 (LPSDilatationLaw): bonds above @p critical_stretch break, theta_field
+     * receives the pair sums; @p expansion is the thermal expansion a if @p thermal.
+     */
+    template <bool thermal>
+    void
+    dilatation_loop(BondList &bonds, const double critical_stretch, const double expansion)
+    {
+      const LPSDilatationLaw<dim, thermal> law{{{}, expansion}, lane_weight.data()};
+      for_each_bond_block<dim + thermal, dim>(blocks,
+                                              unknowns<thermal>(),
+                                              {{blocks.component(theta_field, 0)}},
+                                              law,
+                                              bonds,
+                                              critical_stretch);
+    }
 
     /**
      * @brief Pass 2 (LPSForceLaw) with dilatation coefficient @p dilatation_coefficient; the
      * energy density is accumulated only if @p with_energy.
      */
-    template <bool with_energy>
+    template <bool with_energy, bool thermal>
     void
-    force_loop(BondList &bonds, const double dilatation_coefficient)
+    force_loop(BondList &bonds, const double dilatation_coefficient, const double expansion)
     {
-      std::array<const double *, dim>                                u;
-      std::array<double *, LPSForceLaw<dim, with_energy>::n_outputs> out;
+      using Law = LPSForceLaw<dim, with_energy, thermal>;
+      std::array<double *, Law::n_outputs> out;
       for (unsigned int d = 0; d < dim; ++d)
-        {
-          u[d]   = blocks.component(u_field, d);
-          out[d] = blocks.component(f_field, d);
-        }
+        out[d] = blocks.component(f_field, d);
       if constexpr (with_energy)
         out[dim] = blocks.component(w_field, 0);
-      const LPSForceLaw<dim, with_energy> law{{},
-                                              lane_weight.data(),
-                                              blocks.component(theta_over_m_field, 0),
-                                              blocks.component(alpha_field, 0),
-                                              blocks.component(theta_field, 0),
-                                              dilatation_coefficient};
-      for_each_bond_block<dim>(blocks, u, out, law, bonds, 0.);
+      const Law law{{{}, expansion},
+                    lane_weight.data(),
+                    blocks.component(theta_over_m_field, 0),
+                    blocks.component(alpha_field, 0),
+                    blocks.component(theta_field, 0),
+                    dilatation_coefficient};
+      for_each_bond_block<dim + thermal, dim>(blocks, unknowns<thermal>(), out, law, bonds, 0.);
     }
   };
 
@@ -182,6 +243,7 @@ namespace perideal
                       Patterns::Selection(PluginRegistry<InfluenceFunction>::pattern_string()),
                       "The influence function omega(|xi|). " +
                         PluginRegistry<InfluenceFunction>::documentation());
+    ThermalExpansion::declare_parameters(prm, false);
   }
 
   template <int dim>
@@ -199,6 +261,9 @@ namespace perideal
     influence_name = prm.get("Influence function");
     influence =
       PluginRegistry<InfluenceFunction>::create(influence_name, prefix + "Influence function");
+    ThermalExpansion thermal_expansion;
+    thermal_expansion.parse_parameters(prm, "Material/linear peridynamic solid", false);
+    expansion = thermal_expansion.coefficient();
   }
 
   template <int dim>
@@ -222,6 +287,10 @@ namespace perideal
           bulk_modulus = E / (2. * (1. - nu));
           break;
       }
+    // The free in-plane strain per kelvin: in plane strain the suppressed expansion out of the
+    // plane adds nu alpha in the plane (planar_thermal_expansion() of an isotropic material).
+    planar_expansion =
+      context.planar == PlanarAssumption::plane_strain ? (1. + nu) * expansion : expansion;
 
     const BondList &bonds  = particles.bonds();
     const auto     &volume = particles.volumes();
@@ -235,8 +304,12 @@ namespace perideal
     k.blocks.to_lanes(pair_weight, k.lane_weight);
     for (auto *field : {&k.u_field, &k.f_field})
       k.blocks.reinit_field(*field, dim);
-    for (auto *field :
-         {&k.w_field, &k.theta_field, &k.theta_over_m_field, &k.alpha_field, &k.beta_over_m_field})
+    for (auto *field : {&k.w_field,
+                        &k.theta_field,
+                        &k.theta_over_m_field,
+                        &k.alpha_field,
+                        &k.beta_over_m_field,
+                        &k.delta_T_field})
       k.blocks.reinit_field(*field, 1);
 
     // Each particle's own discrete weighted volume m_i = sum_j omega |xi|^2 V_j beta, with or
@@ -307,19 +380,20 @@ namespace perideal
     const double       n       = dim;
     k.blocks.sync_state(bonds);
     k.blocks.gather(u.begin(), dim, k.u_field);
-    std::array<const double *, dim> u_k;
-    for (unsigned int d = 0; d < dim; ++d)
-      u_k[d] = k.blocks.component(k.u_field, d);
+    // With a temperature change, the separate instantiation of the laws that measures the
+    // extensions from the thermal ones; without one, the kernel of the purely mechanical model.
+    const ParticleVector *delta_T = this->temperature_change();
+    const bool            thermal = delta_T != nullptr && planar_expansion != 0.;
+    if (thermal)
+      k.blocks.gather(delta_T->begin(), 1, k.delta_T_field);
 
-    // Pass 1: break overstretched bonds (stretch above the critical stretch), then the
-    // dilatation from the pair sums, divided by V_i.
+    // Pass 1: break overstretched bonds (mechanical stretch above the critical stretch), then
+    // the dilatation from the pair sums, divided by V_i.
     std::fill(k.theta_field.begin(), k.theta_field.end(), 0.);
-    for_each_bond_block<dim>(k.blocks,
-                             u_k,
-                             {{k.blocks.component(k.theta_field, 0)}},
-                             LPSDilatationLaw<dim>{{}, k.lane_weight.data()},
-                             bonds,
-                             critical_stretch);
+    if (thermal)
+      k.template dilatation_loop<true>(bonds, critical_stretch, planar_expansion);
+    else
+      k.template dilatation_loop<false>(bonds, critical_stretch, 0.);
     double *theta_owned = theta.begin();
     k.blocks.scatter_owned(k.theta_field, 1, nullptr, theta_owned);
     for (unsigned int i = 0; i < n_owned; ++i)
@@ -333,12 +407,15 @@ namespace perideal
     const double dilatation_coefficient = n * bulk_modulus - (n + 2.) * shear_modulus;
     std::fill(k.f_field.begin(), k.f_field.end(), 0.);
     if (energy_density != nullptr)
-      {
-        std::fill(k.w_field.begin(), k.w_field.end(), 0.);
-        k.template force_loop<true>(bonds, dilatation_coefficient);
-      }
+      std::fill(k.w_field.begin(), k.w_field.end(), 0.);
+    if (energy_density != nullptr && thermal)
+      k.template force_loop<true, true>(bonds, dilatation_coefficient, planar_expansion);
+    else if (energy_density != nullptr)
+      k.template force_loop<true, false>(bonds, dilatation_coefficient, 0.);
+    else if (thermal)
+      k.template force_loop<false, true>(bonds, dilatation_coefficient, planar_expansion);
     else
-      k.template force_loop<false>(bonds, dilatation_coefficient);
+      k.template force_loop<false, false>(bonds, dilatation_coefficient, 0.);
     k.blocks.scatter_owned(k.f_field, dim, volume, force.begin());
     if (energy_density != nullptr)
       {
@@ -355,6 +432,13 @@ namespace perideal
   LinearPeridynamicSolid<dim>::elasticity_tensor() const
   {
     return isotropic_elasticity_tensor<dim>(youngs_modulus, poisson_ratio, context.planar);
+  }
+
+  template <int dim>
+  SymmetricTensor<2, dim>
+  LinearPeridynamicSolid<dim>::thermal_expansion() const
+  {
+    return planar_expansion * unit_symmetric_tensor<dim>();
   }
 
   template <int dim>
@@ -385,6 +469,12 @@ namespace perideal
     out << "linear peridynamic solid: E = " << youngs_modulus << " Pa, nu = " << poisson_ratio
         << ", bulk modulus k = " << bulk_modulus << " Pa, shear modulus mu = " << shear_modulus
         << " Pa, influence function '" << influence_name << "'";
+    if (expansion != 0.)
+      {
+        out << ", thermal expansion alpha = " << expansion << " 1/K";
+        if (context.planar == PlanarAssumption::plane_strain)
+          out << " (in the plane (1 + nu) alpha = " << planar_expansion << " 1/K)";
+      }
     if (context.lattice_fracture)
       out << "; lattice calibration of the fracture energy: critical stretch " << fracture_factor
           << " times the continuum's";
@@ -405,6 +495,7 @@ namespace perideal
     ModelCapabilities capabilities;
     capabilities.sequentially_linear = true;
     capabilities.lattice_fracture    = true;
+    capabilities.thermal_strain      = true;
     return capabilities;
   }
 

@@ -62,7 +62,10 @@ namespace perideal
   // one row e_b per intact bond with weight k_b = (b_i alpha_i + b_j alpha_j) omega chi V_i V_j,
   // and one row theta_i = sum_{b at i} g_b^(i) e_b per owned particle with weight
   // w_i = b_i V_i (n k - (n+2) mu) / n, g_b^(i) = (n / m_i) omega chi |xi| V_j. theta_i collects
-  // the bonds stored in row i and those stored in the row of an owned neighbour.
+  // the bonds stored in row i and those stored in the row of an owned neighbour. With a
+  // temperature change the same identity holds for the mechanical extensions e_b - o_b,
+  // o_b = a |xi| DeltaT_b (doc/theory/thermal_strain_state_based.md): the bond row's offset is
+  // o_b, the dilatation row's sum_b g_b^(i) o_b.
   template <int dim>
   void
   LinearPeridynamicSolid<dim>::linearize(const ParticleSystem<dim> &particles,
@@ -76,6 +79,9 @@ namespace perideal
     const auto                                      &beta    = particles.energy_weights();
     std::vector<double>                              k(bonds.size(), 0.);
     std::vector<std::vector<LinearizedModel::Entry>> theta(n_owned);
+    const ParticleVector                            *delta_T = this->temperature_change();
+    std::vector<double>                              offset(bonds.size(), 0.);
+    std::vector<double>                              theta_offset(n_owned, 0.);
     for (unsigned int i = 0; i < n_owned; ++i)
       {
         const double m_i = weighted_volume.local_element(i);
@@ -88,17 +94,27 @@ namespace perideal
             k[b]             = (beta[i] * alpha_m / m_i + beta[j] * alpha_m / m_j) * pair_weight[b];
             const double r   = n * pair_weight[b] * bonds.length[b];
             const double g_i = r / m_i / volume[i], g_j = r / m_j / volume[j];
+            if (delta_T != nullptr)
+              offset[b] = planar_expansion * bonds.length[b] * 0.5 *
+                          (delta_T->local_element(i) + delta_T->local_element(j));
             if (g_i != 0.)
-              add_extension(particles, i, b, g_i, theta[i]);
+              {
+                add_extension(particles, i, b, g_i, theta[i]);
+                theta_offset[i] += g_i * offset[b];
+              }
             if (j < n_owned && g_j != 0.)
-              add_extension(particles, i, b, g_j, theta[j]);
+              {
+                add_extension(particles, i, b, g_j, theta[j]);
+                theta_offset[j] += g_j * offset[b];
+              }
           }
       }
     linearized.reinit(this->field_layout().n_components(), n_owned);
-    add_bond_rows(particles, k, extension_row<dim>(particles), linearized);
+    add_bond_rows(particles, k, extension_row<dim>(particles), linearized, &offset);
     for (unsigned int i = 0; i < n_owned; ++i)
       linearized.add_row(beta[i] * volume[i] * (n * bulk_modulus - (n + 2.) * shear_modulus) / n,
-                         theta[i]);
+                         theta[i],
+                         theta_offset[i]);
   }
 
   template void

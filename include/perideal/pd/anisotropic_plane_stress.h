@@ -37,6 +37,13 @@ namespace perideal
    * model comes from a 3D bond-based one) and have z = 0 as a mirror plane. Surface correction:
    * B_i from m_i, and the bond coefficients by the energy method (apply_energy_surface_correction()
    * with C'_aaaa); without it B_i = C_3333 and the interior kernel everywhere.
+   *
+   * Thermal strain (doc/theory/thermal_strain_state_based.md): the <Thermal expansion> of the
+   * material (a tensor in its axes) with z = 0 a mirror plane; with a temperature change each
+   * bond's linearized stretch is measured from its free thermal stretch n . alpha' . n
+   * DeltaT_b (alpha' the in-plane block, DeltaT_b the mean of the ends), in both passes, so
+   * that a homogeneous state stores 1/2 (eps - alpha' DeltaT) : C' : (eps - alpha' DeltaT);
+   * A becomes the mechanical -eps_33 and eps_33 takes alpha_33 DeltaT besides.
    */
   class AnisotropicPlaneStress : public MaterialModel<2>
   {
@@ -102,6 +109,19 @@ namespace perideal
     elasticity_tensor() const override;
 
     /**
+     * @brief The in-plane block alpha' of the material's thermal expansion (global axes):
+     * planar_thermal_expansion() of plane stress.
+     */
+    dealii::SymmetricTensor<2, 2>
+    thermal_expansion() const override;
+
+    /**
+     * @brief thermal_strain.
+     */
+    ModelCapabilities
+    capabilities() const override;
+
+    /**
      * @brief Not calibrated for this model: throws (give the damage model a critical stretch).
      */
     double
@@ -120,8 +140,8 @@ namespace perideal
     derived_fields(const ParticleSystem<2> &particles, const ParticleVector &u) const override;
 
     /**
-     * @brief eps_33 = -A_i of the owned particles for the field @p u (ghost values current),
-     * by a plain loop over the bond list.
+     * @brief eps_33 = -A_i (+ alpha_33 DeltaT_i with a temperature change) of the owned
+     * particles for the field @p u (ghost values current), by a plain loop over the bond list.
      */
     std::vector<double>
     out_of_plane_strain(const ParticleSystem<2> &particles, const ParticleVector &u) const;
@@ -166,8 +186,11 @@ namespace perideal
     anisotropic_micromodulus::ComponentsOf<2> C_in{}, Lambda0{};
     std::array<double, 3>                     P{}, M{};
     double                                    C33 = 0.;
-    double       lattice_error = 0., calibration_residual = 0., symbol_min = 0.;
-    ModelContext context;
+    /// The in-plane thermal expansion alpha' (11, 22, 12) and alpha_33 [1/K], global axes.
+    std::array<double, 3> in_plane_expansion{};
+    double                expansion_33  = 0.;
+    double                lattice_error = 0., calibration_residual = 0., symbol_min = 0.;
+    ModelContext          context;
     /// Per bond (BondList entries of owned rows): k_b = c_0(n) chi V_i V_j (times the
     /// coupling's energy weight) and g_b = M:nn chi V_i V_j.
     std::vector<double> k0, g;
@@ -182,6 +205,13 @@ namespace perideal
      */
     void
     set_bond_coefficients(const ParticleSystem<2> &particles, const bool with_surface_factor);
+
+    /**
+     * @brief The free thermal extension |xi| n . alpha' . n DeltaT_b of every bond of the owned
+     * rows for temperature_change() (sized like the bond list; zeros without one).
+     */
+    std::vector<double>
+    thermal_extensions(const ParticleSystem<2> &particles) const;
   };
 } // namespace perideal
 

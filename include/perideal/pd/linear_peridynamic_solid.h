@@ -34,6 +34,13 @@ namespace perideal
    * Its Applications, ordinary state-based critical stretch, 2D and 3D):
    * 3D s0 = sqrt(G0 / ((3 mu + (3/4)^4 (K - 5 mu / 3)) delta)),
    * 2D s0 = sqrt(G0 / ((6 mu / pi + 16 / (9 pi^2) (k - 2 mu)) delta)).
+   *
+   * Thermal strain (doc/theory/thermal_strain_state_based.md): with a temperature change
+   * (set_temperature_change()) every extension is measured from the bond's free thermal
+   * extension, e - a |xi| DeltaT_b with DeltaT_b = (DeltaT_i + DeltaT_j)/2 and a the in-plane
+   * expansion thermal_expansion() (alpha; (1 + nu) alpha in plane strain), in the dilatation
+   * and in the deviatoric part alike; bonds break by this mechanical stretch. A free body under
+   * a uniform or linear temperature change then carries no force at any particle.
    */
   template <int dim>
   class LinearPeridynamicSolid : public MaterialModel<dim>
@@ -50,7 +57,8 @@ namespace perideal
     ~LinearPeridynamicSolid() override;
 
     /**
-     * @brief Declare "Young's modulus", "Poisson's ratio" and "Influence function".
+     * @brief Declare "Young's modulus", "Poisson's ratio", "Influence function" and
+     * "Thermal expansion" (one value: the model is isotropic).
      */
     static void
     declare_parameters(dealii::ParameterHandler &prm);
@@ -87,6 +95,13 @@ namespace perideal
     dealii::SymmetricTensor<4, dim>
     elasticity_tensor() const override;
 
+    /**
+     * @brief a I, with a = alpha in 3D and plane stress and (1 + nu) alpha in plane strain
+     * (planar_thermal_expansion()).
+     */
+    dealii::SymmetricTensor<2, dim>
+    thermal_expansion() const override;
+
     double
     critical_stretch(const double fracture_energy) const override;
 
@@ -103,19 +118,24 @@ namespace perideal
     force_reach() const override;
 
     /**
-     * @brief Dilatation of the owned particles from the last force computation.
+     * @brief Dilatation of the owned particles from the last force computation (with a
+     * temperature change the mechanical one, from the extensions less the thermal ones).
      */
     const ParticleVector &
     dilatation() const;
 
   private:
-    double                             youngs_modulus = 0.;
-    double                             poisson_ratio  = 0.;
+    double youngs_modulus = 0.;
+    double poisson_ratio  = 0.;
+    /// The 3D thermal expansion alpha [1/K] (<Thermal expansion>).
+    double                             expansion = 0.;
     std::unique_ptr<InfluenceFunction> influence;
     std::string                        influence_name;
     ModelContext                       context;
     double                             bulk_modulus  = 0.;
     double                             shear_modulus = 0.;
+    /// The in-plane expansion a of the planar assumption [1/K] (thermal_expansion()).
+    double planar_expansion = 0.;
     /// The factor of the lattice calibration on the continuum's critical stretch (1 without it,
     /// ModelContext::lattice_fracture): by a mode I cleave (cleave_fracture_energy()).
     double fracture_factor = 1.;
@@ -126,6 +146,7 @@ namespace perideal
     ParticleVector theta;
     /// alpha = mu n (n + 2) / m per local particle.
     std::vector<double> alpha;
+
     /// The force kernel's data (bonds in SIMD blocks, kernel-order fields): defined in
     /// linear_peridynamic_solid.cc only, the one translation unit of the model compiled with
     /// the kernel options (source/pd/CMakeLists.txt).
