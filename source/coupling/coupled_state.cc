@@ -222,7 +222,7 @@ namespace perideal
 
   template <int dim>
   const FEVector &
-  CoupledState<dim>::fe_equation_load()
+  CoupledState<dim>::fe_equation_load() const
   {
     if (!fe_thermal)
       return f_ext;
@@ -478,7 +478,14 @@ namespace perideal
     double      particle_energy = 0.;
     for (unsigned int i = 0; i < pd().particles().n_owned(); ++i)
       particle_energy += energy_density[i] * volume[i];
-    CoupledEnergy energy = method().strain_energy(U, Utilities::MPI::sum(particle_energy, comm()));
+    return strain_energy(Utilities::MPI::sum(particle_energy, comm()));
+  }
+
+  template <int dim>
+  CoupledEnergy
+  CoupledState<dim>::strain_energy(const double particle_energy) const
+  {
+    CoupledEnergy energy = method().strain_energy(U, particle_energy);
     // The FE energy of the mechanical strain: 1/2 U.K.U - U.f_th + the thermal strain's.
     if (fe_thermal)
       energy.fe += thermal_energy - (U * thermal_load);

@@ -186,6 +186,15 @@ namespace perideal
     CoupledEnergy
     strain_energy() const;
 
+    /**
+     * @brief The strain energy of the FE displacement and the particles' strain energy
+     * @p particle_energy [J] (summed over the ranks), each part counted once by the method; with
+     * a thermal strain of the FE region, the FE part is that of the mechanical strain,
+     * 1/2 U.K.U - U.thermal_load + thermal_energy. Collective.
+     */
+    CoupledEnergy
+    strain_energy(const double particle_energy) const;
+
     /// The largest particle displacement (norm of the translations) over the ranks [m].
     double
     max_particle_displacement() const;
@@ -513,7 +522,7 @@ namespace perideal
      * if the FE region has a thermal strain (then in a vector of the state's own).
      */
     const FEVector &
-    fe_equation_load();
+    fe_equation_load() const;
     ///@}
 
     /// @name The values the solvers advance and derive
@@ -612,7 +621,7 @@ namespace perideal
     // plus thermal FE loads of fe_equation_load().
     std::function<void(double)> temperature_update;
     bool                        fe_thermal = false;
-    FEVector                    fe_total_load;
+    mutable FEVector            fe_total_load;
 
     // The state at the previous accumulate_work() and the work done so far on this rank.
     FEVector       previous_fe_load, previous_U;

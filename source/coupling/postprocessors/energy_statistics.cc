@@ -29,7 +29,7 @@ namespace perideal
 
     if (data.quasi_static)
       {
-        const CoupledEnergy energy       = state.method().strain_energy(state.U, data.pd_energy);
+        const CoupledEnergy energy       = state.strain_energy(data.pd_energy);
         const double        strain       = energy.fe + energy.particles;
         const double        energy_error = work - strain - dissipated;
         // Relative to the work, unless the energies are below 1e-10 of the force scale times the

@@ -93,8 +93,12 @@ namespace perideal
     state.method().interpolate_to_particles(U_exact, u_exact);
     u_exact.update_ghost_values();
     Assert(method == &state.method(), ExcMessage("ExactError needs the state's method."));
-    method
-      ->equilibrium_forces(U_exact, u_exact, state.f_ext, state.external_force, fe_residual, force);
+    method->equilibrium_forces(U_exact,
+                               u_exact,
+                               state.fe_equation_load(),
+                               state.external_force,
+                               fe_residual,
+                               force);
     const auto &mask    = state.fe().prescribed_mask();
     double      largest = 0., scale = 0.;
     for (unsigned int k = 0; k < U_exact.locally_owned_size(); ++k)
