@@ -11,7 +11,7 @@ ranks=${RANKS:-2}
 run() { mpirun --oversubscribe -np "$ranks" "$solver" "$@"; }
 out=$here/results
 mkdir -p "$out"
-echo "case,dx,fe_error,particle_error,seconds" > "$out/errors.csv"
+echo "case,dx,particle_max,particle_rms,fe_max,fe_rms,seconds" > "$out/errors.csv"
 for level in 0 1 2; do
   dx=$(python3 -c "print(2.5e-3 / 2**$level)")
   centre=$(python3 -c "print(1.5 * $dx)")
@@ -30,11 +30,9 @@ for level in 0 1 2; do
     start=$(date +%s.%N)
     (cd "$work" && run case.prm > log.txt 2>&1)
     seconds=$(python3 -c "import time; print(round(time.time() - $start, 1))")
-    line=$(grep "Displacement error" "$work/log.txt")
-    fe=$(echo "$line" | sed -n 's/.*FE nodes \([^,]*\),.*/\1/p')
-    pd=$(echo "$line" | sed -n 's/.*particles \([^ ]*\).*/\1/p')
-    echo "$case,$dx,${fe:-},$pd,$seconds" >> "$out/errors.csv"
-    echo "$case dx = $dx: $line ($seconds s)"
+    line=$(/usr/bin/python3 "$here/errors.py" "$work")
+    echo "$case,$dx,$line,$seconds" >> "$out/errors.csv"
+    echo "$case dx = $dx: particle max, rms, FE max, rms = $line ($seconds s)"
   done
 done
-python3 "$here/plot.py" "$out/errors.csv" "$out/convergence.png"
+/usr/bin/python3 "$here/plot.py" "$out/errors.csv" "$out/convergence.png"
