@@ -6,6 +6,7 @@
 #include <perideal/base/setup_times.h>
 
 #include <array>
+#include <ctime>
 #include <sstream>
 
 namespace perideal
@@ -16,8 +17,8 @@ namespace perideal
     {
       constexpr unsigned int n_stages = static_cast<unsigned int>(SetupStage::n_stages);
 
-      /// The totals of this process [s].
-      std::array<double, n_stages> totals{};
+      /// The totals of this process [s]: wall time, then CPU time.
+      std::array<double, 2 * n_stages> totals{};
 
       const char *
       name(const unsigned int stage)
@@ -35,29 +36,32 @@ namespace perideal
     Scope::Scope(const SetupStage stage)
       : stage(stage)
       , start(std::chrono::steady_clock::now())
+      , start_cpu(std::clock())
     {}
 
     Scope::~Scope()
     {
-      totals[static_cast<unsigned int>(stage)] +=
-        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+      const auto s = static_cast<unsigned int>(stage);
+      totals[s] += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+      totals[n_stages + s] += double(std::clock() - start_cpu) / CLOCKS_PER_SEC;
     }
 
     std::string
     summary(const MPI_Comm comm)
     {
-      std::array<double, n_stages> largest{};
-      const int                    ierr =
-        MPI_Allreduce(totals.data(), largest.data(), n_stages, MPI_DOUBLE, MPI_MAX, comm);
+      std::array<double, 2 * n_stages> largest{};
+      const int                        ierr =
+        MPI_Allreduce(totals.data(), largest.data(), 2 * n_stages, MPI_DOUBLE, MPI_MAX, comm);
       AssertThrowMPI(ierr);
       std::ostringstream line;
       line.precision(3);
-      line << "Set-up wall time [s]:";
+      line << "Set-up time [s], wall (CPU):";
       const char *separator = " ";
       for (unsigned int s = 0; s < n_stages; ++s)
         if (largest[s] > 0.)
           {
-            line << separator << name(s) << " " << largest[s];
+            line << separator << name(s) << " " << largest[s] << " (" << largest[n_stages + s]
+                 << ")";
             separator = ", ";
           }
       return line.str();

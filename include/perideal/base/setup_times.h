@@ -7,6 +7,7 @@
 #include <deal.II/base/mpi.h>
 
 #include <chrono>
+#include <ctime>
 #include <string>
 
 namespace perideal
@@ -36,8 +37,9 @@ namespace perideal
   namespace SetupTimes
   {
     /**
-     * @brief Adds the wall time between its construction and its destruction to @p stage's
-     * total of this process (nested scopes of different stages count in both).
+     * @brief Adds the wall time and the CPU time of the process (std::clock(): robust to other
+     * processes on the same core) between its construction and its destruction to @p stage's
+     * totals (nested scopes of different stages count in both).
      */
     class Scope
     {
@@ -51,11 +53,13 @@ namespace perideal
     private:
       const SetupStage                            stage;
       const std::chrono::steady_clock::time_point start;
+      const std::clock_t                          start_cpu;
     };
 
     /**
-     * @brief The line of the run summary: each stage's total wall time so far [s], the largest
-     * over the ranks of @p comm, the stages that took no time left out. Collective.
+     * @brief The line of the run summary: each stage's total wall time and CPU time so far
+     * [s], the largest over the ranks of @p comm, the stages that took no time left out.
+     * Collective.
      */
     std::string
     summary(const MPI_Comm comm);
