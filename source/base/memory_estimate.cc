@@ -1,6 +1,8 @@
 // ---------------------------------------------------------------------
 // PeriDeal: whether the bonds of a lattice fit in the memory of the nodes of a run.
 // ---------------------------------------------------------------------
+#include <deal.II/base/utilities.h>
+
 #include <perideal/base/memory_estimate.h>
 #include <perideal/base/parameter_utilities.h>
 
@@ -70,6 +72,28 @@ namespace perideal
               "<Discretization/Lattice spacing>, make the PD region smaller (a coupled run, an "
               "adaptive PD region), or run on more nodes.";
       return text.str();
+    }
+
+    std::string
+    peak_summary(const MPI_Comm      comm,
+                 const std::uint64_t resident_before,
+                 const std::uint64_t n_bonds,
+                 const std::uint64_t n_particles)
+    {
+      dealii::Utilities::System::MemoryStats memory;
+      dealii::Utilities::System::get_memory_stats(memory);
+      const double peak  = dealii::Utilities::MPI::sum(static_cast<double>(memory.VmHWM), comm);
+      const double above = peak - dealii::Utilities::MPI::sum(double(resident_before), comm);
+      std::ostringstream line;
+      line << "Peak memory: " << peak / 1024. << " MiB";
+      if (n_bonds > 0)
+        line << ", " << 1024. * above / double(n_bonds) << " B per bond, "
+             << 1024. * above / double(n_particles) << " B per particle (resident, summed over "
+             << "the ranks; per bond and particle the part above the " << (peak - above) / 1024.
+             << " MiB before the particles)";
+      else
+        line << " (resident, summed over the ranks)";
+      return line.str();
     }
   } // namespace MemoryEstimate
 } // namespace perideal

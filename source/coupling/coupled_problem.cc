@@ -1,7 +1,9 @@
 // ---------------------------------------------------------------------
 // PeriDeal: the one driver of every problem (particles, an FE region, or both).
 // ---------------------------------------------------------------------
+#include <perideal/base/memory_estimate.h>
 #include <perideal/base/parameter_utilities.h>
+#include <perideal/base/setup_times.h>
 #include <perideal/coupling/coupled_problem.h>
 #include <perideal/pd/antiplane_torsion.h>
 #include <perideal/pd/damage_model.h>
@@ -434,6 +436,12 @@ namespace perideal
       log << temperature.summary() << std::endl;
     solver().setup(state());
     setup_other_physics();
+    if (settings.show_progress)
+      {
+        const std::string times = SetupTimes::summary(comm);
+        if (is_root)
+          log << times << std::endl;
+      }
   }
 
   template <int dim>
@@ -464,6 +472,16 @@ namespace perideal
                                   "explicit\n"),
                              physics[k]->state());
     solver().run(state(), postprocessors(), checkpoint);
+    if (settings.show_progress)
+      {
+        const auto       &particles = state().pd().particles();
+        const std::string memory    = MemoryEstimate::peak_summary(comm,
+                                                                particles.resident_memory_before(),
+                                                                particles.n_global_bonds(),
+                                                                particles.n_global());
+        if (is_root)
+          log << memory << std::endl;
+      }
   }
 
   template class CoupledProblem<2>;

@@ -10,6 +10,7 @@
 #include <deal.II/lac/sparsity_tools.h>
 
 #include <perideal/base/parameter_utilities.h>
+#include <perideal/base/setup_times.h>
 #include <perideal/coupling/transfer_operator.h>
 
 #include <algorithm>
@@ -128,6 +129,7 @@ namespace perideal
                                 const FieldLayout         &layout,
                                 const std::vector<bool>   &located_particles)
   {
+    const SetupTimes::Scope time(SetupStage::transfer_operator);
     Assert(located_particles.empty() || located_particles.size() == particles.n_owned(),
            ExcDimensionMismatch(located_particles.size(), particles.n_owned()));
     const MPI_Comm comm        = particles.get_communicator();

@@ -9,6 +9,7 @@
 #include <deal.II/base/quadrature_lib.h>
 #include <deal.II/fe/fe_values.h>
 
+#include <perideal/base/setup_times.h>
 #include <perideal/fem/fe_region.h>
 
 #include <algorithm>
@@ -33,6 +34,8 @@ namespace perideal
   void
   FERegion<dim>::assemble_matrices()
   {
+    const SetupTimes::Scope time(SetupStage::fe_assembly);
+
     const auto   &fe = fe_collection[0];
     FEValues<dim> fe_values(fe,
                             QGauss<dim>(degree + 1),

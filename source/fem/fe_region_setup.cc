@@ -15,6 +15,7 @@
 #include <deal.II/lac/sparsity_tools.h>
 #include <deal.II/numerics/vector_tools.h>
 
+#include <perideal/base/setup_times.h>
 #include <perideal/fem/fe_region.h>
 
 #include <fstream>
@@ -99,6 +100,7 @@ namespace perideal
   void
   FERegion<dim>::setup(const WeightFunction &weight)
   {
+    const SetupTimes::Scope time(SetupStage::fe_assembly);
     make_mesh();
     check_held_point();
 

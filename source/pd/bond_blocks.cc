@@ -3,6 +3,7 @@
 // ---------------------------------------------------------------------
 #include <deal.II/base/exceptions.h>
 
+#include <perideal/base/setup_times.h>
 #include <perideal/pd/bond_blocks.h>
 
 #include <algorithm>
@@ -19,6 +20,8 @@ namespace perideal
   void
   BondBlocks<dim>::reinit(const ParticleSystem<dim> &particles)
   {
+    const SetupTimes::Scope time(SetupStage::kernel_blocks);
+
     const BondList &bonds     = particles.bonds();
     const auto     &positions = particles.positions();
     const double    dx        = particles.settings().spacing;

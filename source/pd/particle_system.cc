@@ -8,12 +8,14 @@
 #include <deal.II/grid/grid_tools.h>
 
 #include <perideal/base/cell_list.h>
+#include <perideal/base/setup_times.h>
 #include <perideal/pd/particle_system.h>
 
 #include <algorithm>
 #include <cmath>
 #include <limits>
 #include <numeric>
+#include <optional>
 
 namespace perideal
 {
@@ -69,6 +71,7 @@ namespace perideal
                                 const std::function<bool(const Point<dim> &)> &no_fail,
                                 const std::function<void(std::uint64_t)>      &placed)
   {
+    std::optional<SetupTimes::Scope> lattice_time(SetupStage::lattice);
     if (resident_before == 0)
       {
         Utilities::System::MemoryStats memory;
@@ -235,6 +238,7 @@ namespace perideal
               ghost_candidate_index.end(),
               global_indices.begin() + n_owned_particles);
 
+    lattice_time.reset();
     find_bonds(pre_cracks, no_fail);
 
     const double volume = (dim == 2 ? dx * dx * settings.thickness : dx * dx * dx);
@@ -251,8 +255,9 @@ namespace perideal
   ParticleSystem<dim>::find_bonds(const std::vector<PreCrack<dim>>              &pre_cracks,
                                   const std::function<bool(const Point<dim> &)> &no_fail)
   {
-    const double reach = bond_reach();
-    const auto   n_all = static_cast<unsigned int>(reference_positions.size());
+    const SetupTimes::Scope time(SetupStage::neighbor_search);
+    const double            reach = bond_reach();
+    const auto              n_all = static_cast<unsigned int>(reference_positions.size());
 
     // Cell list of all local particles (owned and ghost candidates): O(N).
     CellList<dim> cells;

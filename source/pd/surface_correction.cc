@@ -4,6 +4,7 @@
 // ---------------------------------------------------------------------
 #include <deal.II/base/exceptions.h>
 
+#include <perideal/base/setup_times.h>
 #include <perideal/pd/surface_correction.h>
 
 #include <algorithm>
@@ -120,6 +121,8 @@ namespace perideal
                            const ModelContext                                &context,
                            const std::function<void(const SurfaceFactors &)> &use)
   {
+    const SetupTimes::Scope time(SetupStage::surface_correction);
+
     StiffnessFitReport report;
     BondList          &bonds = particles.bonds();
     const auto law = context.surface_correction ? model.surface_correction_law(particles) : nullptr;

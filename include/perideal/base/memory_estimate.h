@@ -6,6 +6,7 @@
 
 #include <deal.II/base/mpi.h>
 
+#include <cstdint>
 #include <string>
 
 namespace perideal
@@ -35,6 +36,19 @@ namespace perideal
      */
     std::string
     warning(const double n_bonds, const double available, const double spacing);
+
+    /**
+     * @brief The run summary's line of the peak memory: the peak resident size (VmHWM) summed
+     * over the ranks of @p comm in MiB and, with bonds, the part above the resident size
+     * @p resident_before [kiB, this rank's] the process had before the particles were
+     * generated, per bond and per particle: "Peak memory: X MiB, Y B per bond, Z B per
+     * particle (...)". Collective.
+     */
+    std::string
+    peak_summary(const MPI_Comm      comm,
+                 const std::uint64_t resident_before,
+                 const std::uint64_t n_bonds,
+                 const std::uint64_t n_particles);
   } // namespace MemoryEstimate
 } // namespace perideal
 

@@ -391,29 +391,12 @@ namespace perideal
     const std::uint64_t n_bonds = state.pd().particles().n_global_bonds();
     if (!settings.show_progress)
       return;
-    // The peak resident memory of the processes (VmHWM), summed over the ranks, and the part
-    // above the resident memory before the particles were generated, per bond and particle.
-    Utilities::System::MemoryStats memory;
-    Utilities::System::get_memory_stats(memory);
-    const auto  &particles = state.pd().particles();
-    const double peak      = Utilities::MPI::sum(static_cast<double>(memory.VmHWM), state.comm());
-    const double above =
-      peak -
-      Utilities::MPI::sum(static_cast<double>(particles.resident_memory_before()), state.comm());
-    const double megabytes = peak / 1024.;
     if (state.is_root())
       {
         state.log() << "Wall time of the time loop: " << seconds << " s" << std::endl;
         if (n_bonds > 0)
           state.log() << "bond updates per second: "
                       << double(n_bonds) * (n_steps - start.step) / seconds << std::endl;
-        state.log() << "Peak memory: " << megabytes << " MB (resident, summed over the ranks)"
-                    << std::endl;
-        if (n_bonds > 0)
-          state.log() << "Peak memory above the program without particles: " << above / 1024.
-                      << " MB, " << 1024. * above / double(n_bonds) << " B per bond, "
-                      << 1024. * above / double(particles.n_global()) << " B per particle"
-                      << std::endl;
       }
   }
 
