@@ -6,15 +6,15 @@
 // 1/2 E alpha^2 Delta T^2 per volume of the held eps_zz of plane strain).
 // L = 0.1 m, Q1, E = 200 GPa, nu = 0.3, alpha = 1.2e-5 /K; 2D 5 x 3 cells on 0.1 x 0.06 m, 3D
 // 3 x 3 x 2 cells on 0.1 x 0.1 x 0.06 m. alpha_eff: alpha (plane stress, 3D), (1 + nu) alpha
-// (plane strain), and an
-// orthotropic expansion (3e-6, 1e-5, 2.5e-5 /K along the material axes, with an orthotropic
-// stiffness) rotated by z-x-z Euler angles (30, 20, 10 degrees; in 2D plane stress phi = 30):
-// alpha in the global axes, R diag(alpha_i) R^T. Solved with K and the thermal load f_th
-// (FERegion::assemble_thermal_load()) directly. Printed: the largest nodal error relative to the
-// largest nodal displacement, the largest stress (Gauss points, from the mechanical strain)
-// relative to E alpha Delta T, the error of the energy 1/2 u.K.u - u.f_th + c_th (exact: 0, in
-// plane strain 1/2 E alpha^2 Delta T^2 per volume) relative to c_th; and
-// without the thermal load (u = 0) the same two errors, which then fail.
+// (plane strain), and an orthotropic expansion (3e-6, 1e-5, 2.5e-5 /K along the material axes, with
+// an orthotropic stiffness) rotated by z-x-z Euler angles (30, 20, 10 degrees; in 2D plane stress
+// phi = 30): alpha in the global axes, R diag(alpha_i) R^T, given in <Finite elements/Elasticity>
+// or, with <Same material as the particles>, in the particles' <Material/anisotropic bond based>.
+// Solved with K and the thermal load f_th (FERegion::assemble_thermal_load()) directly. Printed:
+// the largest nodal error relative to the largest nodal displacement, the largest stress (Gauss
+// points, from the mechanical strain) relative to E alpha Delta T, the error of the energy 1/2
+// u.K.u - u.f_th + c_th (exact: 0, in plane strain 1/2 E alpha^2 Delta T^2 per volume) relative to
+// c_th; and without the thermal load (u = 0) the same two errors, which then fail.
 // ---------------------------------------------------------------------
 #include <perideal/base/elasticity.h>
 
@@ -65,7 +65,8 @@ namespace
       const perideal::PlanarAssumption planar,
       const std::string               &material,
       const SymmetricTensor<2, dim>   &alpha_eff,
-      const double                     energy_density)
+      const double                     energy_density,
+      const std::string               &particles = "")
   {
     const std::string mesh =
       dim == 2 ? "5, 3 : 0, 0 : 0.1, 0.06 : true" : "3, 3, 2 : 0, 0, 0 : 0.1, 0.1, 0.06 : true";
@@ -77,7 +78,8 @@ namespace
                                  material + "  end\n",
                                {},
                                planar,
-                               std::to_string(delta_T));
+                               std::to_string(delta_T),
+                               particles);
     hold(*fe, free_body_supports<dim>(0.1), 0.1);
     FEVector f_th, zero;
     fe->initialize_vector(f_th);
@@ -159,4 +161,13 @@ main(int argc, char **argv)
          orthotropic + "    set Orientation = 30, 20, 10\n",
          rotated,
          0.);
+  // The block of the particles' model, read through <Same material as the particles>.
+  run<2>("2D plane stress, orthotropic, rotated, same material as the particles",
+         perideal::PlanarAssumption::plane_stress,
+         "    set Same material as the particles = true\n",
+         rotated_2d,
+         0.,
+         "subsection Material\n"
+         "  subsection anisotropic bond based\n" +
+           orthotropic + "    set Orientation = 30, 0, 0\n" + "  end\nend\n");
 }

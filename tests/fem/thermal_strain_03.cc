@@ -11,9 +11,12 @@
 // strain and 3D, energy per volume E alpha^2 Delta T^2 / (1 - nu) (plane stress) and
 // 3/2 E alpha^2 Delta T^2 / (1 - 2 nu). Printed: the largest stress error at the Gauss points
 // relative to E alpha Delta T and the error of the energy 1/2 u.K.u - u.f_th + c_th relative to
-// the exact one; for the bars also without the thermal load (u = 0), which then fail.
+// the exact one; for the bars also without the thermal load (u = 0), which then fail; and the
+// quantities FERegion::write_output() writes for the plane-strain bar.
 // ---------------------------------------------------------------------
 #include "thermal_strain_tests.h"
+
+#include <fstream>
 
 #include <tests.h>
 
@@ -33,7 +36,8 @@ namespace
       const std::string                   &components,
       const Supports<dim>                 &supports,
       const std::map<std::string, double> &stress,
-      const double                         energy_density)
+      const double                         energy_density,
+      const bool                           write = false)
   {
     const std::string mesh =
       dim == 2 ? "10, 2 : 0, 0 : 0.1, 0.02" : "10, 2, 2 : 0, 0, 0 : 0.1, 0.02, 0.02";
@@ -73,6 +77,21 @@ namespace
             << ", energy error "
             << bounded(mechanical_energy(*fe, u) / (energy_density * volume) - 1., 1e-10)
             << std::endl;
+    if (write)
+      {
+        // The quantities FERegion::write_output() writes (their names in the XDMF file).
+        std::vector<XDMFEntry> records;
+        fe->write_output(".", "thermal_strain", 0, 0., u, records);
+        std::ifstream file("thermal_strain.xdmf");
+        std::string   line, names;
+        while (std::getline(file, line))
+          if (line.find("<Attribute") != std::string::npos)
+            {
+              const auto begin = line.find("Name=\"") + 6;
+              names += " " + line.substr(begin, line.find('"', begin) - begin);
+            }
+        deallog << "  output:" << names << std::endl;
+      }
     if (!supports.empty())
       deallog << "  without f_th: stress error "
               << bounded(output_deviation(*fe, solve(*fe, zero), stress) / scale, 1e-10)
@@ -116,7 +135,8 @@ main(int argc, char **argv)
          "x",
          bar_2d,
          stresses<2>({{"xx", -s / (1. - nu)}, {"zz", -s / (1. - nu)}}),
-         w / (1. - nu));
+         w / (1. - nu),
+         true);
   run<3>("bar, 3D",
          PlanarAssumption::three_dimensional,
          "0, 1",

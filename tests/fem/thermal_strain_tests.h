@@ -11,6 +11,7 @@
 #include <deal.II/lac/trilinos_solver.h>
 #include <deal.II/numerics/data_postprocessor.h>
 
+#include <perideal/base/elasticity.h>
 #include <perideal/fem/fe_region.h>
 
 #include <algorithm>
@@ -30,17 +31,26 @@ namespace thermal_strain_tests
    * A 'linear elasticity' FE region (thickness 1 in 2D) from the lines @p text inside
    * <Finite elements> (mesh, degree, <Elasticity>, <Boundary conditions> named @p conditions),
    * set up, with the temperature change @p delta_T(x) [K] (an expression in x, y(, z)).
+   * @p material: lines of a particles' block <Material> (its <Model> and the elastic entries of
+   * <Material/anisotropic bond based>), which <Same material as the particles> reads.
    */
   template <int dim>
   std::unique_ptr<perideal::FERegion<dim>>
   make_region(const std::string               &text,
               const std::vector<std::string>  &conditions,
               const perideal::PlanarAssumption planar,
-              const std::string               &delta_T)
+              const std::string               &delta_T,
+              const std::string               &material = "")
   {
     dealii::ParameterHandler prm;
     perideal::FERegion<dim>::declare_parameters(prm, conditions);
-    prm.parse_input_from_string("subsection Finite elements\n" + text + "end\n");
+    prm.enter_subsection("Material");
+    prm.declare_entry("Model", "anisotropic bond based", dealii::Patterns::Anything());
+    prm.enter_subsection("anisotropic bond based");
+    perideal::ElasticMaterial::declare_parameters(prm);
+    prm.leave_subsection();
+    prm.leave_subsection();
+    prm.parse_input_from_string("subsection Finite elements\n" + text + "end\n" + material);
     auto fe = std::make_unique<perideal::FERegion<dim>>(MPI_COMM_WORLD);
     fe->parse_parameters(prm, planar, 1.);
     fe->setup();

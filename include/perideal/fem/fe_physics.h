@@ -121,9 +121,9 @@ namespace perideal
      * @p cell_rhs, for the temperature change @p delta_T [K] at the quadrature points of
      * @p fe_values (values, gradients, quadrature points) on a cell of material id
      * @p material_id. The weights hold the FE weight 1 - beta, the thickness and JxW. It is part
-     * of the strain energy of the mechanical strain eps - eps_th (not an external load):
-     * 1/2 int (eps - eps_th) : C : (eps - eps_th) = 1/2 u.K.u - u.f_th + int
-     * thermal_energy_density(). None by default.
+     * of the strain energy of the mechanical strain eps - eps_th (not an external load): that
+     * energy, of the 3D body, is 1/2 u.K.u - u.f_th + int thermal_energy_density()
+     * (doc/theory/thermal_strain_fe.md). None by default.
      */
     virtual void
     add_cell_thermal_load(const dealii::FEValues<dim>     &fe_values,
@@ -135,8 +135,8 @@ namespace perideal
     /**
      * @brief The strain-energy density [J/m^3] of the thermal strain alone, 1/2 eps_th : C :
      * eps_th for the temperature change @p delta_T [K] in material @p material_id: the energy
-     * of a body held at u = 0, the constant of the energy of the mechanical strain (see
-     * add_cell_thermal_load()). 0 by default.
+     * of a body held at u = 0 (in plane strain with its held out-of-plane strain), the constant
+     * of the energy of the mechanical strain (see add_cell_thermal_load()). 0 by default.
      */
     virtual double
     thermal_energy_density(const dealii::types::material_id material_id,
