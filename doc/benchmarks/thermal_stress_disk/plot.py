@@ -13,7 +13,7 @@ rows = list(csv.DictReader(open(sys.argv[1])))
 fig, axes = plt.subplots(1, 2, figsize=(10, 4), sharey=True)
 for ax, norm in zip(axes, ("rms", "max")):
     for case, marker in (("pd", "o"), ("blended", "s"), ("schwarz", "^")):
-        data = [r for r in rows if r["case"] == case]
+        data = [r for r in rows if r["case"] == case and r["particle_max"] != "failed"]
         dx = [1e3 * float(r["dx"]) for r in data]
         ax.loglog(dx, [float(r["particle_" + norm]) for r in data], marker + "-",
                   label=f"{case}: particles")
