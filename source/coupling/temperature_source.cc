@@ -57,8 +57,9 @@ namespace perideal
   TemperatureSource<dim>::parse_parameters(ParameterHandler &prm)
   {
     prm.enter_subsection("Temperature");
-    source = ParameterUtilities::choice(source_names<dim>(), prm.get("Source"), "Temperature/Source");
-    expression = prm.get("Function");
+    source =
+      ParameterUtilities::choice(source_names<dim>(), prm.get("Source"), "Temperature/Source");
+    expression                        = prm.get("Function");
     const std::string reference_entry = Utilities::trim(prm.get("Reference temperature"));
     prm.leave_subsection();
     function.reset();
@@ -188,19 +189,25 @@ namespace perideal
     const auto &tria     = region.get_triangulation();
     const auto  cell     = tria.create_cell_iterator(fe_values.get_cell()->id());
     const typename DoFHandler<dim>::active_cell_iterator heat_cell(&tria,
-                                                                  cell->level(),
-                                                                  cell->index(),
-                                                                  &region.get_dof_handler());
+                                                                   cell->level(),
+                                                                   cell->index(),
+                                                                   &region.get_dof_handler());
     AssertThrow(heat_cell->get_fe().n_dofs_per_cell() > 0,
                 ExcMessage("The heat has no FE temperature on an FE cell of the mechanics: both "
                            "physics need the same coupling method and blending function."));
-    if (!heat_values)
-      heat_values = std::make_unique<hp::FEValues<dim>>(region.get_fe_collection(),
-                                                        hp::QCollection<dim>(
-                                                          fe_values.get_quadrature()),
-                                                        update_values);
+    // The quadrature is the same for every cell of an assembly, but the output evaluates at
+    // points of its own per cell.
+    const auto &points = fe_values.get_quadrature().get_points();
+    if (!heat_values || heat_points != points)
+      {
+        heat_points = points;
+        heat_values =
+          std::make_unique<hp::FEValues<dim>>(region.get_fe_collection(),
+                                              hp::QCollection<dim>(fe_values.get_quadrature()),
+                                              update_values);
+      }
     heat_values->reinit(heat_cell);
-    const auto              &heat  = heat_values->get_present_fe_values();
+    const auto                      &heat = heat_values->get_present_fe_values();
     const FEValuesExtractors::Scalar temperature(quantity.component);
     heat[temperature].get_function_values(heat_temperature, values);
     for (double &v : values)

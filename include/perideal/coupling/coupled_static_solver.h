@@ -136,8 +136,8 @@ namespace perideal
      * @brief The forces of the state (@p U, @p u) with the linearization of the last solve:
      * @p fe_residual = (K z - F) restricted to the FE dofs (on prescribed dofs the force the
      * supports exert, as FERegion::reactions() expects), @p pd_force the particles' internal force
-     * density -(G^T diag(w) G u)_i / V_i (owned entries). Returns the particles' strain energy
-     * 1/2 (G u)^T diag(w) (G u) [J].
+     * density -(G^T diag(w) (G u - o))_i / V_i (owned entries; o the row offsets). Returns the
+     * particles' strain energy 1/2 (G u - o)^T diag(w) (G u - o) [J].
      */
     double
     forces(const FEVector       &U,

@@ -109,10 +109,11 @@ namespace perideal
     ParticleVector              delta_T;
 
     /// The heat's FE temperature with ghost values, and the evaluation of its cells at the
-    /// mechanics' quadrature points (built at the first use).
+    /// mechanics' points (built again when the points change) with those points.
     ///@{
-    FEVector                                    heat_temperature;
+    FEVector                                           heat_temperature;
     mutable std::unique_ptr<dealii::hp::FEValues<dim>> heat_values;
+    mutable std::vector<dealii::Point<dim>>            heat_points;
     ///@}
   };
 } // namespace perideal
