@@ -37,7 +37,6 @@
 
 #include <iomanip>
 #include <limits>
-#include <memory>
 
 namespace
 {
@@ -46,8 +45,8 @@ namespace
   const MPI_Comm comm = MPI_COMM_WORLD;
   const double   inf  = std::numeric_limits<double>::infinity();
 
-  // The largest |value| of the owned entries of v over the ranks, of the first n_use of every
-  // n_components components (all if n_use = n_components).
+  // The largest |value| over the ranks of the components first ... last - 1 of the owned
+  // particles of v (n_components per particle).
   double
   max_abs(const perideal::ParticleVector &v,
           const unsigned int              n_owned,
