@@ -110,7 +110,7 @@ namespace perideal
           }
       }
     linearized.reinit(this->field_layout().n_components(), n_owned);
-    add_bond_rows(particles, k, extension_row<dim>(particles), linearized, offset);
+    add_bond_rows(particles, k, extension_row<dim>(particles), linearized, &offset);
     for (unsigned int i = 0; i < n_owned; ++i)
       linearized.add_row(beta[i] * volume[i] * (n * bulk_modulus - (n + 2.) * shear_modulus) / n,
                          theta[i],

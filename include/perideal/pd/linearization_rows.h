@@ -45,8 +45,8 @@ namespace perideal
      * @brief The bond rows of a bond-based model: for every bond b with stiffness
      * @p k[b] != 0 (N/m, per BondList entry), the row that @p add_row(i, b, row) appends (the
      * bond's linearized extension) with weight k_b times the bond's share and offset
-     * @p offset[b] (its value of no energy, a thermal extension; 0 if @p offset is empty); the
-     * stiffness scale of an owned particle is the sum of k_b over its bonds.
+     * @p offset[b] (its extension of no energy, a thermal extension; 0 for all without
+     * @p offset); the stiffness scale of an owned particle is the sum of k_b over its bonds.
      */
     template <int dim, typename RowFunction>
     void
@@ -54,7 +54,7 @@ namespace perideal
                   const std::vector<double> &k,
                   const RowFunction         &add_row,
                   LinearizedModel           &linearized,
-                  const std::vector<double> &offset = std::vector<double>())
+                  const std::vector<double> *offset = nullptr)
     {
       const BondList                     &bonds   = particles.bonds();
       const unsigned int                  n_owned = particles.n_owned();
@@ -73,7 +73,7 @@ namespace perideal
                 add_row(i, b, row);
                 linearized.add_row(k[b] * particles.bond_share(b),
                                    row,
-                                   offset.empty() ? 0. : offset[b]);
+                                   offset != nullptr ? (*offset)[b] : 0.);
               }
           }
     }
