@@ -2,12 +2,12 @@
 // LPS in 3D, plane strain and plane stress, and the anisotropic plane-stress model (an
 // orthotropic expansion turned about z). The in-plane expansion; free expansion under a uniform
 // and a linear temperature change (no force at any particle, no bond broken by the thermal
-// stretch); the constrained body (energy density 1/2 a:C:a DeltaT^2, forces only near the
-// surfaces, the thermal stress across a mid-plane); force = -grad E by finite differences with a
-// random temperature change; the linearization's energy and forces with its offsets against the
-// model at small u, and its rows at their offsets under the free field of a linear DeltaT. Bad
-// input: an expansion tensor for LPS, an expansion without z = 0 as a mirror plane for the
-// plane-stress model.
+// stretch, no energy released by bonds broken in it); the constrained body (energy density 1/2
+// a:C:a DeltaT^2, forces only near the surfaces, the thermal stress across a mid-plane); force =
+// -grad E by finite differences with a random temperature change; the linearization's energy and
+// forces with its offsets against the model at small u, and its rows at their offsets under the
+// free field of a linear DeltaT. Bad input: an expansion tensor for LPS, an expansion without z = 0
+// as a mirror plane for the plane-stress model.
 
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/parameter_handler.h>
