@@ -494,12 +494,8 @@ namespace perideal
       k.blocks.reinit_field(*field, 1);
 
     // The bond term near surfaces: the energy method on the whole model (B_i corrected), with
-    // the reduced stiffness C'_aaaa of the uniaxial test fields; its factors scale k_b. The test
-    // fields are mechanical: no temperature change meanwhile.
-    const ParticleVector *delta_T = this->temperature_change();
-    this->set_temperature_change(nullptr);
+    // the reduced stiffness C'_aaaa of the uniaxial test fields; its factors scale k_b.
     apply_surface_correction<2>(*this, particles, context);
-    this->set_temperature_change(delta_T);
     set_bond_coefficients(particles, true);
   }
 

@@ -40,7 +40,8 @@ namespace perideal
    * extension, e - a |xi| DeltaT_b with DeltaT_b = (DeltaT_i + DeltaT_j)/2 and a the in-plane
    * expansion thermal_expansion() (alpha; (1 + nu) alpha in plane strain), in the dilatation
    * and in the deviatoric part alike; bonds break by this mechanical stretch. A free body under
-   * a uniform or linear temperature change then carries no force at any particle.
+   * a uniform or linear temperature change then carries no force at any particle (under a
+   * linear one up to the geometric nonlinearity of the extension, second order in DeltaT).
    */
   template <int dim>
   class LinearPeridynamicSolid : public MaterialModel<dim>
