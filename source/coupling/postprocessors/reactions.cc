@@ -101,7 +101,9 @@ namespace perideal
         const double scale = state.fe_force_scale();
         imbalance          = norm(balanced, nullptr);
         balance            = largest > 1e-10 * scale ? imbalance / largest : 0.;
-        floor              = accuracy * largest;
+        // A thermal strain loads the body from within: the forces involved are those of the
+        // internal-force scale too (a free expansion has no reaction but round-off).
+        floor = accuracy * (state.has_temperature() ? std::max(largest, scale) : largest);
         for (unsigned int c = 0; c < nc; ++c)
           if (layout.kind(c) != ComponentKind::rotation)
             statistics.add_value("applied_load_" + layout.name(c), applied[c]);
