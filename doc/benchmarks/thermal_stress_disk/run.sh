@@ -1,7 +1,7 @@
 #!/bin/bash
 # Thermal stresses in a disk (README.md): all-PD and coupled (blended, overlapping Schwarz)
 # against the closed form, at three lattice spacings (the FE mesh refined with them). Writes
-# results/errors.csv and results/convergence.png; prints the errors last.
+# results/errors.csv and convergence.png beside this file; prints the errors per run.
 # Usage: run.sh [perideal-solid] (default: the build of this checkout).
 set -euo pipefail
 here=$(cd "$(dirname "$0")" && pwd)
@@ -40,4 +40,4 @@ for level in 0 1 2; do
     echo "$case dx = $dx: particle max, rms, FE max, rms = $line ($seconds s)"
   done
 done
-/usr/bin/python3 "$here/plot.py" "$out/errors.csv" "$out/convergence.png"
+/usr/bin/python3 "$here/plot.py" "$out/errors.csv" "$here/convergence.png"
