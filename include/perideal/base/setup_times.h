@@ -44,7 +44,9 @@ namespace perideal
     class Scope
     {
     public:
+      /// Start timing @p stage.
       explicit Scope(const SetupStage stage);
+      /// Add the time since the construction to the stage's totals.
       ~Scope();
       Scope(const Scope &) = delete;
       Scope &
