@@ -140,9 +140,16 @@ namespace perideal
         postprocessors().add_physics(field.name, field.state(), field.postprocessors());
         for (unsigned int c = 0; c < field.layout.n_components(); ++c)
           if (field.layout.kind(c) == ComponentKind::temperature)
-            exchange.publish(
-              "temperature", field.state().u, field.state().U, field.fe, field.layout, c);
+            exchange
+              .publish("temperature", field.state().u, field.state().U, field.fe, field.layout, c);
       }
+    if (temperature.two_way())
+      for (unsigned int k = 1; k < physics.size(); ++k)
+        if (physics[k]->layout.has_temperature())
+          {
+            heating.connect(pd, fe, state().u, state().U, temperature, physics[k]->state());
+            temperature.add_changes(heating.particle_change(), heating.fe_change());
+          }
     state().set_other_physics(
       [this](const unsigned int step, const double time, const double dt, const bool with_energy) {
         advance_other_physics(step, time, dt, with_energy);
@@ -181,6 +188,14 @@ namespace perideal
   {
     // What the first physics broke in its step is broken for the others before theirs.
     exchange.share_broken_bonds(pd.particles().bonds());
+    // The heating of the step the first physics took (from its measure at the start).
+    if (heating.active())
+      {
+        if (step == 0)
+          heating.start();
+        else
+          heating.heat_step(dt);
+      }
     for (unsigned int k = 1; k < physics.size(); ++k)
       {
         Physics<dim> &field = *physics[k];
@@ -196,6 +211,9 @@ namespace perideal
         const double length = dt / n;
         if (resume_other_physics)
           field.solver().resume_state(field.state(), time);
+        // The heating of the step, from its start (forward Euler takes the rates there).
+        if (heating.active() && field.layout.has_temperature())
+          field.solver().renew_sources(field.state(), time);
         for (unsigned int s = 0; s < n; ++s)
           field.solver().advance(field.state(),
                                  time + s * length,

@@ -14,7 +14,9 @@ namespace perideal
     // The <Thermal expansion> of subsection @p path (entered from the root), named @p section
     // in messages.
     ThermalExpansion
-    expansion_in(ParameterHandler &prm, const std::vector<std::string> &path, const std::string &section)
+    expansion_in(ParameterHandler               &prm,
+                 const std::vector<std::string> &path,
+                 const std::string              &section)
     {
       for (const auto &name : path)
         prm.enter_subsection(name);
@@ -44,7 +46,7 @@ namespace perideal
 
     // The thermal expansion of each part: the particles' model's entry (a model with a thermal
     // strain declares it), the FE elasticity's (its own entry, or the particles' material).
-    const std::string model = pd.has_body() ? prm.get({"Material"}, "Model") : "";
+    const std::string model      = pd.has_body() ? prm.get({"Material"}, "Model") : "";
     const bool        pd_thermal = pd.has_body() && pd.material().capabilities().thermal_strain;
     const std::string pd_entry   = "<Material/" + model + "/Thermal expansion>";
     ThermalExpansion  pd_expansion, fe_expansion;
@@ -52,14 +54,14 @@ namespace perideal
       pd_expansion = expansion_in(prm, {"Material", model}, "Material/" + model);
     const bool fe_elastic =
       fe.has_mesh() && fe.field_layout().kind(0) == ComponentKind::translation;
-    const bool fe_shared = fe_elastic && fe.physics().shares_particle_material();
+    const bool        fe_shared = fe_elastic && fe.physics().shares_particle_material();
     const std::string fe_entry =
       fe_shared ? pd_entry : "<Finite elements/Elasticity/Thermal expansion>";
     if (fe_elastic)
-      fe_expansion = fe_shared ? pd_expansion :
-                                 expansion_in(prm,
-                                              {"Finite elements", "Elasticity"},
-                                              "Finite elements/Elasticity");
+      fe_expansion =
+        fe_shared ?
+          pd_expansion :
+          expansion_in(prm, {"Finite elements", "Elasticity"}, "Finite elements/Elasticity");
     const bool expands = !pd_expansion.is_zero() || !fe_expansion.is_zero();
 
     if (!temperature.active())
@@ -83,8 +85,9 @@ namespace perideal
                            " has no thermal strain; accepted: elasticity (or <Temperature/Source> "
                            "= none)."));
     AssertThrow(expands,
-                ExcMessage(source + ", but no thermal expansion is set: the temperature would "
-                                    "act on nothing. Set " +
+                ExcMessage(source +
+                           ", but no thermal expansion is set: the temperature would "
+                           "act on nothing. Set " +
                            (pd.has_body() ? pd_entry : fe_entry) +
                            (pd.has_body() && fe.has_mesh() && !fe_shared ? " and " + fe_entry :
                                                                            std::string()) +
@@ -98,8 +101,9 @@ namespace perideal
     const auto &list = prm.get({"Physics"}, "List");
     AssertThrow(temperature.kind() != TemperatureSource<dim>::Kind::heat ||
                   list.find("heat") != std::string::npos,
-                ExcMessage(source + " reads the temperature of the physics heat, but <Physics/"
-                                    "List> = " +
+                ExcMessage(source +
+                           " reads the temperature of the physics heat, but <Physics/"
+                           "List> = " +
                            list +
                            " does not list it; accepted: <Physics/List> = heat (and its "
                            "subsection Heat), or <Temperature/Source> = function."));
@@ -109,6 +113,50 @@ namespace perideal
                            "load of one linear solve by each event's load factor, and a "
                            "thermal strain is a load of its own time; accepted with a "
                            "temperature: <Solver/Control/Method> = load steps."));
+    if (temperature.two_way())
+      check_two_way(prm);
+  }
+
+  template <int dim>
+  void
+  CoupledProblem<dim>::check_two_way(ParameterHandler &prm) const
+  {
+    // What the thermoelastic heating needs (doc/theory/thermoelasticity.md): the measure of the
+    // particles' model, an explicit mechanics whose steps the heat follows, an explicit heat
+    // (its source is held over each step as an applied load), and a run the checkpoints and
+    // conversions do not cut (neither carries the previous step's measure yet).
+    const std::string entry = "<Temperature/Coupling> = two way";
+    const std::string model = pd.has_body() ? prm.get({"Material"}, "Model") : "";
+    AssertThrow(!pd.has_body() || pd.material().capabilities().thermoelastic_heating,
+                ExcMessage(entry +
+                           " heats by the particles' thermoelastic measure, which <Material/"
+                           "Model> = " +
+                           model + " does not give; accepted models: " +
+                           material_models_with<dim>(&ModelCapabilities::thermoelastic_heating) +
+                           " (or <Temperature/Coupling> = one way)."));
+    AssertThrow(settings.solver_type == SolverType::explicit_dynamics,
+                ExcMessage(entry + " heats by the rate of the deformation, which <Solver/Type> = " +
+                           prm.get({"Solver"}, "Type") +
+                           " has no time for; accepted: <Solver/Type> = explicit (or "
+                           "<Temperature/Coupling> = one way)."));
+    for (unsigned int k = 1; k < physics.size(); ++k)
+      if (physics[k]->layout.has_temperature())
+        AssertThrow(physics[k]->settings.solver_type == SolverType::explicit_dynamics,
+                    ExcMessage(
+                      entry + " adds the heating to the heat's explicit steps, but <" +
+                      Physics<dim>::section(physics[k]->name) + "/Solver/Type> = " +
+                      prm.get({Physics<dim>::section(physics[k]->name), "Solver"}, "Type") +
+                      "; accepted: explicit (or <Temperature/Coupling> = one way)."));
+    AssertThrow(settings.checkpoint_interval == 0 && settings.checkpoint_time_interval == 0.,
+                ExcMessage(entry + ": a checkpoint does not keep the deformation's measure of the "
+                                   "last step yet, from which the next step heats; set <Output/"
+                                   "Checkpoint interval> and <Output/Checkpoint time interval> to "
+                                   "off (or <Temperature/Coupling> = one way)."));
+    AssertThrow(!adaptive.enabled(),
+                ExcMessage(entry + ": a conversion of the adaptive PD region does not carry the "
+                                   "deformation's measure over yet; set <Coupling/Adaptive "
+                                   "region/Criterion> = none (or <Temperature/Coupling> = one "
+                                   "way)."));
   }
 
   template <int dim>
@@ -118,11 +166,25 @@ namespace perideal
     if (!temperature.active())
       return;
     temperature.connect(pd, fe, exchange);
-    state().set_temperature([this](const double time) { temperature.update(time); });
+    // With a two-way coupling the temperature the mechanics reads holds the heating of its
+    // present deformation (ThermoelasticHeating::predict()).
+    state().set_temperature([this](const double time) {
+      if (heating.active())
+        heating.predict();
+      temperature.update(time);
+    });
   }
 
-  template void CoupledProblem<2>::parse_thermal_strain(ParameterHandler &);
-  template void CoupledProblem<3>::parse_thermal_strain(ParameterHandler &);
-  template void CoupledProblem<2>::connect_temperature();
-  template void CoupledProblem<3>::connect_temperature();
+  template void
+  CoupledProblem<2>::parse_thermal_strain(ParameterHandler &);
+  template void
+  CoupledProblem<3>::parse_thermal_strain(ParameterHandler &);
+  template void
+  CoupledProblem<2>::check_two_way(ParameterHandler &) const;
+  template void
+  CoupledProblem<3>::check_two_way(ParameterHandler &) const;
+  template void
+  CoupledProblem<2>::connect_temperature();
+  template void
+  CoupledProblem<3>::connect_temperature();
 } // namespace perideal

@@ -49,6 +49,21 @@ namespace perideal
                       Patterns::Anything(),
                       "T_ref [K]: the temperature at which the body is free of thermal strain. "
                       "Needed with a source (no default: a thermal strain is measured from it).");
+    prm.declare_entry("Coupling",
+                      "one way",
+                      Patterns::Selection("one way|two way"),
+                      "How the mechanics and the temperature act on each other: 'one way' (the "
+                      "temperature strains the mechanics, and a crack changes the heat flow); "
+                      "'two way' (also the thermoelastic heating -T_0 beta : d eps/dt of the "
+                      "mechanics' deformation heats the physics heat, in the particles, the FE "
+                      "region and the overlap: Source = heat, an explicit mechanics and an "
+                      "explicit heat; doc/theory/thermoelasticity.md).");
+    prm.declare_entry("Absolute reference temperature",
+                      "",
+                      Patterns::Anything(),
+                      "Coupling = two way: T_0 [K] on the absolute scale, the temperature of the "
+                      "heating -T_0 beta : d eps/dt (the reference temperature in kelvin, e.g. "
+                      "293.15 for a reference of 20 degrees Celsius). No default.");
     prm.leave_subsection();
   }
 
@@ -61,8 +76,38 @@ namespace perideal
       ParameterUtilities::choice(source_names<dim>(), prm.get("Source"), "Temperature/Source");
     expression                        = prm.get("Function");
     const std::string reference_entry = Utilities::trim(prm.get("Reference temperature"));
+    two_way_coupling                  = prm.get("Coupling") == "two way";
+    const std::string absolute_entry  = Utilities::trim(prm.get("Absolute reference temperature"));
     prm.leave_subsection();
     function.reset();
+    AssertThrow(!two_way_coupling || source == Kind::heat,
+                ExcMessage("<Temperature/Coupling> = two way heats the temperature by the "
+                           "deformation, but <Temperature/Source> = " +
+                           ParameterUtilities::choice_name(source_names<dim>(), source) +
+                           " is not a temperature that can take heat; accepted: <Temperature/"
+                           "Source> = heat (the physics heat of <Physics/List>), or "
+                           "<Temperature/Coupling> = one way."));
+    if (two_way_coupling)
+      {
+        const std::string entry = "<Temperature/Absolute reference temperature>";
+        AssertThrow(!absolute_entry.empty(),
+                    ExcMessage("<Temperature/Coupling> = two way, but " + entry +
+                               " is missing: give T_0 [K] on the absolute scale (e.g. 293.15 "
+                               "for 20 degrees Celsius)."));
+        try
+          {
+            absolute_reference = Utilities::string_to_double(absolute_entry);
+          }
+        catch (...)
+          {
+            AssertThrow(false,
+                        ExcMessage("The parameter " + entry + " = <" + absolute_entry +
+                                   "> is not a number; accepted: T_0 > 0 [K]."));
+          }
+        AssertThrow(absolute_reference > 0.,
+                    ExcMessage("The parameter " + entry + " is " + absolute_entry +
+                               "; accepted values: T_0 > 0 K (the absolute scale)."));
+      }
     if (source == Kind::none)
       return;
     AssertThrow(!reference_entry.empty(),
@@ -111,6 +156,20 @@ namespace perideal
   }
 
   template <int dim>
+  bool
+  TemperatureSource<dim>::two_way() const
+  {
+    return two_way_coupling;
+  }
+
+  template <int dim>
+  double
+  TemperatureSource<dim>::absolute_reference_temperature() const
+  {
+    return absolute_reference;
+  }
+
+  template <int dim>
   void
   TemperatureSource<dim>::connect(ParticleRegion<dim>        &pd,
                                   FERegion<dim>              &fe,
@@ -133,6 +192,15 @@ namespace perideal
 
   template <int dim>
   void
+  TemperatureSource<dim>::add_changes(const ParticleVector &particle_change,
+                                      const FEVector       &fe_change)
+  {
+    particle_changes = &particle_change;
+    fe_changes       = fe_change.size() > 0 ? &fe_change : nullptr;
+  }
+
+  template <int dim>
+  void
   TemperatureSource<dim>::update(const double time)
   {
     if (source == Kind::heat)
@@ -143,6 +211,9 @@ namespace perideal
             if (heat_temperature.size() != quantity.fe->size())
               quantity.region->initialize_vector(heat_temperature);
             heat_temperature.copy_locally_owned_data_from(*quantity.fe);
+            if (fe_changes != nullptr)
+              for (unsigned int k = 0; k < heat_temperature.locally_owned_size(); ++k)
+                heat_temperature.local_element(k) += fe_changes->local_element(k);
             heat_temperature.update_ghost_values();
           }
       }
@@ -162,7 +233,8 @@ namespace perideal
         const unsigned int nc       = quantity.layout.n_components();
         for (unsigned int i = 0; i < particles->n_owned(); ++i)
           delta_T.local_element(i) =
-            quantity.particles->local_element(i * nc + quantity.component) - reference;
+            quantity.particles->local_element(i * nc + quantity.component) - reference +
+            (particle_changes != nullptr ? particle_changes->local_element(i) : 0.);
         delta_T.update_ghost_values();
       }
   }
@@ -182,12 +254,22 @@ namespace perideal
           values[q] = function->value(fe_values.quadrature_point(q)) - reference;
         return;
       }
+    const auto                      &heat = heat_cell_values(fe_values);
+    const FEValuesExtractors::Scalar temperature(exchange->get("temperature").component);
+    heat[temperature].get_function_values(heat_temperature, values);
+    for (double &v : values)
+      v -= reference;
+  }
+
+  template <int dim>
+  const FEValues<dim> &
+  TemperatureSource<dim>::heat_cell_values(const FEValues<dim> &fe_values) const
+  {
     // The heat's cell of the same CellId (its own triangulation, built and partitioned alike),
     // evaluated at the mechanics' quadrature points.
-    const auto &quantity = exchange->get("temperature");
-    const auto &region   = *quantity.region;
-    const auto &tria     = region.get_triangulation();
-    const auto  cell     = tria.create_cell_iterator(fe_values.get_cell()->id());
+    const auto &region = *exchange->get("temperature").region;
+    const auto &tria   = region.get_triangulation();
+    const auto  cell   = tria.create_cell_iterator(fe_values.get_cell()->id());
     const typename DoFHandler<dim>::active_cell_iterator heat_cell(&tria,
                                                                    cell->level(),
                                                                    cell->index(),
@@ -207,11 +289,28 @@ namespace perideal
                                               update_values);
       }
     heat_values->reinit(heat_cell);
-    const auto                      &heat = heat_values->get_present_fe_values();
+    return heat_values->get_present_fe_values();
+  }
+
+  template <int dim>
+  void
+  TemperatureSource<dim>::add_at_heat_points(const FEValues<dim>       &fe_values,
+                                             const std::vector<double> &values,
+                                             FEVector                  &heat_vector) const
+  {
+    const auto                      &heat     = heat_cell_values(fe_values);
+    const auto                      &quantity = exchange->get("temperature");
     const FEValuesExtractors::Scalar temperature(quantity.component);
-    heat[temperature].get_function_values(heat_temperature, values);
-    for (double &v : values)
-      v -= reference;
+    dealii::Vector<double>           cell_vector(heat.dofs_per_cell);
+    for (const unsigned int q : heat.quadrature_point_indices())
+      for (unsigned int k = 0; k < heat.dofs_per_cell; ++k)
+        cell_vector(k) += values[q] * heat[temperature].value(k, q);
+    const auto                                          &region = *quantity.region;
+    const typename DoFHandler<dim>::active_cell_iterator heat_cell(&region.get_triangulation(),
+                                                                   heat.get_cell()->level(),
+                                                                   heat.get_cell()->index(),
+                                                                   &region.get_dof_handler());
+    region.add_cell_vector(heat_cell, cell_vector, heat_vector);
   }
 
   template <int dim>
@@ -232,6 +331,8 @@ namespace perideal
     if (source == Kind::heat)
       out << " (the temperature of the physics heat)";
     out << ", T_ref = " << reference << " K";
+    if (two_way_coupling)
+      out << ", two way (thermoelastic heating, T_0 = " << absolute_reference << " K)";
     return out.str();
   }
 

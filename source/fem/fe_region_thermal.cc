@@ -89,12 +89,57 @@ namespace perideal
     };
   }
 
+  template <int dim>
+  void
+  FERegion<dim>::thermoelastic_measure(const FEVector &u, const PointValues &add) const
+  {
+    const auto            &fe = fe_collection[0];
+    FEValues<dim>          fe_values(fe,
+                            QGauss<dim>(degree + 1),
+                            update_values | update_gradients | update_quadrature_points |
+                              update_JxW_values);
+    const unsigned int     n = fe.n_dofs_per_cell();
+    dealii::Vector<double> cell_values(n);
+    std::vector<double>    weights, measure(fe_values.n_quadrature_points);
+    for (const auto &cell : dof_handler.active_cell_iterators())
+      if (cell->is_locally_owned() && cell->active_fe_index() == 0)
+        {
+          fe_values.reinit(cell);
+          quadrature_weights(fe_values, weights);
+          cell->get_dof_values(u, cell_values);
+          physics_model->cell_thermoelastic_measure(fe_values,
+                                                    cell->material_id(),
+                                                    cell_values,
+                                                    measure);
+          for (const unsigned int q : fe_values.quadrature_point_indices())
+            measure[q] *= weights[q];
+          add(fe_values, measure);
+        }
+  }
+
+  template <int dim>
+  void
+  FERegion<dim>::add_cell_vector(const typename DoFHandler<dim>::active_cell_iterator &cell,
+                                 const dealii::Vector<double>                         &cell_vector,
+                                 FEVector                                             &vector) const
+  {
+    std::vector<types::global_dof_index> dofs(cell->get_fe().n_dofs_per_cell());
+    cell->get_dof_indices(dofs);
+    hanging_constraints.distribute_local_to_global(cell_vector, dofs, vector);
+  }
+
   // The members defined in this file (the class is instantiated in fe_region.cc).
-#define PERIDEAL_INSTANTIATE(dim)                                                       \
-  template void   FERegion<dim>::set_temperature_change(const TemperatureChange &);     \
-  template bool   FERegion<dim>::has_thermal_strain() const;                            \
-  template double FERegion<dim>::assemble_thermal_load(const double, FEVector &) const; \
-  template PointTemperatureChange<dim> FERegion<dim>::point_temperature_change(const double) const;
+#define PERIDEAL_INSTANTIATE(dim)                                                                  \
+  template void   FERegion<dim>::set_temperature_change(const TemperatureChange &);                \
+  template bool   FERegion<dim>::has_thermal_strain() const;                                       \
+  template double FERegion<dim>::assemble_thermal_load(const double, FEVector &) const;            \
+  template PointTemperatureChange<dim> FERegion<dim>::point_temperature_change(const double)       \
+    const;                                                                                         \
+  template void FERegion<dim>::thermoelastic_measure(const FEVector &, const PointValues &) const; \
+  template void FERegion<dim>::add_cell_vector(                                                    \
+    const typename DoFHandler<dim>::active_cell_iterator &,                                        \
+    const dealii::Vector<double> &,                                                                \
+    FEVector &) const;
   PERIDEAL_INSTANTIATE(2)
   PERIDEAL_INSTANTIATE(3)
 #undef PERIDEAL_INSTANTIATE

@@ -80,6 +80,39 @@ namespace perideal
           }
       }
     };
+
+    /**
+     * @brief The thermoelastic measure of for_each_bond_block(): 1/2 k alpha s |xi| at both ends
+     * of each intact bond (the stretch of the whole strain, k = c G chi V_i V_j per lane), the
+     * part of the pair energy's derivative with respect to Delta T_b that each end takes.
+     */
+    template <int dim>
+    struct PMBMeasureLaw : StretchPairLaw<dim>
+    {
+      static constexpr unsigned int n_outputs    = 1;
+      static constexpr bool         breaks_bonds = false;
+      /// k per lane.
+      const double *coefficient;
+      /// The thermal expansion alpha of the bonds.
+      double expansion;
+
+      template <typename Bond>
+      void
+      pair(const Bond              &bond,
+           const DeformedBond<dim> &y,
+           const typename StretchPairLaw<dim>::Side &,
+           const BondLanes   &lanes,
+           bond_simd::Vector *to_a,
+           bond_simd::Vector *to_b) const
+      {
+        using namespace bond_simd;
+        const Vector k(coefficient + lanes.first_lane, stdx::element_aligned);
+        Vector       m               = 0.;
+        stdx::where(lanes.active, m) = (0.5 * expansion * bond.length) * k * y.stretch;
+        to_a[0]                      = m;
+        to_b[0]                      = m;
+      }
+    };
   } // namespace
 
   template <int dim>
@@ -309,6 +342,29 @@ namespace perideal
   }
 
   template <int dim>
+  void
+  BondBased<dim>::thermoelastic_measure(ParticleSystem<dim>  &particles,
+                                        const ParticleVector &u,
+                                        std::vector<double>  &measure)
+  {
+    Kernel &k = *kernel;
+    k.blocks.sync_state(particles.bonds());
+    k.blocks.gather(u.begin(), dim, k.u_field);
+    std::fill(k.w_field.begin(), k.w_field.end(), 0.);
+    std::array<const double *, dim> displacement;
+    for (unsigned int d = 0; d < dim; ++d)
+      displacement[d] = k.blocks.component(k.u_field, d);
+    for_each_bond_block<dim>(k.blocks,
+                             displacement,
+                             std::array<double *, 1>{{k.blocks.component(k.w_field, 0)}},
+                             PMBMeasureLaw<dim>{{}, k.lane_coefficient.data(), bond_expansion()},
+                             particles.bonds(),
+                             0.);
+    measure.resize(particles.n_owned());
+    k.blocks.scatter_owned(k.w_field, 1, particles.volumes().data(), measure.data());
+  }
+
+  template <int dim>
   double
   BondBased<dim>::bond_expansion() const
   {
@@ -391,10 +447,11 @@ namespace perideal
   BondBased<dim>::capabilities() const
   {
     ModelCapabilities capabilities;
-    capabilities.stiffness_fit       = true;
-    capabilities.sequentially_linear = true;
-    capabilities.lattice_fracture    = true;
-    capabilities.thermal_strain      = true;
+    capabilities.stiffness_fit         = true;
+    capabilities.sequentially_linear   = true;
+    capabilities.lattice_fracture      = true;
+    capabilities.thermal_strain        = true;
+    capabilities.thermoelastic_heating = true;
     return capabilities;
   }
 

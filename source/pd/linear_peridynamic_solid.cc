@@ -150,6 +150,69 @@ namespace perideal
           }
       }
     };
+
+    /**
+     * @brief The thermoelastic measure's pair sums as a pair law of for_each_bond_block(): the
+     * derivative of the energy with respect to the temperature change of each end of a bond,
+     * less the particle's own term (doc/theory/thermoelasticity.md): at the particle side
+     * 1/2 a p |xi| [n k (theta / m)_j |xi| + alpha_j (e - theta_j |xi| / n)] with the
+     * neighbour's values, at the neighbour side the same with the particle's (theta / m and
+     * alpha carry the energy weights; e the extension of the whole strain).
+     */
+    template <int dim>
+    struct LPSMeasureLaw : LPSStrain<dim, false>
+    {
+      static constexpr unsigned int n_outputs    = 1;
+      static constexpr bool         breaks_bonds = false;
+      /// omega chi V_i V_j per lane.
+      const double *weight;
+      /// Kernel order: beta theta / m, beta alpha, theta.
+      const double *theta_over_m, *alpha, *theta;
+      /// n k and the in-plane expansion a.
+      double dilatation_modulus, expansion;
+
+      struct Side
+      {
+        bond_simd::Vector theta_over_m, alpha, theta;
+      };
+
+      Side
+      side(const unsigned int a) const
+      {
+        using namespace bond_simd;
+        return {Vector(theta_over_m + a, stdx::element_aligned),
+                Vector(alpha + a, stdx::element_aligned),
+                Vector(theta + a, stdx::element_aligned)};
+      }
+
+      template <typename Bond>
+      void
+      pair(const Bond              &bond,
+           const DeformedBond<dim> &y,
+           const Side              &i,
+           const BondLanes         &lanes,
+           bond_simd::Vector       *to_a,
+           bond_simd::Vector       *to_b) const
+      {
+        using namespace bond_simd;
+        const double      n = dim;
+        const std::size_t b = lanes.neighbour;
+        const Vector      e = bond.length * y.stretch;
+        const Vector      p(weight + lanes.first_lane, stdx::element_aligned);
+        const Vector      scale = (0.5 * expansion) * p * bond.length;
+        const Vector      from_b =
+          dilatation_modulus * bond.length * Vector(theta_over_m + b, stdx::element_aligned) +
+          Vector(alpha + b, stdx::element_aligned) *
+            (e - Vector(theta + b, stdx::element_aligned) * (bond.length / n));
+        const Vector from_a = dilatation_modulus * bond.length * i.theta_over_m +
+                              i.alpha * (e - i.theta * (bond.length / n));
+        Vector ma = 0., mb = 0.;
+        stdx::where(lanes.active, ma) = scale * from_b;
+        stdx::where(lanes.active, mb) = scale * from_a;
+        to_a[0]                       = ma;
+        to_b[0]                       = mb;
+      }
+    };
   } // namespace
 
   template <int dim>
@@ -376,7 +439,6 @@ namespace perideal
     BondList          &bonds   = particles.bonds();
     const double      *volume  = particles.volumes().data();
     const unsigned int n_owned = particles.n_owned();
-    const double      *m       = weighted_volume.begin();
     const double       n       = dim;
     k.blocks.sync_state(bonds);
     k.blocks.gather(u.begin(), dim, k.u_field);
@@ -387,21 +449,7 @@ namespace perideal
     if (thermal)
       k.blocks.gather(delta_T->begin(), 1, k.delta_T_field);
 
-    // Pass 1: break overstretched bonds (mechanical stretch above the critical stretch), then
-    // the dilatation from the pair sums, divided by V_i.
-    std::fill(k.theta_field.begin(), k.theta_field.end(), 0.);
-    if (thermal)
-      k.template dilatation_loop<true>(bonds, critical_stretch, planar_expansion);
-    else
-      k.template dilatation_loop<false>(bonds, critical_stretch, 0.);
-    double *theta_owned = theta.begin();
-    k.blocks.scatter_owned(k.theta_field, 1, nullptr, theta_owned);
-    for (unsigned int i = 0; i < n_owned; ++i)
-      theta_owned[i] *= n / (m[i] * volume[i]);
-    theta.update_ghost_values();
-    k.blocks.gather(theta.begin(), 1, k.theta_field);
-    for (std::size_t q = 0; q < k.theta_field.size(); ++q)
-      k.theta_over_m_field[q] = k.theta_field[q] * k.beta_over_m_field[q];
+    dilatation_pass(particles, critical_stretch, thermal);
 
     // Pass 2: forces (and energy), summed per particle and divided by V_i.
     const double dilatation_coefficient = n * bulk_modulus - (n + 2.) * shear_modulus;
@@ -423,8 +471,74 @@ namespace perideal
         k.blocks.scatter_owned(k.w_field, 1, volume, energy_density->data());
         const auto &beta = particles.energy_weights();
         for (unsigned int i = 0; i < n_owned; ++i)
-          (*energy_density)[i] += beta[i] * 0.5 * bulk_modulus * theta_owned[i] * theta_owned[i];
+          (*energy_density)[i] +=
+            beta[i] * 0.5 * bulk_modulus * theta.local_element(i) * theta.local_element(i);
       }
+  }
+
+  template <int dim>
+  void
+  LinearPeridynamicSolid<dim>::dilatation_pass(ParticleSystem<dim> &particles,
+                                               const double         critical_stretch,
+                                               const bool           thermal)
+  {
+    // Pass 1: break overstretched bonds (mechanical stretch above the critical stretch), then
+    // the dilatation from the pair sums, divided by V_i; theta / m for pass 2.
+    Kernel            &k       = *kernel;
+    BondList          &bonds   = particles.bonds();
+    const double      *volume  = particles.volumes().data();
+    const unsigned int n_owned = particles.n_owned();
+    const double      *m       = weighted_volume.begin();
+    const double       n       = dim;
+    std::fill(k.theta_field.begin(), k.theta_field.end(), 0.);
+    if (thermal)
+      k.template dilatation_loop<true>(bonds, critical_stretch, planar_expansion);
+    else
+      k.template dilatation_loop<false>(bonds, critical_stretch, 0.);
+    double *theta_owned = theta.begin();
+    k.blocks.scatter_owned(k.theta_field, 1, nullptr, theta_owned);
+    for (unsigned int i = 0; i < n_owned; ++i)
+      theta_owned[i] *= n / (m[i] * volume[i]);
+    theta.update_ghost_values();
+    k.blocks.gather(theta.begin(), 1, k.theta_field);
+    for (std::size_t q = 0; q < k.theta_field.size(); ++q)
+      k.theta_over_m_field[q] = k.theta_field[q] * k.beta_over_m_field[q];
+  }
+
+  template <int dim>
+  void
+  LinearPeridynamicSolid<dim>::thermoelastic_measure(ParticleSystem<dim>  &particles,
+                                                     const ParticleVector &u,
+                                                     std::vector<double>  &measure)
+  {
+    Kernel            &k       = *kernel;
+    const unsigned int n_owned = particles.n_owned();
+    const double       n       = dim;
+    k.blocks.sync_state(particles.bonds());
+    k.blocks.gather(u.begin(), dim, k.u_field);
+    // The dilatation of the whole strain (no bond breaks here).
+    dilatation_pass(particles, std::numeric_limits<double>::infinity(), false);
+    std::fill(k.w_field.begin(), k.w_field.end(), 0.);
+    const LPSMeasureLaw<dim> law{{{}, 0.},
+                                 k.lane_weight.data(),
+                                 k.blocks.component(k.theta_over_m_field, 0),
+                                 k.blocks.component(k.alpha_field, 0),
+                                 k.blocks.component(k.theta_field, 0),
+                                 n * bulk_modulus,
+                                 planar_expansion};
+    for_each_bond_block<dim, dim>(k.blocks,
+                                  k.template unknowns<false>(),
+                                  {{k.blocks.component(k.w_field, 0)}},
+                                  law,
+                                  particles.bonds(),
+                                  0.);
+    measure.resize(n_owned);
+    k.blocks.scatter_owned(k.w_field, 1, particles.volumes().data(), measure.data());
+    // The particle's own term: the derivative of k theta_i^2 / 2 through the thermal dilatation's
+    // share 1/2 of every bond of the particle.
+    const auto &beta = particles.energy_weights();
+    for (unsigned int i = 0; i < n_owned; ++i)
+      measure[i] += 0.5 * n * planar_expansion * bulk_modulus * beta[i] * theta.local_element(i);
   }
 
   template <int dim>
@@ -493,9 +607,10 @@ namespace perideal
   LinearPeridynamicSolid<dim>::capabilities() const
   {
     ModelCapabilities capabilities;
-    capabilities.sequentially_linear = true;
-    capabilities.lattice_fracture    = true;
-    capabilities.thermal_strain      = true;
+    capabilities.sequentially_linear   = true;
+    capabilities.lattice_fracture      = true;
+    capabilities.thermal_strain        = true;
+    capabilities.thermoelastic_heating = true;
     return capabilities;
   }
 

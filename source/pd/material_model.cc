@@ -284,6 +284,17 @@ namespace perideal
   }
 
   template <int dim>
+  void
+  MaterialModel<dim>::thermoelastic_measure(ParticleSystem<dim> &,
+                                            const ParticleVector &,
+                                            std::vector<double> &)
+  {
+    AssertThrow(false,
+                dealii::ExcMessage("This material model gives no thermoelastic measure (its "
+                                   "capabilities() do not say thermoelastic_heating)."));
+  }
+
+  template <int dim>
   ModelCapabilities
   MaterialModel<dim>::capabilities() const
   {

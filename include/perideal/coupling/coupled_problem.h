@@ -18,6 +18,7 @@
 #include <perideal/coupling/solvers/quasi_static_control.h>
 #include <perideal/coupling/solvers/solver.h>
 #include <perideal/coupling/temperature_source.h>
+#include <perideal/coupling/thermoelastic_heating.h>
 #include <perideal/fem/fe_region.h>
 #include <perideal/pd/particle_region.h>
 
@@ -223,6 +224,15 @@ namespace perideal
     parse_thermal_strain(dealii::ParameterHandler &prm);
 
     /**
+     * @brief Stop, naming the entry and the accepted values, if the problem cannot run
+     * <Temperature/Coupling> = two way (ThermoelasticHeating): a model without the
+     * thermoelastic measure, a quasi-static mechanics, a heat that is not explicit, checkpoints,
+     * an adaptive PD region.
+     */
+    void
+    check_two_way(dealii::ParameterHandler &prm) const;
+
+    /**
      * @brief Give the first physics its temperature (TemperatureSource::connect()) and its
      * state the hook that updates it; nothing without a source. Again after a conversion of the
      * adaptive region.
@@ -297,7 +307,10 @@ namespace perideal
     PhysicsExchange<dim> exchange;
     // The temperature of the first physics' thermal strain.
     TemperatureSource<dim> temperature;
-    std::string          blending_expression;
+    // The heating of the heat by the first physics' deformation (<Temperature/Coupling> = two
+    // way; connected in setup_other_physics()).
+    ThermoelasticHeating<dim> heating;
+    std::string               blending_expression;
     /// <Coupling/Adaptive region>: where the PD region grows during an explicit run.
     AdaptiveRegion<dim> adaptive;
     /// The damage index of each owned particle with only the pre-cracks' bonds broken (runs

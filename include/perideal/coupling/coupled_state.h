@@ -565,6 +565,15 @@ namespace perideal
     FEVector thermal_load;
     double   thermal_energy = 0.;
     ///@}
+    /// A source from another physics, held over a step of the first physics (the thermoelastic
+    /// heating of <Temperature/Coupling> = two way, ThermoelasticHeating): its density at the
+    /// particles (laid out like u) [W/m^3] and its load on the FE dofs [W], which an explicit
+    /// step adds to the applied loads (so the heat balance counts it as heat in). Empty for
+    /// none.
+    ///@{
+    ParticleVector physics_source;
+    FEVector       fe_physics_source;
+    ///@}
     /// Quasi-static runs: the particles' strain energy at the last equilibrium (the method's
     /// equilibrium_forces(), set by equilibrium_state()) [J], for a physics of <Physics/List>
     /// whose statistics its own solver does not write.

@@ -18,7 +18,7 @@ namespace perideal
   /**
    * @brief The one interface between the physics of a problem
    * (doc/architecture/16_multiphysics.md): each physics publishes named quantities (the heat
-   * its temperature, later the mechanics its dilatation rate), each reads them here and not
+   * its temperature), each reads them here and not
    * from another physics' state; and the bonds the physics share (one BondList) break for all
    * of them.
    *

@@ -68,6 +68,14 @@ namespace perideal
     double
     reference_temperature() const;
 
+    /// Whether <Temperature/Coupling> = two way (the thermoelastic heating, ThermoelasticHeating).
+    bool
+    two_way() const;
+
+    /// <Temperature/Absolute reference temperature> T_0 [K] (two way only).
+    double
+    absolute_reference_temperature() const;
+
     /**
      * @brief Give the first physics' particles (its model reads the particles' Delta T) and
      * FE region (it reads the cells' Delta T from the source) the temperature, taken from
@@ -76,6 +84,15 @@ namespace perideal
      */
     void
     connect(ParticleRegion<dim> &pd, FERegion<dim> &fe, const PhysicsExchange<dim> &exchange);
+
+    /**
+     * @brief Add @p particle_change (per local particle) and @p fe_change (the heat's FE dofs) to
+     * the heat's temperature that update() hands the mechanics: the change the two-way heating
+     * of the present step will make (ThermoelasticHeating::predict()). The vectors must outlive
+     * this object; Source = heat only.
+     */
+    void
+    add_changes(const ParticleVector &particle_change, const FEVector &fe_change);
 
     /**
      * @brief Delta T of the particles at time @p time (ghosts included) and the time the FE
@@ -88,6 +105,17 @@ namespace perideal
     const ParticleVector &
     particle_change() const;
 
+    /**
+     * @brief Add sum_q @p values[q] psi_k(x_q) to @p heat_vector (the heat's FE numbering;
+     * compress(add) after the last cell): the heat's shape functions psi_k at the quadrature
+     * points of @p fe_values, a cell of the mechanics' FE region (the heat source: the transpose
+     * of the evaluation of cell_change()). Source = heat only.
+     */
+    void
+    add_at_heat_points(const dealii::FEValues<dim> &fe_values,
+                       const std::vector<double>   &values,
+                       FEVector                    &heat_vector) const;
+
     /// One line for the log.
     std::string
     summary() const;
@@ -99,10 +127,18 @@ namespace perideal
                 const double                 time,
                 std::vector<double>         &delta_T) const;
 
+    /// The heat's values at the quadrature points of @p fe_values (a cell of the mechanics):
+    /// those of the heat's cell of the same CellId (its own triangulation, built and
+    /// partitioned alike).
+    const dealii::FEValues<dim> &
+    heat_cell_values(const dealii::FEValues<dim> &fe_values) const;
+
     Kind                                         source = Kind::none;
     std::string                                  expression;
     std::unique_ptr<dealii::FunctionParser<dim>> function;
-    double                                       reference = 0.;
+    double                                       reference          = 0.;
+    bool                                         two_way_coupling   = false;
+    double                                       absolute_reference = 0.;
 
     const ParticleSystem<dim>  *particles = nullptr;
     const PhysicsExchange<dim> *exchange  = nullptr;
@@ -112,6 +148,8 @@ namespace perideal
     /// mechanics' points (built again when the points change) with those points.
     ///@{
     FEVector                                           heat_temperature;
+    const ParticleVector                              *particle_changes = nullptr;
+    const FEVector                                    *fe_changes       = nullptr;
     mutable std::unique_ptr<dealii::hp::FEValues<dim>> heat_values;
     mutable std::vector<dealii::Point<dim>>            heat_points;
     ///@}

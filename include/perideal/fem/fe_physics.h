@@ -143,6 +143,21 @@ namespace perideal
                            const double                     delta_T) const;
 
     /**
+     * @brief The thermoelastic measure beta : eps(u) [Pa] at the quadrature points of
+     * @p fe_values (values, gradients) into @p measure (sized by the caller), for the cell's
+     * values @p cell_values (in the order of the cell's dofs) in material @p material_id:
+     * beta = C : alpha, the stress of a unit temperature change at no strain (in 2D that of the
+     * reduced expansion of the planar assumption, the transpose of add_cell_thermal_load()'s),
+     * whose rate heats a two-way coupled temperature (doc/theory/thermoelasticity.md). Zero by
+     * default.
+     */
+    virtual void
+    cell_thermoelastic_measure(const dealii::FEValues<dim>     &fe_values,
+                               const dealii::types::material_id material_id,
+                               const dealii::Vector<double>    &cell_values,
+                               std::vector<double>             &measure) const;
+
+    /**
      * @brief The postprocessor of the output when a temperature change is set: the derived
      * quantities of postprocessor() from the mechanical strain, with the temperature change
      * @p delta_T at the points of a cell. postprocessor() by default (no thermal strain).
@@ -244,6 +259,16 @@ namespace perideal
   FEPhysics<dim>::thermal_energy_density(const dealii::types::material_id, const double) const
   {
     return 0.;
+  }
+
+  template <int dim>
+  void
+  FEPhysics<dim>::cell_thermoelastic_measure(const dealii::FEValues<dim> &,
+                                             const dealii::types::material_id,
+                                             const dealii::Vector<double> &,
+                                             std::vector<double> &measure) const
+  {
+    std::fill(measure.begin(), measure.end(), 0.);
   }
 
   template <int dim>

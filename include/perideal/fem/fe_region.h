@@ -102,6 +102,14 @@ namespace perideal
                                                  const double                 time,
                                                  std::vector<double>         &delta_T)>;
 
+    /**
+     * Values at the quadrature points of @p fe_values (a cell of get_dof_handler()), already
+     * multiplied by the weights 1 - beta, the thickness and JxW, for a field on another
+     * DoFHandler of the same mesh to integrate against its shape functions there.
+     */
+    using PointValues = std::function<void(const dealii::FEValues<dim> &fe_values,
+                                           const std::vector<double>   &values)>;
+
     /// @brief An empty region on the ranks of @p comm; parse_parameters() and setup() fill it.
     explicit FERegion(const MPI_Comm comm);
 
@@ -247,6 +255,26 @@ namespace perideal
      */
     PointTemperatureChange<dim>
     point_temperature_change(const double time) const;
+
+    /**
+     * @brief The thermoelastic measure of the field @p u (ghost values current) on each owned
+     * cell with unknowns: FEPhysics::cell_thermoelastic_measure() at the quadrature points of
+     * the thermal load (assemble_thermal_load()) times its weights, handed to @p add cell by
+     * cell. Integrated against the heat's shape functions it is the transpose of the thermal
+     * load's coupling (doc/theory/thermoelasticity.md).
+     */
+    void
+    thermoelastic_measure(const FEVector &u, const PointValues &add) const;
+
+    /**
+     * @brief Add the cell vector @p cell_vector of @p cell (a cell of get_dof_handler()) to
+     * @p vector through the hanging-node constraints (call vector.compress(add) after the
+     * last cell).
+     */
+    void
+    add_cell_vector(const typename dealii::DoFHandler<dim>::active_cell_iterator &cell,
+                    const dealii::Vector<double>                                 &cell_vector,
+                    FEVector                                                     &vector) const;
 
     /**
      * @brief Set the prescribed components at @p time: of @p u for displacement (value)

@@ -95,6 +95,14 @@ namespace perideal
     dealii::SymmetricTensor<2, dim>
     thermal_expansion() const override;
 
+    /// m_i = sum_j 1/2 c chi alpha s |xi| V_j of the intact bonds (the pair coefficients of the
+    /// forces; alpha the in-plane expansion): the derivative of the bond energies with respect to
+    /// Delta T_i, which bond_temperature_change() shares half to each end.
+    void
+    thermoelastic_measure(ParticleSystem<dim>  &particles,
+                          const ParticleVector &u,
+                          std::vector<double>  &measure) override;
+
     double
     critical_stretch(const double fracture_energy) const override;
 

@@ -103,6 +103,18 @@ namespace perideal
     dealii::SymmetricTensor<2, dim>
     thermal_expansion() const override;
 
+    /**
+     * @brief m_l = -(1/V_l) dE/dDeltaT_l of the whole strain's dilatation theta and extensions e:
+     * n a k theta_l / 2 plus, over the bonds of l, 1/2 a omega chi |xi| V_j [n k theta_j |xi| /
+     * m_j + alpha_j (e - theta_j |xi| / n)] (energy weights included;
+     * doc/theory/thermoelasticity.md); n a k theta in the interior of a homogeneous strain.
+     * Leaves dilatation() at the whole strain's.
+     */
+    void
+    thermoelastic_measure(ParticleSystem<dim>  &particles,
+                          const ParticleVector &u,
+                          std::vector<double>  &measure) override;
+
     double
     critical_stretch(const double fracture_energy) const override;
 
@@ -126,6 +138,16 @@ namespace perideal
     dilatation() const;
 
   private:
+    /**
+     * @brief Pass 1 of the kernel on the gathered displacement: bonds above @p critical_stretch
+     * break (the mechanical stretch if @p thermal, with the gathered temperature change), the
+     * dilatation of the owned and ghost particles (theta) and the kernel's theta / m for pass 2.
+     */
+    void
+    dilatation_pass(ParticleSystem<dim> &particles,
+                    const double         critical_stretch,
+                    const bool           thermal);
+
     double youngs_modulus = 0.;
     double poisson_ratio  = 0.;
     /// The 3D thermal expansion alpha [1/K] (<Thermal expansion>).

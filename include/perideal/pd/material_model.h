@@ -67,6 +67,10 @@ namespace perideal
     /// temperature change (set_temperature_change(); doc/theory/thermal_strain.md). A model
     /// without it (antiplane shear, conduction) refuses a temperature source.
     bool thermal_strain = false;
+    /// It gives the thermoelastic measure beta : eps of its particles
+    /// (thermoelastic_measure()), whose rate heats a two-way coupled temperature
+    /// (<Temperature/Coupling> = two way; doc/theory/thermoelasticity.md).
+    bool thermoelastic_heating = false;
   };
 
   /**
@@ -294,6 +298,20 @@ namespace perideal
      */
     const ParticleVector *
     temperature_change() const;
+
+    /**
+     * @brief The thermoelastic measure m_i = (beta : eps)_i [Pa] of each owned particle at the
+     * displacement @p u (ghost values current) into @p measure: minus the derivative of the
+     * strain energy with respect to the particle's temperature change, at no temperature change,
+     * per unit volume (beta = C : alpha in the continuum; doc/theory/thermoelasticity.md). The
+     * two-way coupling heats particle i by -T_0 dm_i/dt. Intact bonds only; the same bond
+     * coefficients (surface factors, energy weights) as the forces. Only for a model whose
+     * capabilities() say thermoelastic_heating (the default throws).
+     */
+    virtual void
+    thermoelastic_measure(ParticleSystem<dim>  &particles,
+                          const ParticleVector &u,
+                          std::vector<double>  &measure);
 
     /**
      * @brief The strain energy that the bonds broken since the last call released

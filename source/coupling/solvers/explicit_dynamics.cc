@@ -149,6 +149,14 @@ namespace perideal
 
   template <int dim>
   void
+  ExplicitDynamics<dim>::renew_sources(CoupledState<dim> &state, const double time)
+  {
+    // A temperature (the only field a source of another physics reaches) has no damping.
+    compute_acceleration(state, time, false);
+  }
+
+  template <int dim>
+  void
   ExplicitDynamics<dim>::compute_acceleration(CoupledState<dim> &state,
                                               const double       time,
                                               const bool         with_energy)
@@ -163,14 +171,19 @@ namespace perideal
                                  with_energy ? &state.energy_density : nullptr,
                                  pd.critical_stretch());
     state.accumulate_dissipated_energy();
-    // The applied forces (zero since the set-up if there are none).
-    const bool loads = pd.boundary_conditions().has_loads();
+    // The applied forces (zero since the set-up if there are none), with a source from another
+    // physics.
+    const bool source = state.physics_source.size() > 0;
+    const bool loads  = pd.boundary_conditions().has_loads() || source;
     if (loads)
       {
         state.external_force = 0.;
         pd.boundary_conditions().add_loads(time, state.external_force);
         if (pd.boundary_conditions().has_convection())
           pd.boundary_conditions().add_convection(time, &state.u, state.external_force);
+        if (source)
+          for (std::size_t k = 0; k < state.motion().size(); ++k)
+            state.external_force.local_element(k) += state.physics_source.local_element(k);
       }
     // Particles: a = f V / m on the components that move by it (one pass, no branches); the
     // nodal forces f V only if some particle is slaved to the FE field (zero otherwise).
@@ -201,6 +214,8 @@ namespace perideal
     // dofs do not move by it, and the work their supports do is that of K U - f_th - P^T f (the
     // part of R they balance).
     fe.assemble_load(time, state.f_ext);
+    if (state.fe_physics_source.size() > 0)
+      state.f_ext += state.fe_physics_source;
     fe.stiffness_matrix().vmult(state.residual, state.U);
     state.residual.sadd(-1., 1., state.fe_equation_load());
     state.method().add_particle_forces(nodal_force, state.residual);
@@ -282,9 +297,13 @@ namespace perideal
   void
   ExplicitDynamics<dim>::start_state(CoupledState<dim> &state)
   {
-    // The other physics start first: a thermal strain reads the initial temperature.
-    state.advance_other_physics(0, 0., 0., true);
+    // The initial state, the slaved particles' from the FE field; then the other physics start,
+    // before the first forces: a thermal strain reads the initial temperature, and a two-way
+    // coupling takes the initial deformation's measure.
     state.apply_initial_conditions();
+    state.U.update_ghost_values();
+    state.method().interpolate_to_particles(state.U, state.u);
+    state.advance_other_physics(0, 0., 0., true);
     compute_acceleration(state, 0., true);
     set_first_order_rates(state);
     if (state.is_coupled())

@@ -50,6 +50,15 @@ namespace perideal
   }
 
   template <int dim>
+  void
+  Solver<dim>::renew_sources(CoupledState<dim> &, const double)
+  {
+    AssertThrow(false,
+                dealii::ExcMessage("This <Solver/Type> cannot take the heating of "
+                                   "<Temperature/Coupling> = two way; accepted: explicit."));
+  }
+
+  template <int dim>
   std::unique_ptr<Solver<dim>>
   create_solver(const SolverType type, const QuasiStaticControl &control)
   {

@@ -273,6 +273,23 @@ namespace perideal
   }
 
   template <int dim>
+  void
+  LinearElasticity<dim>::cell_thermoelastic_measure(const FEValues<dim> &fe_values,
+                                                    const types::material_id,
+                                                    const dealii::Vector<double> &cell_values,
+                                                    std::vector<double>          &measure) const
+  {
+    const FEValuesExtractors::Vector displacements(0);
+    for (const unsigned int q : fe_values.quadrature_point_indices())
+      {
+        SymmetricTensor<2, dim> eps;
+        for (unsigned int i = 0; i < fe_values.dofs_per_cell; ++i)
+          eps += cell_values(i) * fe_values[displacements].symmetric_gradient(i, q);
+        measure[q] = thermal_stress * eps;
+      }
+  }
+
+  template <int dim>
   std::unique_ptr<DataPostprocessor<dim>>
   LinearElasticity<dim>::postprocessor() const
   {

@@ -69,6 +69,11 @@ namespace perideal
     void
     renew_regions(CoupledState<dim> &state, const double time) override;
 
+    /// The accelerations (the rates of a temperature) at @p time with the new source: forward
+    /// Euler takes the rate at the step's start.
+    void
+    renew_sources(CoupledState<dim> &state, const double time) override;
+
   private:
     /**
      * @brief What the step derives from the regions: the masses of the method, the factors from

@@ -80,6 +80,12 @@ namespace perideal
     thermal_energy_density(const dealii::types::material_id material_id,
                            const double                     delta_T) const override;
 
+    void
+    cell_thermoelastic_measure(const dealii::FEValues<dim>     &fe_values,
+                               const dealii::types::material_id material_id,
+                               const dealii::Vector<double>    &cell_values,
+                               std::vector<double>             &measure) const override;
+
     /// @brief Strain, stress, stress_zz (2D) and von Mises stress.
     std::unique_ptr<dealii::DataPostprocessor<dim>>
     postprocessor() const override;

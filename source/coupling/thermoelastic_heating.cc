@@ -1,0 +1,189 @@
+// ---------------------------------------------------------------------
+// PeriDeal: the thermoelastic heating of a two-way coupling.
+// ---------------------------------------------------------------------
+#include <deal.II/base/mpi.h>
+
+#include <perideal/coupling/thermoelastic_heating.h>
+
+namespace perideal
+{
+  using namespace dealii;
+
+  template <int dim>
+  void
+  ThermoelasticHeating<dim>::connect(ParticleRegion<dim>          &mechanics_pd,
+                                     const FERegion<dim>          &mechanics_fe,
+                                     const ParticleVector         &mechanics_u,
+                                     const FEVector               &mechanics_U,
+                                     const TemperatureSource<dim> &source,
+                                     CoupledState<dim>            &heat)
+  {
+    pd                        = &mechanics_pd;
+    fe                        = &mechanics_fe;
+    u                         = &mechanics_u;
+    U                         = &mechanics_U;
+    temperature               = &source;
+    heat_state                = &heat;
+    local_heat                = 0.;
+    const FieldLayout &layout = heat.layout();
+    for (unsigned int c = layout.n_components(); c-- > 0;)
+      if (layout.kind(c) == ComponentKind::temperature)
+        component = c;
+    if (heat.pd().particles().n_global() > 0)
+      heat.pd().particles().reinit_vector(heat.physics_source, layout.n_components());
+    heat.pd().particles().reinit_vector(particle_temperature_change, 1);
+    if (heat.fe().n_dofs() > 0)
+      {
+        heat.fe().initialize_vector(heat.fe_physics_source);
+        heat.fe().initialize_vector(previous_fe);
+        heat.fe().initialize_vector(present_fe);
+        heat.fe().initialize_vector(fe_temperature_change);
+        heat.fe().initialize_vector(fe_heating);
+        heat.pd().particles().reinit_vector(slaved_heating, layout.n_components());
+      }
+    if (fe->n_dofs() > 0)
+      fe->initialize_vector(displacement);
+    if (pd->has_body())
+      pd->particles().reinit_vector(particle_displacement, pd->field_layout().n_components());
+  }
+
+  template <int dim>
+  bool
+  ThermoelasticHeating<dim>::active() const
+  {
+    return heat_state != nullptr;
+  }
+
+  template <int dim>
+  void
+  ThermoelasticHeating<dim>::measure(std::vector<double> &particle_measure, FEVector &fe_measure)
+  {
+    if (pd->has_body())
+      {
+        particle_displacement.copy_locally_owned_data_from(*u);
+        particle_displacement.update_ghost_values();
+        pd->material().thermoelastic_measure(pd->particles(),
+                                             particle_displacement,
+                                             particle_measure);
+      }
+    if (fe_measure.size() == 0)
+      return;
+    fe_measure = 0.;
+    if (fe->has_thermal_strain())
+      {
+        displacement.copy_locally_owned_data_from(*U);
+        displacement.update_ghost_values();
+        fe->thermoelastic_measure(displacement,
+                                  [&](const FEValues<dim>       &fe_values,
+                                      const std::vector<double> &m) {
+                                    temperature->add_at_heat_points(fe_values, m, fe_measure);
+                                  });
+      }
+    fe_measure.compress(VectorOperation::add);
+  }
+
+  template <int dim>
+  void
+  ThermoelasticHeating<dim>::start()
+  {
+    measure(previous_particles, previous_fe);
+  }
+
+  template <int dim>
+  void
+  ThermoelasticHeating<dim>::predict()
+  {
+    measure(present_particles, present_fe);
+    const double       T0 = temperature->absolute_reference_temperature();
+    const unsigned int nc = heat_state->layout().n_components();
+    using Motion          = typename CoupledState<dim>::Motion;
+    const auto  &motion   = heat_state->motion();
+    const auto  &volume   = heat_state->pd().particles().volumes();
+    const auto  &mass     = heat_state->particle_mass;
+    const double ratio    = heat_state->inertia_ratio()[component];
+    for (std::size_t i = 0; i < present_particles.size(); ++i)
+      particle_temperature_change.local_element(i) =
+        motion[i * nc + component] == Motion::moves ?
+          -T0 * (present_particles[i] - previous_particles[i]) * volume[i] / (mass[i] * ratio) :
+          0.;
+    if (fe_temperature_change.size() > 0)
+      {
+        // The heat the step brings the FE dofs: their own, and that of the particles slaved to
+        // them (P^T, as the explicit step adds their forces), over their capacities.
+        fe_heating.equ(-T0, present_fe);
+        fe_heating.add(T0, previous_fe);
+        if (heat_state->any_particle_slaved())
+          {
+            slaved_heating = 0.;
+            for (std::size_t i = 0; i < present_particles.size(); ++i)
+              slaved_heating.local_element(i * nc + component) =
+                -T0 * (present_particles[i] - previous_particles[i]) * volume[i];
+            heat_state->method().add_particle_forces(slaved_heating, fe_heating);
+          }
+        const auto &mask = heat_state->fe().prescribed_mask();
+        for (unsigned int k = 0; k < fe_heating.locally_owned_size(); ++k)
+          fe_temperature_change.local_element(k) =
+            mask[k] ? 0. : fe_heating.local_element(k) / heat_state->mass.local_element(k);
+        fe_temperature_change.update_ghost_values();
+        // The particles slaved to the heat's FE field take its change there.
+        if (heat_state->any_particle_slaved())
+          {
+            heat_state->method().interpolate_to_particles(fe_temperature_change, slaved_heating);
+            for (std::size_t i = 0; i < present_particles.size(); ++i)
+              if (motion[i * nc + component] == Motion::slaved)
+                particle_temperature_change.local_element(i) =
+                  slaved_heating.local_element(i * nc + component);
+          }
+      }
+    particle_temperature_change.update_ghost_values();
+  }
+
+  template <int dim>
+  const ParticleVector &
+  ThermoelasticHeating<dim>::particle_change() const
+  {
+    return particle_temperature_change;
+  }
+
+  template <int dim>
+  const FEVector &
+  ThermoelasticHeating<dim>::fe_change() const
+  {
+    return fe_temperature_change;
+  }
+
+  template <int dim>
+  void
+  ThermoelasticHeating<dim>::heat_step(const double dt)
+  {
+    const double       T0     = temperature->absolute_reference_temperature();
+    const unsigned int nc     = heat_state->layout().n_components();
+    const auto        &volume = heat_state->pd().particles().volumes();
+    double             heat   = 0.;
+    for (std::size_t i = 0; i < present_particles.size(); ++i)
+      {
+        const double change = present_particles[i] - previous_particles[i];
+        heat_state->physics_source.local_element(i * nc + component) = -T0 * change / dt;
+        heat -= T0 * change * volume[i];
+      }
+    for (unsigned int k = 0; k < present_fe.locally_owned_size(); ++k)
+      {
+        const double change = present_fe.local_element(k) - previous_fe.local_element(k);
+        heat_state->fe_physics_source.local_element(k) = -T0 * change / dt;
+        heat -= T0 * change;
+      }
+    local_heat += heat;
+    previous_particles = present_particles;
+    previous_fe        = present_fe;
+  }
+
+  template <int dim>
+  double
+  ThermoelasticHeating<dim>::heat() const
+  {
+    return Utilities::MPI::sum(local_heat, heat_state->comm());
+  }
+
+  template class ThermoelasticHeating<2>;
+  template class ThermoelasticHeating<3>;
+} // namespace perideal
