@@ -165,15 +165,34 @@ namespace perideal
     field_stride = (std::size_t(n_local) + width - 1) / width * width + 2 * width;
     field_stride += (168 - field_stride % 512 + 512) % 512;
     // The lanes' own reference bonds on a perturbed lattice (from the lane's particle, the end
-    // of lower kernel index, to its neighbour, like the class's lattice vector).
-    lane_geometry.clear();
+    // of lower kernel index, to its neighbour, like the class's lattice vector): the kernels
+    // form xi from the reference positions in kernel order (per particle, loaded like the
+    // displacements), and stream only the inverse length per lane (8 B, not the 32 B of xi and
+    // 1/|xi|; doc/benchmarks/performance/README.md, "Perturbed lattices").
+    reference_position.clear();
+    lane_inverse_length.clear();
     if (particles.settings().perturbation > 0.)
       {
+        reinit_field(reference_position, dim);
+        for (unsigned int d = 0; d < dim; ++d)
+          {
+            double *x     = component(reference_position, d);
+            double  x_max = 0.;
+            for (unsigned int i = 0; i < n_local; ++i)
+              {
+                x[kernel_index[i]] = positions[i][d];
+                x_max              = std::max(x_max, std::abs(positions[i][d]));
+              }
+            // Entries no particle holds (the lanes without a bond read them): beyond the body,
+            // one spacing apart, so that no lane's vector is zero.
+            for (std::size_t k = n_local; k + width < field_stride; ++k)
+              x[k] = x_max + double(k + 1) * dx;
+          }
         const std::size_t n_lanes = lane_bond.size();
-        lane_geometry.resize_fast((dim + 1) * n_lanes);
-        std::vector<unsigned int> particle_of(n_local);
-        for (unsigned int i = 0; i < n_local; ++i)
-          particle_of[kernel_index[i]] = i;
+        lane_inverse_length.resize_fast(n_lanes);
+        const double *x[dim];
+        for (unsigned int d = 0; d < dim; ++d)
+          x[d] = component(reference_position, d);
         for (std::size_t g = 0; g + 1 < group_list.size(); ++g)
           for (std::size_t q = group_list[g].first_block; q < group_list[g + 1].first_block; ++q)
             for (unsigned int l = 0; l < width; ++l)
@@ -183,19 +202,12 @@ namespace perideal
                 const std::size_t       first = group_list[g].first_particle + l;
                 std::array<double, dim> xi    = class_list[block_list[q].bond_class].xi;
                 if (lane_bond[lane] != numbers::invalid_unsigned_int)
-                  {
-                    const auto &a = positions[particle_of[first]];
-                    const auto &b = positions[particle_of[first + block_list[q].offset]];
-                    for (unsigned int d = 0; d < dim; ++d)
-                      xi[d] = b[d] - a[d];
-                  }
+                  for (unsigned int d = 0; d < dim; ++d)
+                    xi[d] = x[d][first + block_list[q].offset] - x[d][first];
                 double length2 = 0.;
                 for (unsigned int d = 0; d < dim; ++d)
-                  {
-                    lane_geometry[d * n_lanes + lane] = xi[d];
-                    length2 += xi[d] * xi[d];
-                  }
-                lane_geometry[dim * n_lanes + lane] = 1. / std::sqrt(length2);
+                  length2 += xi[d] * xi[d];
+                lane_inverse_length[lane] = 1. / std::sqrt(length2);
               }
       }
     lane_state.assign(lane_bond.size(), 0);

@@ -84,8 +84,10 @@ namespace perideal
    * vector, shared by the block; it is not stored per bond. On a perturbed lattice
    * (ParticleSystem::Settings::perturbation > 0) the particles keep the kernel order and the
    * classes of their lattice points, but every bond has its own reference vector: the blocks
-   * then also hold it per lane (lane_bond(); has_lane_bonds()), and for_each_bond_block() hands
-   * the pair laws a LaneBond instead of the class.
+   * then hold the particles' reference positions in kernel order (a vector of the bond is
+   * the difference of two contiguous loads, like the displacements) and the inverse length per
+   * lane (lane_bonds(); has_lane_bonds()), and for_each_bond_block() hands the pair laws a
+   * LaneBond instead of the class.
    *
    * The class depends on the SIMD width: it is compiled, like the kernels that use it, with
    * the kernel options of source/pd/CMakeLists.txt.
@@ -130,8 +132,10 @@ namespace perideal
       ///@}
     };
 
-    /// The per-lane reference bonds: a pointer to each of the dim + 1 per-lane arrays (xi's
-    /// components, inverse length), read by lane_bonds(); the length is |xi|^2 / |xi|.
+    /// The reference bonds on a perturbed lattice, read by lane_bonds(): the dim components of
+    /// the particles' reference positions in kernel order (xi of a lane = position of its
+    /// neighbour - position of its particle) and the per-lane inverse lengths; the length is
+    /// |xi|^2 / |xi|.
     using LaneBondArrays = std::array<const double *, dim + 1>;
 
     /// The blocks of one group of width consecutive particles (kernel order).
@@ -184,30 +188,38 @@ namespace perideal
     bool
     has_lane_bonds() const
     {
-      return !lane_geometry.empty();
+      return !lane_inverse_length.empty();
     }
 
-    /// The per-lane arrays of the reference bonds (has_lane_bonds() only).
+    /// The kernel-order reference positions and the per-lane inverse lengths of the reference
+    /// bonds (has_lane_bonds() only).
     LaneBondArrays
     lane_bond_arrays() const
     {
       LaneBondArrays arrays;
-      for (unsigned int k = 0; k < dim + 1; ++k)
-        arrays[k] = lane_geometry.data() + k * lane_bond.size();
+      for (unsigned int d = 0; d < dim; ++d)
+        arrays[d] = reference_position.data() + std::size_t(d) * field_stride + width;
+      arrays[dim] = lane_inverse_length.data();
       return arrays;
     }
 
-    /// The reference bonds of the lanes from @p first_lane on, from @p arrays
-    /// (lane_bond_arrays()).
+    /// The reference bonds of the lanes from @p first_lane on, whose particles are at
+    /// @p x_a (their reference positions, dim components, loaded once per group from
+    /// @p arrays, lane_bond_arrays()) and whose neighbours start at kernel index
+    /// @p neighbour.
     static LaneBond
-    lane_bonds(const LaneBondArrays &arrays, const std::size_t first_lane)
+    lane_bonds(const LaneBondArrays    &arrays,
+               const bond_simd::Vector *x_a,
+               const std::size_t        first_lane,
+               const std::size_t        neighbour)
     {
       namespace stdx = std::experimental;
       LaneBond bond;
       bond.length = 0.;
       for (unsigned int d = 0; d < dim; ++d)
         {
-          bond.xi[d].copy_from(arrays[d] + first_lane, stdx::element_aligned);
+          const bond_simd::Vector x_b(arrays[d] + neighbour, stdx::element_aligned);
+          bond.xi[d] = x_b - x_a[d];
           bond.length += bond.xi[d] * bond.xi[d];
         }
       bond.inverse_length.copy_from(arrays[dim] + first_lane, stdx::element_aligned);
@@ -316,9 +328,11 @@ namespace perideal
     std::vector<BondClass>    class_list;
     std::vector<unsigned int> lane_bond;
     std::vector<std::uint8_t> lane_state;
-    /// On a perturbed lattice: xi's components and the inverse lengths of the lanes, one array of
-    /// lane_bond.size() after the other; empty on a regular lattice.
-    Array         lane_geometry;
+    /// On a perturbed lattice: the local particles' reference positions, a kernel-order field
+    /// of dim components (padding entries beyond the body, one spacing apart, so that no lane's
+    /// vector is zero), and the inverse lengths of the lanes' reference bonds (empty lanes: the
+    /// class's); both empty on a regular lattice.
+    Array         reference_position, lane_inverse_length;
     std::uint64_t synced_revision = 0;
   };
 } // namespace perideal

@@ -70,6 +70,11 @@ namespace perideal
           Vector             u_a[n_components], sum_a[n_outputs];
           for (unsigned int c = 0; c < n_components; ++c)
             u_a[c].copy_from(u[c] + a, stdx::element_aligned);
+          // A perturbed lattice: the reference positions of the particle side.
+          [[maybe_unused]] Vector x_a[dim];
+          if constexpr (lane_bonds)
+            for (unsigned int d = 0; d < dim; ++d)
+              x_a[d].copy_from(lane_arrays[d] + a, stdx::element_aligned);
           for (unsigned int k = 0; k < n_outputs; ++k)
             sum_a[k] = 0.;
           const auto side = law.side(a);
@@ -85,7 +90,10 @@ namespace perideal
               // The block's reference bonds: its class's lattice vector, or the lanes' own.
               const auto bond = [&]() {
                 if constexpr (lane_bonds)
-                  return BondBlocks<dim>::lane_bonds(lane_arrays, lanes.first_lane);
+                  return BondBlocks<dim>::lane_bonds(lane_arrays,
+                                                     x_a,
+                                                     lanes.first_lane,
+                                                     lanes.neighbour);
                 else
                   return classes[block.bond_class];
               }();
