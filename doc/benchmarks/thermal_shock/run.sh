@@ -1,0 +1,38 @@
+#!/bin/bash
+# The alumina quench (README.md): all-PD runs for T0 = 300, 450, 600 degrees C (water 20 degrees C),
+# then cracks.py (count, spacing, lengths per run; the plots). Usage:
+#   run.sh [BUILD_DIR] [OUT_DIR] [T0 ...]
+# BUILD_DIR defaults to ../../../build (the perideal-solid there), OUT_DIR to ./runs, T0 to
+# "300 450 600". Each run writes OUT_DIR/T<T0>/{quench_T<T0>.prm,run.log,time.log,results/}; a run
+# whose results/statistics.csv and run.log summary exist already is not repeated (delete its
+# folder to run it again). Runs one after the other on one core.
+set -euo pipefail
+HERE="$(cd "$(dirname "$0")" && pwd)"
+BUILD="$(cd "${1:-$HERE/../../../build}" && pwd)"
+OUT="${2:-$HERE/runs}"
+shift $(( $# > 2 ? 2 : $# )) || true
+T0S="${*:-300 450 600}"
+mkdir -p "$OUT"
+for T0 in $T0S; do
+  dir="$OUT/T$T0"
+  mkdir -p "$dir"
+  if [ -f "$dir/results/statistics.csv" ] && grep -q "^Peak memory" "$dir/run.log" 2>/dev/null; then
+    echo "T0 = $T0: kept the run in $dir"
+    continue
+  fi
+  cat > "$dir/quench_T$T0.prm" <<PRM
+# The quench of quench.prm from T0 = $T0 degrees C (stress-free at T0), written by run.sh.
+include $HERE/quench.prm
+subsection Temperature
+  set Reference temperature = $T0
+end
+subsection Heat
+  subsection Initial conditions
+    set Displacement = $T0
+  end
+end
+PRM
+  echo "T0 = $T0: running in $dir"
+  (cd "$dir" && /usr/bin/time -v "$BUILD/bin/perideal-solid" "quench_T$T0.prm" > run.log 2> time.log)
+done
+/usr/bin/python3 "$HERE/cracks.py" --out "$OUT" $(for T0 in $T0S; do echo "$OUT/T$T0"; done)
