@@ -19,7 +19,8 @@ the last particle file is read and its cracks are counted:
   to the edge, to the particle centre: plus dx/2 to the edge itself);
 - spacing: the mean distance between neighbouring cracks along the long edges.
 
-Writes <out>/cracks.csv (one row per run and edge), the figures <out>/fields_T<T0>.png
+Writes <out>/cracks.csv (one row per crack), <out>/history.csv (per run and output time: the
+cracks per long edge, their mean and largest length, the interior clusters), the figures <out>/fields_T<T0>.png
 (damage beside the temperature at the end and two intermediate times) and <out>/cracks_vs_T0.png,
 and prints a table with the cost of each run (wall time and peak memory from time.log and the
 run's summary).
@@ -182,9 +183,9 @@ def main():
     # The deepest damaged particle of a crack sits (profile + 1/2) dx from the edge.
     min_cells = int(np.ceil(min_depth / dx - 0.5 - 1e-9))
 
-    rows, summary = [], []
+    rows, summary, history = [], [], []
     for run_dir in args.runs:
-        m = re.search(r"T(\d+)$", os.path.normpath(run_dir))
+        m = re.search(r"T(\d+)(_seed\d+)?$", os.path.normpath(run_dir))
         t0 = float(m.group(1)) if m else float("nan")
         res = os.path.join(run_dir, "results")
         mech = snapshots(os.path.join(res, "particles.xdmf"))
@@ -192,6 +193,14 @@ def main():
         if not mech:
             print(f"{run_dir}: no particle output", file=sys.stderr)
             continue
+        # The cracks' history: count and lengths along the long edges at each output time.
+        for time, h5 in mech:
+            x, d = read(h5, ["nodes", "damage"])
+            c, inside = measure(x, d[:, 0], dx, args.threshold, min_cells)
+            lens = [l for _, l in c["bottom"] + c["top"]]
+            history.append(dict(T0=t0, t_ms=1e3 * time * args.end_time, count_long_mean=
+                                0.5 * len(lens), mean_length_mm=1e3 * np.mean(lens) if lens else 0.,
+                                max_length_mm=1e3 * max(lens) if lens else 0., interior=inside))
         nodes, damage = read(mech[-1][1], ["nodes", "damage"])
         cracks, interior = measure(nodes, damage[:, 0], dx, args.threshold, min_cells)
         stats = np.genfromtxt(os.path.join(res, "statistics.csv"), delimiter=",", names=True)
@@ -255,6 +264,11 @@ def main():
         w.writeheader()
         w.writerows(rows)
 
+    with open(os.path.join(args.out, "history.csv"), "w", newline="") as f:
+        w = csv.DictWriter(f, fieldnames=list(history[0].keys()))
+        w.writeheader()
+        for h in history:
+            w.writerow({k: (f"{v:.3f}" if isinstance(v, float) else v) for k, v in h.items()})
     print(f"Crack measure: damage > {args.threshold}, connected to the edge, at least "
           f"{1e3 * (min_cells + 0.5) * dx:.3f} mm deep (particle centre); lengths to the particle centre (+{5e2 * dx:.3f}"
           " mm to the edge)")

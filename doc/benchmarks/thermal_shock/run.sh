@@ -5,16 +5,21 @@
 # BUILD_DIR defaults to ../../../build (the perideal-solid there), OUT_DIR to ./runs, T0 to
 # "300 450 600". Each run writes OUT_DIR/T<T0>/{quench_T<T0>.prm,run.log,time.log,results/}; a run
 # whose results/statistics.csv and run.log summary exist already is not repeated (delete its
-# folder to run it again). Runs one after the other on one core.
+# folder to run it again). Runs one after the other on one core. SEED=k (environment) runs the
+# lattice of <Perturbation seed> k instead of 1, in OUT_DIR/T<T0>_seed<k> (the scatter of the
+# counts over lattices).
 set -euo pipefail
 HERE="$(cd "$(dirname "$0")" && pwd)"
 BUILD="$(cd "${1:-$HERE/../../../build}" && pwd)"
 OUT="${2:-$HERE/runs}"
 shift $(( $# > 2 ? 2 : $# )) || true
 T0S="${*:-300 450 600}"
+SEED="${SEED:-1}"
+SUFFIX=""
+[ "$SEED" = 1 ] || SUFFIX="_seed$SEED"
 mkdir -p "$OUT"
 for T0 in $T0S; do
-  dir="$OUT/T$T0"
+  dir="$OUT/T$T0$SUFFIX"
   mkdir -p "$dir"
   if [ -f "$dir/results/statistics.csv" ] && grep -q "^Peak memory" "$dir/run.log" 2>/dev/null; then
     echo "T0 = $T0: kept the run in $dir"
@@ -23,6 +28,9 @@ for T0 in $T0S; do
   cat > "$dir/quench_T$T0.prm" <<PRM
 # The quench of quench.prm from T0 = $T0 degrees C (stress-free at T0), written by run.sh.
 include $HERE/quench.prm
+subsection Discretization
+  set Perturbation seed = $SEED
+end
 subsection Temperature
   set Reference temperature = $T0
 end
@@ -35,4 +43,4 @@ PRM
   echo "T0 = $T0: running in $dir"
   (cd "$dir" && /usr/bin/time -v "$BUILD/bin/perideal-solid" "quench_T$T0.prm" > run.log 2> time.log)
 done
-/usr/bin/python3 "$HERE/cracks.py" --out "$OUT" $(for T0 in $T0S; do echo "$OUT/T$T0"; done)
+/usr/bin/python3 "$HERE/cracks.py" --out "$OUT" $(for T0 in $T0S; do echo "$OUT/T$T0$SUFFIX"; done)
