@@ -5,9 +5,9 @@
 # BUILD_DIR defaults to ../../../build (the perideal-solid there), OUT_DIR to ./results (which
 # git ignores), T0 to "300 450 600". Each run writes
 # OUT_DIR/T<T0>/{quench_T<T0>.prm,run.log,time.log,results/}; a run whose results/statistics.csv
-# and run.log summary exist already is not repeated (delete its folder to run it again). Runs one after the other on one core. SEED=k (environment) runs the
-# lattice of <Perturbation seed> k instead of 1, in OUT_DIR/T<T0>_seed<k> (the scatter of the
-# counts over lattices).
+# and run.log summary exist already is not repeated (delete its folder to run it again). Runs
+# one after the other on one core. SEED=k (environment) runs the lattice of <Perturbation seed>
+# k instead of 1, in OUT_DIR/T<T0>_seed<k> (the scatter of the counts over lattices).
 set -euo pipefail
 HERE="$(cd "$(dirname "$0")" && pwd)"
 BUILD="$(cd "${1:-$HERE/../../../build}" && pwd)"
