@@ -2,7 +2,8 @@
 """Cracks of the alumina quench (README.md) from the particle output of perideal-solid.
 
 For each run folder given (run.sh writes them: <dir>/results/particles*.h5, run.log, time.log)
-the last particle file is read and its cracks are counted:
+the particle files are read (the last one for the table, every one for the history) and their
+cracks are counted:
 
 - the lattice: every particle sits within (epsilon dx / 2) of the centre of its lattice cell, so
   its cell indices (i, j) = floor(x / dx) identify it on a grid (dx from --dx);
@@ -13,17 +14,18 @@ the last particle file is read and its cracks are counted:
   particles that are connected (8 neighbours on the grid) to the edge's own particle row form
   the edge's damage; the others are interior damage (a crack that starts inside);
 - the depth profile: per column along the edge (one lattice column), the deepest such particle;
-  a crack is a maximal run of columns at least --min-depth deep (default one horizon, 3 dx:
+  a crack is a maximal run of columns whose deepest particle centre lies at least --min-depth
+  deep (default one horizon, rounded up to the next particle centre: 0.875 mm at dx = 0.25 mm;
   damage shallower than the horizon is the skin the surface layer loses, not a crack the
   nonlocal model resolves); its position is its deepest column, its length that depth (normal
   to the edge, to the particle centre: plus dx/2 to the edge itself);
 - spacing: the mean distance between neighbouring cracks along the long edges.
 
 Writes <out>/cracks.csv (one row per crack), <out>/history.csv (per run and output time: the
-cracks per long edge, their mean and largest length, the interior clusters), the figures <out>/fields_T<T0>.png
-(damage beside the temperature at the end and two intermediate times) and <out>/cracks_vs_T0.png,
-and prints a table with the cost of each run (wall time and peak memory from time.log and the
-run's summary).
+cracks per long edge, their mean and largest length, the interior clusters), the figures
+<out>/fields_T<T0>.png (damage beside the temperature at the end and two intermediate times),
+<out>/cracks_vs_T0.png and <out>/broken_bonds.png, and prints a table with the cost of each run
+(wall time and peak memory from time.log and the run's summary).
 """
 
 import argparse
