@@ -187,7 +187,7 @@ def main():
 
     rows, summary, history = [], [], []
     for run_dir in args.runs:
-        m = re.search(r"T(\d+)(_seed\d+)?$", os.path.normpath(run_dir))
+        m = re.match(r"T(\d+)", os.path.basename(os.path.normpath(run_dir)))
         t0 = float(m.group(1)) if m else float("nan")
         res = os.path.join(run_dir, "results")
         mech = snapshots(os.path.join(res, "particles.xdmf"))
