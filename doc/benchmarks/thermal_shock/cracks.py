@@ -262,12 +262,13 @@ def main():
     if not summary:
         return 1
     with open(os.path.join(args.out, "cracks.csv"), "w", newline="") as f:
-        w = csv.DictWriter(f, fieldnames=["T0", "edge", "position_mm", "length_mm"])
+        w = csv.DictWriter(f, fieldnames=["T0", "edge", "position_mm", "length_mm"],
+                           lineterminator="\n")
         w.writeheader()
         w.writerows(rows)
 
     with open(os.path.join(args.out, "history.csv"), "w", newline="") as f:
-        w = csv.DictWriter(f, fieldnames=list(history[0].keys()))
+        w = csv.DictWriter(f, fieldnames=list(history[0].keys()), lineterminator="\n")
         w.writeheader()
         for h in history:
             w.writerow({k: (f"{v:.3f}" if isinstance(v, float) else v) for k, v in h.items()})
