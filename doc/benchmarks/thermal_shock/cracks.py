@@ -273,7 +273,8 @@ def main():
         for h in history:
             w.writerow({k: (f"{v:.3f}" if isinstance(v, float) else v) for k, v in h.items()})
     print(f"Crack measure: damage > {args.threshold}, connected to the edge, at least "
-          f"{1e3 * (min_cells + 0.5) * dx:.3f} mm deep (particle centre); lengths to the particle centre (+{5e2 * dx:.3f}"
+          f"{1e3 * (min_cells + 0.5) * dx:.3f} mm deep (particle centre); lengths to the particle "
+          f"centre (+{5e2 * dx:.3f}"
           " mm to the edge)")
     head = ("T0[C] t_end[ms] broken  interior  cracks(bottom,top|left,right)  per-long-edge "
             "spacing[mm] mean/max_length[mm] long/short  wall[s] maxRSS[MiB] peak(summary)")

@@ -3,7 +3,8 @@
 dT"). Usage: heat_check.py RESULTS_DIR T0 [dx] -- RESULTS_DIR of a run of the 20 x 10 mm
 segment of the tests (thermal_shock_subcritical.prm.in with field output every load step), no
 broken bonds. Prints, at 40, 140 and 200 ms, the mean PD temperature of particle rows 0, 1, 2,
-4, 8, 19 (counted from the nearer long edge; 19: the centre line; columns within 2.6 mm of x = 10 mm, away from the cooled ends)
+4, 8, 19 (counted from the nearer long edge; 19: the centre line; columns within 2.6 mm of
+x = 10 mm, away from the cooled ends)
 against the series at the same particles, and the edge-strain factor phi = theta_mean -
 theta_edge from the PD temperatures (row 0 as the edge) and from the series (at the row-0
 centres and at the edge itself).
@@ -27,8 +28,8 @@ def main():
     kappa = k / (rho * c)
     lam = critical_dt.eigenvalues(h * half / k, 400)
     coef = 4 * np.sin(lam) / (2 * lam + np.sin(2 * lam))
-    grids = [g for g in ET.parse(os.path.join(results, "particles_heat.xdmf")).getroot().iter("Grid")
-             if g.get("GridType") == "Uniform"]
+    root = ET.parse(os.path.join(results, "particles_heat.xdmf")).getroot()
+    grids = [g for g in root.iter("Grid") if g.get("GridType") == "Uniform"]
     for wanted in (0.04, 0.14, 0.2):
         grid = min(grids, key=lambda g: abs(float(g.find("Time").get("Value")) - wanted))
         time = float(grid.find("Time").get("Value"))

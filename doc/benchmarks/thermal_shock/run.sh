@@ -41,6 +41,7 @@ subsection Heat
 end
 PRM
   echo "T0 = $T0: running in $dir"
-  (cd "$dir" && /usr/bin/time -v "$BUILD/bin/perideal-solid" "quench_T$T0.prm" > run.log 2> time.log)
+  (cd "$dir" &&
+    /usr/bin/time -v "$BUILD/bin/perideal-solid" "quench_T$T0.prm" > run.log 2> time.log)
 done
 /usr/bin/python3 "$HERE/cracks.py" --out "$OUT" $(for T0 in $T0S; do echo "$OUT/T$T0$SUFFIX"; done)
