@@ -22,6 +22,25 @@ namespace perideal
   }
 
   template <int dim>
+  template <typename Work>
+  void
+  FERegion<dim>::for_each_thermal_cell(const Work &work) const
+  {
+    FEValues<dim>       fe_values(fe_collection[0],
+                            QGauss<dim>(degree + 1),
+                            update_values | update_gradients | update_quadrature_points |
+                              update_JxW_values);
+    std::vector<double> weights;
+    for (const auto &cell : dof_handler.active_cell_iterators())
+      if (cell->is_locally_owned() && cell->active_fe_index() == 0)
+        {
+          fe_values.reinit(cell);
+          quadrature_weights(fe_values, weights);
+          work(cell, fe_values, weights);
+        }
+  }
+
+  template <int dim>
   bool
   FERegion<dim>::has_thermal_strain() const
   {
@@ -35,34 +54,27 @@ namespace perideal
     f_th = 0.;
     if (!has_thermal_strain())
       return 0.;
-    const auto                          &fe = fe_collection[0];
-    FEValues<dim>                        fe_values(fe,
-                            QGauss<dim>(degree + 1),
-                            update_values | update_gradients | update_quadrature_points |
-                              update_JxW_values);
-    const unsigned int                   n = fe.n_dofs_per_cell();
+    const unsigned int                   n = fe_collection[0].n_dofs_per_cell();
     dealii::Vector<double>               cell_rhs(n);
     std::vector<types::global_dof_index> dofs(n);
-    std::vector<double>                  weights, delta_T(fe_values.n_quadrature_points);
+    std::vector<double>                  delta_T;
     double                               energy = 0.;
-    for (const auto &cell : dof_handler.active_cell_iterators())
-      if (cell->is_locally_owned() && cell->active_fe_index() == 0)
-        {
-          fe_values.reinit(cell);
-          quadrature_weights(fe_values, weights);
-          temperature_change(fe_values, time, delta_T);
-          cell_rhs = 0.;
-          physics_model->add_cell_thermal_load(fe_values,
-                                               cell->material_id(),
-                                               weights,
-                                               delta_T,
-                                               cell_rhs);
-          for (const unsigned int q : fe_values.quadrature_point_indices())
-            energy +=
-              weights[q] * physics_model->thermal_energy_density(cell->material_id(), delta_T[q]);
-          cell->get_dof_indices(dofs);
-          hanging_constraints.distribute_local_to_global(cell_rhs, dofs, f_th);
-        }
+    for_each_thermal_cell(
+      [&](const auto &cell, const FEValues<dim> &fe_values, const auto &weights) {
+        delta_T.resize(fe_values.n_quadrature_points);
+        temperature_change(fe_values, time, delta_T);
+        cell_rhs = 0.;
+        physics_model->add_cell_thermal_load(fe_values,
+                                             cell->material_id(),
+                                             weights,
+                                             delta_T,
+                                             cell_rhs);
+        for (const unsigned int q : fe_values.quadrature_point_indices())
+          energy +=
+            weights[q] * physics_model->thermal_energy_density(cell->material_id(), delta_T[q]);
+        cell->get_dof_indices(dofs);
+        hanging_constraints.distribute_local_to_global(cell_rhs, dofs, f_th);
+      });
     f_th.compress(VectorOperation::add);
     return Utilities::MPI::sum(energy, comm);
   }
@@ -93,28 +105,20 @@ namespace perideal
   void
   FERegion<dim>::thermoelastic_measure(const FEVector &u, const PointValues &add) const
   {
-    const auto            &fe = fe_collection[0];
-    FEValues<dim>          fe_values(fe,
-                            QGauss<dim>(degree + 1),
-                            update_values | update_gradients | update_quadrature_points |
-                              update_JxW_values);
-    const unsigned int     n = fe.n_dofs_per_cell();
-    dealii::Vector<double> cell_values(n);
-    std::vector<double>    weights, measure(fe_values.n_quadrature_points);
-    for (const auto &cell : dof_handler.active_cell_iterators())
-      if (cell->is_locally_owned() && cell->active_fe_index() == 0)
-        {
-          fe_values.reinit(cell);
-          quadrature_weights(fe_values, weights);
-          cell->get_dof_values(u, cell_values);
-          physics_model->cell_thermoelastic_measure(fe_values,
-                                                    cell->material_id(),
-                                                    cell_values,
-                                                    measure);
-          for (const unsigned int q : fe_values.quadrature_point_indices())
-            measure[q] *= weights[q];
-          add(fe_values, measure);
-        }
+    dealii::Vector<double> cell_values(fe_collection[0].n_dofs_per_cell());
+    std::vector<double>    measure;
+    for_each_thermal_cell(
+      [&](const auto &cell, const FEValues<dim> &fe_values, const auto &weights) {
+        measure.resize(fe_values.n_quadrature_points);
+        cell->get_dof_values(u, cell_values);
+        physics_model->cell_thermoelastic_measure(fe_values,
+                                                  cell->material_id(),
+                                                  cell_values,
+                                                  measure);
+        for (const unsigned int q : fe_values.quadrature_point_indices())
+          measure[q] *= weights[q];
+        add(fe_values, measure);
+      });
   }
 
   template <int dim>

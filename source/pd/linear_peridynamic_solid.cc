@@ -79,25 +79,17 @@ namespace perideal
     };
 
     /**
-     * @brief Pass 2 of the LPS kernel as a pair law of for_each_bond_block(): the pair force
-     * [(n k - (n + 2) mu) |xi| (theta_i / m_i + theta_j / m_j) + (alpha_i + alpha_j) e]
-     * omega chi V_i V_j (xi + eta)/|xi + eta| on the particle side (its negative on the
-     * neighbour) and, if @p with_energy, the deviatoric pair energies
-     * alpha_i omega chi V_i V_j (e - theta_i |xi| / n)^2 / 2 at i and the same with j at j
-     * (theta / m and alpha carry the particles' energy weights); with @p thermal, e and theta
-     * are the mechanical ones (LPSStrain).
+     * @brief What the pair laws after the dilatation pass read of the particles: the weight
+     * omega chi V_i V_j per lane and, in kernel order, beta theta / m, beta alpha and theta
+     * (beta the energy weights), the particle side once per group (side()).
      */
-    template <int dim, bool with_energy, bool thermal>
-    struct LPSForceLaw : LPSStrain<dim, thermal>
+    template <int dim, bool thermal>
+    struct LPSStateLaw : LPSStrain<dim, thermal>
     {
-      static constexpr unsigned int n_outputs    = dim + (with_energy ? 1 : 0);
-      static constexpr bool         breaks_bonds = false;
       /// omega chi V_i V_j per lane.
       const double *weight;
       /// Kernel order: beta theta / m, beta alpha, theta.
       const double *theta_over_m, *alpha, *theta;
-      /// n k - (n + 2) mu.
-      double dilatation_coefficient;
 
       struct Side
       {
@@ -112,6 +104,25 @@ namespace perideal
                 Vector(alpha + a, stdx::element_aligned),
                 Vector(theta + a, stdx::element_aligned)};
       }
+    };
+
+    /**
+     * @brief Pass 2 of the LPS kernel as a pair law of for_each_bond_block(): the pair force
+     * [(n k - (n + 2) mu) |xi| (theta_i / m_i + theta_j / m_j) + (alpha_i + alpha_j) e]
+     * omega chi V_i V_j (xi + eta)/|xi + eta| on the particle side (its negative on the
+     * neighbour) and, if @p with_energy, the deviatoric pair energies
+     * alpha_i omega chi V_i V_j (e - theta_i |xi| / n)^2 / 2 at i and the same with j at j
+     * (theta / m and alpha carry the particles' energy weights); with @p thermal, e and theta
+     * are the mechanical ones (LPSStrain).
+     */
+    template <int dim, bool with_energy, bool thermal>
+    struct LPSForceLaw : LPSStateLaw<dim, thermal>
+    {
+      static constexpr unsigned int n_outputs    = dim + (with_energy ? 1 : 0);
+      static constexpr bool         breaks_bonds = false;
+      using Side                                 = typename LPSStateLaw<dim, thermal>::Side;
+      /// n k - (n + 2) mu.
+      double dilatation_coefficient;
 
       template <typename Bond>
       void
@@ -126,11 +137,12 @@ namespace perideal
         const double      n = dim;
         const std::size_t b = lanes.neighbour;
         const Vector      e = bond.length * y.stretch;
-        const Vector      p(weight + lanes.first_lane, stdx::element_aligned);
-        const Vector      alpha_b(alpha + b, stdx::element_aligned);
-        const Vector      t = (dilatation_coefficient * bond.length) *
-                           (i.theta_over_m + Vector(theta_over_m + b, stdx::element_aligned)) +
-                         (i.alpha + alpha_b) * e;
+        const Vector      p(this->weight + lanes.first_lane, stdx::element_aligned);
+        const Vector      alpha_b(this->alpha + b, stdx::element_aligned);
+        const Vector      t =
+          (dilatation_coefficient * bond.length) *
+            (i.theta_over_m + Vector(this->theta_over_m + b, stdx::element_aligned)) +
+          (i.alpha + alpha_b) * e;
         Vector scale                     = 0.;
         stdx::where(lanes.active, scale) = t * p * (y.rho * bond.inverse_length);
         for (unsigned int d = 0; d < dim; ++d)
@@ -141,8 +153,9 @@ namespace perideal
         if constexpr (with_energy)
           {
             const Vector ei = e - i.theta * (bond.length / n);
-            const Vector ej = e - Vector(theta + b, stdx::element_aligned) * (bond.length / n);
-            Vector       wi = 0., wj = 0.;
+            const Vector ej =
+              e - Vector(this->theta + b, stdx::element_aligned) * (bond.length / n);
+            Vector wi = 0., wj = 0.;
             stdx::where(lanes.active, wi) = 0.5 * i.alpha * p * ei * ei;
             stdx::where(lanes.active, wj) = 0.5 * alpha_b * p * ej * ej;
             to_a[dim]                     = wi;
@@ -160,30 +173,13 @@ namespace perideal
      * alpha carry the energy weights; e the extension of the whole strain).
      */
     template <int dim>
-    struct LPSMeasureLaw : LPSStrain<dim, false>
+    struct LPSMeasureLaw : LPSStateLaw<dim, false>
     {
       static constexpr unsigned int n_outputs    = 1;
       static constexpr bool         breaks_bonds = false;
-      /// omega chi V_i V_j per lane.
-      const double *weight;
-      /// Kernel order: beta theta / m, beta alpha, theta.
-      const double *theta_over_m, *alpha, *theta;
+      using Side                                 = typename LPSStateLaw<dim, false>::Side;
       /// n k and the in-plane expansion a.
       double dilatation_modulus, expansion;
-
-      struct Side
-      {
-        bond_simd::Vector theta_over_m, alpha, theta;
-      };
-
-      Side
-      side(const unsigned int a) const
-      {
-        using namespace bond_simd;
-        return {Vector(theta_over_m + a, stdx::element_aligned),
-                Vector(alpha + a, stdx::element_aligned),
-                Vector(theta + a, stdx::element_aligned)};
-      }
 
       template <typename Bond>
       void
@@ -198,12 +194,12 @@ namespace perideal
         const double      n = dim;
         const std::size_t b = lanes.neighbour;
         const Vector      e = bond.length * y.stretch;
-        const Vector      p(weight + lanes.first_lane, stdx::element_aligned);
+        const Vector      p(this->weight + lanes.first_lane, stdx::element_aligned);
         const Vector      scale = (0.5 * expansion) * p * bond.length;
         const Vector      from_b =
-          dilatation_modulus * bond.length * Vector(theta_over_m + b, stdx::element_aligned) +
-          Vector(alpha + b, stdx::element_aligned) *
-            (e - Vector(theta + b, stdx::element_aligned) * (bond.length / n));
+          dilatation_modulus * bond.length * Vector(this->theta_over_m + b, stdx::element_aligned) +
+          Vector(this->alpha + b, stdx::element_aligned) *
+            (e - Vector(this->theta + b, stdx::element_aligned) * (bond.length / n));
         const Vector from_a = dilatation_modulus * bond.length * i.theta_over_m +
                               i.alpha * (e - i.theta * (bond.length / n));
         Vector ma = 0., mb = 0.;
@@ -274,11 +270,11 @@ namespace perideal
         out[d] = blocks.component(f_field, d);
       if constexpr (with_energy)
         out[dim] = blocks.component(w_field, 0);
-      const Law law{{{}, expansion},
-                    lane_weight.data(),
-                    blocks.component(theta_over_m_field, 0),
-                    blocks.component(alpha_field, 0),
-                    blocks.component(theta_field, 0),
+      const Law law{{{{}, expansion},
+                     lane_weight.data(),
+                     blocks.component(theta_over_m_field, 0),
+                     blocks.component(alpha_field, 0),
+                     blocks.component(theta_field, 0)},
                     dilatation_coefficient};
       for_each_bond_block<dim + thermal, dim>(blocks, unknowns<thermal>(), out, law, bonds, 0.);
     }
@@ -519,11 +515,11 @@ namespace perideal
     // The dilatation of the whole strain (no bond breaks here).
     dilatation_pass(particles, std::numeric_limits<double>::infinity(), false);
     std::fill(k.w_field.begin(), k.w_field.end(), 0.);
-    const LPSMeasureLaw<dim> law{{{}, 0.},
-                                 k.lane_weight.data(),
-                                 k.blocks.component(k.theta_over_m_field, 0),
-                                 k.blocks.component(k.alpha_field, 0),
-                                 k.blocks.component(k.theta_field, 0),
+    const LPSMeasureLaw<dim> law{{{{}, 0.},
+                                  k.lane_weight.data(),
+                                  k.blocks.component(k.theta_over_m_field, 0),
+                                  k.blocks.component(k.alpha_field, 0),
+                                  k.blocks.component(k.theta_field, 0)},
                                  n * bulk_modulus,
                                  planar_expansion};
     for_each_bond_block<dim, dim>(k.blocks,

@@ -500,6 +500,16 @@ namespace perideal
      */
     void
     check_conditions_act() const;
+    /**
+     * @brief Call @p work(cell, fe_values, weights) on each owned cell with unknowns, with
+     * @p fe_values (values, gradients, points, JxW) at the thermal strain's quadrature points
+     * (Gauss, degree + 1: where the heat's temperature is read and the heating integrated) and
+     * their weights (quadrature_weights()).
+     */
+    template <typename Work>
+    void
+    for_each_thermal_cell(const Work &work) const;
+
     /// The weights 1 - beta, the thickness and JxW at the quadrature points of @p fe_values.
     void
     quadrature_weights(const dealii::FEValuesBase<dim> &fe_values,
