@@ -472,6 +472,14 @@ namespace perideal
                                   "explicit\n"),
                              physics[k]->state());
     solver().run(state(), postprocessors(), checkpoint);
+    // The two-way coupling's heat (part of the heat's heat in).
+    if (heating.active())
+      {
+        const double heat = heating.heat();
+        if (is_root)
+          log << "Thermoelastic heat of the deformation: " << heat << " J (in heat.heat_in)"
+              << std::endl;
+      }
     if (settings.show_progress)
       {
         const auto       &particles = state().pd().particles();
