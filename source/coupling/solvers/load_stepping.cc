@@ -367,11 +367,10 @@ namespace perideal
       {
         const auto broken_before = n_broken_bonds(ps);
         apply_load_factor(state, factor);
-        solves.iterations +=
-          state.method().solve_equilibrium(state.fe_equation_load(),
-                                           state.external_force,
-                                           state.U,
-                                           state.u);
+        solves.iterations += state.method().solve_equilibrium(state.fe_equation_load(),
+                                                              state.external_force,
+                                                              state.U,
+                                                              state.u);
         // The model's own forces and energy density at the solution (breaks bonds).
         pd.material().compute_forces(ps,
                                      state.u,
