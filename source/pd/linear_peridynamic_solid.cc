@@ -191,18 +191,18 @@ namespace perideal
            bond_simd::Vector       *to_b) const
       {
         using namespace bond_simd;
-        const double      n = dim;
-        const std::size_t b = lanes.neighbour;
-        const Vector      e = bond.length * y.stretch;
-        const Vector      p(this->weight + lanes.first_lane, stdx::element_aligned);
-        const Vector      scale = (0.5 * expansion) * p * bond.length;
-        const Vector      from_b =
-          dilatation_modulus * bond.length * Vector(this->theta_over_m + b, stdx::element_aligned) +
-          Vector(this->alpha + b, stdx::element_aligned) *
-            (e - Vector(this->theta + b, stdx::element_aligned) * (bond.length / n));
-        const Vector from_a = dilatation_modulus * bond.length * i.theta_over_m +
-                              i.alpha * (e - i.theta * (bond.length / n));
-        Vector ma = 0., mb = 0.;
+        const double n = dim;
+        const Vector e = bond.length * y.stretch;
+        const Vector p(this->weight + lanes.first_lane, stdx::element_aligned);
+        const Vector scale = (0.5 * expansion) * p * bond.length;
+        // The derivative through each end's dilatation and deviatoric extension, with that end's
+        // state.
+        const auto from = [&](const Side &end) {
+          return dilatation_modulus * bond.length * end.theta_over_m +
+                 end.alpha * (e - end.theta * (bond.length / n));
+        };
+        const Vector from_a = from(i), from_b = from(this->side(lanes.neighbour));
+        Vector       ma = 0., mb = 0.;
         stdx::where(lanes.active, ma) = scale * from_b;
         stdx::where(lanes.active, mb) = scale * from_a;
         to_a[0]                       = ma;
