@@ -100,6 +100,36 @@ namespace perideal
           }
       }
     };
+
+    /**
+     * @brief The thermoelastic measure of for_each_bond_block(): 1/2 k (n . alpha . n) s |xi|
+     * at both ends of each intact bond (s the linearized stretch of the whole strain), the part
+     * of the pair energy's derivative with respect to Delta T_b that each end takes (as PMB's,
+     * with the bond's own expansion).
+     */
+    template <int dim>
+    struct LinearizedMeasureLaw : LinearizedPairLaw<dim, false, false, false>
+    {
+      static constexpr unsigned int n_outputs = 1;
+
+      template <typename Bond>
+      void
+      pair(const Bond          &bond,
+           const LinearStretch &y,
+           const typename StretchPairLaw<dim>::Side &,
+           const BondLanes   &lanes,
+           bond_simd::Vector *to_a,
+           bond_simd::Vector *to_b) const
+      {
+        using namespace bond_simd;
+        const Vector k(this->coefficient + lanes.first_lane, stdx::element_aligned);
+        const Vector alpha(this->expansion + lanes.first_lane, stdx::element_aligned);
+        Vector       m               = 0.;
+        stdx::where(lanes.active, m) = (0.5 * bond.length) * k * alpha * y.s;
+        to_a[0]                      = m;
+        to_b[0]                      = m;
+      }
+    };
   } // namespace
 
   template <int dim>
@@ -446,9 +476,10 @@ namespace perideal
   AnisotropicBondBased<dim>::capabilities() const
   {
     ModelCapabilities capabilities;
-    capabilities.stiffness_fit       = grains.size() <= 1;
-    capabilities.sequentially_linear = true;
-    capabilities.thermal_strain      = true;
+    capabilities.stiffness_fit         = grains.size() <= 1;
+    capabilities.sequentially_linear   = true;
+    capabilities.thermal_strain        = true;
+    capabilities.thermoelastic_heating = true;
     return capabilities;
   }
 
@@ -538,6 +569,30 @@ namespace perideal
                                   critical_stretch,
                                   t_field);
                               });
+  }
+
+  template <int dim>
+  void
+  AnisotropicBondBased<dim>::thermoelastic_measure(ParticleSystem<dim>  &particles,
+                                                   const ParticleVector &u,
+                                                   std::vector<double>  &measure)
+  {
+    Kernel &k = *kernel;
+    if (bond_expansion.empty())
+      {
+        // Without an expansion the energy does not depend on the temperature.
+        measure.assign(particles.n_owned(), 0.);
+        return;
+      }
+    evaluate_bond_measure<dim>(
+      k.blocks,
+      particles,
+      u,
+      k.u_field,
+      k.w_field,
+      LinearizedMeasureLaw<dim>{
+        {{}, k.lane_coefficient.data(), k.lane_break_factor.data(), k.lane_expansion.data()}},
+      measure);
   }
 
   template <int dim>

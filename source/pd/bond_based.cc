@@ -348,20 +348,13 @@ namespace perideal
                                         std::vector<double>  &measure)
   {
     Kernel &k = *kernel;
-    k.blocks.sync_state(particles.bonds());
-    k.blocks.gather(u.begin(), dim, k.u_field);
-    std::fill(k.w_field.begin(), k.w_field.end(), 0.);
-    std::array<const double *, dim> displacement;
-    for (unsigned int d = 0; d < dim; ++d)
-      displacement[d] = k.blocks.component(k.u_field, d);
-    for_each_bond_block<dim>(k.blocks,
-                             displacement,
-                             std::array<double *, 1>{{k.blocks.component(k.w_field, 0)}},
-                             PMBMeasureLaw<dim>{{}, k.lane_coefficient.data(), bond_expansion()},
-                             particles.bonds(),
-                             0.);
-    measure.resize(particles.n_owned());
-    k.blocks.scatter_owned(k.w_field, 1, particles.volumes().data(), measure.data());
+    evaluate_bond_measure<dim>(k.blocks,
+                               particles,
+                               u,
+                               k.u_field,
+                               k.w_field,
+                               PMBMeasureLaw<dim>{{}, k.lane_coefficient.data(), bond_expansion()},
+                               measure);
   }
 
   template <int dim>

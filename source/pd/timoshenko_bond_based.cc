@@ -307,6 +307,39 @@ namespace perideal
         total.copy_to(p.dissipated + q, stdx::element_aligned);
       }
     };
+
+    /**
+     * @brief The thermoelastic measure of for_each_bond_block(): 1/2 k C_N alpha s |xi| at both
+     * ends of each intact bond (s the axial stretch of the whole strain, k the lane's pair
+     * coefficient times its axial softening factor), the part of the axial energy's derivative
+     * with respect to Delta T_b that each end takes; shear and bending take no thermal strain.
+     */
+    template <int dim>
+    struct TimoshenkoMeasureLaw : TimoshenkoPairLaw<dim, false, false, false>
+    {
+      static constexpr unsigned int n_outputs    = 1;
+      static constexpr bool         breaks_bonds = false;
+
+      template <typename Bond>
+      void
+      pair(const Bond            &bond,
+           const BondStrain<dim> &y,
+           const typename TimoshenkoPairLaw<dim, false, false, false>::Side &,
+           const BondLanes &lanes,
+           Vector          *to_a,
+           Vector          *to_b) const
+      {
+        const TimoshenkoLawData &p = this->p;
+        Vector                   k = 0.;
+        stdx::where(lanes.active, k) =
+          Vector(p.coefficient + lanes.first_lane, stdx::element_aligned);
+        if (p.factor[0] != nullptr)
+          k *= Vector(p.factor[0] + lanes.first_lane, stdx::element_aligned);
+        const Vector m = (0.5 * p.C_N * p.expansion * bond.length) * k * y.s;
+        to_a[0]        = m;
+        to_b[0]        = m;
+      }
+    };
   } // namespace
 
   template <int dim>
@@ -407,6 +440,31 @@ namespace perideal
                               force,
                               energy_density,
                               run);
+  }
+
+  template <int dim>
+  void
+  TimoshenkoBondBased<dim>::thermoelastic_measure(ParticleSystem<dim>  &particles,
+                                                  const ParticleVector &u,
+                                                  std::vector<double>  &measure)
+  {
+    Kernel                   &k = *kernel;
+    TimoshenkoMeasureLaw<dim> law;
+    law.p.coefficient = k.lane_coefficient.data();
+    law.p.C_N         = bond_stiffness.normal;
+    law.p.C_theta     = bond_stiffness.shear;
+    law.p.C_B         = bond_stiffness.bending;
+    law.p.expansion   = bond_expansion();
+    // The secant factors of softening bonds, as the forces take them.
+    if (failure == FailureLaw::softening)
+      law.p.factor[0] = k.factor[0].data();
+    evaluate_bond_measure<dim, Kernel::n_components>(k.blocks,
+                                                     particles,
+                                                     u,
+                                                     k.u_field,
+                                                     k.w_field,
+                                                     law,
+                                                     measure);
   }
 
   template <int dim>
@@ -512,9 +570,10 @@ namespace perideal
   TimoshenkoBondBased<dim>::capabilities() const
   {
     ModelCapabilities capabilities;
-    capabilities.stiffness_fit    = true;
-    capabilities.lattice_fracture = true;
-    capabilities.thermal_strain   = true;
+    capabilities.stiffness_fit         = true;
+    capabilities.lattice_fracture      = true;
+    capabilities.thermal_strain        = true;
+    capabilities.thermoelastic_heating = true;
     return capabilities;
   }
 

@@ -103,6 +103,15 @@ namespace perideal
                    std::vector<double>  *energy_density,
                    const double          critical_stretch) override;
 
+    /// m_i = sum_j 1/2 k_b (n . alpha . n) s |xi| / V_i of the intact bonds (the coefficients of
+    /// the forces, s the linearized stretch, n . alpha . n the bond's thermal stretch per kelvin):
+    /// the derivative of the bond energies with respect to Delta T_i, which
+    /// bond_temperature_change() shares half to each end; zero without an expansion.
+    void
+    thermoelastic_measure(ParticleSystem<dim>  &particles,
+                          const ParticleVector &u,
+                          std::vector<double>  &measure) override;
+
     /**
      * @brief Gershgorin bound with |k_b| (negative direction factors count with their size);
      * defined in source/pd/anisotropic_bond_based_linearization.cc.

@@ -225,6 +225,40 @@ namespace perideal
   }
 
   /**
+   * @brief A value per owned particle from a pair law with one output that breaks nothing
+   * (MaterialModel::thermoelastic_measure() of the bond-based models): the kernel's copy of the
+   * bond states follows the bonds of @p particles, the @p n_components unknowns @p u are
+   * gathered into @p u_field, @p law's values at the two ends of every intact bond are summed
+   * in @p w_field and scattered into @p measure (owned particles), divided by the volumes.
+   */
+  template <int dim, unsigned int n_components = dim, typename PairLaw>
+  inline void
+  evaluate_bond_measure(BondBlocks<dim>                 &blocks,
+                        ParticleSystem<dim>             &particles,
+                        const ParticleVector            &u,
+                        typename BondBlocks<dim>::Array &u_field,
+                        typename BondBlocks<dim>::Array &w_field,
+                        const PairLaw                   &law,
+                        std::vector<double>             &measure)
+  {
+    static_assert(PairLaw::n_outputs == 1 && !PairLaw::breaks_bonds);
+    blocks.sync_state(particles.bonds());
+    blocks.gather(u.begin(), n_components, u_field);
+    std::fill(w_field.begin(), w_field.end(), 0.);
+    std::array<const double *, n_components> unknowns;
+    for (unsigned int c = 0; c < n_components; ++c)
+      unknowns[c] = blocks.component(u_field, c);
+    for_each_bond_block<n_components>(blocks,
+                                      unknowns,
+                                      std::array<double *, 1>{{blocks.component(w_field, 0)}},
+                                      law,
+                                      particles.bonds(),
+                                      0.);
+    measure.resize(particles.n_owned());
+    blocks.scatter_owned(w_field, 1, particles.volumes().data(), measure.data());
+  }
+
+  /**
    * @brief The temperature change of the lanes' bonds, the mean (Delta T_a + Delta T_b) / 2 of
    * their two ends (doc/theory/thermal_strain.md, "Choices"), for a pair law with a thermal
    * strain: the loop hands it the kernel-order temperature change as the extra input component

@@ -232,6 +232,16 @@ namespace perideal
                    std::vector<double>  *energy_density,
                    const double          critical_stretch) override;
 
+    /// m_i = sum_j 1/2 k C_N alpha s |xi| / V_i of the intact bonds (the axial part: s the
+    /// axial stretch, k the pair coefficient times the axial softening factor, alpha the
+    /// in-plane expansion): the derivative of the bond energies with respect to Delta T_i, which
+    /// bond_temperature_change() shares half to each end; shear and bending take no thermal
+    /// strain.
+    void
+    thermoelastic_measure(ParticleSystem<dim>  &particles,
+                          const ParticleVector &u,
+                          std::vector<double>  &measure) override;
+
     /**
      * @brief The energy the bonds broken since the last call released: each one's bond energy
      * at @p u (a sum of bond energies, no force evaluation).
