@@ -125,16 +125,14 @@ namespace perideal
     fe_weight = has_mesh() ? weight : [](const Point<dim> &) { return 0.; };
     if (fe_weight)
       {
-        // A cell carries no FE unknowns if the weight vanishes at its vertices and at its
-        // quadrature points.
+        // A cell carries no FE unknowns if the weight vanishes at its quadrature points
+        // (where its stiffness and mass are integrated).
         const QGauss<dim>    quadrature(degree + 1);
         const MappingQ1<dim> mapping;
         for (const auto &cell : dof_handler.active_cell_iterators())
           if (cell->is_locally_owned())
             {
               bool active = false;
-              for (const unsigned int v : cell->vertex_indices())
-                active = active || fe_weight(cell->vertex(v)) > 0.;
               for (const auto &q : quadrature.get_points())
                 active = active || fe_weight(mapping.transform_unit_to_real_cell(cell, q)) > 0.;
               cell->set_active_fe_index(active ? 0 : 1);
