@@ -107,7 +107,8 @@ if [ "$study" -eq 1 ]; then
   dirs=() labels=()
   for spacing in 1e-3 5e-4 2.5e-4 1.25e-4; do
     run_case "$here/branching.prm" "$spacing" ""
-    dirs+=("$results") labels+=("delta = $("$python" -c "print(f'{4 * float(\"$spacing\") * 1e3:g}')") mm")
+    delta=$("$python" -c "print(f'{4 * float(\"$spacing\") * 1e3:g}')")
+    dirs+=("$results") labels+=("delta = $delta mm")
   done
   "$python" "$here/tip_speed.py" "${dirs[@]}" --labels "$(IFS=,; echo "${labels[*]}")" \
     --compare "$results_top/convergence.png" | tee "$results_top/convergence.log"

@@ -67,7 +67,8 @@ def rayleigh_speed():
     cp = math.sqrt(E / (RHO * (1 - NU * NU)))
 
     def f(x):
-        return (2 - x * x) ** 2 - 4 * math.sqrt(1 - x * x) * math.sqrt(1 - x * x * cs ** 2 / cp ** 2)
+        return ((2 - x * x) ** 2
+                - 4 * math.sqrt(1 - x * x) * math.sqrt(1 - x * x * cs ** 2 / cp ** 2))
 
     lo, hi = 0.5, 0.9999
     for _ in range(200):
@@ -293,8 +294,8 @@ def main():
         pre = speeds[(speeds[:, 0] <= t_branch)] if t_branch is not None else speeds
         vpre = float(np.nanmax(pre[:, 2])) if np.isfinite(pre[:, 2]).any() else 0.0
         tips = [final[3][s]["tip"] for s in ("upper", "lower") if final[3][s] is not None]
-        print("%s: first output with a crack longer than 2 horizons %.2f us; max tip speed %.0f m/s "
-              "(%.2f c_R), before branching %.0f m/s (%.2f c_R)"
+        print("%s: first output with a crack longer than 2 horizons %.2f us; max tip speed "
+              "%.0f m/s (%.2f c_R), before branching %.0f m/s (%.2f c_R)"
               % (label, start * 1e6, vmax, vmax / c_r, vpre, vpre / c_r))
         print("%s: tips at t = %.1f us: %s" % (label, final[0] * 1e6, "; ".join(
             "(%.1f, %.1f) mm" % (t[0] * 1e3, t[1] * 1e3) for t in tips)))
