@@ -61,17 +61,19 @@ namespace perideal
                       "none",
                       Patterns::Selection(
                         "none|principal strain|damage|principal strain and damage"),
-                      "Explicit blended runs: what converts FE cells into particles during the run "
-                      "(the PD region grows by disks, balls in 3D, of <Core radius> around the "
-                      "points it flags, with an overlap of <Ramp width>). 'principal strain': the "
-                      "centre of an FE cell whose largest principal strain (the slope of a scalar "
-                      "field) exceeds <Strain fraction> times the critical stretch; 'damage': a "
-                      "particle with damage >= <Damage threshold> within <Damage distance> of the "
-                      "edge of the PD-only zone; 'none': the region is fixed.");
+                      "Blended runs, explicit or by quasi-static load steps: what converts FE "
+                      "cells into particles during the run (the PD region grows by disks, balls "
+                      "in 3D, of <Core radius> around the points it flags, with an overlap of "
+                      "<Ramp width>). 'principal strain': the centre of an FE cell whose largest "
+                      "principal strain (the slope of a scalar field) exceeds <Strain fraction> "
+                      "times the critical stretch; 'damage': a particle with damage >= <Damage "
+                      "threshold> within <Damage distance> of the edge of the PD-only zone; "
+                      "'none': the region is fixed.");
     prm.declare_entry("Check interval",
                       "10",
                       Patterns::Integer(),
-                      "Time steps between two checks of the criterion (at least 1).");
+                      "Time steps (load steps of a quasi-static run) between two checks of the "
+                      "criterion (at least 1).");
     prm.declare_entry("Strain fraction",
                       "0.5",
                       Patterns::Double(),

@@ -178,9 +178,17 @@ namespace perideal
                     ExcMessage(entry + " converts FE cells into particles: the problem needs "
                                        "both an FE mesh and <Discretization/Body> (the body the "
                                        "particles may fill); set the criterion to none."));
-        AssertThrow(settings.solver_type == SolverType::explicit_dynamics,
-                    ExcMessage(entry + " works in explicit runs only: <Solver/Type> = explicit, "
-                                       "or the criterion none."));
+        // Explicit steps and load steps convert after a step (ExplicitDynamics::run(),
+        // LoadStepping::run()); the event-by-event control has no step to convert after.
+        AssertThrow((settings.solver_type == SolverType::explicit_dynamics ||
+                     settings.solver_type == SolverType::static_linear ||
+                     settings.solver_type == SolverType::adaptive_dynamic_relaxation) &&
+                      (settings.solver_type == SolverType::explicit_dynamics ||
+                       control.method == LoadControl::load_steps),
+                    ExcMessage(entry + " works in explicit runs and in quasi-static runs by load "
+                                       "steps only: <Solver/Type> = explicit, static or adaptive "
+                                       "dynamic relaxation with <Solver/Control/Method> = load "
+                                       "steps, or the criterion none."));
         AssertThrow(settings.checkpoint_interval == 0 && settings.checkpoint_time_interval == 0.,
                     ExcMessage(entry + ": a run whose PD region grows cannot be checkpointed yet "
                                        "(its particles and FE space are not rebuilt by a "

@@ -174,6 +174,12 @@ namespace perideal
                                         k == 0 ? "" :
                                                  Physics<dim>::section(physics[k]->name) + "/");
 
+    // The bonds the first physics broke since the other physics last advanced are recorded by
+    // their index in the bond list, which the rebuild renumbers: share them now, while the
+    // indices hold (a quasi-static run converts after its load step, before the other physics
+    // advance to the next one; shared later, the old indices would break other bonds).
+    exchange.share_broken_bonds(pd.particles().bonds());
+
     // What carries over, before anything changes: per physics the unknowns of the free
     // particles by lattice point (the others are slaved to the FE field and take it again) and
     // the FE dof values of each owned cell with unknowns (the mesh and its partition stay); the

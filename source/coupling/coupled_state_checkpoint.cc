@@ -98,6 +98,25 @@ namespace perideal
     U.update_ghost_values();
   }
 
+  namespace
+  {
+    /**
+     * @p to = @p from, with @p from's layout. A plain assignment between vectors of different
+     * partitioners compares them collectively, but only on the ranks whose partitioner objects
+     * differ: after a conversion of the adaptive PD region (a new layout on some ranks only)
+     * the ranks would call different collectives. Taking @p from's partitioner first (not
+     * collective) makes every rank assign between equal partitioners.
+     */
+    void
+    copy_with_layout(LinearAlgebra::distributed::Vector<double>       &to,
+                     const LinearAlgebra::distributed::Vector<double> &from)
+    {
+      if (to.get_partitioner() != from.get_partitioner())
+        to.reinit(from, true);
+      to = from;
+    }
+  } // namespace
+
   template <int dim>
   void
   CoupledState<dim>::keep()
@@ -105,11 +124,11 @@ namespace perideal
     const auto parts = stored_parts();
     kept.particle_vectors.resize(parts.particle_vectors.size());
     for (unsigned int k = 0; k < parts.particle_vectors.size(); ++k)
-      kept.particle_vectors[k] = *parts.particle_vectors[k];
+      copy_with_layout(kept.particle_vectors[k], *parts.particle_vectors[k]);
     kept.energy_density = *parts.energy_density;
     kept.fe_vectors.resize(parts.fe_vectors.size());
     for (unsigned int k = 0; k < parts.fe_vectors.size(); ++k)
-      kept.fe_vectors[k] = *parts.fe_vectors[k];
+      copy_with_layout(kept.fe_vectors[k], *parts.fe_vectors[k]);
     kept.sums.clear();
     for (const auto *part : {&parts.sums, &parts.totals})
       for (const double *sum : *part)

@@ -4,7 +4,8 @@
 // entry and the accepted values, when the file is read or at the set-up (before any output): a
 // check interval of zero, thresholds outside their ranges, a ramp narrower than a horizon, a
 // damage distance not inside the core, a lead distance beyond the core less the damage
-// distance, initial seeds outside the body or without a criterion, a quasi-static solver,
+// distance, initial seeds outside the body or without a criterion, the event-by-event
+// control and implicit time steps (explicit steps and quasi-static load steps convert),
 // checkpoints, no damage model, no FE mesh, an initial disk that reaches an FE boundary
 // condition. A PD zone that would reach an FE boundary condition during the run
 // stops the run at that check, before anything is converted: the statistics end with the row of
@@ -88,7 +89,27 @@ main(int argc, char **argv)
                     "    set Lead distance = 0.005\n"));
   run_case("initial seed outside the body", "", "0.06, 0.01; 0.2, 0.01");
   run_case("initial seeds without a criterion", adaptive("    set Criterion = none\n"));
-  run_case("static solver", "subsection Solver\n  set Type = static\nend\n");
+  run_case("event-by-event control",
+           R"(
+subsection Finite elements
+  subsection Boundary conditions
+    set Names = left
+    subsection left
+      set Boundary ids = 0
+      set Components   = x
+      set Function     = 1e-5
+    end
+  end
+end
+subsection Solver
+  set Type = static
+  subsection Control
+    set Method     = sequentially linear
+    set Load point = left
+  end
+end
+)");
+  run_case("implicit solver", "subsection Solver\n  set Type = implicit\nend\n");
   run_case("checkpoints", "subsection Output\n  set Checkpoint interval = 10\nend\n");
   run_case("no damage model", "subsection Material\n  set Damage model = none\nend\n");
   run_case("no FE mesh",

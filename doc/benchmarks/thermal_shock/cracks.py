@@ -24,8 +24,12 @@ cracks are counted:
 Writes <out>/cracks.csv (one row per crack), <out>/history.csv (per run and output time: the
 cracks per long edge, their mean and largest length, the interior clusters), the figures
 <out>/fields_T<T0>.png (damage beside the temperature at the end and two intermediate times),
-<out>/cracks_vs_T0.png and <out>/broken_bonds.png, and prints a table with the cost of each run
-(wall time and peak memory from time.log and the run's summary).
+<out>/cracks_vs_T0.png and <out>/broken_bonds.png (with --prefix before each name), for a run
+whose particles change in number (the adaptive PD region) <out>/<prefix>pd_zone.png, and prints
+a table with the cost of each run (wall and CPU time and peak memory from time.log and the run's
+summary) and the most particles of any output time. Coupled and adaptive runs: the cracks are in
+the particles (every damaged particle is PD only), the temperature plot shows the FE heat
+(solution_heat*.h5) under the particles'.
 """
 
 import argparse
@@ -148,7 +152,7 @@ def measure(nodes, damage, dx, threshold, min_depth_cells):
 
 
 def cost(run_dir):
-    wall, rss, peak = float("nan"), float("nan"), ""
+    wall, rss, peak, cpu = float("nan"), float("nan"), "", float("nan")
     try:
         text = open(os.path.join(run_dir, "time.log")).read()
         m = re.search(r"Elapsed \(wall clock\) time \(h:mm:ss or m:ss\): ([0-9:.]+)", text)
@@ -158,6 +162,7 @@ def cost(run_dir):
         m = re.search(r"Maximum resident set size \(kbytes\): (\d+)", text)
         if m:
             rss = int(m.group(1)) / 1024.0
+        cpu = sum(float(x) for x in re.findall(r"(?:User|System) time \(seconds\): ([0-9.]+)", text))
     except OSError:
         pass
     try:
@@ -166,7 +171,23 @@ def cost(run_dir):
                 peak = line.split(":")[1].split(",")[0].strip()
     except OSError:
         pass
-    return wall, rss, peak
+    return wall, rss, peak, cpu
+
+
+def fe_temperature(ax, res, time, t0):
+    """The FE temperature of the heat (solution_heat*.h5 of the output time nearest @p time) as
+    a colour field under the particles' image (coupled and adaptive runs); nothing without FE."""
+    fe = snapshots(os.path.join(res, "solution_heat.xdmf")) if os.path.exists(
+        os.path.join(res, "solution_heat.xdmf")) else []
+    if not fe:
+        return
+    k = min(range(len(fe)), key=lambda q: abs(fe[q][0] - time))
+    nodes, cells, temp = read(fe[k][1], ["nodes", "cells", "temperature"])
+    if cells.size == 0:
+        return
+    triangles = np.concatenate([cells[:, [0, 1, 2]], cells[:, [0, 2, 3]]])
+    ax.tripcolor(1e3 * nodes[:, 0], 1e3 * nodes[:, 1], triangles, temp[:, 0], cmap="coolwarm",
+                 vmin=20, vmax=t0, shading="gouraud")
 
 
 def main():
@@ -179,13 +200,15 @@ def main():
     ap.add_argument("--min-depth", type=float, default=None,
                     help="shortest crack [m] (default: one horizon)")
     ap.add_argument("--end-time", type=float, default=0.4, help="<Time stepping/End time> [s]")
+    ap.add_argument("--method", default="all-PD", help="the method's name in the titles")
+    ap.add_argument("--prefix", default="", help="put before the figures' file names")
     args = ap.parse_args()
     dx = args.dx
     min_depth = args.min_depth if args.min_depth is not None else args.horizon_factor * dx
     # The deepest damaged particle of a crack sits (profile + 1/2) dx from the edge.
     min_cells = int(np.ceil(min_depth / dx - 0.5 - 1e-9))
 
-    rows, summary, history = [], [], []
+    rows, summary, history, zone = [], [], [], []
     for run_dir in args.runs:
         m = re.match(r"T(\d+)", os.path.basename(os.path.normpath(run_dir)))
         t0 = float(m.group(1)) if m else float("nan")
@@ -208,7 +231,10 @@ def main():
         stats = np.genfromtxt(os.path.join(res, "statistics.csv"), delimiter=",", names=True)
         broken = int(stats["broken_bonds"][-1])
         t_end = mech[-1][0] * args.end_time
-        wall, rss, peak = cost(run_dir)
+        wall, rss, peak, cpu = cost(run_dir)
+        # The particles (the PD zone and its halo): at the end and the most at any output time.
+        counts = [(mech_t * args.end_time, read(h5, ["nodes"])[0].shape[0]) for mech_t, h5 in mech]
+        zone.append((t0, counts))
         long_edges = cracks["bottom"] + cracks["top"]
         spacings = []
         for e in ("bottom", "top"):
@@ -224,7 +250,8 @@ def main():
                  mean_length=float(lengths.mean()) if lengths.size else 0.0,
                  max_length=float(lengths.max()) if lengths.size else 0.0,
                  n_long=n_long, n_short=int(lengths.size - n_long),
-                 wall=wall, rss=rss, peak=peak)
+                 wall=wall, rss=rss, peak=peak, cpu=cpu,
+                 particles=max(c for _, c in counts))
         summary.append(s)
         for e in ("bottom", "top", "left", "right"):
             for p, l in cracks[e]:
@@ -241,9 +268,11 @@ def main():
             ax = axes[r][0]
             im = ax.imshow(on_grid(x, d[:, 0], dx).T, origin="lower", cmap="inferno_r", vmin=0,
                            vmax=0.6, extent=extent(x, dx), interpolation="nearest")
-            ax.set_title(f"T0 = {t0:.0f} C, t = {1e3 * tk:.1f} ms: damage", fontsize=9)
+            ax.set_title(f"{args.method}, T0 = {t0:.0f} C, t = {1e3 * tk:.1f} ms: damage"
+                         " (white: no particles)", fontsize=9)
             fig.colorbar(im, ax=ax, fraction=0.02)
             ax = axes[r][1]
+            fe_temperature(ax, res, tk, t0)
             if hk is not None:
                 xh, temp = read(heat[hk][1], ["nodes", "temperature"])
                 im = ax.imshow(on_grid(xh, temp[:, 0], dx).T, origin="lower", cmap="coolwarm",
@@ -256,7 +285,7 @@ def main():
             ax.set_ylabel("y [mm]", fontsize=8)
             ax.tick_params(labelsize=7)
         fig.tight_layout()
-        fig.savefig(os.path.join(args.out, f"fields_T{t0:.0f}.png"), dpi=130)
+        fig.savefig(os.path.join(args.out, f"{args.prefix}fields_T{t0:.0f}.png"), dpi=130)
         plt.close(fig)
 
     if not summary:
@@ -277,7 +306,8 @@ def main():
           f"centre (+{5e2 * dx:.3f}"
           " mm to the edge)")
     head = ("T0[C] t_end[ms] broken  interior  cracks(bottom,top|left,right)  per-long-edge "
-            "spacing[mm] mean/max_length[mm] long/short  wall[s] maxRSS[MiB] peak(summary)")
+            "spacing[mm] mean/max_length[mm] long/short  wall[s] CPU[s] maxRSS[MiB] peak(summary) "
+            "particles(max)")
     print(head)
     for s in summary:
         print(f"{s['T0']:5.0f} {1e3 * s['t_end']:8.1f} {s['broken']:7d} {s['interior']:8d}  "
@@ -285,7 +315,7 @@ def main():
               f"{s['count_right']:2d}              {s['count_long_mean']:6.1f}    "
               f"{1e3 * s['spacing']:8.2f}    {1e3 * s['mean_length']:6.2f}/"
               f"{1e3 * s['max_length']:5.2f}        {s['n_long']:3d}/{s['n_short']:3d}  "
-              f"{s['wall']:8.0f} {s['rss']:9.0f}  {s['peak']}")
+              f"{s['wall']:8.0f} {s['cpu']:6.0f} {s['rss']:9.0f}  {s['peak']}  {s['particles']}")
 
     # Count, spacing and lengths against T0.
     t0s = np.array([s["T0"] for s in summary])
@@ -304,7 +334,7 @@ def main():
     fig.suptitle("Alumina quench, all-PD (dx = %.2f mm): Jiang et al. 2012's counts not found, "
                  "see README.md" % (1e3 * dx), fontsize=9)
     fig.tight_layout()
-    fig.savefig(os.path.join(args.out, "cracks_vs_T0.png"), dpi=130)
+    fig.savefig(os.path.join(args.out, f"{args.prefix}cracks_vs_T0.png"), dpi=130)
     plt.close(fig)
 
     # Broken bonds against time: does the cracking stop before the run ends?
@@ -319,8 +349,23 @@ def main():
     ax.grid(alpha=0.3)
     ax.legend(fontsize=8)
     fig.tight_layout()
-    fig.savefig(os.path.join(args.out, "broken_bonds.png"), dpi=130)
+    fig.savefig(os.path.join(args.out, f"{args.prefix}broken_bonds.png"), dpi=130)
     plt.close(fig)
+
+    # The particles against time (the PD zone of an adaptive run grows; fixed otherwise).
+    if any(len(set(c for _, c in counts)) > 1 for _, counts in zone):
+        fig, ax = plt.subplots(figsize=(6, 3.6))
+        for t0, counts in zone:
+            ax.plot([1e3 * t for t, _ in counts], [c for _, c in counts], "o-",
+                    label=f"T0 = {t0:.0f} C")
+        ax.set_xlabel("t [ms]")
+        ax.set_ylabel("particles (PD zone and its halo)")
+        ax.set_title(f"{args.method}: the PD zone over time (all-PD: 8000)", fontsize=9)
+        ax.grid(alpha=0.3)
+        ax.legend(fontsize=8)
+        fig.tight_layout()
+        fig.savefig(os.path.join(args.out, f"{args.prefix}pd_zone.png"), dpi=130)
+        plt.close(fig)
     return 0
 
 

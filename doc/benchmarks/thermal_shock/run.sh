@@ -1,13 +1,18 @@
 #!/bin/bash
-# The alumina quench (README.md): all-PD runs for T0 = 300, 450, 600 degrees C (water 20 degrees C),
+# The alumina quench (README.md): runs for T0 = 300, 450, 600 degrees C (water 20 degrees C),
 # then cracks.py (count, spacing, lengths per run; the plots). Usage:
-#   run.sh [BUILD_DIR] [OUT_DIR] [T0 ...]
+#   [METHODS="pd coupled adaptive"] [END_TIME=0.15] [SEED=k] run.sh [BUILD_DIR] [OUT_DIR] [T0 ...]
 # BUILD_DIR defaults to ../../../build (the perideal-solid there), OUT_DIR to ./results (which
-# git ignores), T0 to "300 450 600". Each run writes
-# OUT_DIR/T<T0>/{quench_T<T0>.prm,run.log,time.log,results/}; a run whose results/statistics.csv
-# and run.log summary exist already is not repeated (delete its folder to run it again). Runs
-# one after the other on one core. SEED=k (environment) runs the lattice of <Perturbation seed>
-# k instead of 1, in OUT_DIR/T<T0>_seed<k> (the scatter of the counts over lattices).
+# git ignores), T0 to "300 450 600". METHODS (default "pd") names the inputs: pd = quench.prm
+# (all-PD), coupled = quench_coupled.prm (PD frame along the edges, FE core), adaptive =
+# quench_adaptive.prm (the PD region grows where the cracks run). Each run writes
+# OUT_DIR/T<T0>/ (pd) or OUT_DIR/<method>/T<T0>/ (the others) with
+# {quench_T<T0>.prm,run.log,time.log,results/}; a run whose results/statistics.csv and run.log
+# summary exist already is not repeated (delete its folder to run it again). Runs one after the
+# other on one core. SEED=k (environment) runs the lattice of <Perturbation seed> k instead of 1,
+# in T<T0>_seed<k>. END_TIME=t (environment) runs to t seconds in load steps of 10 ms instead of
+# the file's End time (quench.prm 0.4 s; quench_coupled.prm and quench_adaptive.prm 0.15 s):
+# END_TIME=0.15 gives the all-PD run of the side-by-side table.
 set -euo pipefail
 HERE="$(cd "$(dirname "$0")" && pwd)"
 BUILD="$(cd "${1:-$HERE/../../../build}" && pwd)"
@@ -15,19 +20,34 @@ OUT="${2:-$HERE/results}"
 shift $(( $# > 2 ? 2 : $# )) || true
 T0S="${*:-300 450 600}"
 SEED="${SEED:-1}"
+METHODS="${METHODS:-pd}"
+END_TIME="${END_TIME:-}"
 SUFFIX=""
 [ "$SEED" = 1 ] || SUFFIX="_seed$SEED"
 mkdir -p "$OUT"
-for T0 in $T0S; do
-  dir="$OUT/T$T0$SUFFIX"
-  mkdir -p "$dir"
-  if [ -f "$dir/results/statistics.csv" ] && grep -q "^Peak memory" "$dir/run.log" 2>/dev/null; then
-    echo "T0 = $T0: kept the run in $dir"
-    continue
-  fi
-  cat > "$dir/quench_T$T0.prm" <<PRM
-# The quench of quench.prm from T0 = $T0 degrees C (stress-free at T0), written by run.sh.
-include $HERE/quench.prm
+for METHOD in $METHODS; do
+  case "$METHOD" in
+    pd) input="$HERE/quench.prm"; base="$OUT"; end="${END_TIME:-0.4}"; label=all-PD; prefix="" ;;
+    coupled) input="$HERE/quench_coupled.prm"; base="$OUT/coupled"; end="${END_TIME:-0.15}"
+      label=coupled; prefix=coupled_ ;;
+    adaptive) input="$HERE/quench_adaptive.prm"; base="$OUT/adaptive"; end="${END_TIME:-0.15}"
+      label=adaptive; prefix=adaptive_ ;;
+    *) echo "run.sh: METHODS takes pd, coupled, adaptive; not '$METHOD'" >&2; exit 1 ;;
+  esac
+  steps=$(/usr/bin/python3 -c "print(max(1, round($end / 0.01)))")
+  dirs=""
+  for T0 in $T0S; do
+    dir="$base/T$T0$SUFFIX"
+    dirs="$dirs $dir"
+    mkdir -p "$dir"
+    if [ -f "$dir/results/statistics.csv" ] && grep -q "^Peak memory" "$dir/run.log" 2>/dev/null; then
+      echo "$METHOD, T0 = $T0: kept the run in $dir"
+      continue
+    fi
+    cat > "$dir/quench_T$T0.prm" <<PRM
+# The quench of $(basename "$input") from T0 = $T0 degrees C (stress-free at T0), to $end s in
+# load steps of 10 ms, written by run.sh.
+include $input
 subsection Discretization
   set Perturbation seed = $SEED
 end
@@ -39,9 +59,18 @@ subsection Heat
     set Displacement = $T0
   end
 end
+subsection Solver
+  set Load steps = $steps
+end
+subsection Time stepping
+  set End time = $end
+end
 PRM
-  echo "T0 = $T0: running in $dir"
-  (cd "$dir" &&
-    /usr/bin/time -v "$BUILD/bin/perideal-solid" "quench_T$T0.prm" > run.log 2> time.log)
+    echo "$METHOD, T0 = $T0: running in $dir"
+    (cd "$dir" &&
+      /usr/bin/time -v "$BUILD/bin/perideal-solid" "quench_T$T0.prm" > run.log 2> time.log) ||
+      echo "$METHOD, T0 = $T0: the run stopped (time.log has the message); measured as far as it went"
+  done
+  /usr/bin/python3 "$HERE/cracks.py" --end-time "$end" --method "$label" --prefix "$prefix" \
+    --out "$base" $dirs
 done
-/usr/bin/python3 "$HERE/cracks.py" --out "$OUT" $(for T0 in $T0S; do echo "$OUT/T$T0$SUFFIX"; done)

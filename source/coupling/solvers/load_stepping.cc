@@ -349,9 +349,39 @@ namespace perideal
         if (run.checkpoint(data))
           return;
         reached = factor;
+        if (state.has_adaptive_region() && !data.final_row &&
+            step % state.adaptation_interval() == 0)
+          convert_regions(state, step, factor);
         if (cutting && 2 * broken_in_step <= control.cut_threshold)
           increment = std::min(nominal, 2. * increment);
       }
+  }
+
+  template <int dim>
+  void
+  LoadStepping<dim>::convert_regions(CoupledState<dim> &state,
+                                     const unsigned int step,
+                                     const double       factor)
+  {
+    const auto  &settings = state.settings();
+    const double before   = state.strain_energy().fe + state.strain_energy().particles;
+    if (!state.adapt_regions(step, factor * settings.end_time))
+      return;
+    // What the set-up derived from the regions (the prescribed components, the system and its
+    // factors, the conditions), then the equilibrium of the grown region at the same load
+    // factor: the new particles hold the FE field, which is not their equilibrium, and their
+    // bonds may break at the load already reached.
+    setup(state);
+    conditions_at(state, settings.end_time);
+    const StepSolves solves = solve_load_step(state, factor, step);
+    equilibrium_state(state);
+    state.carry_work();
+    const double after  = state.strain_energy().fe + state.strain_energy().particles;
+    const auto   broken = n_broken_bonds(state.pd().particles()); // collective
+    if (state.is_root())
+      state.log() << "  solved again at load factor " << factor << ": " << solves.passes + 1
+                  << " solve(s), " << broken << " broken bonds; strain energy before " << before
+                  << " J, after " << after << " J" << std::endl;
   }
 
   template <int dim>

@@ -25,6 +25,10 @@ namespace perideal
    * steps>. The load factor is then the time column of the statistics (rows numbered by step),
    * and checkpoints are refused (the increment is not stored).
    *
+   * With <Coupling/Adaptive region> the region may grow after every <Check interval>-th load
+   * step that converged (convert_regions()): the step is then solved again at its load factor
+   * on the grown region.
+   *
    * With several physics (<Physics/List>) the others advance before each solve
    * (CoupledState::advance_other_physics), from the time of the last converged load factor to
    * that of the one solved (load factor x <Time stepping/End time>); a step that is undone
@@ -144,6 +148,15 @@ namespace perideal
      */
     StepSolves
     solve_load_step(CoupledState<dim> &state, const double factor, const unsigned int step);
+
+    /**
+     * @brief The adaptive PD region (CoupledState::adapt_regions(), Coupling/Adaptive region)
+     * after the converged load step @p step at load factor @p factor: if it grew, set up again
+     * what setup() derived from the regions and solve the same load factor again on the grown
+     * region (its new particles hold the FE field, not their equilibrium). Collective.
+     */
+    void
+    convert_regions(CoupledState<dim> &state, const unsigned int step, const double factor);
 
     /**
      * @brief Load step @p step (load factor @p factor) did not converge (@p failure): write its
