@@ -75,12 +75,12 @@ namespace perideal
     prm.declare_entry("Softening ratio",
                       "4",
                       Patterns::Double(1.),
-                      "n > 1 with <Failure law> = linear softening: the stretch at which a "
+                      "n [-] > 1 with <Failure law> = linear softening: the stretch at which a "
                       "bond's force has fallen to zero over its elastic limit.");
     prm.declare_entry("Softening teeth",
                       "8",
                       Patterns::Integer(1, 255),
-                      "N with <Failure law> = linear softening: the saw teeth by which the "
+                      "N [-] with <Failure law> = linear softening: the saw teeth by which the "
                       "sequentially linear control follows the softening of a bond (each one "
                       "event of the bond; each tooth's peak force is n^(1/(2N)) times the law's "
                       "at the start of its secant, its dissipated energy the law's exactly).");
