@@ -30,7 +30,8 @@ full_pd.prm or its variants) one row of
 --plot FILE draws peak/LEFM against delta, one line per m and failure law (<Material/critical
 stretch/Failure law>: brittle, or linear softening with its ratio n; and the brittle runs over r
 with --tip). The "whole run" columns assume a run to separation (not one that ends at a
-<Separation load fraction> above 0.05).
+<Separation load fraction> above 0.05); their ratio G_rel/G_bond, the energy released beyond
+the bonds', holds for any run.
 """
 import math
 import sys
@@ -106,11 +107,14 @@ def measure(directory):
     released = u[:-1] ** 2 * (1 / c[:-1] - 1 / c[1:])
     da_end = back - tip
     bond_energy_to_peak = dissipated[k + 1] if k + 1 < len(rows) else dissipated[-1]
-    h5 = sorted(__import__("glob").glob(f"{directory}/particles_*.h5"))[-1]
-    with h5py.File(h5) as f:
-        y = np.array(f["nodes"])[:, 1]
-        damage = np.array(f["damage"])[:, 0]
-    rows_damaged = len(set(np.round(y[damage > 1e-12] / dx, 3)))
+    # A run stopped from outside wrote no fields: no rows then (-1).
+    h5 = sorted(__import__("glob").glob(f"{directory}/particles_*.h5"))
+    rows_damaged = -1
+    if h5:
+        with h5py.File(h5[-1]) as f:
+            y = np.array(f["nodes"])[:, 1]
+            damage = np.array(f["damage"])[:, 0]
+        rows_damaged = len(set(np.round(y[damage > 1e-12] / dx, 3)))
     return {
         "name": run["name"], "m": delta / dx, "dx": dx,
         "first": load[0] / run["lefm"], "peak": load[k] / run["lefm"], "event": k + 1,
