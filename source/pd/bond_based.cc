@@ -452,13 +452,6 @@ namespace perideal
   }
 
   template <int dim>
-  const std::vector<std::uint8_t> &
-  BondBased<dim>::bond_teeth() const
-  {
-    return tooth;
-  }
-
-  template <int dim>
   void
   BondBased<dim>::limit_reached(ParticleSystem<dim>  &particles,
                                 const ParticleVector &u,

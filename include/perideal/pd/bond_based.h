@@ -104,13 +104,6 @@ namespace perideal
                   const std::size_t     b) override;
 
     /**
-     * @brief The saw tooth of every bond (bond-list order; 0 intact, up to teeth() - 1): empty
-     * without softening.
-     */
-    const std::vector<std::uint8_t> &
-    bond_teeth() const;
-
-    /**
      * @brief Gershgorin bound (see MaterialModel::stiffness_bound()); defined in
      * source/pd/bond_based_linearization.cc.
      */

@@ -15,7 +15,9 @@ namespace perideal
    */
   enum class BondFailure
   {
+    /// The bond breaks at s_G.
     brittle,
+    /// The bond softens linearly from s_G / sqrt(n) to s_G sqrt(n) (BondSoftening).
     linear_softening
   };
 
