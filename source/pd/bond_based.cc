@@ -122,6 +122,9 @@ namespace perideal
     /// keeps none per bond).
     BondBlocks<dim>                 blocks;
     typename BondBlocks<dim>::Array lane_coefficient;
+    /// With softening, the intact bonds' coefficients per lane (lane_coefficient is mu_t times
+    /// them); empty without.
+    typename BondBlocks<dim>::Array intact_coefficient;
     /// Kernel-order work fields: displacement, force, energy density, and the temperature
     /// change (sized on its first use).
     typename BondBlocks<dim>::Array u_field, f_field, w_field, t_field;
@@ -238,7 +241,16 @@ namespace perideal
                                                  set_bond_coefficients(particles, surface_factor);
                                                });
     bonds.surface_factor = std::vector<double>();
-    fracture_factor      = 1.;
+    tooth.clear();
+    kernel->intact_coefficient.clear();
+    softened_energy = 0.;
+    if (context.softening.law() == BondFailure::linear_softening)
+      {
+        tooth.assign(bonds.size(), 0);
+        kernel->intact_coefficient = kernel->lane_coefficient;
+      }
+    // The softening bond's work to break is the brittle bond's, so the calibration is the same.
+    fracture_factor = 1.;
     if (context.lattice_fracture)
       {
         // A bond at the critical stretch s0 holds k s0^2 |xi| / 2.
@@ -317,6 +329,11 @@ namespace perideal
                                  std::vector<double>  *energy_density,
                                  const double          critical_stretch)
   {
+    AssertThrow(tooth.empty() || !std::isfinite(critical_stretch),
+                ExcMessage("<Material/critical stretch/Failure law> = linear softening runs with "
+                           "<Solver/Control/Method> = sequentially linear only (its saw teeth "
+                           "are events of that control); for load steps or explicit dynamics "
+                           "use Failure law = brittle."));
     Kernel               &k       = *kernel;
     const ParticleVector *delta_T = this->temperature_change();
     const double         *t_field =
@@ -392,7 +409,8 @@ namespace perideal
   {
     BondList   &bonds    = particles.bonds();
     const auto &x        = particles.positions();
-    double      released = 0.;
+    double      released = softened_energy;
+    softened_energy      = 0.;
     for (const unsigned int b : bonds.newly_broken)
       {
         // The bond's particle: the row of the bond list that holds it.
@@ -407,6 +425,51 @@ namespace perideal
       }
     bonds.newly_broken.clear();
     return released;
+  }
+
+  template <int dim>
+  std::vector<double>
+  BondBased<dim>::breaking_factors(const ParticleSystem<dim> &particles) const
+  {
+    std::vector<double> factor(particles.bonds().size(), 1.);
+    for (std::size_t b = 0; b < tooth.size(); ++b)
+      factor[b] = 1. / context.softening.drop_over_brittle(tooth[b]);
+    return factor;
+  }
+
+  template <int dim>
+  bool
+  BondBased<dim>::bond_breaks_at_limit(const std::size_t b) const
+  {
+    return tooth.empty() || tooth[b] + 1u >= context.softening.teeth();
+  }
+
+  template <int dim>
+  void
+  BondBased<dim>::limit_reached(ParticleSystem<dim>  &particles,
+                                const ParticleVector &u,
+                                const std::size_t     b)
+  {
+    if (bond_breaks_at_limit(b))
+      {
+        MaterialModel<dim>::limit_reached(particles, u, b);
+        return;
+      }
+    BondList          &bonds = particles.bonds();
+    const auto        &x     = particles.positions();
+    const unsigned int i     = bonds.row_of(b);
+    const unsigned int j     = bonds.neighbor[b];
+    Tensor<1, dim>     r     = x[j] - x[i];
+    for (unsigned int d = 0; d < dim; ++d)
+      r[d] += u.local_element(j * dim + d) - u.local_element(i * dim + d);
+    const double s    = r.norm() / bonds.length[b] - 1. - thermal_stretch(particles, b);
+    const auto   lane = kernel->blocks.lane_of(bonds, i, b);
+    const double k    = kernel->intact_coefficient[lane];
+    const double mu   = context.softening.secant_factor(tooth[b]);
+    const double next = context.softening.secant_factor(tooth[b] + 1u);
+    softened_energy += particles.bond_share(b) * 0.5 * (mu - next) * k * s * s * bonds.length[b];
+    ++tooth[b];
+    kernel->lane_coefficient[lane] = next * k;
   }
 
   template <int dim>
@@ -445,6 +508,7 @@ namespace perideal
     capabilities.lattice_fracture      = true;
     capabilities.thermal_strain        = true;
     capabilities.thermoelastic_heating = true;
+    capabilities.bond_softening        = true;
     return capabilities;
   }
 
@@ -460,6 +524,8 @@ namespace perideal
     if (context.lattice_fracture)
       out << "; lattice calibration of the fracture energy: critical stretch " << fracture_factor
           << " times the continuum's";
+    if (!tooth.empty())
+      out << "; bonds: " << context.softening.summary();
     if (!expansion.is_zero())
       out << "; thermal expansion " << expansion.summary()
           << (context.planar == PlanarAssumption::plane_strain ?

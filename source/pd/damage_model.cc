@@ -20,6 +20,13 @@ namespace perideal
   }
 
   template <int dim>
+  BondSoftening
+  DamageModel<dim>::softening() const
+  {
+    return {};
+  }
+
+  template <int dim>
   double
   NoDamage<dim>::critical_stretch(const MaterialModel<dim> &) const
   {
@@ -55,6 +62,28 @@ namespace perideal
       "based, mode I for linear peridynamic solid). For bond based, antiplane bond based, "
       "antiplane state based, linear peridynamic solid and timoshenko bond based; not with a "
       "Critical stretch given.");
+    prm.declare_entry(
+      "Failure law",
+      "brittle",
+      Patterns::Selection("brittle|linear softening"),
+      "How a bond fails: brittle (it breaks at the critical stretch s_G) or linear softening "
+      "(elastic up to s_G / sqrt(n), then its force falls linearly to zero at s_G sqrt(n), n "
+      "the Softening ratio: the brittle bond's work to break, so the same fracture energy; "
+      "secant unloading; doc/theory/models.md, 'Softening PMB bonds'). Linear softening: for "
+      "bond based, with <Solver/Control/Method> = sequentially linear, which follows the law "
+      "in Softening teeth saw teeth of equal dissipated energy.");
+    prm.declare_entry("Softening ratio",
+                      "4",
+                      Patterns::Double(1.),
+                      "n [-] > 1 with <Failure law> = linear softening: the stretch at which a "
+                      "bond's force has fallen to zero over its elastic limit.");
+    prm.declare_entry("Softening teeth",
+                      "8",
+                      Patterns::Integer(1, 255),
+                      "N [-] with <Failure law> = linear softening: the saw teeth by which the "
+                      "sequentially linear control follows the softening of a bond (each one "
+                      "event of the bond; each tooth's peak force is n^(1/(2N)) times the law's "
+                      "at the start of its secant, its dissipated energy the law's exactly).");
   }
 
   template <int dim>
@@ -64,6 +93,9 @@ namespace perideal
     fracture_energy = prm.get_double("Fracture energy");
     given_stretch   = prm.get_double("Critical stretch");
     on_lattice      = prm.get("Fracture energy calibration") == "lattice";
+    law             = prm.get("Failure law") == "linear softening" ?
+                        BondSoftening(prm.get_double("Softening ratio"), prm.get_integer("Softening teeth")) :
+                        BondSoftening();
     AssertThrow(fracture_energy > 0. || given_stretch > 0.,
                 ExcMessage("The damage model 'critical stretch' needs <Material/critical "
                            "stretch/Fracture energy> > 0 [J/m^2] or <Material/critical "
@@ -89,6 +121,13 @@ namespace perideal
   CriticalStretch<dim>::calibrated_on_lattice() const
   {
     return on_lattice;
+  }
+
+  template <int dim>
+  BondSoftening
+  CriticalStretch<dim>::softening() const
+  {
+    return law;
   }
 
   template <int dim>

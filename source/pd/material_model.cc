@@ -238,6 +238,22 @@ namespace perideal
   }
 
   template <int dim>
+  bool
+  MaterialModel<dim>::bond_breaks_at_limit(const std::size_t) const
+  {
+    return true;
+  }
+
+  template <int dim>
+  void
+  MaterialModel<dim>::limit_reached(ParticleSystem<dim> &particles,
+                                    const ParticleVector &,
+                                    const std::size_t b)
+  {
+    particles.bonds().break_bond(static_cast<unsigned int>(b), true);
+  }
+
+  template <int dim>
   std::vector<std::string>
   MaterialModel<dim>::integral_names() const
   {

@@ -322,6 +322,13 @@ namespace perideal
                                  "<Material/Model> = " +
                                  material_models_with<dim>(&ModelCapabilities::lattice_fracture) +
                                  ", not '" + model_name + "'; accepted for it: continuum."));
+          AssertThrow(damage->softening().law() == BondFailure::brittle ||
+                        model->capabilities().bond_softening,
+                      ExcMessage("<Material/" + damage_name +
+                                 "/Failure law> = linear softening is available for "
+                                 "<Material/Model> = " +
+                                 material_models_with<dim>(&ModelCapabilities::bond_softening) +
+                                 ", not '" + model_name + "'; accepted for it: brittle."));
         }
       prm.leave_subsection();
       conditions.parse_parameters(prm, regions, model->field_layout());
@@ -374,6 +381,7 @@ namespace perideal
     context.surface_correction = surface_correction;
     context.stiffness_fit      = stiffness_fit;
     context.lattice_fracture   = damage->calibrated_on_lattice();
+    context.softening          = damage->softening();
     model->initialize(ps, context);
     s_critical = damage->critical_stretch(*model);
 

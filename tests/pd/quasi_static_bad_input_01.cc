@@ -6,7 +6,9 @@
 // checked before any solve: sequentially linear without a load point, with a load point that
 // names no displacement condition or a load component the field does not have, with adaptive
 // dynamic relaxation, or without bonds that break; a separation load fraction, a step-cut
-// threshold or a number of step cuts outside its range.
+// threshold or a number of step cuts outside its range. Linear softening of the bonds
+// (<Material/critical stretch/Failure law>) with load steps (its saw teeth need the sequentially
+// linear control), for a model without it, and with a softening ratio of 1.
 #include <deal.II/base/parameter_handler.h>
 
 #include <perideal/coupling/coupled_problem.h>
@@ -129,4 +131,15 @@ main(int argc, char **argv)
   check("velocity condition in a quasi-static run",
         "subsection Boundary conditions\n subsection pull\n set Type = velocity\n end\nend\n"
         "subsection Solver\n set Type = static\nend\n");
+  const std::string softening =
+    "subsection Material\n set Damage model = critical stretch\n subsection critical stretch\n"
+    " set Fracture energy = 1000\n set Failure law = linear softening\n";
+  check("linear softening with load steps",
+        softening + " end\nend\nsubsection Solver\n set Type = static\n set Linear solver = "
+                    "direct\nend\n");
+  check("linear softening of a model without it",
+        softening + " end\n set Model = linear peridynamic solid\n subsection linear "
+                    "peridynamic solid\n set Young's modulus = 200e9\n set Poisson's ratio = "
+                    "0.3\n end\nend\n");
+  check("softening ratio 1", softening + " set Softening ratio = 1\n end\nend\n");
 }

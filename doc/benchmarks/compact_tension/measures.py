@@ -27,7 +27,11 @@ full_pd.prm or its variants) one row of
   to the same load-line end (1: no bond off the crack plane);
 - rows: the particle rows with damage > 0 after the last event, against the 2 ceil(m - 1/2)
   rows (m = delta/dx) that a straight cleave touches.
---plot FILE draws peak/LEFM against delta, one line per m (and over r with --tip).
+--plot FILE draws peak/LEFM against delta, one line per m and failure law (<Material/critical
+stretch/Failure law>: brittle, or linear softening with its ratio n; and the brittle runs over r
+with --tip). The "whole run" columns assume a run to separation (not one that ends at a
+<Separation load fraction> above 0.05); their ratio G_rel/G_bond, the energy released beyond
+the bonds', holds for any run.
 """
 import math
 import sys
@@ -94,16 +98,23 @@ def measure(directory):
     measure_ = np.array([float(r["crack_length"]) for r in rows])
     k = int(np.argmax(load))
     grown = broken - broken[0]
+    law = "brittle"
+    if "Failure law" in prm and entry(prm, "Failure law") == "linear softening":
+        ratio = entry(prm, "Softening ratio") if "Softening ratio" in prm else "4"
+        law = f"softening n = {float(ratio):g}"
     # Energy released at fixed pins by event j's breaks: both pins, U = P u.
     c = u / load
     released = u[:-1] ** 2 * (1 / c[:-1] - 1 / c[1:])
     da_end = back - tip
     bond_energy_to_peak = dissipated[k + 1] if k + 1 < len(rows) else dissipated[-1]
-    h5 = sorted(__import__("glob").glob(f"{directory}/particles_*.h5"))[-1]
-    with h5py.File(h5) as f:
-        y = np.array(f["nodes"])[:, 1]
-        damage = np.array(f["damage"])[:, 0]
-    rows_damaged = len(set(np.round(y[damage > 1e-12] / dx, 3)))
+    # A run stopped from outside wrote no fields: no rows then (-1).
+    h5 = sorted(__import__("glob").glob(f"{directory}/particles_*.h5"))
+    rows_damaged = -1
+    if h5:
+        with h5py.File(h5[-1]) as f:
+            y = np.array(f["nodes"])[:, 1]
+            damage = np.array(f["damage"])[:, 0]
+        rows_damaged = len(set(np.round(y[damage > 1e-12] / dx, 3)))
     return {
         "name": run["name"], "m": delta / dx, "dx": dx,
         "first": load[0] / run["lefm"], "peak": load[k] / run["lefm"], "event": k + 1,
@@ -118,7 +129,7 @@ def measure(directory):
         "G_bond": dissipated[-1] / (B * da_end) / G_c,
         "G_rel": released.sum() / (B * da_end) / G_c,
         "bonds_cleave": grown[-1] / ligament, "rows": rows_damaged,
-        "rows_cleave": 2 * math.ceil(delta / dx - 0.5), "events": len(rows),
+        "rows_cleave": 2 * math.ceil(delta / dx - 0.5), "events": len(rows), "law": law,
     }
 
 
@@ -151,11 +162,13 @@ def main():
         matplotlib.use("Agg")
         import matplotlib.pyplot as plt
         fig, ax = plt.subplots(figsize=(6, 4.5))
-        for m in sorted({round(r["m"], 3) for r in runs}):
-            group = sorted((r for r in runs if round(r["m"], 3) == m), key=lambda r: r["delta"])
+        for m, law in sorted({(round(r["m"], 3), r["law"]) for r in runs}):
+            group = sorted((r for r in runs if round(r["m"], 3) == m and r["law"] == law),
+                           key=lambda r: r["delta"])
             d = [r["delta"] * 1e3 for r in group]
-            line, = ax.plot(d, [r["peak"] for r in group], "o-", label=f"m = {m}")
-            if m in tip:
+            line, = ax.plot(d, [r["peak"] for r in group], "o-" if law == "brittle" else "^:",
+                            label=f"m = {m}, {law}")
+            if m in tip and law == "brittle":
                 ax.plot(d, [r["peak"] / tip[m] for r in group], "s--", color=line.get_color(),
                         label=f"m = {m}, s0 / r (r = {tip[m]:.3f})")
         ax.axhline(1, color="k", lw=0.8)

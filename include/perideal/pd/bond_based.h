@@ -29,6 +29,11 @@ namespace perideal
    * measure of a bond (force, energy, breaking, released energy, the offsets of linearize())
    * takes the mechanical stretch s - alpha_p (Delta T_i + Delta T_j) / 2, alpha_p the in-plane
    * expansion (plane strain (1 + nu) alpha; seed 002, eq. 4.93; doc/theory/thermal_strain.md).
+   * With ModelContext::softening linear (<Material/critical stretch/Failure law> = linear
+   * softening), the bonds soften in saw-tooth form under the sequentially linear control
+   * (BondSoftening): a bond of tooth t has the pair coefficient mu_t k and reaches its limit at
+   * the stretch s_G drop_over_brittle(t) (breaking_factors()); doc/theory/models.md,
+   * "Softening PMB bonds".
    */
   template <int dim>
   class BondBased : public MaterialModel<dim>
@@ -72,6 +77,31 @@ namespace perideal
      */
     double
     released_energy(ParticleSystem<dim> &particles, const ParticleVector &u) override;
+
+    /**
+     * @brief With softening: s_G / (s_G drop_over_brittle(t_b)) = 1 / drop_over_brittle(t_b)
+     * of each bond's tooth t_b, so that the sequentially linear control finds the bond at its
+     * limit where its stretch reaches its tooth's drop; 1 for every bond without.
+     */
+    std::vector<double>
+    breaking_factors(const ParticleSystem<dim> &particles) const override;
+
+    /**
+     * @brief Without softening true; with it, whether bond @p b is at its last tooth.
+     */
+    bool
+    bond_breaks_at_limit(const std::size_t b) const override;
+
+    /**
+     * @brief Without softening, or at the last tooth, break bond @p b; otherwise lower its pair
+     * coefficient from mu_t k to mu_{t+1} k and add the energy the drop releases at @p u,
+     * 1/2 (mu_t - mu_{t+1}) k s^2 |xi| times the bond's share on this rank (s the mechanical
+     * stretch), to the next released_energy().
+     */
+    void
+    limit_reached(ParticleSystem<dim>  &particles,
+                  const ParticleVector &u,
+                  const std::size_t     b) override;
 
     /**
      * @brief Gershgorin bound (see MaterialModel::stiffness_bound()); defined in
@@ -176,6 +206,10 @@ namespace perideal
     /// The factor of the lattice calibration on the continuum's critical stretch (1 without it,
     /// ModelContext::lattice_fracture).
     double fracture_factor = 1.;
+    /// The tooth of each bond with softening (ModelContext::softening), empty without.
+    std::vector<std::uint8_t> tooth;
+    /// The energy of the teeth dropped since the last released_energy() on this rank.
+    double softened_energy = 0.;
     /// What the stiffness fit achieved (<Discretization/Surface correction method>).
     StiffnessFitReport fit_report;
     /// The force kernel's data (bonds in SIMD blocks, kernel-order fields): defined in

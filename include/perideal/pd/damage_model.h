@@ -41,6 +41,13 @@ namespace perideal
      */
     virtual bool
     calibrated_on_lattice() const;
+
+    /**
+     * @brief How the bonds fail beyond their elastic limit (ModelContext::softening): brittle
+     * by default.
+     */
+    virtual BondSoftening
+    softening() const;
   };
 
   /**
@@ -65,6 +72,9 @@ namespace perideal
    * @brief A bond breaks for good once its stretch exceeds s0 (Silling & Askari 2005), with s0
    * given directly or from the fracture energy through the material model's calibration: the
    * continuum's formula, or the actual lattice's (<Fracture energy calibration> = lattice).
+   * With <Failure law> = linear softening the bond softens instead, from s0 / sqrt(n) to
+   * s0 sqrt(n) with the brittle bond's work to break (BondSoftening; for a model whose
+   * capabilities() say bond_softening, under the sequentially linear control).
    */
   template <int dim>
   class CriticalStretch : public DamageModel<dim>
@@ -79,11 +89,14 @@ namespace perideal
     critical_stretch(const MaterialModel<dim> &material) const override;
     bool
     calibrated_on_lattice() const override;
+    BondSoftening
+    softening() const override;
 
   private:
-    double fracture_energy = 0.;
-    double given_stretch   = 0.;
-    bool   on_lattice      = false;
+    double        fracture_energy = 0.;
+    double        given_stretch   = 0.;
+    bool          on_lattice      = false;
+    BondSoftening law;
   };
 
   /**

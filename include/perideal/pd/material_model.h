@@ -13,6 +13,7 @@
 #include <perideal/base/plugin_registry.h>
 #include <perideal/base/region.h>
 #include <perideal/base/torsion.h>
+#include <perideal/pd/bond_softening.h>
 #include <perideal/pd/particle_system.h>
 #include <perideal/pd/stiffness_fit.h>
 
@@ -45,6 +46,9 @@ namespace perideal
     /// capabilities() say lattice_fracture (<Material/critical stretch/Fracture energy
     /// calibration>).
     bool lattice_fracture = false;
+    /// How the bonds fail beyond their elastic limit (<Material/critical stretch/Failure law>):
+    /// brittle, or linear softening for a model whose capabilities() say bond_softening.
+    BondSoftening softening;
   };
 
   /**
@@ -71,6 +75,10 @@ namespace perideal
     /// (thermoelastic_measure()), whose rate heats a two-way coupled temperature
     /// (<Temperature/Coupling> = two way; doc/theory/thermoelasticity.md).
     bool thermoelastic_heating = false;
+    /// Its bonds soften linearly in saw-tooth form under the sequentially linear control when
+    /// ModelContext::softening says so (<Material/critical stretch/Failure law> = linear
+    /// softening; breaking_factors(), bond_breaks_at_limit(), limit_reached()).
+    bool bond_softening = false;
   };
 
   /**
@@ -500,6 +508,24 @@ namespace perideal
      */
     virtual std::vector<double>
     breaking_factors(const ParticleSystem<dim> &particles) const;
+
+    /**
+     * @brief The sequentially linear control: whether bond @p b (bond-list index) breaks when it
+     * next reaches its limit (breaking_factors()), rather than softening: true by default.
+     */
+    virtual bool
+    bond_breaks_at_limit(const std::size_t b) const;
+
+    /**
+     * @brief The sequentially linear control: bond @p b of @p particles reached its limit
+     * (breaking_factors()) at the displacement @p u (ghost values current). By default it breaks
+     * (BondList::break_bond(), listed for released_energy()); a softening model lowers its
+     * secant stiffness by one tooth and counts the energy the drop releases in the next
+     * released_energy(), breaking it at its last tooth. Called on every rank that stores the
+     * bond (the limits are the same there).
+     */
+    virtual void
+    limit_reached(ParticleSystem<dim> &particles, const ParticleVector &u, const std::size_t b);
 
     /**
      * @brief What the model can do beyond its forces (ModelCapabilities): nothing by default.

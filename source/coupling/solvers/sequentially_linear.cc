@@ -92,14 +92,16 @@ namespace perideal
   unsigned long
   SequentiallyLinear<dim>::loose_particles(const CoupledState<dim> &state, const double limit)
   {
-    using Motion             = typename CoupledState<dim>::Motion;
-    const auto        &ps    = state.pd().particles();
-    const auto        &bonds = ps.bonds();
-    const unsigned int n     = ps.n_owned();
+    using Motion                = typename CoupledState<dim>::Motion;
+    const auto        &ps       = state.pd().particles();
+    const auto        &bonds    = ps.bonds();
+    const auto        &material = state.pd().material();
+    const unsigned int n        = ps.n_owned();
     std::fill(intact_bonds.begin(), intact_bonds.end(), 0u);
+    // A bond at its limit that softens (rather than breaks) stays.
     for (unsigned int i = 0; i < n; ++i)
       for (unsigned int b = bonds.row_start[i]; b < bonds.row_start[i + 1]; ++b)
-        if (bonds.intact[b] != 0 && !(bond_factor[b] <= limit))
+        if (bonds.intact[b] != 0 && !(bond_factor[b] <= limit && material.bond_breaks_at_limit(b)))
           {
             ++intact_bonds[i];
             if (bonds.neighbor[b] < n)
@@ -116,10 +118,12 @@ namespace perideal
   void
   SequentiallyLinear<dim>::break_bonds(CoupledState<dim> &state, const double limit) const
   {
-    auto &bonds = state.pd().particles().bonds();
+    auto &particles = state.pd().particles();
+    auto &material  = state.pd().material();
+    auto &bonds     = particles.bonds();
     for (std::size_t b = 0; b < bonds.size(); ++b)
       if (bonds.intact[b] == 1 && bond_factor[b] <= limit)
-        bonds.break_bond(static_cast<unsigned int>(b), true);
+        material.limit_reached(particles, state.u, b);
   }
 
   template <int dim>
@@ -233,7 +237,8 @@ namespace perideal
             return;
           }
 
-        // The critical bonds break at this state (their energy is dissipated).
+        // The critical bonds break, or soften by a tooth, at this state (their energy is
+        // dissipated).
         break_bonds(state, limit);
         state.accumulate_dissipated_energy();
       }

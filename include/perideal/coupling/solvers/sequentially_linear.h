@@ -23,7 +23,9 @@ namespace perideal
    * lambda_b = s0 / s_b (s_b > 0) reaches the critical stretch s0 first. The state is scaled to
    * lambda* = min lambda_b (the statistics row of the event: load factor, load, load-point
    * displacement, broken bonds, crack length), then the bonds with lambda_b <= lambda* (1 +
-   * <Event tolerance>) break (their energy is dissipated) and the next event is solved. No
+   * <Event tolerance>) break (their energy is dissipated; softening bonds, <Material/critical
+   * stretch/Failure law> = linear softening, drop by a saw tooth instead, breaking at the last:
+   * MaterialModel::limit_reached()) and the next event is solved. No
    * iteration, no load increment to choose: lambda* falls when the crack grows unstably
    * (snap-back), which a load- or displacement-controlled step cannot follow (Rots et al. 2008,
    * Eng. Fract. Mech. 75:4; doc/theory/fracture_control.md).
@@ -74,7 +76,8 @@ namespace perideal
     unsigned long
     loose_particles(const CoupledState<dim> &state, const double limit);
 
-    /// Break the bonds with lambda_b <= @p limit (listed for their released energy).
+    /// The bonds with lambda_b <= @p limit reach their limit (MaterialModel::limit_reached():
+    /// they break, listed for their released energy, or soften by a tooth).
     void
     break_bonds(CoupledState<dim> &state, const double limit) const;
 
