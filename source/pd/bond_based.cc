@@ -405,23 +405,33 @@ namespace perideal
 
   template <int dim>
   double
+  BondBased<dim>::mechanical_stretch(const ParticleSystem<dim> &particles,
+                                     const ParticleVector      &u,
+                                     const std::size_t          b) const
+  {
+    const BondList    &bonds = particles.bonds();
+    const auto        &x     = particles.positions();
+    const unsigned int i     = bonds.row_of(b);
+    const unsigned int j     = bonds.neighbor[b];
+    Tensor<1, dim>     r     = x[j] - x[i];
+    for (unsigned int d = 0; d < dim; ++d)
+      r[d] += u.local_element(j * dim + d) - u.local_element(i * dim + d);
+    return r.norm() / bonds.length[b] - 1. - thermal_stretch(particles, b);
+  }
+
+  template <int dim>
+  double
   BondBased<dim>::released_energy(ParticleSystem<dim> &particles, const ParticleVector &u)
   {
-    BondList   &bonds    = particles.bonds();
-    const auto &x        = particles.positions();
-    double      released = softened_energy;
-    softened_energy      = 0.;
+    BondList &bonds    = particles.bonds();
+    double    released = softened_energy;
+    softened_energy    = 0.;
     for (const unsigned int b : bonds.newly_broken)
       {
-        // The bond's particle: the row of the bond list that holds it.
-        const unsigned int i = bonds.row_of(b);
-        const unsigned int j = bonds.neighbor[b];
-        Tensor<1, dim>     r = x[j] - x[i];
-        for (unsigned int d = 0; d < dim; ++d)
-          r[d] += u.local_element(j * dim + d) - u.local_element(i * dim + d);
-        const double s = r.norm() / bonds.length[b] - 1. - thermal_stretch(particles, b);
-        released += particles.bond_share(b) * 0.5 * pair_coefficient(particles, i, b) * s * s *
-                    bonds.length[b];
+        // The pair coefficient of the bond's particle: the row of the bond list that holds it.
+        const double s = mechanical_stretch(particles, u, b);
+        released += particles.bond_share(b) * 0.5 *
+                    pair_coefficient(particles, bonds.row_of(b), b) * s * s * bonds.length[b];
       }
     bonds.newly_broken.clear();
     return released;
@@ -455,18 +465,12 @@ namespace perideal
         MaterialModel<dim>::limit_reached(particles, u, b);
         return;
       }
-    BondList          &bonds = particles.bonds();
-    const auto        &x     = particles.positions();
-    const unsigned int i     = bonds.row_of(b);
-    const unsigned int j     = bonds.neighbor[b];
-    Tensor<1, dim>     r     = x[j] - x[i];
-    for (unsigned int d = 0; d < dim; ++d)
-      r[d] += u.local_element(j * dim + d) - u.local_element(i * dim + d);
-    const double s    = r.norm() / bonds.length[b] - 1. - thermal_stretch(particles, b);
-    const auto   lane = kernel->blocks.lane_of(bonds, i, b);
-    const double k    = kernel->intact_coefficient[lane];
-    const double mu   = context.softening.secant_factor(tooth[b]);
-    const double next = context.softening.secant_factor(tooth[b] + 1u);
+    BondList    &bonds = particles.bonds();
+    const double s     = mechanical_stretch(particles, u, b);
+    const auto   lane  = kernel->blocks.lane_of(bonds, bonds.row_of(b), b);
+    const double k     = kernel->intact_coefficient[lane];
+    const double mu    = context.softening.secant_factor(tooth[b]);
+    const double next  = context.softening.secant_factor(tooth[b] + 1u);
     softened_energy += particles.bond_share(b) * 0.5 * (mu - next) * k * s * s * bonds.length[b];
     ++tooth[b];
     kernel->lane_coefficient[lane] = next * k;

@@ -242,6 +242,15 @@ namespace perideal
      */
     double
     thermal_stretch(const ParticleSystem<dim> &particles, const std::size_t b) const;
+
+    /**
+     * @brief The mechanical stretch |xi + eta| / |xi| - 1 - thermal_stretch() of bond @p b of
+     * @p particles' bond list at the displacement @p u (local values).
+     */
+    double
+    mechanical_stretch(const ParticleSystem<dim> &particles,
+                       const ParticleVector      &u,
+                       const std::size_t          b) const;
   };
 } // namespace perideal
 
