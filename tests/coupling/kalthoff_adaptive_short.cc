@@ -10,7 +10,7 @@
 // tips); its angle is that of the least-squares line through the notch tip (the principal
 // direction of the particles' offsets from the tip), measured from the impact direction x
 // towards the free edge, its reach the largest distance of a crack particle from the tip.
-// Expected: both angles in the experiment's 63-72 deg (68.1 / 68.3 deg measured; 69.2 / 68.5 deg
+// Expected: both angles in the experiment's 63-72 deg (68.1 / 68.3 deg measured; 68.5 / 68.8 deg
 // by the benchmark's postprocess.py, whose path fit differs), reaches above 60 mm (the cracks run
 // most of the 75 mm to the edge: the PD region followed them; 77.0 / 77.5 mm measured), fewer
 // than a third of the plate's particles (0.24 measured, 16 conversions), conversion energy within
