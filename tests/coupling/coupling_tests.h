@@ -15,6 +15,7 @@
 #include <filesystem>
 #include <fstream>
 #include <functional>
+#include <iomanip>
 #include <iostream>
 #include <limits>
 #include <map>
@@ -350,6 +351,26 @@ end
     for (auto at = log.find(text); at != std::string::npos; at = log.find(text, at + 1))
       ++n;
     return n;
+  }
+
+  /**
+   * The conversions of an adaptive run (its @p log and results/statistics.csv) printed as one
+   * line, with 3 digits: the conversions, the @p n_particles at the end against the
+   * @p plate_points of the whole plate's lattice, and the energy change of the conversions
+   * against the external work. Returns that change over the work.
+   */
+  inline double
+  print_conversions(const std::string &log,
+                    const unsigned int n_particles,
+                    const double       plate_points)
+  {
+    const auto   stats  = perideal_tests::read_statistics("results/statistics.csv");
+    const double change = stats.at("conversion_energy").back() / stats.at("external_work").back();
+    std::cout << std::setprecision(3) << count_lines(log, "the PD region grew")
+              << " conversions; particles at the end " << n_particles << ", "
+              << n_particles / plate_points << " of the plate's lattice; energy change of the "
+              << "conversions " << change << " of the external work" << std::endl;
+    return change;
   }
 
   /// "ok" if @p condition holds, "FAILED" otherwise.
