@@ -253,7 +253,11 @@ namespace perideal
              &state.fe_support,
              &state.previous_fe_load,
              &state.previous_U},
-            {&state.local_work, &state.local_dissipated, &state.local_heat_in},
+            {&state.local_work,
+             &state.local_dissipated,
+             &state.local_heat_in,
+             &state.local_temperature_work,
+             &state.local_temperature_scale},
             {&state.stored_heat_at_start}};
   }
 
@@ -315,13 +319,96 @@ namespace perideal
   void
   CoupledState<dim>::start_work()
   {
-    local_work       = 0.;
-    local_dissipated = 0.;
-    local_heat_in    = 0.;
+    local_work              = 0.;
+    local_dissipated        = 0.;
+    local_heat_in           = 0.;
+    local_temperature_work  = 0.;
+    local_temperature_scale = 0.;
     if (layout().has_temperature())
       stored_heat_at_start = stored_heat();
     pd().particles().bonds().newly_broken.clear();
     carry_work();
+    hold_temperature();
+  }
+
+  template <int dim>
+  void
+  CoupledState<dim>::hold_temperature()
+  {
+    if (!has_temperature())
+      return;
+    if (const ParticleVector *change = pd().material().temperature_change(); change != nullptr)
+      {
+        if (held_temperature_change.get_partitioner() != change->get_partitioner())
+          held_temperature_change.reinit(*change);
+        held_temperature_change = *change;
+      }
+    if (fe_thermal)
+      {
+        held_thermal_load   = thermal_load;
+        held_thermal_energy = thermal_energy;
+      }
+  }
+
+  template <int dim>
+  void
+  CoupledState<dim>::accumulate_temperature_work()
+  {
+    if (!has_temperature())
+      return;
+    // A conversion of the adaptive region since the hold laid the fields out anew: the
+    // equilibrium after it is at the temperature of the step before.
+    const ParticleVector *change = pd().material().temperature_change();
+    const bool            held =
+      (change == nullptr ||
+       held_temperature_change.get_partitioner() == change->get_partitioner()) &&
+      (!fe_thermal || held_thermal_load.get_partitioner() == thermal_load.get_partitioner());
+    if (held)
+      {
+        // E(u, T_1) - E(u, T_0) at the step's start (u_0, U_0) and end (u_1, U_1), averaged.
+        // The FE part, 1/2 U.K.U - U.f_th(T) + e_th(T), changes by -U.(f_th(T_1) - f_th(T_0)) +
+        // e_th(T_1) - e_th(T_0).
+        std::array<double, 2> change_at{{0., 0.}};
+        if (fe_thermal)
+          {
+            FEVector load_change(thermal_load);
+            load_change -= held_thermal_load;
+            change_at[0] = thermal_energy - held_thermal_energy - previous_U * load_change;
+            change_at[1] = thermal_energy - held_thermal_energy - U * load_change;
+          }
+        // The particles' part in the coupling method's model of equilibrium, the model reading
+        // the held temperature change for the second pair.
+        if (change != nullptr)
+          {
+            previous_u.update_ghost_values();
+            const auto now = method().equilibrium_particle_energies(previous_u, u);
+            pd().material().set_temperature_change(&held_temperature_change);
+            const auto before = method().equilibrium_particle_energies(previous_u, u);
+            pd().material().set_temperature_change(change);
+            for (const unsigned int k : {0u, 1u})
+              change_at[k] += now[k] - before[k];
+          }
+        if (is_root())
+          {
+            local_temperature_work += 0.5 * (change_at[0] + change_at[1]);
+            local_temperature_scale += 0.5 * (std::abs(change_at[0]) + std::abs(change_at[1]));
+          }
+      }
+    hold_temperature();
+  }
+
+  template <int dim>
+  double
+  CoupledState<dim>::temperature_work() const
+  {
+    return Utilities::MPI::sum(local_temperature_work, comm());
+  }
+
+  template <int dim>
+  double
+  CoupledState<dim>::temperature_energy_scale() const
+  {
+    return Utilities::MPI::sum(local_temperature_scale, comm());
   }
 
   template <int dim>

@@ -283,6 +283,35 @@ namespace perideal
   }
 
   template <int dim>
+  std::array<double, 2>
+  CoupledStaticSolver<dim>::particle_energies(const MaterialModel<dim> &material,
+                                              const ParticleVector     &u_0,
+                                              const ParticleVector     &u_1) const
+  {
+    LinearizedModel linearized;
+    material.linearize(*particles, linearized);
+    SparseMatrix extension_rows;
+    SolverVector row_weights, row_offsets;
+    StaticSolver<dim>::extension_matrix(*particles,
+                                        linearized,
+                                        extension_rows,
+                                        row_weights,
+                                        row_offsets);
+    std::array<double, 2> energies;
+    SolverVector          up, extension(row_weights), stress(row_weights);
+    for (const unsigned int k : {0u, 1u})
+      {
+        gather_particles(k == 0 ? u_0 : u_1, up);
+        extension_rows.vmult(extension, up);
+        extension -= row_offsets;
+        stress = extension;
+        stress.scale(row_weights);
+        energies[k] = 0.5 * (stress * extension);
+      }
+    return energies;
+  }
+
+  template <int dim>
   void
   CoupledStaticSolver<dim>::fe_forces(const FEVector       &U,
                                       const FEVector       &f_fe,

@@ -66,6 +66,8 @@ namespace perideal
                       const ParticleVector &f_pd,
                       FEVector             &U,
                       ParticleVector       &u) override;
+    std::array<double, 2>
+    equilibrium_particle_energies(const ParticleVector &u_0, const ParticleVector &u_1) override;
     double
     equilibrium_forces(const FEVector       &U,
                        const ParticleVector &u,

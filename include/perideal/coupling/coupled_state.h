@@ -240,8 +240,9 @@ namespace perideal
       ///@}
       /// Every FE vector.
       std::vector<Pointer<FEVector>> fe_vectors;
-      /// This rank's sums of the work of the loads, of the dissipated energy and of the heat in
-      /// through the conditions.
+      /// This rank's sums of the work of the loads, of the dissipated energy, of the heat in
+      /// through the conditions, of the work of the changing temperature and of the energy it
+      /// moved.
       std::vector<Pointer<double>> sums;
       /// What is the same on every rank: the stored heat at start_work().
       std::vector<Pointer<double>> totals;
@@ -518,6 +519,42 @@ namespace perideal
     update_temperature(const double time);
 
     /**
+     * @brief Make the temperature of the present state (the particles' temperature change, the
+     * FE thermal load and energy) the one the next accumulate_temperature_work() starts from:
+     * at start_work() and after every equilibrium that accumulated the work.
+     */
+    void
+    hold_temperature();
+
+    /**
+     * @brief Add the work the change of the temperature since hold_temperature() did on the
+     * body over the step from the previous state of the work of the loads (u_0) to the present
+     * one (u_1), then hold the present temperature (quasi-static runs: equilibrium_state()).
+     * With E(u, T) the strain energy in the coupling method's model of equilibrium, the
+     * symmetric difference 1/2 [E(u_1, T_1) - E(u_1, T_0) + E(u_0, T_1) - E(u_0, T_0)], exact
+     * for an energy quadratic in u and T along the straight path of the step, as the
+     * trapezoidal rule of the loads' work is (doc/architecture/16_multiphysics.md): the FE part
+     * from the thermal loads, the particles' from the coupling method's energies
+     * (CouplingMethod::equilibrium_particle_energies()). Nothing without a temperature.
+     * Collective.
+     */
+    void
+    accumulate_temperature_work();
+
+    /// The work of the changing temperature since start_work(), summed over the ranks [J].
+    double
+    temperature_work() const;
+
+    /**
+     * @brief The energy the changing temperature moved since start_work(): per step the mean of
+     * |E(u, T_1) - E(u, T_0)| at the step's start and end, summed over the steps and the ranks
+     * [J]. What the energy error is relative to where the temperature's work is a small
+     * difference of large changes (a free expansion).
+     */
+    double
+    temperature_energy_scale() const;
+
+    /**
      * @brief The FE loads an equilibrium solve takes: the applied f_ext, plus the thermal load
      * if the FE region has a thermal strain (then in a vector of the state's own).
      */
@@ -636,8 +673,14 @@ namespace perideal
     FEVector       previous_fe_load, previous_U;
     ParticleVector previous_u, previous_load;
     double         local_work = 0.;
-    // The energy released by the bonds broken on this rank since start_work().
-    double local_dissipated = 0.;
+    // The energy released by the bonds broken on this rank since start_work(), the work of the
+    // changing temperature and the energy it moved (on rank 0).
+    double local_dissipated = 0., local_temperature_work = 0., local_temperature_scale = 0.;
+    // The temperature of hold_temperature(): the particles' temperature change, the FE thermal
+    // load and energy.
+    ParticleVector held_temperature_change;
+    FEVector       held_thermal_load;
+    double         held_thermal_energy = 0.;
     // The heat in through the conditions on this rank since start_work(), and the stored heat
     // then.
     double local_heat_in = 0., stored_heat_at_start = 0.;

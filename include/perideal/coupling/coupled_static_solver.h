@@ -12,6 +12,7 @@
 #include <perideal/pd/particle_system.h>
 #include <perideal/pd/static_solver.h>
 
+#include <array>
 #include <functional>
 #include <memory>
 #include <string>
@@ -146,6 +147,16 @@ namespace perideal
            const ParticleVector &f_pd,
            FEVector             &fe_residual,
            ParticleVector       &pd_force) const;
+
+    /**
+     * @brief The particles' strain energies 1/2 (G u - o)^T diag(w) (G u - o) [J] of @p u_0 and
+     * @p u_1 in the linearization of @p material now (its temperature change and its bonds; the
+     * last solve's is not changed): CouplingMethod::equilibrium_particle_energies().
+     */
+    std::array<double, 2>
+    particle_energies(const MaterialModel<dim> &material,
+                      const ParticleVector     &u_0,
+                      const ParticleVector     &u_1) const;
 
     /**
      * @brief @p fe_residual = K_FE @p U - @p f_fe - P^T @p nodal_force: the FE part of the

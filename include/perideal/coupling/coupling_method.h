@@ -16,6 +16,7 @@
 #include <perideal/pd/particle_system.h>
 #include <perideal/pd/static_solver.h>
 
+#include <array>
 #include <functional>
 #include <ostream>
 #include <string>
@@ -226,6 +227,17 @@ namespace perideal
      */
     virtual void
     set_equilibrium_diagonal(const FEVector &fe_diagonal, const ParticleVector &particle_diagonal);
+
+    /**
+     * @brief The particles' strain energies [J] of the displacements @p u_0 and @p u_1 (ghost
+     * values updated) in the method's model of equilibrium, at the temperature change the
+     * particles' model reads now and with its present bonds (a linear static solve is
+     * linearized anew for it): the work of a changing temperature
+     * (CoupledState::accumulate_temperature_work()) is their change from one temperature to
+     * another. Collective.
+     */
+    virtual std::array<double, 2>
+    equilibrium_particle_energies(const ParticleVector &u_0, const ParticleVector &u_1) = 0;
 
     /**
      * @brief The forces of the state (@p U, @p u) under the loads @p f_fe, @p f_pd, in the

@@ -102,6 +102,8 @@ namespace perideal
                       const ParticleVector &f_pd,
                       FEVector             &U,
                       ParticleVector       &u) override;
+    std::array<double, 2>
+    equilibrium_particle_energies(const ParticleVector &u_0, const ParticleVector &u_1) override;
     /// The FE residual K U - f (0 on the interface dofs, which are no supports), the particles'
     /// linearized internal force; returns sum_i W_i V_i over the particles with beta = 1.
     double

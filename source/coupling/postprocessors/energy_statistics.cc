@@ -29,22 +29,33 @@ namespace perideal
 
     if (data.quasi_static)
       {
-        const CoupledEnergy energy       = state.strain_energy(data.pd_energy);
-        const double        strain       = energy.fe + energy.particles;
-        const double        energy_error = work - strain - dissipated;
+        const CoupledEnergy energy = state.strain_energy(data.pd_energy);
+        const double        strain = energy.fe + energy.particles;
+        // The work of a changing temperature beside that of the loads.
+        const bool   heated           = state.has_temperature();
+        const double temperature_work = heated ? state.temperature_work() : 0.;
+        const double energy_error     = work + temperature_work - strain - dissipated;
+        // What the error is relative to: the work of the loads, and the temperature's or the
+        // energy it moved.
+        const double work_done = heated ? std::max(std::abs(work) + std::abs(temperature_work),
+                                                   state.temperature_energy_scale()) :
+                                          work;
         // Relative to the work, unless the energies are below 1e-10 of the force scale times the
         // displacement (a rigid motion: round-off); relative to the strain energy if no load
         // works (a model's prestrain, the twist of PD torsion, is the only load).
         state.U.update_ghost_values();
-        const double scale          = state.fe_force_scale();
-        const double max_u          = state.max_particle_displacement();
-        const double relative_error = std::max(std::abs(work), strain) > 1e-10 * scale * max_u ?
-                                        energy_error / (work != 0. ? work : strain) :
-                                        0.;
+        const double scale = state.fe_force_scale();
+        const double max_u = state.max_particle_displacement();
+        const double relative_error =
+          std::max(std::abs(work_done), strain) > 1e-10 * scale * max_u ?
+            energy_error / (work_done != 0. ? work_done : strain) :
+            0.;
         statistics.add_value("strain_energy", strain);
         statistics.add_value("fe_strain_energy", energy.fe);
         statistics.add_value("pd_strain_energy", energy.particles);
         statistics.add_value("external_work", work);
+        if (heated)
+          statistics.add_value("temperature_work", temperature_work);
         if (breaks)
           statistics.add_value("dissipated_energy", dissipated);
         statistics.add_value("energy_error", energy_error);
@@ -55,6 +66,8 @@ namespace perideal
               log << " (FE " << energy.fe << " J, particles " << energy.particles << " J)";
             log << "\n"
                 << "External work: " << work << " J\n";
+            if (heated)
+              log << "Work of the temperature change: " << temperature_work << " J\n";
             if (breaks)
               log << "Dissipated energy: " << dissipated << " J\n";
             // The particles' twist does no tracked work (in a coupled run the FE twist load
@@ -66,7 +79,7 @@ namespace perideal
               {
                 // To the solution's accuracy (multiples of it, relative to the energy).
                 const double accuracy = state.solution_accuracy();
-                const double unit     = accuracy * std::max(std::abs(work), strain);
+                const double unit     = accuracy * std::max(std::abs(work_done), strain);
                 log << "Energy error: " << to_accuracy(energy_error, unit) << " J (relative "
                     << to_accuracy(relative_error, accuracy) << ")\n";
               }

@@ -93,6 +93,18 @@ namespace perideal
             for (unsigned int i = 0; i < n_owned; ++i)
               values[i] = delta_T->local_element(i);
             writer->add_scalar_field("temperature_change", values);
+            // The free strain of the temperature change in the model's plane
+            // (MaterialModel::thermal_expansion() Delta T), named as the FE output's.
+            const auto alpha  = state.pd().material().thermal_expansion();
+            const char axes[] = {'x', 'y', 'z'};
+            for (unsigned int a = 0; a < dim; ++a)
+              for (unsigned int b = a; b < dim; ++b)
+                {
+                  for (unsigned int i = 0; i < n_owned; ++i)
+                    values[i] = alpha[a][b] * delta_T->local_element(i);
+                  writer->add_scalar_field(std::string("thermal_strain_") + axes[a] + axes[b],
+                                           values);
+                }
           }
         if (state.energy_density.size() == n_owned)
           writer->add_scalar_field("strain_energy_density", state.energy_density);

@@ -21,6 +21,8 @@ namespace perideal
   double
   equilibrium_state(CoupledState<dim> &state)
   {
+    // The work of the temperature over the step, from the state the loads' work starts from.
+    state.accumulate_temperature_work();
     const double pd_energy = state.method().equilibrium_forces(state.U,
                                                                state.u,
                                                                state.fe_equation_load(),

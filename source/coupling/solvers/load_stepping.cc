@@ -271,6 +271,13 @@ namespace perideal
                   state.start_work();
                   state.advance_other_physics(0, 0., 0., true);
                 });
+    // A restart holds the temperature of the load factor reached, which the work of the
+    // temperature in the next step starts from.
+    if (checkpoint.restarting())
+      {
+        state.update_temperature(start.time * settings.end_time);
+        state.hold_temperature();
+      }
     // Without cutting, step k applies k/N; with cutting the load factor advances by increment.
     const double nominal   = 1. / n_steps;
     double       increment = nominal, reached = start.time;

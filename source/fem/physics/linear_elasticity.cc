@@ -12,8 +12,8 @@ namespace perideal
   namespace
   {
     // Strain, stress and von Mises stress from the displacement gradient; with a temperature
-    // change, the stress of the mechanical strain, the temperature change and the mechanical
-    // strain.
+    // change, the stress of the mechanical strain, the temperature change, the mechanical
+    // strain and the free thermal strain in the plane.
     template <int dim>
     class StressPostprocessor : public DataPostprocessor<dim>
     {
@@ -23,6 +23,7 @@ namespace perideal
                           const FullMatrix<double>          &voigt,
                           const PlanarAssumption             planar,
                           const SymmetricTensor<2, dim>     &alpha,
+                          const SymmetricTensor<2, dim>     &free_expansion,
                           const SymmetricTensor<2, dim>     &thermal_stress,
                           const double                       thermal_stress_zz,
                           const PointTemperatureChange<dim> &delta_T)
@@ -30,6 +31,7 @@ namespace perideal
         , voigt(voigt)
         , planar(planar)
         , alpha(alpha)
+        , free_expansion(free_expansion)
         , thermal_stress(thermal_stress)
         , thermal_stress_zz(thermal_stress_zz)
         , delta_T(delta_T)
@@ -53,6 +55,9 @@ namespace perideal
             for (unsigned int i = 0; i < dim; ++i)
               for (unsigned int j = i; j < dim; ++j)
                 names.push_back(std::string("mechanical_strain_") + axes[i] + axes[j]);
+            for (unsigned int i = 0; i < dim; ++i)
+              for (unsigned int j = i; j < dim; ++j)
+                names.push_back(std::string("thermal_strain_") + axes[i] + axes[j]);
           }
         return names;
       }
@@ -113,6 +118,10 @@ namespace perideal
                 for (unsigned int i = 0; i < dim; ++i)
                   for (unsigned int j = i; j < dim; ++j)
                     computed[q][k++] = mechanical[i][j];
+                // The free strain of the temperature change in the plane (alpha_2D Delta T).
+                for (unsigned int i = 0; i < dim; ++i)
+                  for (unsigned int j = i; j < dim; ++j)
+                    computed[q][k++] = dT[q] * free_expansion[i][j];
               }
           }
       }
@@ -122,6 +131,7 @@ namespace perideal
       const FullMatrix<double>          voigt;
       const PlanarAssumption            planar;
       const SymmetricTensor<2, dim>     alpha;
+      const SymmetricTensor<2, dim>     free_expansion;
       const SymmetricTensor<2, dim>     thermal_stress;
       const double                      thermal_stress_zz;
       const PointTemperatureChange<dim> delta_T;
@@ -185,8 +195,8 @@ namespace perideal
     const SymmetricTensor<2, 3> alpha_3d = material.thermal_expansion();
     const auto                  C_3d =
       reduce_elasticity_tensor<3>(material.voigt_stiffness(), PlanarAssumption::three_dimensional);
-    thermal_stress =
-      C * planar_thermal_expansion<dim>(alpha_3d, material.voigt_stiffness(), planar);
+    planar_alpha      = planar_thermal_expansion<dim>(alpha_3d, material.voigt_stiffness(), planar);
+    thermal_stress    = C * planar_alpha;
     thermal_stress_zz = (C_3d * alpha_3d)[2][2];
     for (unsigned int i = 0; i < dim; ++i)
       for (unsigned int j = i; j < dim; ++j)
@@ -304,6 +314,7 @@ namespace perideal
                                                       material.voigt_stiffness(),
                                                       planar,
                                                       alpha,
+                                                      planar_alpha,
                                                       thermal_stress,
                                                       thermal_stress_zz,
                                                       delta_T);

@@ -18,8 +18,10 @@ namespace perideal
    * slaved to the FE field), strain energy (the particles' from the model's energy density), the
    * work of the loads and the energy error KE + SE + D - W - E_0 (EnergyBalance, which also
    * stops a run whose energy grows without bound). Quasi-static runs: the strain energy with
-   * the particles' in the coupling method's model of equilibrium, the work of the loads and the
-   * error W - SE - D, relative to the work where the energies are not round-off.
+   * the particles' in the coupling method's model of equilibrium, the work of the loads, that of
+   * a changing temperature W_T (CoupledState::temperature_work()) and the error
+   * W + W_T - SE - D, relative to the work (with a temperature: |W| + |W_T| or the energy the
+   * temperature moved, whichever is larger) where the energies are not round-off.
    *
    * D, the dissipated energy, is the strain energy the broken bonds took with them since the
    * start (CoupledState::dissipated_energy()): per force evaluation that broke bonds, the drop
@@ -32,8 +34,8 @@ namespace perideal
    * load: the energy the re-solve releases (kinetic energy in a dynamic run) stays in its error.
    *
    * Columns kinetic_energy (explicit), strain_energy, fe_strain_energy and pd_strain_energy
-   * (quasi-static), external_work, dissipated_energy (runs whose damage model can break bonds),
-   * energy_error.
+   * (quasi-static), external_work, temperature_work (quasi-static runs with a temperature),
+   * dissipated_energy (runs whose damage model can break bonds), energy_error.
    */
   template <int dim>
   class EnergyStatistics : public Postprocessor<dim>

@@ -22,8 +22,9 @@ namespace perideal
    * @brief After an equilibrium solve of the coupling method under the loads state.f_ext and
    * state.external_force: the method's forces of the state (CouplingMethod::
    * equilibrium_forces(): state.residual, the reactions, state.internal_force,
-   * CoupledState::fe_support) and the work of the loads and supports; returns the particles'
-   * strain energy. Used by the load stepping and the implicit time steps. Collective.
+   * CoupledState::fe_support), the work of the loads and supports and that of a changing
+   * temperature (CoupledState::accumulate_temperature_work()); returns the particles' strain
+   * energy. Used by the load stepping and the implicit time steps. Collective.
    */
   template <int dim>
   double

@@ -114,6 +114,9 @@ namespace perideal
     dealii::SymmetricTensor<4, dim> C;
     /// The in-plane block of the 3D thermal expansion alpha [1/K] (global axes).
     dealii::SymmetricTensor<2, dim> alpha;
+    /// alpha_2D, the expansion of the planar assumption (planar_thermal_expansion(): the free
+    /// strain per kelvin in the plane) [1/K].
+    dealii::SymmetricTensor<2, dim> planar_alpha;
     /// C : alpha_2D, the stress per kelvin of a held body [Pa/K]; (C alpha)_33 of the 3D
     /// tensors (stress_zz of plane strain).
     dealii::SymmetricTensor<2, dim> thermal_stress;
