@@ -12,7 +12,8 @@
 // 3/2 E alpha^2 Delta T^2 / (1 - 2 nu). Printed: the largest stress error at the Gauss points
 // relative to E alpha Delta T and the error of the energy 1/2 u.K.u - u.f_th + c_th relative to
 // the exact one; for the bars also without the thermal load (u = 0), which then fail; and the
-// quantities FERegion::write_output() writes for the plane-strain bar.
+// quantities FERegion::write_output() writes for the plane-strain bar, with its free thermal
+// strain (1 + nu) alpha Delta T against the output's thermal_strain_*.
 // ---------------------------------------------------------------------
 #include "thermal_strain_tests.h"
 
@@ -91,6 +92,18 @@ namespace
               names += " " + line.substr(begin, line.find('"', begin) - begin);
             }
         deallog << "  output:" << names << std::endl;
+        // The free thermal strain of plane strain, alpha_2D Delta T = (1 + nu) alpha Delta T on
+        // both in-plane axes (the 3D alpha would be off by nu).
+        const double free_strain = (1. + nu) * alpha * delta_T;
+        deallog << "  thermal strain error "
+                << bounded(output_deviation(*fe,
+                                            u,
+                                            {{"thermal_strain_xx", free_strain},
+                                             {"thermal_strain_yy", free_strain},
+                                             {"thermal_strain_xy", 0.}}) /
+                             (alpha * delta_T),
+                           1e-12)
+                << std::endl;
       }
     if (!supports.empty())
       deallog << "  without f_th: stress error "
