@@ -257,23 +257,8 @@ namespace perideal
   {
     if (!relaxation)
       return static_solver->particle_energies(*regions.material, u_0, u_1);
-    // The model's own energy (no bond breaks).
-    auto                 &particles = *regions.particles;
-    const auto           &volume    = particles.volumes();
-    std::array<double, 2> energies;
-    for (const unsigned int k : {0u, 1u})
-      {
-        regions.material->compute_forces(particles,
-                                         k == 0 ? u_0 : u_1,
-                                         pd_work,
-                                         &energy_density,
-                                         std::numeric_limits<double>::infinity());
-        double energy = 0.;
-        for (unsigned int i = 0; i < particles.n_owned(); ++i)
-          energy += energy_density[i] * volume[i];
-        energies[k] = Utilities::MPI::sum(energy, particles.get_communicator());
-      }
-    return energies;
+    return this
+      ->model_energies(*regions.material, *regions.particles, u_0, u_1, pd_work, energy_density);
   }
 
   template <int dim>

@@ -332,23 +332,13 @@ namespace perideal
                                                       const ParticleVector &u_1)
   {
     // The particles' energy of equilibrium_forces(): the model's own, where only PD is solved.
-    auto                 &particles = *regions.particles;
-    const auto           &volume    = particles.volumes();
-    std::array<double, 2> energies;
-    for (const unsigned int k : {0u, 1u})
-      {
-        regions.material->compute_forces(particles,
-                                         k == 0 ? u_0 : u_1,
-                                         force,
-                                         &energy_density,
-                                         std::numeric_limits<double>::infinity());
-        double energy = 0.;
-        for (unsigned int i = 0; i < particles.n_owned(); ++i)
-          if (pd_only[i])
-            energy += energy_density[i] * volume[i];
-        energies[k] = Utilities::MPI::sum(energy, particles.get_communicator());
-      }
-    return energies;
+    return this->model_energies(*regions.material,
+                                *regions.particles,
+                                u_0,
+                                u_1,
+                                force,
+                                energy_density,
+                                pd_only);
   }
 
   template <int dim>
