@@ -18,13 +18,15 @@ namespace perideal
                         const double       work_of_loads,
                         const double       prescribed_kinetic,
                         const double       row_dissipated,
-                        const double       row_conversion)
+                        const double       row_conversion,
+                        const double       row_temperature_work)
   {
-    conversion = row_conversion;
-    step       = row_step;
-    kinetic    = row_kinetic;
-    strain     = row_strain;
-    dissipated = row_dissipated;
+    conversion       = row_conversion;
+    temperature_work = row_temperature_work;
+    step             = row_step;
+    kinetic          = row_kinetic;
+    strain           = row_strain;
+    dissipated       = row_dissipated;
     if (step == 0)
       {
         initial_energy     = kinetic + strain;
@@ -42,7 +44,8 @@ namespace perideal
   double
   EnergyBalance::error() const
   {
-    return kinetic + strain + dissipated - total_work - initial_energy - conversion;
+    return kinetic + strain + dissipated - total_work - temperature_work - initial_energy -
+           conversion;
   }
 
   void
@@ -55,7 +58,7 @@ namespace perideal
                                ParameterUtilities::format_number(stable_dt) + " s).";
     AssertThrow(std::isfinite(kinetic) && std::isfinite(strain),
                 dealii::ExcMessage(where + "non-finite displacement or energy." + advice));
-    const double scale = std::abs(total_work) + initial_energy;
+    const double scale = std::abs(total_work) + std::abs(temperature_work) + initial_energy;
     AssertThrow(step < 10 || scale == 0. || kinetic + strain < 1e3 * scale,
                 dealii::ExcMessage(where + "the energy grew to " +
                                    ParameterUtilities::format_number(kinetic + strain) +

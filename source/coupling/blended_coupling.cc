@@ -257,8 +257,11 @@ namespace perideal
   {
     if (!relaxation)
       return static_solver->particle_energies(*regions.material, u_0, u_1);
-    return this
-      ->model_energies(*regions.material, *regions.particles, u_0, u_1, pd_work, energy_density);
+    // The model's own energy.
+    auto &material = *regions.material;
+    auto &ps       = *regions.particles;
+    return {{model_strain_energy(material, ps, u_0, pd_work, energy_density),
+             model_strain_energy(material, ps, u_1, pd_work, energy_density)}};
   }
 
   template <int dim>

@@ -359,11 +359,7 @@ namespace perideal
     // A conversion of the adaptive region since the hold laid the fields out anew: the
     // equilibrium after it is at the temperature of the step before.
     const ParticleVector *change = pd().material().temperature_change();
-    const bool            held =
-      (change == nullptr ||
-       held_temperature_change.get_partitioner() == change->get_partitioner()) &&
-      (!fe_thermal || held_thermal_load.get_partitioner() == thermal_load.get_partitioner());
-    if (held)
+    if (holds_layout())
       {
         // E(u, T_1) - E(u, T_0) at the step's start (u_0, U_0) and end (u_1, U_1), averaged.
         // The FE part, 1/2 U.K.U - U.f_th(T) + e_th(T), changes by -U.(f_th(T_1) - f_th(T_0)) +
@@ -393,6 +389,67 @@ namespace perideal
             local_temperature_work += 0.5 * (change_at[0] + change_at[1]);
             local_temperature_scale += 0.5 * (std::abs(change_at[0]) + std::abs(change_at[1]));
           }
+      }
+    hold_temperature();
+  }
+
+  template <int dim>
+  bool
+  CoupledState<dim>::holds_layout() const
+  {
+    const ParticleVector *change = pd().material().temperature_change();
+    return (change == nullptr ||
+            held_temperature_change.get_partitioner() == change->get_partitioner()) &&
+           (!fe_thermal || held_thermal_load.get_partitioner() == thermal_load.get_partitioner());
+  }
+
+  template <int dim>
+  bool
+  CoupledState<dim>::temperature_changed() const
+  {
+    if (!has_temperature() || !holds_layout())
+      return false;
+    bool changed = fe_thermal && (thermal_energy != held_thermal_energy);
+    if (const ParticleVector *change = pd().material().temperature_change(); change != nullptr)
+      for (unsigned int i = 0; i < pd().particles().n_owned() && !changed; ++i)
+        changed = change->local_element(i) != held_temperature_change.local_element(i);
+    if (fe_thermal)
+      for (unsigned int k = 0; k < thermal_load.locally_owned_size() && !changed; ++k)
+        changed = thermal_load.local_element(k) != held_thermal_load.local_element(k);
+    return Utilities::MPI::logical_or(changed, comm());
+  }
+
+  template <int dim>
+  void
+  CoupledState<dim>::accumulate_temperature_jump()
+  {
+    // E(u, T) - E(u, T_held) at the present displacements: the FE part from the thermal loads,
+    // the particles' from energy_density (at T) and one evaluation of the model at T_held.
+    double jump = 0.;
+    if (fe_thermal)
+      {
+        FEVector load_change(thermal_load);
+        load_change -= held_thermal_load;
+        jump += thermal_energy - held_thermal_energy - U * load_change;
+      }
+    if (const ParticleVector *change = pd().material().temperature_change(); change != nullptr)
+      {
+        auto       &ps     = pd().particles();
+        const auto &volume = ps.volumes();
+        double      now    = 0.;
+        for (unsigned int i = 0; i < ps.n_owned(); ++i)
+          now += energy_density[i] * volume[i];
+        if (held_force.size() != internal_force.size())
+          held_force.reinit(internal_force);
+        pd().material().set_temperature_change(&held_temperature_change);
+        jump += Utilities::MPI::sum(now, comm()) -
+                model_strain_energy(pd().material(), ps, u, held_force, held_energy_density);
+        pd().material().set_temperature_change(change);
+      }
+    if (is_root())
+      {
+        local_temperature_work += jump;
+        local_temperature_scale += std::abs(jump);
       }
     hold_temperature();
   }

@@ -332,13 +332,10 @@ namespace perideal
                                                       const ParticleVector &u_1)
   {
     // The particles' energy of equilibrium_forces(): the model's own, where only PD is solved.
-    return this->model_energies(*regions.material,
-                                *regions.particles,
-                                u_0,
-                                u_1,
-                                force,
-                                energy_density,
-                                pd_only);
+    auto &material = *regions.material;
+    auto &ps       = *regions.particles;
+    return {{model_strain_energy(material, ps, u_0, force, energy_density, pd_only),
+             model_strain_energy(material, ps, u_1, force, energy_density, pd_only)}};
   }
 
   template <int dim>

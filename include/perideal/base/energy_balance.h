@@ -15,9 +15,9 @@ namespace perideal
    * of the prescribed components (the constraints also accelerate them; it telescopes over the
    * steps). The dissipated energy is the strain energy the broken bonds took with them,
    * accumulated by the caller (MaterialModel::released_energy()). The error is kinetic + strain
-   * + dissipated - work - initial energy - the energy change of the conversions of an adaptive
-   * PD region (FE cells become particles; measured and reported on their own): the
-   * time-integration error, in a fracture run too.
+   * + dissipated - work - the work of a changing temperature - initial energy - the energy
+   * change of the conversions of an adaptive PD region (FE cells become particles; measured and
+   * reported on their own): the time-integration error, in a fracture run too.
    */
   class EnergyBalance
   {
@@ -26,7 +26,7 @@ namespace perideal
      * @brief Record the totals (summed over all ranks) of a statistics row; the row of step 0
      * fixes the initial energy and the initial kinetic energy of the prescribed components.
      * @p conversion is the energy change of the conversions so far (0 without an adaptive PD
-     * region).
+     * region), @p temperature_work the work of a changing temperature so far (0 without one).
      */
     void
     record(const unsigned int step,
@@ -35,14 +35,15 @@ namespace perideal
            const double       work_of_loads,
            const double       prescribed_kinetic,
            const double       dissipated,
-           const double       conversion = 0.);
+           const double       conversion       = 0.,
+           const double       temperature_work = 0.);
 
     /// The work done on the body up to the recorded row [J].
     double
     work() const;
 
-    /// kinetic + strain + dissipated - work - initial energy - conversion at the recorded row
-    /// [J].
+    /// kinetic + strain + dissipated - work - temperature work - initial energy - conversion at
+    /// the recorded row [J].
     double
     error() const;
 
@@ -71,7 +72,10 @@ namespace perideal
     double       initial_energy     = 0.;
     double       initial_prescribed = 0.;
     /// Set by every record(): not part of a checkpoint.
-    double conversion = 0.;
+    ///@{
+    double conversion       = 0.;
+    double temperature_work = 0.;
+    ///@}
   };
 } // namespace perideal
 

@@ -529,7 +529,8 @@ namespace perideal
     /**
      * @brief Add the work the change of the temperature since hold_temperature() did on the
      * body over the step from the previous state of the work of the loads (u_0) to the present
-     * one (u_1), then hold the present temperature (quasi-static runs: equilibrium_state()).
+     * one (u_1), then hold the present temperature (quasi-static runs: equilibrium_state();
+     * explicit steps: accumulate_temperature_jump()).
      * With E(u, T) the strain energy in the coupling method's model of equilibrium, the
      * symmetric difference 1/2 [E(u_1, T_1) - E(u_1, T_0) + E(u_0, T_1) - E(u_0, T_0)], exact
      * for an energy quadratic in u and T along the straight path of the step, as the
@@ -540,6 +541,23 @@ namespace perideal
      */
     void
     accumulate_temperature_work();
+
+    /**
+     * @brief Explicit steps: whether update_temperature() changed the temperature from the held
+     * one (hold_temperature(); false after a conversion laid the fields out anew, and without a
+     * temperature). Collective.
+     */
+    bool
+    temperature_changed() const;
+
+    /**
+     * @brief Explicit steps, where the temperature changes at fixed displacements: add
+     * E(u, T) - E(u, T_held) to the work of the temperature and hold the present temperature;
+     * the particles' E(u, T) from energy_density, which the caller's force evaluation at T wrote,
+     * E(u, T_held) from one more evaluation of the model. Collective.
+     */
+    void
+    accumulate_temperature_jump();
 
     /// The work of the changing temperature since start_work(), summed over the ranks [J].
     double
@@ -630,6 +648,11 @@ namespace perideal
     /// The copy of the last keep().
     Kept kept;
 
+    // Whether the held temperature has the layout of the present fields (not after a
+    // conversion of the adaptive region).
+    bool
+    holds_layout() const;
+
     // The parts of stored_parts() of @p state, a CoupledState or a const one.
     template <typename State>
     static Parts<std::is_const_v<State>>
@@ -681,6 +704,10 @@ namespace perideal
     ParticleVector held_temperature_change;
     FEVector       held_thermal_load;
     double         held_thermal_energy = 0.;
+    // Scratch of accumulate_temperature_jump(): the model's forces and energy density at the
+    // held temperature.
+    ParticleVector      held_force;
+    std::vector<double> held_energy_density;
     // The heat in through the conditions on this rank since start_work(), and the stored heat
     // then.
     double local_heat_in = 0., stored_heat_at_start = 0.;

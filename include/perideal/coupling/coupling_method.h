@@ -254,50 +254,34 @@ namespace perideal
                        const ParticleVector &f_pd,
                        FEVector             &fe_residual,
                        ParticleVector       &pd_force) = 0;
-
-  protected:
-    /**
-     * @brief equilibrium_particle_energies() of a method whose model of equilibrium is the
-     * particles' model itself: its strain energies of @p u_0 and @p u_1 (no bond breaks; @p force
-     * and @p energy_density are scratch), summed over the owned particles that @p counted flags
-     * (all if it is empty). Collective.
-     */
-    static std::array<double, 2>
-    model_energies(MaterialModel<dim>      &material,
-                   ParticleSystem<dim>     &particles,
-                   const ParticleVector    &u_0,
-                   const ParticleVector    &u_1,
-                   ParticleVector          &force,
-                   std::vector<double>     &energy_density,
-                   const std::vector<bool> &counted = {});
   };
 
+  /**
+   * @brief The strain energy of the particles' model @p material at the displacements @p u
+   * (ghost values updated; no bond breaks; @p force and @p energy_density are scratch), summed
+   * over the owned particles that @p counted flags (all if it is empty) [J]: the energy of a
+   * method whose model of equilibrium is the model itself, and of explicit steps. Collective.
+   */
   template <int dim>
-  std::array<double, 2>
-  CouplingMethod<dim>::model_energies(MaterialModel<dim>      &material,
-                                      ParticleSystem<dim>     &particles,
-                                      const ParticleVector    &u_0,
-                                      const ParticleVector    &u_1,
-                                      ParticleVector          &force,
-                                      std::vector<double>     &energy_density,
-                                      const std::vector<bool> &counted)
+  double
+  model_strain_energy(MaterialModel<dim>      &material,
+                      ParticleSystem<dim>     &particles,
+                      const ParticleVector    &u,
+                      ParticleVector          &force,
+                      std::vector<double>     &energy_density,
+                      const std::vector<bool> &counted = {})
   {
-    const auto           &volume = particles.volumes();
-    std::array<double, 2> energies;
-    for (const unsigned int k : {0u, 1u})
-      {
-        material.compute_forces(particles,
-                                k == 0 ? u_0 : u_1,
-                                force,
-                                &energy_density,
-                                std::numeric_limits<double>::infinity());
-        double energy = 0.;
-        for (unsigned int i = 0; i < particles.n_owned(); ++i)
-          if (counted.empty() || counted[i])
-            energy += energy_density[i] * volume[i];
-        energies[k] = dealii::Utilities::MPI::sum(energy, particles.get_communicator());
-      }
-    return energies;
+    material.compute_forces(particles,
+                            u,
+                            force,
+                            &energy_density,
+                            std::numeric_limits<double>::infinity());
+    const auto &volume = particles.volumes();
+    double      energy = 0.;
+    for (unsigned int i = 0; i < particles.n_owned(); ++i)
+      if (counted.empty() || counted[i])
+        energy += energy_density[i] * volume[i];
+    return dealii::Utilities::MPI::sum(energy, particles.get_communicator());
   }
 
   template <int dim>

@@ -126,20 +126,25 @@ namespace perideal
       {
         // Kinetic energy of the FE dofs and the components not slaved to the FE field;
         // that of prescribed dofs and components separately (EnergyBalance counts it as work).
-        const auto          kinetic = state.kinetic_energy();
-        const CoupledEnergy energy  = state.strain_energy();
-        const double        strain  = energy.fe + energy.particles;
+        const auto          kinetic          = state.kinetic_energy();
+        const CoupledEnergy energy           = state.strain_energy();
+        const double        strain           = energy.fe + energy.particles;
+        const bool          heated           = state.has_temperature();
+        const double        temperature_work = heated ? state.temperature_work() : 0.;
         balance.record(data.step,
                        kinetic.total,
                        strain,
                        work,
                        kinetic.prescribed,
                        dissipated,
-                       state.conversion_energy);
+                       state.conversion_energy,
+                       temperature_work);
         balance.check_stable(data.time, state.stable_dt);
         statistics.add_value("kinetic_energy", kinetic.total);
         statistics.add_value("strain_energy", strain);
         statistics.add_value("external_work", balance.work());
+        if (heated)
+          statistics.add_value("temperature_work", temperature_work);
         if (breaks)
           statistics.add_value("dissipated_energy", dissipated);
         if (state.has_adaptive_region())
@@ -150,6 +155,8 @@ namespace perideal
             log << "Kinetic energy: " << kinetic.total << " J\n"
                 << "Strain energy: " << strain << " J\n"
                 << "External work: " << balance.work() << " J\n";
+            if (heated)
+              log << "Work of the temperature change: " << temperature_work << " J\n";
             if (breaks)
               log << "Dissipated energy: " << dissipated << " J\n";
             if (state.has_adaptive_region())

@@ -165,12 +165,17 @@ namespace perideal
     state.method().interpolate_to_particles(state.U, state.u);
     state.u.update_ghost_values();
     state.update_temperature(time);
+    // A changed temperature does work at the present displacements: the energy at it against
+    // the energy at the temperature before, both with the bonds left after this evaluation.
+    const bool heated = state.temperature_changed();
     pd.material().compute_forces(pd.particles(),
                                  state.u,
                                  state.internal_force,
-                                 with_energy ? &state.energy_density : nullptr,
+                                 with_energy || heated ? &state.energy_density : nullptr,
                                  pd.critical_stretch());
     state.accumulate_dissipated_energy();
+    if (heated)
+      state.accumulate_temperature_jump();
     // The applied forces (zero since the set-up if there are none), with a source from another
     // physics.
     const bool source = state.physics_source.size() > 0;
@@ -375,6 +380,13 @@ namespace perideal
     RunControl<dim>   run(state, postprocessors, checkpoint, false);
     const RunPosition start =
       run.start(run_description.str(), n_steps, [&]() { start_state(state); });
+    // A restart holds the temperature of the time reached, which the work of the temperature in
+    // the next step starts from.
+    if (checkpoint.restarting())
+      {
+        state.update_temperature(start.time);
+        state.hold_temperature();
+      }
 
     ProgressReporter progress(state.comm(),
                               state.log(),
