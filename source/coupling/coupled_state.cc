@@ -341,7 +341,12 @@ namespace perideal
       {
         if (held_temperature_change.get_partitioner() != change->get_partitioner())
           held_temperature_change.reinit(*change);
-        held_temperature_change = *change;
+        // Every local value, ghosts included: a prescribed temperature writes the ghosts
+        // without an exchange, which operator= would not copy.
+        const auto &layout = *change->get_partitioner();
+        std::copy(change->begin(),
+                  change->begin() + layout.locally_owned_size() + layout.n_ghost_indices(),
+                  held_temperature_change.begin());
       }
     if (fe_thermal)
       {
@@ -423,33 +428,53 @@ namespace perideal
   void
   CoupledState<dim>::accumulate_temperature_jump()
   {
-    // E(u, T) - E(u, T_held) at the present displacements: the FE part from the thermal loads,
-    // the particles' from energy_density (at T) and one evaluation of the model at T_held.
-    double jump = 0.;
+    // The symmetric difference of accumulate_temperature_work() over the step from the state of
+    // the work of the loads (u_0, U_0) to the present one (u_1, U_1), which is what the
+    // velocity-Verlet step's kinetic energy closes with: E(u_0, T_1) - E(u_0, T_0) follows from
+    // the change at u_1 and the change of the forces, E(u_1, T_1) - E(u_1, T_0) - (u_1 - u_0) .
+    // (grad E(u_1, T_1) - grad E(u_1, T_0)), exactly for an energy quadratic in u and T. The FE
+    // part from the thermal loads; the particles' E(u_1, T_1) from energy_density and their
+    // force from internal_force (the step's evaluation at T_1), E and the force at T_0 from one
+    // more evaluation of the model.
+    double change = 0., scale = 0.;
     if (fe_thermal)
       {
         FEVector load_change(thermal_load);
         load_change -= held_thermal_load;
-        jump += thermal_energy - held_thermal_energy - U * load_change;
+        const double at_start = thermal_energy - held_thermal_energy - previous_U * load_change;
+        const double at_end   = thermal_energy - held_thermal_energy - U * load_change;
+        change += 0.5 * (at_start + at_end);
+        scale += 0.5 * (std::abs(at_start) + std::abs(at_end));
       }
-    if (const ParticleVector *change = pd().material().temperature_change(); change != nullptr)
+    if (const ParticleVector *present = pd().material().temperature_change(); present != nullptr)
       {
-        auto       &ps     = pd().particles();
-        const auto &volume = ps.volumes();
-        double      now    = 0.;
-        for (unsigned int i = 0; i < ps.n_owned(); ++i)
-          now += energy_density[i] * volume[i];
+        auto              &ps     = pd().particles();
+        const auto        &volume = ps.volumes();
+        const unsigned int nc     = n_components();
         if (held_force.size() != internal_force.size())
           held_force.reinit(internal_force);
         pd().material().set_temperature_change(&held_temperature_change);
-        jump += Utilities::MPI::sum(now, comm()) -
-                model_strain_energy(pd().material(), ps, u, held_force, held_energy_density);
-        pd().material().set_temperature_change(change);
+        const double before =
+          model_strain_energy(pd().material(), ps, u, held_force, held_energy_density);
+        pd().material().set_temperature_change(present);
+        // grad E = -f V per particle component (f the force density).
+        double now = 0., force_change = 0.;
+        for (unsigned int i = 0; i < ps.n_owned(); ++i)
+          {
+            now += energy_density[i] * volume[i];
+            for (unsigned int k = i * nc; k < (i + 1) * nc; ++k)
+              force_change += volume[i] * (u.local_element(k) - previous_u.local_element(k)) *
+                              (internal_force.local_element(k) - held_force.local_element(k));
+          }
+        const double at_end   = Utilities::MPI::sum(now, comm()) - before;
+        const double at_start = at_end + Utilities::MPI::sum(force_change, comm());
+        change += 0.5 * (at_start + at_end);
+        scale += 0.5 * (std::abs(at_start) + std::abs(at_end));
       }
     if (is_root())
       {
-        local_temperature_work += jump;
-        local_temperature_scale += std::abs(jump);
+        local_temperature_work += change;
+        local_temperature_scale += scale;
       }
     hold_temperature();
   }
