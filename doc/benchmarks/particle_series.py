@@ -23,15 +23,16 @@ def read_series(directory, base="particles"):
     return series
 
 
-def read_particles(path, with_displacement=False):
-    """(nodes, damage[, displacement or None]) of one particle file, 2D, sorted by reference
-    position: the particle order depends on the MPI partition, so every file of a run (and runs
-    on different rank counts) then share one order."""
+def read_particles(path, with_displacement=False, dim=2):
+    """(nodes, damage[, displacement or None]) of one particle file, the first dim coordinates
+    (2: the plane of a 2D run; 3 for a 3D run), sorted by reference position: the particle order
+    depends on the MPI partition, so every file of a run (and runs on different rank counts)
+    then share one order."""
     with h5py.File(path, "r") as f:
-        nodes = np.array(f["nodes"])[:, :2]
+        nodes = np.array(f["nodes"])[:, :dim]
         damage = np.array(f["damage"])[:, 0]
-        disp = np.array(f["displacement"])[:, :2] if "displacement" in f else None
-    order = np.lexsort((nodes[:, 1], nodes[:, 0]))
+        disp = np.array(f["displacement"])[:, :dim] if "displacement" in f else None
+    order = np.lexsort(tuple(nodes[:, d] for d in reversed(range(dim))))
     if not with_displacement:
         return nodes[order], damage[order]
     return nodes[order], damage[order], (disp[order] if disp is not None else None)

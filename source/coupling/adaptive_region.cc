@@ -111,6 +111,13 @@ namespace perideal
                       Patterns::Double(),
                       "Width of the overlap around the disks, where beta falls from 1 to 0 [m]; at "
                       "least a horizon (the blended coupling needs an overlap a horizon wide).");
+    prm.declare_entry("Seed shape",
+                      "ball",
+                      Patterns::Selection("ball|cylinder"),
+                      "The PD-only zone around a seed: 'ball' (a disk in 2D); 'cylinder' (3D "
+                      "only): a cylinder of radius <Core radius> whose axis passes through the "
+                      "seed parallel to z, through the whole body (a crack through the thickness "
+                      "of a plate); the seed's z is then irrelevant.");
     prm.declare_entry("Initial seeds",
                       "",
                       Patterns::Anything(),
@@ -166,8 +173,13 @@ namespace perideal
                  "in [0, <Core radius> - <Damage distance>] = [0, " +
                    ParameterUtilities::format_number(core_radius - damage_distance) + "] m");
       }
+    shape = prm.get("Seed shape") == "cylinder" ? SeedShape::cylinder : SeedShape::ball;
+    if (shape == SeedShape::cylinder && dim != 3)
+      refuse("Seed shape",
+             "'ball' in 2D (a disk; 'cylinder' is a 3D shape whose axis is parallel to z)");
     bin_width = core_radius + ramp_width + 2. * horizon;
     seeds.clear();
+    projected_seeds.clear();
     std::vector<Point<dim>> initial;
     for (const auto &item : Utilities::split_string_list(prm.get("Initial seeds"), ';'))
       if (!item.empty())
@@ -206,8 +218,34 @@ namespace perideal
   AdaptiveRegion<dim>::add_seeds(const std::vector<Point<dim>> &new_seeds)
   {
     seeds.insert(seeds.end(), new_seeds.begin(), new_seeds.end());
+    for (const auto &s : new_seeds)
+      projected_seeds.push_back(project(s));
     if (!seeds.empty())
-      seed_cells.reinit(make_array_view(seeds), bin_width);
+      seed_cells.reinit(make_array_view(projected_seeds), bin_width);
+  }
+
+  template <int dim>
+  typename AdaptiveRegion<dim>::SeedShape
+  AdaptiveRegion<dim>::seed_shape() const
+  {
+    return shape;
+  }
+
+  template <int dim>
+  Point<dim>
+  AdaptiveRegion<dim>::project(const Point<dim> &x) const
+  {
+    Point<dim> p = x;
+    if (shape == SeedShape::cylinder)
+      p[dim - 1] = 0.;
+    return p;
+  }
+
+  template <int dim>
+  double
+  AdaptiveRegion<dim>::seed_distance(const Point<dim> &x, const Point<dim> &s) const
+  {
+    return project(x).distance(project(s));
   }
 
   template <int dim>
@@ -219,8 +257,9 @@ namespace perideal
     unsigned int first   = numbers::invalid_unsigned_int;
     if (seeds.empty())
       return nearest;
-    seed_cells.for_each_near(x, [&](const unsigned int s) {
-      const double distance = x.distance(seeds[s]);
+    const Point<dim> y = project(x);
+    seed_cells.for_each_near(y, [&](const unsigned int s) {
+      const double distance = y.distance(projected_seeds[s]);
       if (distance < nearest || (distance == nearest && s < first))
         {
           nearest = distance;
@@ -343,7 +382,7 @@ namespace perideal
               if (lead_distance > 0. &&
                   nearest_seed(x[i], &nearest) < std::numeric_limits<double>::max())
                 {
-                  const Tensor<1, dim> away = x[i] - seeds[nearest];
+                  const Tensor<1, dim> away = project(x[i]) - projected_seeds[nearest];
                   const double         norm = away.norm();
                   if (norm > 0.)
                     centre += (lead_distance / norm) * away;
@@ -375,7 +414,7 @@ namespace perideal
     std::vector<Point<dim>> kept;
     for (const auto &p : points)
       if (std::none_of(kept.begin(), kept.end(), [&](const Point<dim> &q) {
-            return p.distance(q) < 0.5 * core_radius;
+            return seed_distance(p, q) < 0.5 * core_radius;
           }))
         kept.push_back(p);
     return kept;
@@ -433,7 +472,7 @@ namespace perideal
     const auto beta = [&](const Point<dim> &x) {
       double b = 0.;
       for (const auto &s : new_seeds)
-        b = std::max(b, disk_blending(x.distance(s)));
+        b = std::max(b, disk_blending(seed_distance(x, s)));
       return b;
     };
     // Per condition: a point of one of its faces where beta > 0 (this rank's first).

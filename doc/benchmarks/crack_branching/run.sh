@@ -40,25 +40,8 @@ while [ $# -gt 0 ]; do
     *) echo "run.sh: unknown argument <$1> (see run.sh --help)" >&2; exit 1 ;;
   esac
 done
-python=${PYTHON:-/usr/bin/python3}
-
-# Dependencies: only when something is missing (contrib/install_dependencies.sh holds the list).
-if ! { command -v cmake && command -v ninja && command -v mpirun && command -v numdiff &&
-       dpkg -s libdeal.ii-dev && "$python" -c "import numpy, h5py, matplotlib"; } >/dev/null 2>&1; then
-  if [ "$(id -u)" -eq 0 ]; then
-    "$top/contrib/install_dependencies.sh"
-  else
-    echo "run.sh: dependencies missing; run contrib/install_dependencies.sh as root first" >&2
-    exit 1
-  fi
-fi
-if [ "$(id -u)" -eq 0 ]; then
-  export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1
-fi
-
-# Build (incremental: a no-op when up to date).
-"$top/contrib/build.sh"
-build=${PERIDEAL_BUILD_DIR:-$top/build}
+# Dependencies, Open MPI as root, the build: python, build.
+source "$here/../run_preamble.sh"
 results_top=${PERIDEAL_RESULTS_DIR:-$top/results/crack_branching}
 
 # run_case PRM SPACING LOAD: run one file in <results_top>/<name>_dx<SPACING>[_<LOAD>], print

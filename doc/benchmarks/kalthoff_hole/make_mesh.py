@@ -11,33 +11,9 @@ import os
 import sys
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), ".."))
-from gmsh22 import write  # noqa: E402
+from gmsh22 import read, write  # noqa: E402
 
 HOLE = (0.070, 0.082, 0.044, 0.056)
-
-
-def read(path):
-    """nodes {tag: (x, y)}, lines [(physical, v0, v1)], quads [(v0, v1, v2, v3)] of a gmsh 2.2
-    file with lines (type 1) and quadrilaterals (type 3)."""
-    nodes, lines, quads = {}, [], []
-    with open(path) as f:
-        text = f.read().split("\n")
-    k = text.index("$Nodes") + 2
-    while text[k] != "$EndNodes":
-        tag, x, y, _ = text[k].split()
-        nodes[int(tag)] = (float(x), float(y))
-        k += 1
-    k = text.index("$Elements") + 2
-    while text[k] != "$EndElements":
-        item = [int(v) for v in text[k].split()]
-        kind, n_tags = item[1], item[2]
-        vertices = item[3 + n_tags:]
-        if kind == 1:
-            lines.append((item[3], vertices[0], vertices[1]))
-        elif kind == 3:
-            quads.append(tuple(vertices))
-        k += 1
-    return nodes, lines, quads
 
 
 def main():

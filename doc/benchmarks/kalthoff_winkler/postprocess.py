@@ -262,6 +262,21 @@ def plot_specimen(directory, series, base, out, n_panels=4):
     plt.close(fig)
 
 
+def new_damage(nodes, damage, tip, dx, first_damage):
+    """The damage less, within a horizon of the notches (y = +-tip[1], x <= tip[0]), the
+    particle's damage in the first output that has it (kept in first_damage, by lattice point:
+    pass the same dict for every output of a run). nodes may be 2D or 3D (the notches are then
+    planes through the thickness: only x and y are looked at)."""
+    reach = 3.015 * dx + dx  # the pre-cracks damage particles within a horizon of the notches
+    near_notch = ((np.abs(np.abs(nodes[:, 1]) - tip[1]) <= reach)
+                  & (nodes[:, 0] <= tip[0] + reach))
+    keys = map(tuple, np.round(nodes[near_notch] / dx * 2).astype(np.int64).tolist())
+    new = damage.copy()
+    new[near_notch] -= np.array([first_damage.setdefault(k, d)
+                                 for k, d in zip(keys, damage[near_notch])])
+    return new
+
+
 def crack_history(results, tip, threshold, base="particles"):
     """The cracks of every output time of a run: (series, dx, history, final) with history
     [(time, upper, lower)] (measure_crack's dicts or None; the lower crack grows from the notch
@@ -274,15 +289,9 @@ def crack_history(results, tip, threshold, base="particles"):
     history = []
     final = None
     first_damage = {}  # per lattice point near a notch: its damage when it first appears
-    reach = 3.015 * dx + dx  # the pre-cracks damage particles within a horizon of the notches
     for time, path in series:
         nodes, damage, disp = read_particles(path, with_displacement=True)
-        near_notch = ((np.abs(np.abs(nodes[:, 1]) - tip[1]) <= reach)
-                      & (nodes[:, 0] <= tip[0] + reach))
-        keys = map(tuple, np.round(nodes[near_notch] / dx * 2).astype(np.int64).tolist())
-        new = damage.copy()
-        new[near_notch] -= np.array([first_damage.setdefault(k, d)
-                                     for k, d in zip(keys, damage[near_notch])])
+        new = new_damage(nodes, damage, tip, dx, first_damage)
         upper = measure_crack(nodes, new, tip, dx, threshold, +1.0)
         lower = measure_crack(nodes, new, lower_tip, dx, threshold, -1.0)
         history.append((time, upper, lower))

@@ -37,6 +37,11 @@ namespace perideal
    * the PD-only zone is not near its edge); the proposals are thinned to one per R/2 (in
    * the lexicographic order of their coordinates, so that the seeds do not depend on the number
    * of ranks). The zone only grows. CoupledProblem carries the state over (its conversion).
+   *
+   * <Seed shape> = cylinder (3D only) makes every seed a cylinder whose axis is parallel to z
+   * (the thickness of a plate): |x - s| is then the distance in the x-y plane, so beta does not
+   * depend on z, and the proposals are thinned by that distance too (one cylinder per R/2 of
+   * the plane, whatever the depth of the particles that flag it).
    */
   template <int dim>
   class AdaptiveRegion
@@ -49,6 +54,15 @@ namespace perideal
       principal_strain,
       damage,
       principal_strain_and_damage
+    };
+
+    /// The shape of the PD-only zone around a seed (<Seed shape>).
+    enum class SeedShape
+    {
+      /// A disk in 2D, a ball in 3D.
+      ball,
+      /// 3D: a cylinder parallel to z through the whole body.
+      cylinder
     };
 
     /// Declare the subsection <Coupling/Adaptive region> (entered by the caller's caller).
@@ -115,6 +129,17 @@ namespace perideal
     const std::vector<dealii::Point<dim>> &
     seed_points() const;
 
+    /// <Seed shape>.
+    SeedShape
+    seed_shape() const;
+
+    /**
+     * @brief The distance of @p x to the seed @p s that beta uses: |x - s| for balls, the
+     * distance in the x-y plane for cylinders.
+     */
+    double
+    seed_distance(const dealii::Point<dim> &x, const dealii::Point<dim> &s) const;
+
     /**
      * @brief Stop, naming the condition and <Core radius>, if the disks of @p new_seeds would
      * give beta > 0 at a vertex of a face of an FE boundary condition (the conditions act on the
@@ -140,7 +165,13 @@ namespace perideal
     double       strain_fraction = 0.5, damage_threshold = 0.5, damage_distance = 0.;
     /// <Lead distance> [m].
     double                          lead_distance = 0.;
+    SeedShape                       shape         = SeedShape::ball;
     std::vector<dealii::Point<dim>> seeds;
+    /// The seeds as beta sees them (projected onto z = 0 for cylinders), binned in seed_cells.
+    std::vector<dealii::Point<dim>> projected_seeds;
+    /// @p x as beta sees it: projected onto z = 0 for cylinders, unchanged for balls.
+    dealii::Point<dim>
+    project(const dealii::Point<dim> &x) const;
     /// The nearest seed's distance to @p x (of equally near seeds the first), or the largest
     /// double if none lies within a bin; its index in @p index if given (unchanged if none).
     double
