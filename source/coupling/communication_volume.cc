@@ -63,11 +63,14 @@ namespace perideal
   std::string
   communication_summary(const MPI_Comm                     comm,
                         const std::vector<ExchangeVolume> &exchanges,
-                        const unsigned int                 particle_components)
+                        const unsigned int                 particle_components,
+                        const std::uint64_t                owned_particles)
   {
     std::ostringstream line;
+    const auto         owned = Utilities::MPI::min_max_avg(double(owned_particles), comm);
     line << "Communication per exchange and rank (mean / largest over the "
-         << Utilities::MPI::n_mpi_processes(comm) << " ranks, received; each once per step):";
+         << Utilities::MPI::n_mpi_processes(comm) << " ranks, received; each once per step; "
+         << "owned particles " << owned.avg << " / " << owned.max << "):";
     double total = 0.;
     for (std::size_t k = 0; k < exchanges.size(); ++k)
       {

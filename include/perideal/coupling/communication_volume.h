@@ -57,12 +57,15 @@ namespace perideal
    * @brief One line for the log: for each exchange of @p exchanges (the same list on every
    * rank), the values received per rank (mean and largest over the ranks), in bytes, and the
    * ranks received from (largest); @p particle_components converts the first exchange's values
-   * to ghost particles when it is the particles' ghost update (0: it is not). Collective.
+   * to ghost particles when it is the particles' ghost update (0: it is not); the line starts
+   * with the @p owned_particles of the ranks (mean and largest: the balance of the particles).
+   * Collective.
    */
   std::string
   communication_summary(const MPI_Comm                     comm,
                         const std::vector<ExchangeVolume> &exchanges,
-                        const unsigned int                 particle_components);
+                        const unsigned int                 particle_components,
+                        const std::uint64_t                owned_particles);
 } // namespace perideal
 
 #endif

@@ -441,7 +441,8 @@ namespace perideal
             for (const auto &e : state.method().transfer_exchanges())
               exchanges.push_back(e);
           }
-        const std::string line = communication_summary(state.comm(), exchanges, nc);
+        const std::string line =
+          communication_summary(state.comm(), exchanges, nc, state.pd().particles().n_owned());
         if (state.is_root())
           state.log() << line << std::endl;
       }
