@@ -331,15 +331,15 @@ namespace perideal
             for (unsigned int d = 0; d < dim; ++d)
               where += (d > 0 ? ", " : "") + ParameterUtilities::format_number(x[i][d]);
             AssertThrow(false,
-                        ExcInternalError("The row of the transfer operator of the particle at (" +
-                                         where + ") sums to " + std::to_string(sum) +
-                                         " instead of 0 or 1: it was located in more than "
-                                         "one cell, which happens on several ranks to a "
-                                         "particle that lies on a slit of the mesh (faces "
-                                         "with nodes of their own, as the notches of "
-                                         "meshes/kalthoff_winkler_2d.msh); choose "
-                                         "<Discretization/Lattice spacing> so that no "
-                                         "particle lies on a slit."));
+                        ExcMessage("The row of the transfer operator of the particle at (" + where +
+                                   ") sums to " + std::to_string(sum) +
+                                   " instead of 0 or 1: it was located in more than "
+                                   "one cell, which happens on several ranks to a "
+                                   "particle that lies on a slit of the mesh (faces "
+                                   "with nodes of their own, as the notches of "
+                                   "meshes/kalthoff_winkler_2d.msh); choose "
+                                   "<Discretization/Lattice spacing> so that no "
+                                   "particle lies on a slit."));
           }
         slaved[i] = (sum != 0.);
       }
