@@ -81,6 +81,17 @@ namespace perideal
   }
 
   template <int dim>
+  std::vector<ExchangeVolume>
+  BlendedCoupling<dim>::transfer_exchanges() const
+  {
+    // TransferOperator::interpolate() and add_transpose() do nothing without slaved particles.
+    if (transfer.n_global_slaved() == 0)
+      return {};
+    return {matrix_exchange("P U (FE dofs to slaved particles)", transfer.matrix(), false),
+            matrix_exchange("P^T f (forces back to the FE dofs)", transfer.matrix(), true)};
+  }
+
+  template <int dim>
   const std::vector<bool> &
   BlendedCoupling<dim>::slaved_particles() const
   {

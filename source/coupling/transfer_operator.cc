@@ -325,9 +325,22 @@ namespace perideal
       {
         const double sum =
           particle_buffer.local_element(std::size_t(i) * n_components + row_kinds.first_value_row);
-        AssertThrow(sum == 0. || std::abs(sum - 1.) < 1e-10,
-                    ExcInternalError("A row of the transfer operator sums to " +
-                                     std::to_string(sum) + " instead of 0 or 1."));
+        if (!(sum == 0. || std::abs(sum - 1.) < 1e-10))
+          {
+            std::string where;
+            for (unsigned int d = 0; d < dim; ++d)
+              where += (d > 0 ? ", " : "") + ParameterUtilities::format_number(x[i][d]);
+            AssertThrow(false,
+                        ExcMessage("The row of the transfer operator of the particle at (" + where +
+                                   ") sums to " + std::to_string(sum) +
+                                   " instead of 0 or 1: it was located in more than "
+                                   "one cell, which happens on several ranks to a "
+                                   "particle that lies on a slit of the mesh (faces "
+                                   "with nodes of their own, as the notches of "
+                                   "meshes/kalthoff_winkler_2d.msh); choose "
+                                   "<Discretization/Lattice spacing> so that no "
+                                   "particle lies on a slit."));
+          }
         slaved[i] = (sum != 0.);
       }
     n_slaved =

@@ -61,6 +61,8 @@ namespace perideal
     void
     set_equilibrium_diagonal(const FEVector       &fe_diagonal,
                              const ParticleVector &particle_diagonal) override;
+    std::vector<ExchangeVolume>
+    transfer_exchanges() const override;
     unsigned int
     solve_equilibrium(const FEVector       &f_fe,
                       const ParticleVector &f_pd,

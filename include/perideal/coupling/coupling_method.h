@@ -10,6 +10,7 @@
 #include <perideal/base/linear_algebra.h>
 #include <perideal/base/plugin_registry.h>
 #include <perideal/base/problem_settings.h>
+#include <perideal/coupling/communication_volume.h>
 #include <perideal/fem/fe_region.h>
 #include <perideal/pd/adaptive_dynamic_relaxation.h>
 #include <perideal/pd/material_model.h>
@@ -138,6 +139,18 @@ namespace perideal
     /// What initialize() did, for the log line "Coupling: <name>, <summary>".
     virtual std::string
     summary() const = 0;
+
+    /**
+     * @brief The exchanges between the ranks that interpolate_to_particles() and
+     * add_particle_forces() make (once each per explicit step), read from their communication
+     * patterns (communication_volume.h); none by default. For the run's communication summary,
+     * not called during the steps.
+     */
+    virtual std::vector<ExchangeVolume>
+    transfer_exchanges() const
+    {
+      return {};
+    }
 
     /**
      * @brief After initialize(): per owned particle, whether it is slaved to the FE field (its

@@ -6,6 +6,7 @@
 
 #include <perideal/base/parameter_utilities.h>
 #include <perideal/base/progress_reporter.h>
+#include <perideal/coupling/communication_volume.h>
 #include <perideal/coupling/solvers/explicit_dynamics.h>
 #include <perideal/coupling/solvers/run_control.h>
 
@@ -339,6 +340,12 @@ namespace perideal
     set_first_order_rates(state);
     fe.prescribe(time + 0.5 * dt, U, V);
     conditions.prescribe_step_velocity(time, dt, v);
+    // U and u hold ghost values from the last step; deal.II's add() on a vector with ghost
+    // values exchanges them again at once, an exchange per step the update after the
+    // prescribed values repeats (measured: the FE ghost update twice per step, 15 % of the
+    // bytes of the coupled 3D plate on 4 ranks, doc/benchmarks/performance/README.md).
+    U.zero_out_ghost_values();
+    u.zero_out_ghost_values();
     U.add(dt, V);
     if (!state.any_particle_slaved())
       u.add(dt, v);
@@ -428,6 +435,28 @@ namespace perideal
         if (n_bonds > 0)
           state.log() << "bond updates per second: "
                       << double(n_bonds) * (n_steps - start.step) / seconds << std::endl;
+      }
+    // What a step exchanges between the ranks (read from the patterns, after the loop): the
+    // particles' ghost update in compute_acceleration(), the FE ghost update in advance(), the
+    // stiffness product and the method's transfer.
+    if (Utilities::MPI::n_mpi_processes(state.comm()) > 1)
+      {
+        const unsigned int          nc = state.n_components();
+        std::vector<ExchangeVolume> exchanges;
+        exchanges.push_back(
+          ghost_exchange("particle ghosts (u)", *state.pd().particles().partitioner(nc)));
+        auto &fe = state.fe();
+        if (fe.n_dofs() > 0)
+          {
+            exchanges.push_back(ghost_exchange("FE ghost dofs (U)", *state.U.get_partitioner()));
+            exchanges.push_back(matrix_exchange("K U", fe.stiffness_matrix(), false));
+            for (const auto &e : state.method().transfer_exchanges())
+              exchanges.push_back(e);
+          }
+        const std::string line =
+          communication_summary(state.comm(), exchanges, nc, state.pd().particles().n_owned());
+        if (state.is_root())
+          state.log() << line << std::endl;
       }
   }
 
