@@ -95,7 +95,7 @@ def main():
         import matplotlib
         matplotlib.use("Agg")
         import matplotlib.pyplot as plt
-        fig, ax = plt.subplots(figsize=(6.5, 4.8))
+        fig, ax = plt.subplots(figsize=(9.5, 4.8))
         for m, law in sorted({(row[0], row[1]) for row in rows}):
             group = sorted((row for row in rows if row[:2] == (m, law)), key=lambda row: row[2])
             d = [row[2] * 1e3 for row in group]
@@ -107,9 +107,9 @@ def main():
         ax.set_xlabel("horizon delta [mm]")
         ax.set_ylabel("peak load / LEFM load")
         ax.set_title("Compact tension, all-PD, G_c on the lattice, tie-free notch")
-        ax.legend(fontsize=7)
+        ax.legend(fontsize=7, loc="center left", bbox_to_anchor=(1.01, 0.5))
         fig.tight_layout()
-        fig.savefig(plot, dpi=120)
+        fig.savefig(plot, dpi=110)
 
 
 if __name__ == "__main__":
