@@ -96,6 +96,7 @@ def main():
         matplotlib.use("Agg")
         import matplotlib.pyplot as plt
         fig, ax = plt.subplots(figsize=(9.5, 4.8))
+        ax.set_prop_cycle(color=[plt.cm.tab20(2 * k % 20 + 2 * k // 20) for k in range(20)])
         for m, law in sorted({(row[0], row[1]) for row in rows}):
             group = sorted((row for row in rows if row[:2] == (m, law)), key=lambda row: row[2])
             d = [row[2] * 1e3 for row in group]
