@@ -101,7 +101,8 @@ def measure(directory):
     law = "brittle"
     if "Failure law" in prm and entry(prm, "Failure law") == "linear softening":
         ratio = entry(prm, "Softening ratio") if "Softening ratio" in prm else "4"
-        law = f"softening n = {float(ratio):g}"
+        teeth = entry(prm, "Softening teeth") if "Softening teeth" in prm else "8"
+        law = f"softening n = {float(ratio):g}, N = {int(teeth)}"
     # Energy released at fixed pins by event j's breaks: both pins, U = P u.
     c = u / load
     released = u[:-1] ** 2 * (1 / c[:-1] - 1 / c[1:])

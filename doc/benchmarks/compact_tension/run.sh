@@ -57,19 +57,47 @@ variant k_field k_field_m_4 "${m4[@]}" \
   -e "s|Maximum events           = 40|Maximum events           = 60|"
 
 # Softening bonds (issue #40 part 2; doc/theory/models.md, "Softening PMB bonds"): <Failure
-# law> = linear softening with the ratio n = SOFT_RATIO (default 2), the same G_c; the CT runs
-# end once the load has fallen below 70 % of its peak (the peak is what they measure; each saw
-# tooth is an event, and a run to separation takes 5-10 times the brittle events).
-soft=(-e "s|^    set Fracture energy = 1000$|    set Fracture energy = 1000\n    set Failure law     = linear softening\n    set Softening ratio = ${SOFT_RATIO:-2}|")
-stop=(-e "s|Separation load fraction = 0.05|Separation load fraction = 0.7|")
+# law> = linear softening with the ratio n = SOFT_RATIO (default 2) and N = SOFT_TEETH saw teeth
+# (default 8), the same G_c; the CT runs end once the load has fallen below 85 % of its peak (the
+# peak is what they measure; each saw tooth is an event, and a run to separation takes 5-10 times
+# the brittle events). They carry the corrections of the README's section "Converging to LEFM":
+# the lattice calibration of the fracture energy (the bonds dissipate exactly the G_c of LEFM)
+# and the notch's end moved off the tie at x_t (the bonds that cross y = 0 exactly at the tip,
+# cut or not by round-off in the files) to x_t - 0.01 dx, all ties intact.
+soft=(-e "s|^    set Fracture energy = 1000$|    set Fracture energy = 1000\n    set Fracture energy calibration = lattice\n    set Failure law     = linear softening\n    set Softening ratio = ${SOFT_RATIO:-2}\n    set Softening teeth = ${SOFT_TEETH:-8}|")
+stop=(-e "s|Separation load fraction = 0.05|Separation load fraction = 0.85|")
+# notch X_T DX_MM S EPS: the pre-crack's end moved from x_t to x_t + (S + EPS) dx.
+notch() {
+  echo "s|: $1, 0|: $(awk -v t="$1" -v d="$2" -v s="$3" -v e="$4" 'BEGIN { printf "%.9g", t + (s + e) * d * 1e-3 }'), 0|"
+}
 dx2=(-e "s|Lattice spacing = 1e-3|Lattice spacing = 2e-3|" -e "s|Upper corner = 1e-3,|Upper corner = 2e-3,|"
   -e "s|0\.019$|0.020|")
-variant full_pd soft_dx_2mm "${dx2[@]}" "${soft[@]}" "${stop[@]}"
-variant full_pd soft_dx_1.5mm "${dx15[@]}" "${soft[@]}" "${stop[@]}"
-variant full_pd soft_full_pd "${soft[@]}" "${stop[@]}"
-variant full_pd soft_dx_2mm_m_4 "${dx2[@]}" "${m4[@]}" "${soft[@]}" "${stop[@]}"
-variant full_pd soft_dx_1.5mm_m_4 "${dx15[@]}" "${m4[@]}" "${soft[@]}" "${stop[@]}"
-variant full_pd soft_m_4 "${m4[@]}" "${soft[@]}" "${stop[@]}"
+dx05=(-e "s|Lattice spacing = 1e-3|Lattice spacing = 0.5e-3|" -e "s|Upper corner = 1e-3,|Upper corner = 0.5e-3,|"
+  -e "s|0\.019$|0.0185|")
+variant full_pd soft_dx_2mm "${dx2[@]}" -e "$(notch 0.020 2 0 -0.01)" "${soft[@]}" "${stop[@]}"
+variant full_pd soft_dx_1.5mm "${dx15[@]}" -e "$(notch 0.0195 1.5 0 -0.01)" "${soft[@]}" "${stop[@]}"
+variant full_pd soft_full_pd -e "$(notch 0.020 1 0 -0.01)" "${soft[@]}" "${stop[@]}"
+variant full_pd soft_dx_0.5mm "${dx05[@]}" -e "$(notch 0.020 0.5 0 -0.01)" "${soft[@]}" "${stop[@]}"
+variant full_pd soft_dx_2mm_m_4 "${dx2[@]}" "${m4[@]}" -e "$(notch 0.020 2 0 -0.01)" "${soft[@]}" "${stop[@]}"
+variant full_pd soft_dx_1.5mm_m_4 "${dx15[@]}" "${m4[@]}" -e "$(notch 0.0195 1.5 0 -0.01)" "${soft[@]}" \
+  "${stop[@]}"
+variant full_pd soft_m_4 "${m4[@]}" -e "$(notch 0.020 1 0 -0.01)" "${soft[@]}" "${stop[@]}"
+# The LEFM load of the PD specimen itself (compliance.py): the first event only, the notch's end
+# at x_t + (s - 0.001) dx, s = -1, 0, 1 (one column of bonds fewer and more, the ties intact),
+# for dx = 2, 1.5, 1, 0.5 mm and m = 3, 4.
+one=(-e "s|Separation load fraction = 0.05|Separation load fraction = 0.05\n    set Maximum events           = 1|"
+  -e "s|Write HDF5 = true|Write HDF5 = false|")
+compliance=""
+for m in 3 4; do
+  for s in -1 0 1; do
+    mm=(); [ $m = 4 ] && mm=("${m4[@]}")
+    variant full_pd "c_2_${m}_$s" "${dx2[@]}" "${mm[@]}" -e "$(notch 0.020 2 $s -0.001)" "${one[@]}"
+    variant full_pd "c_1.5_${m}_$s" "${dx15[@]}" "${mm[@]}" -e "$(notch 0.0195 1.5 $s -0.001)" "${one[@]}"
+    variant full_pd "c_1_${m}_$s" "${mm[@]}" -e "$(notch 0.020 1 $s -0.001)" "${one[@]}"
+    variant full_pd "c_0.5_${m}_$s" "${dx05[@]}" "${mm[@]}" -e "$(notch 0.020 0.5 $s -0.001)" "${one[@]}"
+  done
+  for dx in 2 1.5 1 0.5; do compliance="$compliance c_${dx}_${m}_-1 c_${dx}_${m}_0 c_${dx}_${m}_1"; done
+done
 variant k_field soft_k_field "${soft[@]}" -e "s|Maximum events           = 40|Maximum events           = 400|"
 variant k_field soft_k_field_m_2 "${m2[@]}" "${soft[@]}" \
   -e "s|Maximum events           = 40|Maximum events           = 200|"
@@ -80,7 +108,7 @@ variant k_field soft_k_field_m_4 "${m4[@]}" "${soft[@]}" \
 all="full_pd coupled schwarz dx_2mm m_2 m_4 dx_2mm_m_2 dx_2mm_m_4 dx_1.5mm dx_1.5mm_m_2"
 all="$all dx_1.5mm_m_4 k_field k_field_m_2 k_field_m_4 soft_dx_2mm soft_dx_1.5mm soft_full_pd"
 all="$all soft_dx_2mm_m_4 soft_dx_1.5mm_m_4 soft_m_4 soft_k_field soft_k_field_m_2"
-all="$all soft_k_field_m_4 dx_0.5mm"
+all="$all soft_k_field_m_4 $compliance soft_dx_0.5mm dx_0.5mm"
 for name in ${CT_RUNS:-$all}; do
   echo "== $name"
   start=$(date +%s)
@@ -99,11 +127,18 @@ tip=$(/usr/bin/python3 k_field.py $(finished k_field_m_2 k_field k_field_m_4) |
   awk -F'|' 'NR > 2 && $6 + 0 > 0 { printf "%s%s=%s", sep, $2 + 0, $6 + 0; sep = "," }')
 /usr/bin/python3 measures.py $(finished dx_2mm_m_2 dx_1.5mm_m_2 m_2 dx_2mm dx_1.5mm full_pd \
   dx_0.5mm dx_2mm_m_4 dx_1.5mm_m_4 m_4 soft_dx_2mm soft_dx_1.5mm soft_full_pd soft_dx_2mm_m_4 \
-  soft_dx_1.5mm_m_4 soft_m_4) ${tip:+--tip "$tip"} --plot compact_tension_convergence.png
-echo "== softening bonds (n = ${SOFT_RATIO:-2}): the CT peaks and the crack-tip toughness"
-/usr/bin/python3 postprocess.py $(finished soft_dx_2mm soft_dx_1.5mm soft_full_pd soft_dx_2mm_m_4 \
-  soft_dx_1.5mm_m_4 soft_m_4) | grep -v "^peak load ratio"
+  soft_dx_1.5mm_m_4 soft_m_4 soft_dx_0.5mm) ${tip:+--tip "$tip"} --plot compact_tension_convergence.png
+echo "== softening bonds (n = ${SOFT_RATIO:-2}, N = ${SOFT_TEETH:-8}): the CT peaks and the crack-tip toughness"
+/usr/bin/python3 postprocess.py $(finished soft_dx_2mm soft_dx_1.5mm soft_full_pd soft_dx_0.5mm \
+  soft_dx_2mm_m_4 soft_dx_1.5mm_m_4 soft_m_4) | grep -v "^peak load ratio"
 /usr/bin/python3 k_field.py $(finished soft_k_field_m_2 soft_k_field soft_k_field_m_4)
+echo "== the LEFM load of the PD specimen itself, from its compliance (compliance.py), and the"
+echo "   softening runs' peaks against it and against ASTM"
+if [ $(finished $compliance | wc -l) = 24 ]; then
+  /usr/bin/python3 compliance.py $(finished $compliance) --peaks $(finished soft_dx_2mm \
+    soft_dx_1.5mm soft_full_pd soft_dx_0.5mm soft_dx_2mm_m_4 soft_dx_1.5mm_m_4 soft_m_4) \
+    --plot compact_tension_lefm.png
+fi
 echo "== the FE check of ASTM E399's formula for this specimen and pins (fe_check.py)"
 /usr/bin/python3 fe_check.py --dx 1 --h 0.25
 echo "== all-PD and coupled (blended, overlapping Schwarz)"
