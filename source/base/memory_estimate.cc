@@ -9,6 +9,10 @@
 #include <fstream>
 #include <sstream>
 
+#ifdef __GLIBC__
+#  include <malloc.h>
+#endif
+
 namespace perideal
 {
   namespace MemoryEstimate
@@ -95,5 +99,27 @@ namespace perideal
         line << " (resident, summed over the ranks)";
       return line.str();
     }
-  } // namespace MemoryEstimate
+
+    bool
+    restore_allocator_defaults()
+    {
+#ifdef __GLIBC__
+      // glibc's DEFAULT_MMAP_MAX and DEFAULT_TRIM_THRESHOLD (malloc/malloc.c). Setting them
+      // fixes the mmap threshold at its default of 128 KiB (no dynamic threshold), as it already
+      // is after the calls this undoes.
+      const bool mmap_ok = mallopt(M_MMAP_MAX, 65536) == 1;
+      const bool trim_ok = mallopt(M_TRIM_THRESHOLD, 128 * 1024) == 1;
+      return mmap_ok && trim_ok;
+#else
+      return false;
+#endif
+    }
+
+    namespace
+    {
+      // Runs when perideal-base is loaded, after the static initializers of deal.II's
+      // dependencies (libsuperlu_dist among them): see restore_allocator_defaults().
+      const bool allocator_defaults_restored = restore_allocator_defaults();
+    } // namespace
+  }   // namespace MemoryEstimate
 } // namespace perideal

@@ -49,6 +49,23 @@ namespace perideal
                  const std::uint64_t resident_before,
                  const std::uint64_t n_bonds,
                  const std::uint64_t n_particles);
+
+    /**
+     * @brief Give glibc's malloc back its default policy: blocks of 128 KiB and more in their own
+     * mappings, returned to the system when freed, and the top of the heap trimmed above
+     * 128 KiB free (mallopt M_MMAP_MAX = 65536, M_TRIM_THRESHOLD = 128 KiB).
+     *
+     * A static initializer of Debian's libsuperlu_dist.so.8 (loaded with deal.II through PETSc)
+     * calls mallopt(M_MMAP_MAX, 0) and mallopt(M_TRIM_THRESHOLD, -1): every allocation then
+     * comes from the brk heap and the heap never shrinks, so the large temporaries of each output
+     * (about 1 kB per particle) fragmented it and the resident size grew by 0.1–0.2 GB per output
+     * on 0.7 M particles while the memory in use stayed the same
+     * (doc/benchmarks/performance/README.md, "Memory"). perideal-base calls this function from
+     * a static initializer, which runs after those of the libraries it depends on; calling it
+     * again is harmless. Returns whether both settings were accepted (false without glibc).
+     */
+    bool
+    restore_allocator_defaults();
   } // namespace MemoryEstimate
 } // namespace perideal
 
