@@ -14,9 +14,11 @@
 #include <perideal/coupling/transfer_operator.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
-#include <limits>
+#include <map>
 #include <optional>
+#include <tuple>
 
 namespace perideal
 {
@@ -66,6 +68,223 @@ namespace perideal
         if (box)
           result.push_back(*box);
       return result;
+    }
+
+    /**
+     * @brief The fixed direction of the rule that gives a particle on cell faces to one cell:
+     * the cell the particle would move into along it. No component is zero and no two are
+     * equal, so it is parallel to no face of an axis-aligned mesh nor to a diagonal plane.
+     */
+    template <int dim>
+    Tensor<1, dim>
+    face_rule_direction()
+    {
+      Tensor<1, dim> v;
+      for (unsigned int d = 0; d < dim; ++d)
+        v[d] = 1. + 0.1 * std::sqrt(2.) * (d + 1);
+      return v;
+    }
+
+    /**
+     * @brief Where the point at @p reference of @p cell lies: -1 strictly inside the cell (no
+     * reference coordinate within @p tolerance of 0 or 1), 1 on the cell's boundary and inside
+     * the cell once moved by a small step along face_rule_direction(), 0 on the boundary and
+     * outside after that step (or moving along the boundary).
+     */
+    template <int dim>
+    int
+    face_rule_side(const typename Triangulation<dim>::active_cell_iterator &cell,
+                   const Point<dim>                                        &reference,
+                   const double                                             tolerance)
+    {
+      bool on_boundary = false;
+      for (unsigned int d = 0; d < dim; ++d)
+        on_boundary = on_boundary || reference[d] < tolerance || reference[d] > 1. - tolerance;
+      if (!on_boundary)
+        return -1;
+      // The step in reference coordinates, J^-1 v, with the Jacobian J of the d-linear mapping.
+      Tensor<2, dim> jacobian;
+      for (const unsigned int v : cell->vertex_indices())
+        jacobian +=
+          outer_product(cell->vertex(v),
+                        GeometryInfo<dim>::d_linear_shape_function_gradient(reference, v));
+      const Tensor<1, dim> step = invert(jacobian) * face_rule_direction<dim>();
+      for (unsigned int d = 0; d < dim; ++d)
+        if ((reference[d] < tolerance && !(step[d] > 0.)) ||
+            (reference[d] > 1. - tolerance && !(step[d] < 0.)))
+          return 0;
+      return 1;
+    }
+
+    /**
+     * @brief A locally owned cell that holds a particle (within the search's tolerance): the
+     * cell, the particle's rank and index there, its reference coordinates in the cell and its
+     * position.
+     */
+    template <int dim>
+    struct Candidate
+    {
+      /// The cell.
+      typename Triangulation<dim>::active_cell_iterator cell;
+      /// The rank that owns the particle.
+      unsigned int rank;
+      /// The particle's index among that rank's owned particles.
+      unsigned int local;
+      /// Its reference coordinates in the cell.
+      Point<dim> reference;
+      /// Its position.
+      Point<dim> real;
+    };
+
+    /**
+     * @brief Every locally owned cell of every rank that holds one of @p points (this rank's
+     * particles; those @p to_locate does not mark are not searched), within @p tolerance in
+     * reference coordinates: each point goes to the ranks whose @p global_boxes hold it, and
+     * there every owned cell whose bounding box touches it is tried. deal.II's search
+     * (GridTools::internal::distributed_compute_point_locations) finds one cell and then the
+     * cells that share a vertex with it; across a slit (coincident faces with nodes of their
+     * own) the cells share no vertex, so which cells it found for a particle on a slit depended
+     * on where the search started, and that on the partition. Returns the candidates held by
+     * this rank's cells.
+     */
+    template <int dim>
+    std::vector<Candidate<dim>>
+    locate_candidates(const GridTools::Cache<dim>                      &cache,
+                      const std::vector<Point<dim>>                    &points,
+                      const std::vector<bool>                          &to_locate,
+                      const std::vector<std::vector<BoundingBox<dim>>> &global_boxes,
+                      const double                                      tolerance,
+                      const MPI_Comm                                    comm)
+    {
+      // To each rank whose boxes hold a point: the point's index and coordinates.
+      std::map<unsigned int, std::vector<double>> requests;
+      for (unsigned int i = 0; i < points.size(); ++i)
+        if (to_locate.empty() || to_locate[i])
+          for (unsigned int r = 0; r < global_boxes.size(); ++r)
+            for (const auto &box : global_boxes[r])
+              if (box.point_inside(points[i], 1e-10))
+                {
+                  auto &request = requests[r];
+                  request.push_back(i);
+                  for (unsigned int d = 0; d < dim; ++d)
+                    request.push_back(points[i][d]);
+                  break;
+                }
+      const auto                  received = Utilities::MPI::some_to_some(comm, requests);
+      const auto                 &tree     = cache.get_locally_owned_cell_bounding_boxes_rtree();
+      std::vector<Candidate<dim>> candidates;
+      for (const auto &[rank, request] : received)
+        for (std::size_t k = 0; k < request.size(); k += dim + 1)
+          {
+            Point<dim> p, low, high;
+            for (unsigned int d = 0; d < dim; ++d)
+              p[d] = request[k + 1 + d];
+            // The cells' boxes that touch p, widened by a length far below any cell's size and
+            // far above the round-off of a coordinate (the reference check below decides).
+            const double widen = 1e-10 * (1. + p.norm());
+            for (unsigned int d = 0; d < dim; ++d)
+              {
+                low[d]  = p[d] - widen;
+                high[d] = p[d] + widen;
+              }
+            for (auto hit =
+                   tree.qbegin(boost::geometry::index::intersects(BoundingBox<dim>({low, high})));
+                 hit != tree.qend();
+                 ++hit)
+              try
+                {
+                  const auto      &cell = hit->second;
+                  const Point<dim> reference =
+                    cache.get_mapping().transform_real_to_unit_cell(cell, p);
+                  if (GeometryInfo<dim>::is_inside_unit_cell(reference, tolerance))
+                    candidates.push_back(
+                      {cell, rank, static_cast<unsigned int>(request[k]), reference, p});
+                }
+              catch (const typename Mapping<dim>::ExcTransformationFailed &)
+                {
+                  // p is far outside this cell
+                }
+          }
+      return candidates;
+    }
+
+    /**
+     * @brief The rule that gives each particle to one cell, the same on every partition: of
+     * the cells that hold a particle (@p components, from locate_candidates()), a cell that holds
+     * it strictly inside keeps it; of cells that hold it on their boundary (on a face, an edge, a
+     * vertex, or a slit's face), the one it moves into along face_rule_direction() keeps it, ties
+     * (none or several such cells, e.g. a particle on the mesh's boundary) to the least CellId.
+     * Decided on the particle's rank from the candidates the cells' ranks send (two some-to-some
+     * messages). Returns whether each component keeps its particle; sets @p found (one entry per
+     * owned particle, false on entry) for the particles some cell holds.
+     */
+    template <int dim>
+    std::vector<bool>
+    one_cell_per_particle(const std::vector<Candidate<dim>> &components,
+                          std::vector<bool>                 &found,
+                          const MPI_Comm                     comm)
+    {
+      // A point this close to a cell's boundary (reference coordinates) is on it, and the
+      // direction decides; wider than the search's tolerance (1e-10), so that every cell the
+      // search finds a point on the boundary of sees it there.
+      constexpr double  tolerance = 1e-8;
+      std::vector<bool> keep(components.size(), true);
+      // Every candidate, to the particle's rank: its local index, its priority and its cell's
+      // CellId, flattened to unsigned ints. (Sending only the candidates on a cell's boundary
+      // would miss a cell that holds a point strictly inside while a much smaller neighbour
+      // finds it within the search's tolerance.)
+      constexpr unsigned int id_size = std::tuple_size<CellId::binary_type>();
+      constexpr unsigned int entry   = 2 + id_size;
+      std::map<unsigned int, std::vector<unsigned int>> to_owner;
+      std::vector<std::array<unsigned int, entry>>      mine(components.size());
+      for (std::size_t c = 0; c < components.size(); ++c)
+        {
+          const auto &[cell, rank, local, reference, real] = components[c];
+          // The priority: strictly inside (0) before moving inside (1) before the rest (2).
+          const int  side = face_rule_side<dim>(cell, reference, tolerance);
+          const auto id   = cell->id().template to_binary<dim>();
+          mine[c][0]      = local;
+          mine[c][1]      = side < 0 ? 0 : 2 - side;
+          std::copy(id.begin(), id.end(), mine[c].begin() + 2);
+          auto &message = to_owner[rank];
+          message.insert(message.end(), mine[c].begin(), mine[c].end());
+        }
+      // On each particle's rank: the least candidate (priority, then CellId) of each particle.
+      const auto from_cells = Utilities::MPI::some_to_some(comm, to_owner);
+      std::map<unsigned int, std::array<unsigned int, entry>> best;
+      for (const auto &[sender, message] : from_cells)
+        for (std::size_t i = 0; i < message.size(); i += entry)
+          {
+            std::array<unsigned int, entry> candidate;
+            std::copy(message.begin() + i, message.begin() + i + entry, candidate.begin());
+            const auto known = best.find(candidate[0]);
+            if (known == best.end() || candidate < known->second)
+              best[candidate[0]] = candidate;
+            found[candidate[0]] = true;
+          }
+      // Back to every rank that sent a candidate: the winners of its particles.
+      std::map<unsigned int, std::vector<unsigned int>> to_cells;
+      for (const auto &[sender, message] : from_cells)
+        {
+          auto &answer = to_cells[sender];
+          for (std::size_t i = 0; i < message.size(); i += entry)
+            {
+              const auto &winner = best[message[i]];
+              answer.insert(answer.end(), winner.begin(), winner.end());
+            }
+        }
+      const auto winners = Utilities::MPI::some_to_some(comm, to_cells);
+      // The answers come in the order of the candidates sent to that rank.
+      std::map<unsigned int, std::size_t> read;
+      for (std::size_t c = 0; c < components.size(); ++c)
+        {
+          const unsigned int rank   = components[c].rank;
+          const auto        &answer = winners.at(rank);
+          std::size_t       &at     = read[rank];
+          keep[c] = std::equal(mine[c].begin(), mine[c].end(), answer.begin() + at);
+          at += entry;
+        }
+      return keep;
     }
 
     /// The permutation symbol eps_rjk of three axes.
@@ -159,30 +378,15 @@ namespace perideal
         const GridTools::Cache<dim> cache(tria, mapping);
         const auto                  local_boxes  = owned_cell_boxes(tria);
         const auto                  global_boxes = Utilities::MPI::all_gather(comm, local_boxes);
-        // A particle not to be located is placed beyond every rank's boxes: the search sends
-        // it nowhere, and it stays free.
-        std::vector<Point<dim>> points(x.begin(), x.begin() + n_owned);
-        Point<dim>              nowhere;
-        for (unsigned int d = 0; d < dim; ++d)
-          nowhere[d] = std::numeric_limits<double>::max();
-        if (!located_particles.empty())
-          for (unsigned int i = 0; i < n_owned; ++i)
-            if (!located_particles[i])
-              points[i] = nowhere;
-        const auto located =
-          GridTools::internal::distributed_compute_point_locations(cache,
-                                                                   points,
-                                                                   global_boxes,
-                                                                   std::vector<bool>(),
-                                                                   1e-10,
-                                                                   /*perform_handshake=*/true,
-                                                                   /*enforce_unique_mapping=*/true);
+        // A particle not to be located is not searched: it stays free.
+        const std::vector<Point<dim>> points(x.begin(), x.begin() + n_owned);
+        const auto                    candidates =
+          locate_candidates<dim>(cache, points, located_particles, global_boxes, 1e-10, comm);
+        std::vector<bool> found(n_owned, false);
+        const auto        keep = one_cell_per_particle<dim>(candidates, found, comm);
 
         // Every particle must lie in the mesh (checked on all ranks together, so that all throw).
         {
-          std::vector<bool> found(n_owned, false);
-          for (const auto &component : located.recv_components)
-            found[std::get<1>(component)] = true;
           std::vector<Point<dim>> lost;
           for (unsigned int i = 0; i < n_owned; ++i)
             if (!found[i] && (located_particles.empty() || located_particles[i]))
@@ -215,13 +419,14 @@ namespace perideal
         const unsigned int                   n_dofs     = fe_element.n_dofs_per_cell();
         std::vector<types::global_dof_index> dofs(n_dofs);
         const FieldLayout                   &fe_layout = fe.field_layout();
-        for (const auto &component : located.send_components)
+        for (std::size_t c = 0; c < candidates.size(); ++c)
           {
-            const auto &[level_index, rank, local, reference, real, permutation] = component;
-            (void)permutation;
+            if (!keep[c])
+              continue;
+            const auto &[tria_cell, rank, local, reference, real] = candidates[c];
             const typename DoFHandler<dim>::active_cell_iterator cell(&tria,
-                                                                      level_index.first,
-                                                                      level_index.second,
+                                                                      tria_cell->level(),
+                                                                      tria_cell->index(),
                                                                       &dof_handler);
             AssertThrow(GeometryInfo<dim>::is_inside_unit_cell(reference, 1e-8),
                         ExcInternalError("The point search placed a particle outside its cell (" +
@@ -331,15 +536,10 @@ namespace perideal
             for (unsigned int d = 0; d < dim; ++d)
               where += (d > 0 ? ", " : "") + ParameterUtilities::format_number(x[i][d]);
             AssertThrow(false,
-                        ExcMessage("The row of the transfer operator of the particle at (" + where +
-                                   ") sums to " + std::to_string(sum) +
-                                   " instead of 0 or 1: it was located in more than "
-                                   "one cell, which happens on several ranks to a "
-                                   "particle that lies on a slit of the mesh (faces "
-                                   "with nodes of their own, as the notches of "
-                                   "meshes/kalthoff_winkler_2d.msh); choose "
-                                   "<Discretization/Lattice spacing> so that no "
-                                   "particle lies on a slit."));
+                        ExcInternalError("The row of the transfer operator of the particle at (" +
+                                         where + ") sums to " + std::to_string(sum) +
+                                         " instead of 0 or 1: one_cell_per_particle() should "
+                                         "have given it to exactly one cell."));
           }
         slaved[i] = (sum != 0.);
       }

@@ -4,6 +4,7 @@
 # 1. kalthoff_plate_3d.prm and kalthoff_plate_3d_adaptive.prm on 1, 2, 4 and 8 ranks (more ranks
 #    than cores: --oversubscribe): the summaries must be identical line by line (times, memory
 #    and the communication line excepted); prints each rank count's communication line.
+#    The same plate at dx = 2 mm (rows on the notch planes, the slits), the same comparison.
 # 2. The same plate at dx = 0.625 mm (8 x the particles), 20 steps, for the communication line.
 # 3. The all-PD cube of doc/benchmarks/performance/pmb_lattice_3d.prm (41^3 particles), 20 steps.
 # 4. The traffic per step counted by MPI itself (mpi_traffic.c preloaded, two run lengths) for the
@@ -37,6 +38,22 @@ end"
     then echo "$case: $n ranks identical to 1 rank"
     else echo "$case: $n ranks DIFFER from 1 rank"; fi
   done
+done
+
+# The plate at dx = 2 mm: particle rows on the notch planes (the slits of the mesh).
+for n in 1 2 4 8; do
+  run slit "$n" "$HERE/kalthoff_plate_3d.prm" "subsection Discretization
+  set Lattice spacing = 2e-3
+end
+subsection Output
+  set Directory = slit.$n
+end"
+  echo "plate dx = 2 mm on $n ranks: $(tail -1 "slit.$n.time")"
+done
+for n in 2 4 8; do
+  if diff <(grep -v -E "$FILTER" slit.1.log) <(grep -v -E "$FILTER" "slit.$n.log") > /dev/null
+  then echo "plate dx = 2 mm: $n ranks identical to 1 rank"
+  else echo "plate dx = 2 mm: $n ranks DIFFER from 1 rank"; fi
 done
 
 for n in 1 2 4 8; do

@@ -28,9 +28,17 @@ namespace perideal
    * the shape gradients of the cell (they sum to 0), so that P^T turns a moment m on a slaved
    * particle into nodal forces 1/2 m x grad N_a: no net force, moment m. A
    * particle inside an FE_Nothing cell is *free*: its row is empty. A particle outside the mesh
-   * is an error. The cells are located with deal.II's distributed point search, so a particle's
-   * rank and its cell's rank may differ; the rank that owns the cell computes the row and
-   * Trilinos moves it to the particle's rank.
+   * is an error. Each particle is sent to the ranks whose cells' boxes hold it and tried
+   * against every owned cell there, so a particle's rank and its cell's rank may differ; the
+   * rank that owns the cell computes the row and Trilinos moves it to the particle's rank.
+   *
+   * A particle on cells' boundaries (a face, an edge, a vertex, or the two coincident faces of a
+   * slit) lies in several cells; it goes to the one it would move into along a fixed direction
+   * v with v_x < v_y < v_z all positive, ties (a particle on the mesh's boundary, where v
+   * points out) to the least CellId. The rule depends on the mesh and the particle only, so
+   * every partition gives every particle the same cell (doc/benchmarks/many_ranks/README.md:
+   * on a slit the result differed with the rank count before). deal.II's own search with a
+   * unique mapping picks the cell by rank and misses the cells across a slit.
    */
   template <int dim>
   class TransferOperator
