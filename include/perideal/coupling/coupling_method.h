@@ -248,10 +248,10 @@ namespace perideal
      * particles' model reads now and with its present bonds (a linear static solve is
      * linearized anew for it): the work of a changing temperature
      * (CoupledState::accumulate_temperature_work()) is their change from one temperature to
-     * another. Collective.
+     * another. Collective. By default the run stops, naming <Coupling/Method>.
      */
     virtual std::array<double, 2>
-    equilibrium_particle_energies(const ParticleVector &u_0, const ParticleVector &u_1) = 0;
+    equilibrium_particle_energies(const ParticleVector &u_0, const ParticleVector &u_1);
 
     /**
      * @brief The forces of the state (@p U, @p u) under the loads @p f_fe, @p f_pd, in the
@@ -295,6 +295,17 @@ namespace perideal
       if (counted.empty() || counted[i])
         energy += energy_density[i] * volume[i];
     return dealii::Utilities::MPI::sum(energy, particles.get_communicator());
+  }
+
+  template <int dim>
+  std::array<double, 2>
+  CouplingMethod<dim>::equilibrium_particle_energies(const ParticleVector &, const ParticleVector &)
+  {
+    AssertThrow(false,
+                dealii::ExcMessage("A quasi-static run with a temperature (<Temperature>) needs a "
+                                   "coupling method that gives its particles' energies; accepted "
+                                   "<Coupling/Method>: blended, overlapping schwarz."));
+    return {};
   }
 
   template <int dim>
