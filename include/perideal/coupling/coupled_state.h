@@ -14,6 +14,7 @@
 #include <perideal/fem/fe_region.h>
 #include <perideal/pd/particle_region.h>
 
+#include <array>
 #include <functional>
 #include <ostream>
 #include <string>
@@ -652,6 +653,17 @@ namespace perideal
     // conversion of the adaptive region).
     bool
     holds_layout() const;
+
+    // The change of the FE energy from the held temperature to the present one at the state of
+    // the work of the loads (U_0) and at the present one (U_1) [J].
+    std::array<double, 2>
+    fe_temperature_changes() const;
+
+    // Add the mean of @p changes, E(u, T_1) - E(u, T_0) at the step's start and end, to the
+    // temperature's work (and their mean magnitude to the energy it moved), then hold the
+    // present temperature.
+    void
+    add_temperature_work(const std::array<double, 2> &changes);
 
     // The parts of stored_parts() of @p state, a CoupledState or a const one.
     template <typename State>
