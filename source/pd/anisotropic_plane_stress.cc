@@ -51,6 +51,16 @@ namespace perideal
       /// alpha'_11, alpha'_22, alpha'_12 [1/K] (read only if thermal).
       std::array<double, 3> expansion;
 
+      /// The lanes' free thermal stretch per kelvin, n . alpha' . n.
+      template <typename Bond>
+      bond_simd::Vector
+      thermal_stretch(const Bond &bond) const
+      {
+        return (expansion[0] * bond.xi[0] * bond.xi[0] + expansion[1] * bond.xi[1] * bond.xi[1] +
+                2. * expansion[2] * bond.xi[0] * bond.xi[1]) *
+               (bond.inverse_length * bond.inverse_length);
+      }
+
       template <typename Bond>
       PlaneStressStretch
       strain(const Bond &bond,
@@ -60,10 +70,7 @@ namespace perideal
       {
         PlaneStressStretch y = linear_stretch(bond, u_a, u_b);
         if constexpr (thermal)
-          y.stretch -=
-            (expansion[0] * bond.xi[0] * bond.xi[0] + expansion[1] * bond.xi[1] * bond.xi[1] +
-             2. * expansion[2] * bond.xi[0] * bond.xi[1]) *
-            (bond.inverse_length * bond.inverse_length) * (0.5 * (u_a[2] + u_b[2]));
+          y.stretch -= thermal_stretch(bond) * (0.5 * (u_a[2] + u_b[2]));
         return y;
       }
     };
@@ -151,6 +158,37 @@ namespace perideal
             to_a[2]                      = e;
             to_b[2]                      = e;
           }
+      }
+    };
+
+    /**
+     * @brief The thermoelastic measure's pass (doc/theory/thermoelasticity.md): at both ends
+     * 1/2 (n . alpha' . n) |xi| [k_b s - g_b (beta_i A_i + beta_j A_j)], the bond's share of
+     * -dE/dDeltaT_b (DeltaT_b the mean of the ends'), s the linearized stretch of the whole
+     * strain and A of the whole strain (pass 1 without a temperature).
+     */
+    struct PlaneStressMeasureLaw : PlaneStressForceLaw<false, false>
+    {
+      static constexpr unsigned int n_outputs = 1;
+
+      template <typename Bond>
+      void
+      pair(const Bond               &bond,
+           const PlaneStressStretch &y,
+           const Side               &i,
+           const BondLanes          &lanes,
+           bond_simd::Vector        *to_a,
+           bond_simd::Vector        *to_b) const
+      {
+        using namespace bond_simd;
+        const Vector k_b(k + lanes.first_lane, stdx::element_aligned);
+        const Vector g_b(g + lanes.first_lane, stdx::element_aligned);
+        const Vector beta_A_b(beta_A + lanes.neighbour, stdx::element_aligned);
+        Vector       p               = 0.;
+        stdx::where(lanes.active, p) = (0.5 * bond.length) * this->thermal_stretch(bond) *
+                                       (k_b * y.stretch - g_b * (i.beta_A + beta_A_b));
+        to_a[0] = p;
+        to_b[0] = p;
       }
     };
 
@@ -549,22 +587,7 @@ namespace perideal
     if (thermal)
       k.blocks.gather(delta_T->begin(), 1, k.delta_T_field);
 
-    // Pass 1: break over-stretched bonds, then A_i = sum g_b n . eta / (V_i B_i).
-    std::fill(k.a_field.begin(), k.a_field.end(), 0.);
-    if (thermal)
-      k.dilatation_loop<true>(bonds, critical_stretch, in_plane_expansion);
-    else
-      k.dilatation_loop<false>(bonds, critical_stretch, in_plane_expansion);
-    ParticleVector A;
-    particles.reinit_vector(A, 1);
-    k.blocks.scatter_owned(k.a_field, 1, nullptr, A.begin());
-    for (unsigned int i = 0; i < n_owned; ++i)
-      A.local_element(i) /= volume[i] * B[i];
-    A.update_ghost_values();
-    std::vector<double> beta_A(particles.n_local());
-    for (unsigned int i = 0; i < particles.n_local(); ++i)
-      beta_A[i] = beta[i] * A.local_element(i);
-    k.blocks.gather(beta_A.data(), 1, k.beta_A_field);
+    const ParticleVector A = out_of_plane_pass(particles, critical_stretch, thermal);
 
     // Pass 2: forces (and bond energies), summed per particle and divided by V_i.
     std::fill(k.f_field.begin(), k.f_field.end(), 0.);
@@ -586,6 +609,65 @@ namespace perideal
         for (unsigned int i = 0; i < n_owned; ++i)
           (*energy_density)[i] -= beta[i] * 0.5 * B[i] * A.local_element(i) * A.local_element(i);
       }
+  }
+
+  ParticleVector
+  AnisotropicPlaneStress::out_of_plane_pass(ParticleSystem<2> &particles,
+                                            const double       critical_stretch,
+                                            const bool         thermal)
+  {
+    Kernel            &k       = *kernel;
+    BondList          &bonds   = particles.bonds();
+    const auto        &volume  = particles.volumes();
+    const auto        &beta    = particles.energy_weights();
+    const unsigned int n_owned = particles.n_owned();
+    // Break over-stretched bonds, then A_i = sum g_b n . eta / (V_i B_i).
+    std::fill(k.a_field.begin(), k.a_field.end(), 0.);
+    if (thermal)
+      k.dilatation_loop<true>(bonds, critical_stretch, in_plane_expansion);
+    else
+      k.dilatation_loop<false>(bonds, critical_stretch, in_plane_expansion);
+    ParticleVector A;
+    particles.reinit_vector(A, 1);
+    k.blocks.scatter_owned(k.a_field, 1, nullptr, A.begin());
+    for (unsigned int i = 0; i < n_owned; ++i)
+      A.local_element(i) /= volume[i] * B[i];
+    A.update_ghost_values();
+    std::vector<double> beta_A(particles.n_local());
+    for (unsigned int i = 0; i < particles.n_local(); ++i)
+      beta_A[i] = beta[i] * A.local_element(i);
+    k.blocks.gather(beta_A.data(), 1, k.beta_A_field);
+    return A;
+  }
+
+  void
+  AnisotropicPlaneStress::thermoelastic_measure(ParticleSystem<2>    &particles,
+                                                const ParticleVector &u,
+                                                std::vector<double>  &measure)
+  {
+    Kernel &k = *kernel;
+    if (in_plane_expansion == std::array<double, 3>{})
+      {
+        // Without an in-plane expansion the energy does not depend on the temperature.
+        measure.assign(particles.n_owned(), 0.);
+        return;
+      }
+    k.blocks.sync_state(particles.bonds());
+    k.blocks.gather(u.begin(), 2, k.u_field);
+    // A of the whole strain (no bond breaks here), then the measure's pass.
+    out_of_plane_pass(particles, std::numeric_limits<double>::infinity(), false);
+    std::fill(k.w_field.begin(), k.w_field.end(), 0.);
+    for_each_bond_block<2, 2>(k.blocks,
+                              k.unknowns<false>(),
+                              {{k.blocks.component(k.w_field, 0)}},
+                              PlaneStressMeasureLaw{{{{}, in_plane_expansion},
+                                                     k.lane_k.data(),
+                                                     k.lane_g.data(),
+                                                     k.blocks.component(k.beta_A_field, 0)}},
+                              particles.bonds(),
+                              0.);
+    measure.resize(particles.n_owned());
+    k.blocks.scatter_owned(k.w_field, 1, particles.volumes().data(), measure.data());
   }
 
   std::vector<double>
@@ -659,7 +741,8 @@ namespace perideal
   AnisotropicPlaneStress::capabilities() const
   {
     ModelCapabilities capabilities;
-    capabilities.thermal_strain = true;
+    capabilities.thermal_strain        = true;
+    capabilities.thermoelastic_heating = true;
     return capabilities;
   }
 

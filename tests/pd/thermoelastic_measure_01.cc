@@ -2,7 +2,8 @@
 // doc/theory/thermoelasticity.md): m_i = -(1/V_i) dE/dDeltaT_i at no temperature change, the
 // quantity whose rate heats a two-way coupled temperature. For PMB and LPS in 3D, plane strain
 // and plane stress, the anisotropic bond-based model (cubic NaCl constants, an orthotropic
-// expansion) in 3D and plane strain, and the Timoshenko bonds (rotations held at zero in the
+// expansion) in 3D and plane strain and its plane-stress counterpart (anisotropic plane
+// stress, NaCl turned about z), and the Timoshenko bonds (rotations held at zero in the
 // homogeneous strain) in 3D, plane strain and plane stress, with the surface correction:
 //  - it is the exact derivative of the model's energy: under a random displacement, m_l V_l
 //    against -dE/dDeltaT_l by central differences for particles on the surface, in the interior
@@ -19,6 +20,7 @@
 #include <deal.II/base/utilities.h>
 
 #include <perideal/pd/anisotropic_bond_based.h>
+#include <perideal/pd/anisotropic_plane_stress.h>
 #include <perideal/pd/bond_based.h>
 #include <perideal/pd/linear_peridynamic_solid.h>
 #include <perideal/pd/particle_system.h>
@@ -63,6 +65,17 @@ namespace
         entries.push_back({"Thermal expansion", "1e-5, 2e-5, 3e-5"});
         pd_tests::parse_model(*aniso, entries);
         model = std::move(aniso);
+      }
+    else if (name == "anisotropic plane stress")
+      {
+        if constexpr (dim == 2)
+          {
+            auto plane   = std::make_unique<perideal::AnisotropicPlaneStress>();
+            auto entries = pd_tests::nacl_about_z_entries;
+            entries.push_back({"Thermal expansion", "1e-5, 2e-5, 3e-5"});
+            pd_tests::parse_model(*plane, entries);
+            model = std::move(plane);
+          }
       }
     else if (name == "timoshenko bond based")
       {
@@ -273,9 +286,11 @@ main(int argc, char **argv)
       check<2>(name, perideal::PlanarAssumption::plane_strain);
       check<2>(name, perideal::PlanarAssumption::plane_stress);
     }
-  // Its plane-stress counterpart is a model of its own (anisotropic plane stress).
+  // Its plane-stress counterpart is a model of its own: NaCl turned about z, an orthotropic
+  // expansion.
   check<3>("anisotropic bond based", perideal::PlanarAssumption::three_dimensional);
   check<2>("anisotropic bond based", perideal::PlanarAssumption::plane_strain);
+  check<2>("anisotropic plane stress", perideal::PlanarAssumption::plane_stress);
   check<3>("timoshenko bond based", perideal::PlanarAssumption::three_dimensional);
   check<2>("timoshenko bond based", perideal::PlanarAssumption::plane_strain);
   check<2>("timoshenko bond based", perideal::PlanarAssumption::plane_stress);

@@ -116,7 +116,18 @@ namespace perideal
     thermal_expansion() const override;
 
     /**
-     * @brief thermal_strain.
+     * @brief m_l = -(1/V_l) dE/dDeltaT_l at no temperature change: pass 1 for A of the whole
+     * strain, then sum over the bonds of l of 1/2 (n . alpha' . n) |xi| [k_b s - g_b (beta_i A_i
+     * + beta_j A_j)] / V_l (doc/theory/thermoelasticity.md); alpha' : C' : eps in the interior of
+     * a homogeneous strain.
+     */
+    void
+    thermoelastic_measure(ParticleSystem<2>    &particles,
+                          const ParticleVector &u,
+                          std::vector<double>  &measure) override;
+
+    /**
+     * @brief thermal_strain, thermoelastic_heating.
      */
     ModelCapabilities
     capabilities() const override;
@@ -205,6 +216,16 @@ namespace perideal
      */
     void
     set_bond_coefficients(const ParticleSystem<2> &particles, const bool with_surface_factor);
+
+    /**
+     * @brief Pass 1 on the displacement (and, if @p thermal, the temperature change) gathered in
+     * the kernel: breaks the bonds stretched beyond @p critical_stretch and returns A_i of the
+     * owned and ghost particles; sets the kernel's beta A for pass 2.
+     */
+    ParticleVector
+    out_of_plane_pass(ParticleSystem<2> &particles,
+                      const double       critical_stretch,
+                      const bool         thermal);
 
     /**
      * @brief The free thermal extension |xi| n . alpha' . n DeltaT_b of every bond of the owned
