@@ -322,6 +322,8 @@ namespace perideal
             return true;
       return false;
     };
+    // A growing region keeps the partition of its first bins (ParticleSystem).
+    pd.particles().set_balance_by_particles(!adaptive.enabled());
     pd.setup(
       in_pd_region,
       [this](const Point<dim> &x) { return method().particle_weight(blending(x)); },

@@ -64,6 +64,13 @@ namespace perideal
 
   template <int dim>
   void
+  ParticleSystem<dim>::set_balance_by_particles(const bool balance)
+  {
+    balance_by_particles = balance;
+  }
+
+  template <int dim>
+  void
   ParticleSystem<dim>::generate(const Settings                                &settings,
                                 const BoundingBox<dim>                        &box,
                                 const std::function<bool(const Point<dim> &)> &in_body,
@@ -118,14 +125,14 @@ namespace perideal
     std::vector<double> bins_key(lower.begin_raw(), lower.end_raw());
     bins_key.insert(bins_key.end(), upper.begin_raw(), upper.end_raw());
     bins_key.insert(bins_key.end(), n_bins.begin(), n_bins.end());
-    if (!background_bins || bins_key != background_key)
+    const bool new_bins = !background_bins || bins_key != background_key;
+    if (new_bins)
       {
         background_bins = std::make_unique<parallel::distributed::Triangulation<dim>>(communicator);
         const std::vector<unsigned int> repetitions(n_bins.begin(), n_bins.end());
         GridGenerator::subdivided_hyper_rectangle(*background_bins, repetitions, lower, upper);
         background_key = bins_key;
       }
-    const auto &background = *background_bins;
 
     // The particles of the bin of one cell, in a fixed order: the lattice points in the body,
     // moved by their offsets.
@@ -150,8 +157,40 @@ namespace perideal
             }
     };
 
+    // p4est balances bins; weighted by the particles each bin holds it balances the particles:
+    // a body that fills a small part of its lattice box (the PD region of a coupled run) leaves
+    // most bins empty and, unweighted, one rank with several times the mean. The numbering is
+    // rank-invariant, so the partition changes no result. Kept bins keep their partition: a
+    // grown PD region finds each particle of the old one on its rank (the conversion's carried
+    // state, coupled_problem_conversion.cc), and such a region is not weighted
+    // (set_balance_by_particles()).
+    std::vector<Point<dim>> owned, ghost_candidates, cell_points;
+    if (new_bins && balance_by_particles && Utilities::MPI::n_mpi_processes(communicator) > 1)
+      {
+        std::vector<unsigned int> particles_of_bin(background_bins->n_active_cells(), 0);
+        std::uint64_t             n_particles = 0;
+        for (const auto &cell : background_bins->active_cell_iterators())
+          if (cell->is_locally_owned())
+            {
+              points_of_cell(cell, cell_points);
+              particles_of_bin[cell->active_cell_index()] = cell_points.size();
+              n_particles += cell_points.size();
+            }
+        // (An empty body keeps the unweighted partition.)
+        if (Utilities::MPI::sum(n_particles, communicator) > 0)
+          {
+            const auto weighting = background_bins->signals.weight.connect(
+              [&particles_of_bin](const typename Triangulation<dim>::cell_iterator &cell,
+                                  const typename Triangulation<dim>::CellStatus) -> unsigned int {
+                return particles_of_bin[cell->active_cell_index()];
+              });
+            background_bins->repartition();
+            weighting.disconnect();
+          }
+      }
+    const auto &background = *background_bins;
+
     // Owned particles, cell by cell.
-    std::vector<Point<dim>>              owned, ghost_candidates, cell_points;
     std::vector<types::global_dof_index> first_of_cell(background.n_active_cells(), 0);
     std::vector<std::pair<unsigned int, unsigned int>> ghost_range(background.n_active_cells());
     std::vector<std::uint64_t> particles_in_cell(background.n_active_cells(), 0);

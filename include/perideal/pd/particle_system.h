@@ -230,6 +230,16 @@ namespace perideal
              const std::function<bool(const dealii::Point<dim> &)> &no_fail = {},
              const std::function<void(std::uint64_t)>              &placed  = {});
 
+    /**
+     * @brief Whether generate() weights the partition of new background bins by the particles
+     * each holds (the default: balanced particles where the body fills a small part of its
+     * lattice box). Kept bins keep their partition at a regeneration, so a region that grows
+     * from a small start (the adaptive PD region) wants false: weights of the first region would
+     * crowd the grown ones on the ranks of the empty bins.
+     */
+    void
+    set_balance_by_particles(const bool balance);
+
     /// Communicator.
     MPI_Comm
     get_communicator() const;
@@ -364,6 +374,8 @@ namespace perideal
     Settings                        parameters;
     unsigned int                    n_owned_particles  = 0;
     dealii::types::global_dof_index n_global_particles = 0;
+    /// set_balance_by_particles().
+    bool balance_by_particles = true;
     /// The background bins (one cell per bin, at least a bond long) and the box and bin counts
     /// they were made for.
     std::unique_ptr<dealii::parallel::distributed::Triangulation<dim>> background_bins;
