@@ -96,6 +96,15 @@ namespace perideal
   }
 
   template <int dim>
+  void
+  Checkpoint<dim>::add_part(const std::string                             &line,
+                            const std::function<void(CheckpointWriter &)> &save,
+                            const std::function<void(CheckpointReader &)> &load)
+  {
+    parts.push_back({line, save, load});
+  }
+
+  template <int dim>
   std::vector<CoupledState<dim> *>
   Checkpoint<dim>::all_states(CoupledState<dim> &state) const
   {
@@ -119,6 +128,8 @@ namespace perideal
     for (const auto &other : others)
       out << prefixed(other.problem_lines, other.name + "/")
           << other.state->fingerprint(other.name + "/");
+    for (const auto &part : parts)
+      out << part.line << '\n';
     return out.str();
   }
 
@@ -208,6 +219,8 @@ namespace perideal
     state.save(writer, "");
     for (const auto &other : others)
       other.state->save(writer, other.name + "/");
+    for (const auto &part : parts)
+      part.save(writer);
     // The postprocessors' state: rank 0's.
     writer.add_bytes("postprocessors",
                      state.is_root() ?
@@ -257,6 +270,8 @@ namespace perideal
     state.load(in, "");
     for (const auto &other : others)
       other.state->load(in, other.name + "/");
+    for (const auto &part : parts)
+      part.load(in);
 
     // The postprocessors (the statistics table is rewritten here, the first write).
     const std::vector<char> saved_state = in.read_all("postprocessors");

@@ -481,6 +481,12 @@ namespace perideal
                                   "implicit\n" :
                                   "explicit\n"),
                              physics[k]->state());
+    // The two-way coupling's measure of the last step, from which the next one heats.
+    if (heating.active())
+      checkpoint.add_part(
+        "Temperature/Coupling = two way",
+        [this](CheckpointWriter &writer) { heating.save(writer, "thermoelastic heating/"); },
+        [this](CheckpointReader &reader) { heating.load(reader, "thermoelastic heating/"); });
     solver().run(state(), postprocessors(), checkpoint);
     // The two-way coupling's heat (part of the heat's heat in).
     if (heating.active())

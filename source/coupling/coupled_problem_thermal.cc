@@ -123,8 +123,8 @@ namespace perideal
   {
     // What the thermoelastic heating needs (doc/theory/thermoelasticity.md): the measure of the
     // particles' model, an explicit mechanics whose steps the heat follows, an explicit heat
-    // (its source is held over each step as an applied load), and a run the checkpoints and
-    // conversions do not cut (neither carries the previous step's measure yet).
+    // (its source is held over each step as an applied load), and a run the conversions do not
+    // cut (they do not carry the previous step's measure yet).
     const std::string entry = "<Temperature/Coupling> = two way";
     const std::string model = pd.has_body() ? prm.get({"Material"}, "Model") : "";
     AssertThrow(!pd.has_body() || pd.material().capabilities().thermoelastic_heating,
@@ -147,11 +147,6 @@ namespace perideal
                       Physics<dim>::section(physics[k]->name) + "/Solver/Type> = " +
                       prm.get({Physics<dim>::section(physics[k]->name), "Solver"}, "Type") +
                       "; accepted: explicit (or <Temperature/Coupling> = one way)."));
-    AssertThrow(settings.checkpoint_interval == 0 && settings.checkpoint_time_interval == 0.,
-                ExcMessage(entry + ": a checkpoint does not keep the deformation's measure of the "
-                                   "last step yet, from which the next step heats; set <Output/"
-                                   "Checkpoint interval> and <Output/Checkpoint time interval> to "
-                                   "off (or <Temperature/Coupling> = one way)."));
     AssertThrow(!adaptive.enabled(),
                 ExcMessage(entry + ": a conversion of the adaptive PD region does not carry the "
                                    "deformation's measure over yet; set <Coupling/Adaptive "

@@ -4,6 +4,7 @@
 // ---------------------------------------------------------------------
 #include <perideal/coupling/coupled_state.h>
 
+#include <cstring>
 #include <sstream>
 
 namespace perideal
@@ -55,6 +56,32 @@ namespace perideal
                                {parts.energy_density});
     pd().save_bond_histories(writer, prefix + "bond histories");
     fe().save_dof_values(writer, prefix + "FE", parts.fe_vectors);
+    // The temperature the next step's work of the temperature change starts from
+    // (hold_temperature()): that of the last force evaluation, which a two-way coupling
+    // predicted before the heat's step, so it is stored rather than derived at the restart.
+    if (has_temperature())
+      {
+        const bool        on_particles = held_temperature_change.size() > 0;
+        std::vector<char> held;
+        if (is_root())
+          {
+            const double values[2] = {on_particles ? 1. : 0., held_thermal_energy};
+            append_bytes(held, values, 2);
+          }
+        writer.add_records(prefix + "held temperature",
+                           1,
+                           2 * sizeof(double),
+                           is_root() ? std::vector<std::uint64_t>{0} : std::vector<std::uint64_t>{},
+                           std::move(held));
+        if (on_particles)
+          pd().save_particle_records(writer,
+                                     prefix + "held particle temperature",
+                                     {&held_temperature_change},
+                                     1,
+                                     {});
+        if (fe_thermal)
+          fe().save_dof_values(writer, prefix + "held thermal load", {&held_thermal_load});
+      }
   }
 
   template <int dim>
@@ -96,6 +123,29 @@ namespace perideal
     fe().load_dof_values(reader, prefix + "FE", parts.fe_vectors);
     u.update_ghost_values();
     U.update_ghost_values();
+    if (has_temperature())
+      {
+        const std::vector<char> held =
+          reader.read_records(prefix + "held temperature", 2 * sizeof(double), {0});
+        double values[2];
+        std::memcpy(values, held.data(), sizeof(values));
+        held_thermal_energy = values[1];
+        if (values[0] != 0.)
+          {
+            pd().particles().reinit_vector(held_temperature_change, 1);
+            pd().load_particle_records(reader,
+                                       prefix + "held particle temperature",
+                                       {&held_temperature_change},
+                                       1,
+                                       {});
+            held_temperature_change.update_ghost_values();
+          }
+        if (fe_thermal)
+          {
+            fe().initialize_vector(held_thermal_load);
+            fe().load_dof_values(reader, prefix + "held thermal load", {&held_thermal_load});
+          }
+      }
   }
 
   namespace

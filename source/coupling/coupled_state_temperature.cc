@@ -82,10 +82,18 @@ namespace perideal
   bool
   CoupledState<dim>::holds_layout() const
   {
+    // The same layout, not only the same object: a restart reads the held vectors into a layout
+    // of their own.
+    const auto same = [](const auto &held, const auto &present) {
+      return held.get_partitioner() == present.get_partitioner() ||
+             (held.size() == present.size() &&
+              held.partitioners_are_compatible(*present.get_partitioner()));
+    };
     const ParticleVector *change = pd().material().temperature_change();
-    return (change == nullptr ||
-            held_temperature_change.get_partitioner() == change->get_partitioner()) &&
-           (!fe_thermal || held_thermal_load.get_partitioner() == thermal_load.get_partitioner());
+    const bool            holds  = (change == nullptr || same(held_temperature_change, *change)) &&
+                       (!fe_thermal || same(held_thermal_load, thermal_load));
+    // On every rank alike (a conversion may leave one rank's layout as it was).
+    return !Utilities::MPI::logical_or(!holds, comm());
   }
 
   template <int dim>

@@ -15,7 +15,12 @@
 //    explicitly to each load step's time before its solve (K = 2);
 //  - coupled: the same explicit run with an FE part of both physics (an elasticity and a heat
 //    mesh of 2 mm cells, blended from x = 12 mm to 16 mm), so the checkpoint holds the FE
-//    dof values of both (K = 6).
+//    dof values of both (K = 6);
+//  - two way: the coupled run with a thermal expansion of 1e-8 /K on both sides and the
+//    thermoelastic heating (<Temperature/Coupling> = two way, T_0 = 300 K: with this plate's
+//    rho c of 1 J/(m^3 K) a coupling T_0 beta^2 / (rho c M) of about 0.04), so the checkpoint
+//    also holds the measure the next step heats from, the heat so far and the temperature the
+//    mechanics' last force evaluation saw (K = 6).
 // A checkpoint of the mechanics alone read by the problem with the heat, and the reverse, is
 // refused naming <Physics/List>, before anything is written.
 // ---------------------------------------------------------------------
@@ -43,14 +48,15 @@ namespace
     explicit_heat,
     implicit_heat,
     quasi_static,
-    coupled
+    coupled,
+    two_way
   };
 
   // The plate with its heat (@p with_heat) for the case @p kind.
   std::string
   input(const Kind kind, const bool with_heat)
   {
-    const bool        coupled   = kind == Kind::coupled;
+    const bool        coupled   = kind == Kind::coupled || kind == Kind::two_way;
     const std::string mechanics = coupling_tests::multiphysics_mechanics(true) + R"(
 subsection Initial conditions
   set Velocity = if(x < 0.01, -20, 20); 0
@@ -91,6 +97,25 @@ subsection Time stepping
 end
 )";
     text += mechanics;
+    if (kind == Kind::two_way)
+      text += R"(
+subsection Material
+  subsection bond based
+    set Thermal expansion = 1e-8
+  end
+end
+subsection Finite elements
+  subsection Elasticity
+    set Thermal expansion = 1e-8
+  end
+end
+subsection Temperature
+  set Source                         = heat
+  set Reference temperature          = 0
+  set Coupling                       = two way
+  set Absolute reference temperature = 300
+end
+)";
     if (with_heat)
       text += coupling_tests::with_heat(heat);
     return text;
@@ -192,7 +217,7 @@ end
     verdict("  temperatures equal, bit for bit",
             !full.T.empty() && equal(full.T, restarted.T) && equal(full.FE_T, restarted.FE_T));
     const std::vector<std::string> files =
-      kind == Kind::coupled ?
+      kind == Kind::coupled || kind == Kind::two_way ?
         std::vector<std::string>{"statistics.csv",
                                  "particles.xdmf",
                                  "particles_heat.xdmf",
@@ -241,6 +266,7 @@ main(int argc, char **argv)
   check("implicit", Kind::implicit_heat, 6);
   check("quasi_static", Kind::quasi_static, 2);
   check("coupled", Kind::coupled, 6);
+  check("two_way", Kind::two_way, 6);
 
   refused("heat_from_mechanics",
           input(Kind::explicit_heat, false),

@@ -10,6 +10,7 @@
 #include <perideal/coupling/postprocessors/postprocessor.h>
 
 #include <cstdint>
+#include <functional>
 #include <limits>
 #include <string>
 #include <vector>
@@ -90,6 +91,17 @@ namespace perideal
     add_physics(const std::string &name,
                 const std::string &problem_lines,
                 CoupledState<dim> &state);
+
+    /**
+     * @brief A part of the run besides the physics' states whose records the checkpoint holds
+     * too (the two-way coupling's measure, ThermoelasticHeating): its fingerprint line @p line
+     * ("key = value"), @p save writing its sections, @p load reading them at a restart. Call
+     * before the run.
+     */
+    void
+    add_part(const std::string                             &line,
+             const std::function<void(CheckpointWriter &)> &save,
+             const std::function<void(CheckpointReader &)> &load);
 
     /**
      * @brief The solver's run: @p description (e.g. its number and size of steps) is part of the
@@ -177,6 +189,14 @@ namespace perideal
       bool                      valid = false;
     };
 
+    /// A part of add_part(): fingerprint line, writer, reader.
+    struct Part
+    {
+      std::string                             line;
+      std::function<void(CheckpointWriter &)> save;
+      std::function<void(CheckpointReader &)> load;
+    };
+
     /// The physics of add_physics(): name, fingerprint lines, state.
     struct OtherPhysics
     {
@@ -197,6 +217,7 @@ namespace perideal
     double                    previous_time = 0.;
     Kept                      kept;
     std::vector<OtherPhysics> others;
+    std::vector<Part>         parts;
   };
 } // namespace perideal
 

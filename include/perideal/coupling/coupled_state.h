@@ -649,8 +649,8 @@ namespace perideal
     /// The copy of the last keep().
     Kept kept;
 
-    // Whether the held temperature has the layout of the present fields (not after a
-    // conversion of the adaptive region).
+    // Whether the held temperature has the layout of the present fields on every rank (not
+    // after a conversion of the adaptive region). Collective.
     bool
     holds_layout() const;
 

@@ -5,6 +5,7 @@
 #ifndef perideal_coupling_thermoelastic_heating_h
 #define perideal_coupling_thermoelastic_heating_h
 
+#include <perideal/base/checkpoint_file.h>
 #include <perideal/base/linear_algebra.h>
 #include <perideal/coupling/coupled_state.h>
 #include <perideal/coupling/temperature_source.h>
@@ -90,6 +91,18 @@ namespace perideal
      */
     void
     heat_step(const double dt);
+
+    /**
+     * @brief Write the measure the next step heats from (particles and the heat's FE dofs) and
+     * the heat so far into @p writer's sections "<prefix>...": a checkpoint of a two-way run
+     * (Checkpoint::add_part()). Collective.
+     */
+    void
+    save(CheckpointWriter &writer, const std::string &prefix) const;
+
+    /// Read what save() wrote (a restart, on any number of ranks). Collective.
+    void
+    load(CheckpointReader &reader, const std::string &prefix);
 
     /// The heat the deformation gave so far, -T_0 sum (m_{n+1} - m_n) over the steps [J] (summed
     /// over the ranks; collective).

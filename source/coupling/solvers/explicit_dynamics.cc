@@ -387,13 +387,10 @@ namespace perideal
     RunControl<dim>   run(state, postprocessors, checkpoint, false);
     const RunPosition start =
       run.start(run_description.str(), n_steps, [&]() { start_state(state); });
-    // A restart holds the temperature of the time reached, which the work of the temperature in
-    // the next step starts from.
+    // A restart takes the temperature of the time reached (the checkpoint held the one the work
+    // of the temperature in the next step starts from).
     if (checkpoint.restarting())
-      {
-        state.update_temperature(start.time);
-        state.hold_temperature();
-      }
+      state.update_temperature(start.time);
 
     ProgressReporter progress(state.comm(),
                               state.log(),

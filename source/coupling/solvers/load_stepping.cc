@@ -272,7 +272,8 @@ namespace perideal
                   state.advance_other_physics(0, 0., 0., true);
                 });
     // A restart holds the temperature of the load factor reached, which the work of the
-    // temperature in the next step starts from.
+    // temperature in the next step starts from (derived, not the checkpoint's: a step that did
+    // not converge writes the kept state, whose held temperature is not kept; one way only).
     if (checkpoint.restarting())
       {
         state.update_temperature(start.time * settings.end_time);
