@@ -130,6 +130,19 @@ namespace perideal
         return {bond_simd::Vector(beta_A + a, std::experimental::element_aligned)};
       }
 
+      /// The lanes' k_b s - g_b (beta_i A_i + beta_j A_j) (0 in inactive lanes): dE/ds / |xi|.
+      bond_simd::Vector
+      tension(const PlaneStressStretch &y, const Side &i, const BondLanes &lanes) const
+      {
+        using namespace bond_simd;
+        const Vector k_b(k + lanes.first_lane, stdx::element_aligned);
+        const Vector g_b(g + lanes.first_lane, stdx::element_aligned);
+        const Vector beta_A_b(beta_A + lanes.neighbour, stdx::element_aligned);
+        Vector       t               = 0.;
+        stdx::where(lanes.active, t) = k_b * y.stretch - g_b * (i.beta_A + beta_A_b);
+        return t;
+      }
+
       template <typename Bond>
       void
       pair(const Bond               &bond,
@@ -140,12 +153,7 @@ namespace perideal
            bond_simd::Vector        *to_b) const
       {
         using namespace bond_simd;
-        const Vector k_b(k + lanes.first_lane, stdx::element_aligned);
-        const Vector g_b(g + lanes.first_lane, stdx::element_aligned);
-        const Vector beta_A_b(beta_A + lanes.neighbour, stdx::element_aligned);
-        Vector       t = 0.;
-        stdx::where(lanes.active, t) =
-          (k_b * y.stretch - g_b * (i.beta_A + beta_A_b)) * bond.inverse_length;
+        const Vector t = tension(y, i, lanes) * bond.inverse_length;
         for (unsigned int d = 0; d < 2; ++d)
           {
             to_a[d] = bond.xi[d] * t;
@@ -153,7 +161,8 @@ namespace perideal
           }
         if constexpr (with_energy)
           {
-            Vector e                     = 0.;
+            const Vector k_b(k + lanes.first_lane, stdx::element_aligned);
+            Vector       e               = 0.;
             stdx::where(lanes.active, e) = (0.25 * bond.length) * k_b * y.stretch * y.stretch;
             to_a[2]                      = e;
             to_b[2]                      = e;
@@ -180,13 +189,8 @@ namespace perideal
            bond_simd::Vector        *to_a,
            bond_simd::Vector        *to_b) const
       {
-        using namespace bond_simd;
-        const Vector k_b(k + lanes.first_lane, stdx::element_aligned);
-        const Vector g_b(g + lanes.first_lane, stdx::element_aligned);
-        const Vector beta_A_b(beta_A + lanes.neighbour, stdx::element_aligned);
-        Vector       p               = 0.;
-        stdx::where(lanes.active, p) = (0.5 * bond.length) * this->thermal_stretch(bond) *
-                                       (k_b * y.stretch - g_b * (i.beta_A + beta_A_b));
+        const bond_simd::Vector p =
+          (0.5 * bond.length) * this->thermal_stretch(bond) * this->tension(y, i, lanes);
         to_a[0] = p;
         to_b[0] = p;
       }
