@@ -52,13 +52,17 @@ namespace perideal
      * (mechanical) stretch, then adds the pair sum p omega chi V_i V_j |xi| e (e = |xi| s) at
      * both ends (the dilatation before the factor n / (m_i V_i)).
      */
-    template <int dim, bool thermal>
+    template <int dim, bool thermal, bool keep = false>
     struct LPSDilatationLaw : LPSStrain<dim, thermal>
     {
       static constexpr unsigned int n_outputs    = 1;
       static constexpr bool         breaks_bonds = true;
       /// omega chi V_i V_j per lane.
       const double *weight;
+      /// If @p keep: the rings of rho and of the stretch per lane for pass 2 (rho at lane &
+      /// ring_mask, the stretch ring_mask + 1 further).
+      double     *ring      = nullptr;
+      std::size_t ring_mask = 0;
 
       template <typename Bond>
       void
@@ -75,6 +79,12 @@ namespace perideal
                                        y.stretch * (bond.length * bond.length);
         to_a[0] = p;
         to_b[0] = p;
+        if constexpr (keep)
+          {
+            const std::size_t k = lanes.first_lane & ring_mask;
+            y.rho.copy_to(ring + k, stdx::element_aligned);
+            y.stretch.copy_to(ring + ring_mask + 1 + k, stdx::element_aligned);
+          }
       }
     };
 
@@ -115,7 +125,7 @@ namespace perideal
      * (theta / m and alpha carry the particles' energy weights); with @p thermal, e and theta
      * are the mechanical ones (LPSStrain).
      */
-    template <int dim, bool with_energy, bool thermal>
+    template <int dim, bool with_energy, bool thermal, bool kept = false>
     struct LPSForceLaw : LPSStateLaw<dim, thermal>
     {
       static constexpr unsigned int n_outputs    = dim + (with_energy ? 1 : 0);
@@ -123,6 +133,32 @@ namespace perideal
       using Side                                 = typename LPSStateLaw<dim, thermal>::Side;
       /// n k - (n + 2) mu.
       double dilatation_coefficient;
+      /// If @p kept: the rings in which LPSDilatationLaw kept rho and the stretch.
+      const double *ring      = nullptr;
+      std::size_t   ring_mask = 0;
+
+      /// The deformed bond; if @p kept, only r is formed and rho and the stretch are pass 1's.
+      template <typename Bond>
+      DeformedBond<dim>
+      strain(const Bond              &bond,
+             const std::size_t        first_lane,
+             const bond_simd::Vector *u_a,
+             const bond_simd::Vector *u_b) const
+      {
+        if constexpr (kept)
+          {
+            namespace stdx = std::experimental;
+            DeformedBond<dim> y;
+            for (unsigned int d = 0; d < dim; ++d)
+              y.r[d] = bond.xi[d] + (u_b[d] - u_a[d]);
+            const std::size_t k = first_lane & ring_mask;
+            y.rho.copy_from(ring + k, stdx::element_aligned);
+            y.stretch.copy_from(ring + ring_mask + 1 + k, stdx::element_aligned);
+            return y;
+          }
+        else
+          return LPSStrain<dim, thermal>::strain(bond, first_lane, u_a, u_b);
+      }
 
       template <typename Bond>
       void
@@ -227,6 +263,9 @@ namespace perideal
     typename BondBlocks<dim>::Array theta_scale_field;
     /// The order of the two passes in one sweep (fused_forces()).
     StateSweep sweep;
+    /// rho and the stretch of the lanes pass 1 has run and pass 2 not yet (fused_forces()): two
+    /// rings of a power of two of lanes, at least the largest lag of the sweep.
+    typename BondBlocks<dim>::Array ring;
 
     /**
      * @brief The kernel-order unknowns of the pair laws: the dim displacement components and,
@@ -279,7 +318,7 @@ namespace perideal
                  const double dilatation_coefficient,
                  const double expansion)
     {
-      using Law = LPSForceLaw<dim, with_energy, thermal>;
+      using Law = LPSForceLaw<dim, with_energy, thermal, true>;
       std::fill(theta_field.begin(), theta_field.end(), 0.);
       std::fill(f_field.begin(), f_field.end(), 0.);
       if constexpr (with_energy)
@@ -294,13 +333,19 @@ namespace perideal
       const double *scale                               = blocks.component(theta_scale_field, 0);
       const double *beta_over_m                         = blocks.component(beta_over_m_field, 0);
       const std::array<const double *, dim + thermal> u = unknowns<thermal>();
-      const LPSDilatationLaw<dim, thermal> dilatation_law{{{}, expansion}, lane_weight.data()};
-      const Law                            force_law{{{{}, expansion},
-                                                      lane_weight.data(),
-                                                      theta_over_m,
-                                                      blocks.component(alpha_field, 0),
-                                                      theta},
-                          dilatation_coefficient};
+      const std::size_t                               mask = ring.size() / 2 - 1;
+      const LPSDilatationLaw<dim, thermal, true>      dilatation_law{{{}, expansion},
+                                                                lane_weight.data(),
+                                                                ring.data(),
+                                                                mask};
+      const Law                                       force_law{{{{}, expansion},
+                                                                 lane_weight.data(),
+                                                                 theta_over_m,
+                                                                 blocks.component(alpha_field, 0),
+                                                                 theta},
+                          dilatation_coefficient,
+                          ring.data(),
+                          mask};
       fused_state_passes(
         blocks,
         sweep,
@@ -530,6 +575,25 @@ namespace perideal
       k.sweep.reinit(k.blocks,
                      k.blocks.component(ghost_field, 0),
                      ghost_field.size() - BondBlocks<dim>::width);
+      // The largest lag in lanes between pass 1 and pass 2 of the sweep.
+      const auto       &groups  = k.blocks.groups();
+      const std::size_t width   = BondBlocks<dim>::width;
+      std::size_t       written = 0, lag = width;
+      fused_state_passes(
+        k.blocks,
+        k.sweep,
+        ghost_field.size() - width,
+        [&](const std::size_t, const std::size_t end) {
+          written = std::size_t(groups[end].first_block) * width;
+        },
+        [](const std::size_t, const std::size_t) {},
+        [&](const std::size_t first, const std::size_t) {
+          lag = std::max(lag, written - std::size_t(groups[first].first_block) * width);
+        });
+      std::size_t ring_size = width;
+      while (ring_size < lag)
+        ring_size *= 2;
+      k.ring.resize_fast(2 * ring_size);
     }
     fracture_factor = 1.;
     if (context.lattice_fracture)
