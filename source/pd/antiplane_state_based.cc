@@ -137,165 +137,73 @@ namespace perideal
     /// Torsion: the fixed fields p = psi (x - x0), q = psi (y - y0) of TwistedSlopePairLaw
     /// (empty without a twist).
     typename BondBlocks<dim>::Array twist_field;
-    /// Kernel order, for the sweep of both passes (fused_forces()): the volume V (1 at ghosts),
-    /// b g (dim components) and (1 - alpha) mu beta b g (dim components; both 0 at ghosts): the
-    /// shear angle r = b g (.) sum / V and the force state s = (1 - alpha) mu beta b g (.) r of
-    /// an owned particle from its pass-1 sums.
-    typename BondBlocks<dim>::Array volume_field, angle_factor_field, state_factor_field;
-    /// The order of the two passes in one sweep.
-    StateSweep sweep;
 
     /**
-     * @brief Pass 2 (StateForceLaw) into f_field (and e_field if @p with_energy), zeroed here.
+     * @brief Pass 1 (ShearAngleLaw): breaks bonds whose slope exceeds @p critical_slope and
+     * sums the shear angles into r_field.
+     */
+    void
+    angle_loop(BondList &bonds, const double critical_slope)
+    {
+      std::fill(r_field.begin(), r_field.end(), 0.);
+      std::array<double *, dim> out;
+      for (unsigned int d = 0; d < dim; ++d)
+        out[d] = blocks.component(r_field, d);
+      if (twist_field.empty())
+        for_each_bond_block<1>(blocks,
+                               {{blocks.component(w_field, 0)}},
+                               out,
+                               ShearAngleLaw<dim>{{lane_weight.data()}},
+                               bonds,
+                               critical_slope);
+      else
+        for_each_bond_block<3>(blocks,
+                               {{blocks.component(w_field, 0),
+                                 blocks.component(twist_field, 0),
+                                 blocks.component(twist_field, 1)}},
+                               out,
+                               ShearAngleLaw<dim, TwistedSlopePairLaw<dim, false>>{
+                                 {{lane_weight.data()}}},
+                               bonds,
+                               critical_slope);
+    }
+
+    /**
+     * @brief Pass 2 (StateForceLaw) into f_field (and e_field if @p with_energy).
      */
     template <bool with_energy>
     void
     force_loop(BondList &bonds)
     {
       std::fill(f_field.begin(), f_field.end(), 0.);
-      if constexpr (with_energy)
-        std::fill(e_field.begin(), e_field.end(), 0.);
-      if (twist_field.empty())
-        force_groups<with_energy, false>(bonds, 0, blocks.groups().size() - 1);
-      else
-        force_groups<with_energy, true>(bonds, 0, blocks.groups().size() - 1);
-    }
-
-    /**
-     * @brief The outputs of pass 2: f_field and, if @p with_energy, e_field.
-     */
-    template <bool with_energy>
-    std::array<double *, 1 + with_energy>
-    force_outputs()
-    {
-      std::array<double *, 1 + with_energy> out;
+      std::array<double *, StateForceLaw<dim, with_energy>::n_outputs> out;
       out[0] = blocks.component(f_field, 0);
       if constexpr (with_energy)
-        out[1] = blocks.component(e_field, 0);
-      return out;
-    }
-
-    /**
-     * @brief The unknowns of pass 1 (@p pass1) or pass 2: w, the twist fields if @p twisted,
-     * and in pass 2 the components of s.
-     */
-    template <bool twisted, bool pass1>
-    std::array<const double *, (twisted ? 3 : 1) + (pass1 ? 0 : dim)>
-    unknowns()
-    {
-      std::array<const double *, (twisted ? 3 : 1) + (pass1 ? 0 : dim)> u;
-      u[0] = blocks.component(w_field, 0);
-      if constexpr (twisted)
         {
+          std::fill(e_field.begin(), e_field.end(), 0.);
+          out[1] = blocks.component(e_field, 0);
+        }
+      // The unknowns of pass 2: w (the twist fields under torsion) and the components of s.
+      if (twist_field.empty())
+        {
+          std::array<const double *, dim + 1> u;
+          u[0] = blocks.component(w_field, 0);
+          for (unsigned int d = 0; d < dim; ++d)
+            u[1 + d] = blocks.component(s_field, d);
+          const StateForceLaw<dim, with_energy> law{{lane_coefficient.data()}, lane_weight.data()};
+          for_each_bond_block<dim + 1>(blocks, u, out, law, bonds, 0.);
+        }
+      else
+        {
+          std::array<const double *, dim + 3> u;
+          u[0] = blocks.component(w_field, 0);
           u[1] = blocks.component(twist_field, 0);
           u[2] = blocks.component(twist_field, 1);
-        }
-      if constexpr (!pass1)
-        for (unsigned int d = 0; d < dim; ++d)
-          u[(twisted ? 3 : 1) + d] = blocks.component(s_field, d);
-      return u;
-    }
-
-    /**
-     * @brief Pass 2 (StateForceLaw, twisted if @p twisted) of the groups [@p first, @p end).
-     */
-    template <bool with_energy, bool twisted>
-    void
-    force_groups(BondList &bonds, const std::size_t first, const std::size_t end)
-    {
-      const StateForceLaw<dim, with_energy, twisted> law{{{lane_coefficient.data()}},
-                                                         lane_weight.data()};
-      for_each_bond_block<(twisted ? 3 : 1) + dim>(blocks,
-                                                   unknowns<twisted, false>(),
-                                                   force_outputs<with_energy>(),
-                                                   law,
-                                                   bonds,
-                                                   0.,
-                                                   first,
-                                                   end);
-    }
-
-    /**
-     * @brief Both passes in one sweep (fused_state_passes()): pass 1 (ShearAngleLaw, bonds
-     * whose slope exceeds @p critical_slope break) into r_field, made the shear angles and the
-     * force states (s_field) as soon as a particle's sums are complete, and pass 2
-     * (StateForceLaw) of every group that reads no ghost as soon as its neighbours' states are
-     * final, into f_field (and e_field), all zeroed here. The same operations in the same order
-     * as pass 1 over all groups followed by force_loop() for the groups not deferred; then the
-     * owned shear angles into @p angles, the owned force states into @p force_state and its ghosts'
-     * values exchanged, and pass 2 of the deferred groups.
-     */
-    template <bool with_energy, bool twisted>
-    void
-    fused_forces(BondList       &bonds,
-                 const double    critical_slope,
-                 ParticleVector &angles,
-                 ParticleVector &force_state)
-    {
-      using AngleLaw = std::conditional_t<twisted,
-                                          ShearAngleLaw<dim, TwistedSlopePairLaw<dim, false>>,
-                                          ShearAngleLaw<dim>>;
-      std::fill(r_field.begin(), r_field.end(), 0.);
-      std::fill(f_field.begin(), f_field.end(), 0.);
-      if constexpr (with_energy)
-        std::fill(e_field.begin(), e_field.end(), 0.);
-      std::array<double *, dim>       r, s;
-      const double                   *volume = blocks.component(volume_field, 0);
-      std::array<const double *, dim> angle_factor, state_factor;
-      for (unsigned int d = 0; d < dim; ++d)
-        {
-          r[d]            = blocks.component(r_field, d);
-          s[d]            = blocks.component(s_field, d);
-          angle_factor[d] = blocks.component(angle_factor_field, d);
-          state_factor[d] = blocks.component(state_factor_field, d);
-        }
-      AngleLaw angle_law;
-      angle_law.coefficient = lane_weight.data();
-      const auto u1         = unknowns<twisted, true>();
-      fused_state_passes(
-        blocks,
-        sweep,
-        volume_field.size() - BondBlocks<dim>::width,
-        [&](const std::size_t first, const std::size_t end) {
-          for_each_bond_block<twisted ? 3 : 1>(blocks,
-                                               u1,
-                                               r,
-                                               angle_law,
-                                               bonds,
-                                               critical_slope,
-                                               first,
-                                               end);
-        },
-        [&](const std::size_t first, const std::size_t end) {
           for (unsigned int d = 0; d < dim; ++d)
-            for (std::size_t q = first; q < end; ++q)
-              {
-                r[d][q] = r[d][q] / volume[q] * angle_factor[d][q];
-                s[d][q] = state_factor[d][q] * r[d][q];
-              }
-        },
-        [&](const std::size_t first, const std::size_t end) {
-          force_groups<with_energy, twisted>(bonds, first, end);
-        });
-      blocks.scatter_owned(r_field, dim, nullptr, angles.begin());
-      blocks.scatter_owned(s_field, dim, nullptr, force_state.begin());
-      force_state.update_ghost_values();
-      if (sweep.has_deferred)
-        {
-          blocks.gather(force_state.begin(), dim, s_field);
-          for (std::size_t g = 0; g < sweep.deferred.size();)
-            {
-              if (sweep.deferred[g] == 0)
-                {
-                  ++g;
-                  continue;
-                }
-              std::size_t e = g + 1;
-              while (e < sweep.deferred.size() && sweep.deferred[e] != 0)
-                ++e;
-              force_groups<with_energy, twisted>(bonds, g, e);
-              g = e;
-            }
+            u[3 + d] = blocks.component(s_field, d);
+          const StateForceLaw<dim, with_energy, true> law{{{lane_coefficient.data()}},
+                                                          lane_weight.data()};
+          for_each_bond_block<dim + 3>(blocks, u, out, law, bonds, 0.);
         }
     }
   };
@@ -421,37 +329,6 @@ namespace perideal
           angle_factor[q] = 1. / sum[q];
       }
 
-    // The kernel-order factors of the sweep (Kernel::fused_forces()) and its deferred groups.
-    {
-      const unsigned int  n_local = particles.n_local();
-      const auto         &beta    = particles.energy_weights();
-      std::vector<double> values(std::size_t(n_local) * dim, 0.);
-      for (unsigned int i = 0; i < n_local; ++i)
-        values[i] = i < n_owned ? volume[i] : 1.;
-      k.blocks.reinit_field(k.volume_field, 1);
-      k.volume_field.fill(1.);
-      k.blocks.gather(values.data(), 1, k.volume_field);
-      std::fill(values.begin(), values.end(), 0.);
-      std::copy(angle_factor.begin(), angle_factor.end(), values.begin());
-      k.blocks.reinit_field(k.angle_factor_field, dim);
-      k.blocks.gather(values.data(), dim, k.angle_factor_field);
-      for (unsigned int i = 0; i < n_owned; ++i)
-        for (unsigned int a = 0; a < dim; ++a)
-          values[std::size_t(i) * dim + a] =
-            state_modulus[i] * beta[i] * angle_factor[std::size_t(i) * dim + a];
-      k.blocks.reinit_field(k.state_factor_field, dim);
-      k.blocks.gather(values.data(), dim, k.state_factor_field);
-      std::vector<double> ghost(n_local, 0.);
-      for (unsigned int i = n_owned; i < n_local; ++i)
-        ghost[i] = 1.;
-      typename BondBlocks<dim>::Array ghost_field;
-      k.blocks.reinit_field(ghost_field, 1);
-      k.blocks.gather(ghost.data(), 1, ghost_field);
-      k.sweep.reinit(k.blocks,
-                     k.blocks.component(ghost_field, 0),
-                     ghost_field.size() - BondBlocks<dim>::width);
-    }
-
     // The bond-based term: the shared surface correction (surface_correction_law()), then its
     // fraction alpha.
     apply_surface_correction<dim>(*this, particles, context);
@@ -540,20 +417,23 @@ namespace perideal
 
     // Pass 1: break bonds, then the shear angles r = b g (.) sum / V_i and the force states
     // s = (1 - alpha) mu_i beta_i r (.) b g (beta_i the energy weight of a blended coupling).
-    // Pass 2: forces (and energy), summed per particle and divided by V_i; both passes in one
-    // sweep (Kernel::fused_forces()).
-    const bool twisted = !k.twist_field.empty();
-    if (energy_density != nullptr && twisted)
-      k.template fused_forces<true, true>(bonds, critical_slope, angles, force_state);
-    else if (energy_density != nullptr)
-      k.template fused_forces<true, false>(bonds, critical_slope, angles, force_state);
-    else if (twisted)
-      k.template fused_forces<false, true>(bonds, critical_slope, angles, force_state);
-    else
-      k.template fused_forces<false, false>(bonds, critical_slope, angles, force_state);
-    const double *r = angles.begin();
+    k.angle_loop(bonds, critical_slope);
+    double *r = angles.begin();
+    k.blocks.scatter_owned(k.r_field, dim, volume, r);
+    for (unsigned int i = 0; i < n_owned; ++i)
+      for (unsigned int a = 0; a < dim; ++a)
+        {
+          const std::size_t q = std::size_t(i) * dim + a;
+          r[q] *= angle_factor[q];
+          force_state.local_element(q) = state_modulus[i] * beta[i] * angle_factor[q] * r[q];
+        }
+    force_state.update_ghost_values();
+    k.blocks.gather(force_state.begin(), dim, k.s_field);
+
+    // Pass 2: forces (and energy), summed per particle and divided by V_i.
     if (energy_density != nullptr)
       {
+        k.template force_loop<true>(bonds);
         energy_density->resize(n_owned);
         k.blocks.scatter_owned(k.e_field, 1, volume, energy_density->data());
         for (unsigned int i = 0; i < n_owned; ++i)
@@ -564,6 +444,8 @@ namespace perideal
             (*energy_density)[i] += 0.5 * state_modulus[i] * beta[i] * r2;
           }
       }
+    else
+      k.template force_loop<false>(bonds);
     k.blocks.scatter_owned(k.f_field, 1, volume, force.begin());
   }
 

@@ -52,17 +52,13 @@ namespace perideal
      * (mechanical) stretch, then adds the pair sum p omega chi V_i V_j |xi| e (e = |xi| s) at
      * both ends (the dilatation before the factor n / (m_i V_i)).
      */
-    template <int dim, bool thermal, bool keep = false>
+    template <int dim, bool thermal>
     struct LPSDilatationLaw : LPSStrain<dim, thermal>
     {
       static constexpr unsigned int n_outputs    = 1;
       static constexpr bool         breaks_bonds = true;
       /// omega chi V_i V_j per lane.
       const double *weight;
-      /// If @p keep: the rings of rho and of the stretch per lane for pass 2 (rho at lane &
-      /// ring_mask, the stretch ring_mask + 1 further).
-      double     *ring      = nullptr;
-      std::size_t ring_mask = 0;
 
       template <typename Bond>
       void
@@ -79,12 +75,6 @@ namespace perideal
                                        y.stretch * (bond.length * bond.length);
         to_a[0] = p;
         to_b[0] = p;
-        if constexpr (keep)
-          {
-            const std::size_t k = lanes.first_lane & ring_mask;
-            y.rho.copy_to(ring + k, stdx::element_aligned);
-            y.stretch.copy_to(ring + ring_mask + 1 + k, stdx::element_aligned);
-          }
       }
     };
 
@@ -125,7 +115,7 @@ namespace perideal
      * (theta / m and alpha carry the particles' energy weights); with @p thermal, e and theta
      * are the mechanical ones (LPSStrain).
      */
-    template <int dim, bool with_energy, bool thermal, bool kept = false>
+    template <int dim, bool with_energy, bool thermal>
     struct LPSForceLaw : LPSStateLaw<dim, thermal>
     {
       static constexpr unsigned int n_outputs    = dim + (with_energy ? 1 : 0);
@@ -133,32 +123,6 @@ namespace perideal
       using Side                                 = typename LPSStateLaw<dim, thermal>::Side;
       /// n k - (n + 2) mu.
       double dilatation_coefficient;
-      /// If @p kept: the rings in which LPSDilatationLaw kept rho and the stretch.
-      const double *ring      = nullptr;
-      std::size_t   ring_mask = 0;
-
-      /// The deformed bond; if @p kept, only r is formed and rho and the stretch are pass 1's.
-      template <typename Bond>
-      DeformedBond<dim>
-      strain(const Bond              &bond,
-             const std::size_t        first_lane,
-             const bond_simd::Vector *u_a,
-             const bond_simd::Vector *u_b) const
-      {
-        if constexpr (kept)
-          {
-            namespace stdx = std::experimental;
-            DeformedBond<dim> y;
-            for (unsigned int d = 0; d < dim; ++d)
-              y.r[d] = bond.xi[d] + (u_b[d] - u_a[d]);
-            const std::size_t k = first_lane & ring_mask;
-            y.rho.copy_from(ring + k, stdx::element_aligned);
-            y.stretch.copy_from(ring + ring_mask + 1 + k, stdx::element_aligned);
-            return y;
-          }
-        else
-          return LPSStrain<dim, thermal>::strain(bond, first_lane, u_a, u_b);
-      }
 
       template <typename Bond>
       void
@@ -258,14 +222,6 @@ namespace perideal
     /// the temperature change.
     typename BondBlocks<dim>::Array u_field, f_field, w_field, theta_field, theta_over_m_field,
       alpha_field, beta_over_m_field, delta_T_field;
-    /// Kernel order: n / (m V) of the owned particles (0 at ghosts), the factor from pass 1's
-    /// pair sums to the dilatation.
-    typename BondBlocks<dim>::Array theta_scale_field;
-    /// The order of the two passes in one sweep (fused_forces()).
-    StateSweep sweep;
-    /// rho and the stretch of the lanes pass 1 has run and pass 2 not yet (fused_forces()): two
-    /// rings of a power of two of lanes, at least the largest lag of the sweep.
-    typename BondBlocks<dim>::Array ring;
 
     /**
      * @brief The kernel-order unknowns of the pair laws: the dim displacement components and,
@@ -301,86 +257,12 @@ namespace perideal
     }
 
     /**
-     * @brief Both passes in one sweep (fused_state_passes()): pass 1 (LPSDilatationLaw, bonds
-     * above @p critical_stretch break) into theta_field, made the dilatation n / (m V) times
-     * the sum and theta / m (theta_over_m_field) as soon as a particle's sum is complete, and
-     * pass 2 (LPSForceLaw) of every group that reads no ghost as soon as its neighbours'
-     * dilatations are final; the forces into f_field (and the deviatoric energy into w_field
-     * if @p with_energy), zeroed here with theta_field. The same operations in the same order
-     * as dilatation_loop() followed by pass 2 over all groups (bitwise the same fields) for the
-     * groups not deferred; the deferred ones (StateSweep::deferred) are left to
-     * deferred_force_loop(), after the ghosts' dilatations are exchanged.
+     * @brief Pass 2 (LPSForceLaw) with dilatation coefficient @p dilatation_coefficient; the
+     * energy density is accumulated only if @p with_energy.
      */
     template <bool with_energy, bool thermal>
     void
-    fused_forces(BondList    &bonds,
-                 const double critical_stretch,
-                 const double dilatation_coefficient,
-                 const double expansion)
-    {
-      using Law = LPSForceLaw<dim, with_energy, thermal, true>;
-      std::fill(theta_field.begin(), theta_field.end(), 0.);
-      std::fill(f_field.begin(), f_field.end(), 0.);
-      if constexpr (with_energy)
-        std::fill(w_field.begin(), w_field.end(), 0.);
-      std::array<double *, Law::n_outputs> out;
-      for (unsigned int d = 0; d < dim; ++d)
-        out[d] = blocks.component(f_field, d);
-      if constexpr (with_energy)
-        out[dim] = blocks.component(w_field, 0);
-      double       *theta                               = blocks.component(theta_field, 0);
-      double       *theta_over_m                        = blocks.component(theta_over_m_field, 0);
-      const double *scale                               = blocks.component(theta_scale_field, 0);
-      const double *beta_over_m                         = blocks.component(beta_over_m_field, 0);
-      const std::array<const double *, dim + thermal> u = unknowns<thermal>();
-      const std::size_t                               mask = ring.size() / 2 - 1;
-      const LPSDilatationLaw<dim, thermal, true>      dilatation_law{{{}, expansion},
-                                                                lane_weight.data(),
-                                                                ring.data(),
-                                                                mask};
-      const Law                                       force_law{{{{}, expansion},
-                                                                 lane_weight.data(),
-                                                                 theta_over_m,
-                                                                 blocks.component(alpha_field, 0),
-                                                                 theta},
-                          dilatation_coefficient,
-                          ring.data(),
-                          mask};
-      fused_state_passes(
-        blocks,
-        sweep,
-        theta_field.size() - BondBlocks<dim>::width,
-        [&](const std::size_t first, const std::size_t end) {
-          for_each_bond_block<dim + thermal, dim>(blocks,
-                                                  u,
-                                                  {{theta}},
-                                                  dilatation_law,
-                                                  bonds,
-                                                  critical_stretch,
-                                                  first,
-                                                  end);
-        },
-        [&](const std::size_t first, const std::size_t end) {
-          for (std::size_t q = first; q < end; ++q)
-            {
-              theta[q] *= scale[q];
-              theta_over_m[q] = theta[q] * beta_over_m[q];
-            }
-        },
-        [&](const std::size_t first, const std::size_t end) {
-          for_each_bond_block<dim + thermal, dim>(blocks, u, out, force_law, bonds, 0., first, end);
-        });
-    }
-
-    /**
-     * @brief Pass 2 (LPSForceLaw) of the groups fused_forces() deferred, in order, once the
-     * ghosts' dilatations are in theta_field and theta_over_m_field.
-     */
-    template <bool with_energy, bool thermal>
-    void
-    deferred_force_loop(BondList    &bonds,
-                        const double dilatation_coefficient,
-                        const double expansion)
+    force_loop(BondList &bonds, const double dilatation_coefficient, const double expansion)
     {
       using Law = LPSForceLaw<dim, with_energy, thermal>;
       std::array<double *, Law::n_outputs> out;
@@ -388,53 +270,13 @@ namespace perideal
         out[d] = blocks.component(f_field, d);
       if constexpr (with_energy)
         out[dim] = blocks.component(w_field, 0);
-      const Law                                       law{{{{}, expansion},
-                                                           lane_weight.data(),
-                                                           blocks.component(theta_over_m_field, 0),
-                                                           blocks.component(alpha_field, 0),
-                                                           blocks.component(theta_field, 0)},
+      const Law law{{{{}, expansion},
+                     lane_weight.data(),
+                     blocks.component(theta_over_m_field, 0),
+                     blocks.component(alpha_field, 0),
+                     blocks.component(theta_field, 0)},
                     dilatation_coefficient};
-      const std::array<const double *, dim + thermal> u = unknowns<thermal>();
-      for (std::size_t g = 0; g < sweep.deferred.size();)
-        {
-          if (sweep.deferred[g] == 0)
-            {
-              ++g;
-              continue;
-            }
-          std::size_t e = g + 1;
-          while (e < sweep.deferred.size() && sweep.deferred[e] != 0)
-            ++e;
-          for_each_bond_block<dim + thermal, dim>(blocks, u, out, law, bonds, 0., g, e);
-          g = e;
-        }
-    }
-
-    /**
-     * @brief Both passes: fused_forces(), the dilatation of the owned particles into
-     * @p theta and its ghosts' values exchanged, then the deferred groups of pass 2 with them.
-     */
-    template <bool with_energy, bool thermal>
-    void
-    forces(BondList       &bonds,
-           ParticleVector &theta,
-           const double    critical_stretch,
-           const double    dilatation_coefficient,
-           const double    expansion)
-    {
-      fused_forces<with_energy, thermal>(bonds,
-                                         critical_stretch,
-                                         dilatation_coefficient,
-                                         expansion);
-      blocks.scatter_owned(theta_field, 1, nullptr, theta.begin());
-      theta.update_ghost_values();
-      if (sweep.has_deferred)
-        {
-          blocks.gather(theta.begin(), 1, theta_field);
-          for (std::size_t q = 0; q < theta_field.size(); ++q)
-            theta_over_m_field[q] = theta_field[q] * beta_over_m_field[q];
-          deferred_force_loop<with_energy, thermal>(bonds, dilatation_coefficient, expansion);
-        }
+      for_each_bond_block<dim + thermal, dim>(blocks, unknowns<thermal>(), out, law, bonds, 0.);
     }
   };
 
@@ -544,9 +386,8 @@ namespace perideal
             weighted_volume.local_element(j) += pair_weight[b] * r2 / volume[j];
         }
     weighted_volume.update_ghost_values();
-    const unsigned int n_owned_particles = particles.n_owned();
-    const double       n                 = dim;
-    const double       alpha_m           = shear_modulus * n * (n + 2.);
+    const double n       = dim;
+    const double alpha_m = shear_modulus * n * (n + 2.);
     alpha.resize(particles.n_local());
     for (unsigned int i = 0; i < particles.n_local(); ++i)
       alpha[i] = alpha_m / weighted_volume.local_element(i);
@@ -560,41 +401,6 @@ namespace perideal
     for (unsigned int i = 0; i < particles.n_local(); ++i)
       weighted[i] = beta[i] / weighted_volume.local_element(i);
     k.blocks.gather(weighted.data(), 1, k.beta_over_m_field);
-    // The factor n / (m V) from pass 1's pair sums to the dilatation of the owned particles,
-    // computed as dilatation_pass() does, and the groups of the sweep that read ghosts.
-    for (unsigned int i = 0; i < particles.n_local(); ++i)
-      weighted[i] = i < n_owned_particles ? n / (weighted_volume.local_element(i) * volume[i]) : 0.;
-    k.blocks.reinit_field(k.theta_scale_field, 1);
-    k.blocks.gather(weighted.data(), 1, k.theta_scale_field);
-    for (unsigned int i = 0; i < particles.n_local(); ++i)
-      weighted[i] = i < n_owned_particles ? 0. : 1.;
-    {
-      typename BondBlocks<dim>::Array ghost_field;
-      k.blocks.reinit_field(ghost_field, 1);
-      k.blocks.gather(weighted.data(), 1, ghost_field);
-      k.sweep.reinit(k.blocks,
-                     k.blocks.component(ghost_field, 0),
-                     ghost_field.size() - BondBlocks<dim>::width);
-      // The largest lag in lanes between pass 1 and pass 2 of the sweep.
-      const auto       &groups  = k.blocks.groups();
-      const std::size_t width   = BondBlocks<dim>::width;
-      std::size_t       written = 0, lag = width;
-      fused_state_passes(
-        k.blocks,
-        k.sweep,
-        ghost_field.size() - width,
-        [&](const std::size_t, const std::size_t end) {
-          written = std::size_t(groups[end].first_block) * width;
-        },
-        [](const std::size_t, const std::size_t) {},
-        [&](const std::size_t first, const std::size_t) {
-          lag = std::max(lag, written - std::size_t(groups[first].first_block) * width);
-        });
-      std::size_t ring_size = width;
-      while (ring_size < lag)
-        ring_size *= 2;
-      k.ring.resize_fast(2 * ring_size);
-    }
     fracture_factor = 1.;
     if (context.lattice_fracture)
       {
@@ -639,25 +445,21 @@ namespace perideal
     if (thermal)
       k.blocks.gather(delta_T->begin(), 1, k.delta_T_field);
 
-    // Pass 1 (break overstretched bonds, the dilatation) and pass 2 (forces and energy, summed
-    // per particle and divided by V_i) in one sweep (Kernel::forces()).
+    dilatation_pass(particles, critical_stretch, thermal);
+
+    // Pass 2: forces (and energy), summed per particle and divided by V_i.
     const double dilatation_coefficient = n * bulk_modulus - (n + 2.) * shear_modulus;
+    std::fill(k.f_field.begin(), k.f_field.end(), 0.);
+    if (energy_density != nullptr)
+      std::fill(k.w_field.begin(), k.w_field.end(), 0.);
     if (energy_density != nullptr && thermal)
-      k.template forces<true, true>(bonds,
-                                    theta,
-                                    critical_stretch,
-                                    dilatation_coefficient,
-                                    planar_expansion);
+      k.template force_loop<true, true>(bonds, dilatation_coefficient, planar_expansion);
     else if (energy_density != nullptr)
-      k.template forces<true, false>(bonds, theta, critical_stretch, dilatation_coefficient, 0.);
+      k.template force_loop<true, false>(bonds, dilatation_coefficient, 0.);
     else if (thermal)
-      k.template forces<false, true>(bonds,
-                                     theta,
-                                     critical_stretch,
-                                     dilatation_coefficient,
-                                     planar_expansion);
+      k.template force_loop<false, true>(bonds, dilatation_coefficient, planar_expansion);
     else
-      k.template forces<false, false>(bonds, theta, critical_stretch, dilatation_coefficient, 0.);
+      k.template force_loop<false, false>(bonds, dilatation_coefficient, 0.);
     k.blocks.scatter_owned(k.f_field, dim, volume, force.begin());
     if (energy_density != nullptr)
       {

@@ -9,7 +9,6 @@
 #include <algorithm>
 #include <array>
 #include <cstddef>
-#include <cstdint>
 #include <type_traits>
 #include <utility>
 #include <vector>
@@ -38,7 +37,7 @@ namespace perideal
   namespace internal
   {
     /// for_each_bond_block() with the reference bonds of the classes (@p lane_bonds false) or
-    /// of the lanes (true: a perturbed lattice), over the groups [@p first_group, @p end_group).
+    /// of the lanes (true: a perturbed lattice).
     template <bool lane_bonds, unsigned int n_components, int dim, typename PairLaw>
     inline void
     bond_block_loop(BondBlocks<dim>                               &blocks,
@@ -46,13 +45,12 @@ namespace perideal
                     const std::array<double *, PairLaw::n_outputs> outputs,
                     const PairLaw                                  law,
                     BondList                                      &bonds,
-                    const double                                   critical_stretch,
-                    const std::size_t                              first_group,
-                    const std::size_t                              end_group)
+                    const double                                   critical_stretch)
     {
       using namespace bond_simd;
       using BondClass                                     = typename BondBlocks<dim>::BondClass;
       constexpr unsigned int                   n_outputs  = PairLaw::n_outputs;
+      const std::size_t                        n_entries  = blocks.groups().size();
       const auto                              *groups     = blocks.groups().data();
       const auto                              *block_list = blocks.blocks().data();
       const BondClass                         *classes    = blocks.classes().data();
@@ -66,7 +64,7 @@ namespace perideal
         sum.copy_to(target, stdx::element_aligned);
       };
 
-      for (std::size_t g = first_group; g < end_group; ++g)
+      for (std::size_t g = 0; g + 1 < n_entries; ++g)
         {
           const unsigned int a = groups[g].first_particle;
           Vector             u_a[n_components], sum_a[n_outputs];
@@ -170,142 +168,22 @@ namespace perideal
                       const std::array<double *, PairLaw::n_outputs> outputs,
                       const PairLaw                                  law,
                       BondList                                      &bonds,
-                      const double                                   critical_stretch,
-                      const std::size_t                              first_group = 0,
-                      const std::size_t                              end_group   = std::size_t(-1))
+                      const double                                   critical_stretch)
   {
-    const std::size_t end = std::min(end_group, blocks.groups().size() - 1);
     if (blocks.has_lane_bonds())
       internal::bond_block_loop<true, n_components, dim>(blocks,
                                                          u,
                                                          outputs,
                                                          law,
                                                          bonds,
-                                                         critical_stretch,
-                                                         first_group,
-                                                         end);
+                                                         critical_stretch);
     else
       internal::bond_block_loop<false, n_components, dim>(blocks,
                                                           u,
                                                           outputs,
                                                           law,
                                                           bonds,
-                                                          critical_stretch,
-                                                          first_group,
-                                                          end);
-  }
-
-  /**
-   * @brief The order in which an ordinary state-based kernel runs its two passes over the
-   * groups of a BondBlocks in one sweep (fused_state_passes()): pass 1 sums a per-particle
-   * state (the dilatation, the shear angles) at both ends of every bond, pass 2 reads it at
-   * both ends. A particle's pass-1 sum is complete once pass 1 has run its own group (its
-   * bonds sit at their end of lower kernel index: every contribution comes from its group or
-   * an earlier one), so pass 2 of a group can run as soon as pass 1 has passed the group of
-   * its farthest neighbour, while the neighbours' data are still in cache
-   * (doc/benchmarks/performance/README.md, "Issue 42: the two LPS passes in one sweep").
-   * Groups whose particles or neighbours include ghosts need the ghosts' states from their
-   * owners: they are deferred until after the exchange.
-   */
-  struct StateSweep
-  {
-    /// Per group: one past the kernel index of its farthest neighbour (of its last lane).
-    std::vector<unsigned int> reach;
-    /// Per group: 1 if it reads a ghost's state (pass 2 after the exchange).
-    std::vector<std::uint8_t> deferred;
-    /// Whether any group is deferred.
-    bool has_deferred = false;
-    /// Pass 1 advances by this many groups at a time.
-    static constexpr std::size_t chunk = 16;
-
-    /**
-     * @brief The reach and the deferred groups of @p blocks, whose local particles
-     * [0, @p n_owned) are owned and the others ghosts (@p kernel_ghost: 1 at the kernel
-     * index of a ghost, a kernel-order field of BondBlocks::reinit_field()).
-     */
-    template <int dim>
-    void
-    reinit(const BondBlocks<dim> &blocks, const double *kernel_ghost, const std::size_t n_kernel)
-    {
-      const auto       &groups = blocks.groups();
-      const auto       &block  = blocks.blocks();
-      const std::size_t n      = groups.size() - 1;
-      // Ghosts before each kernel index: a group reads one iff its range holds one.
-      std::vector<unsigned int> ghosts_before(n_kernel + 1, 0);
-      for (std::size_t k = 0; k < n_kernel; ++k)
-        ghosts_before[k + 1] = ghosts_before[k] + (kernel_ghost[k] != 0. ? 1 : 0);
-      reach.assign(n, 0);
-      deferred.assign(n, 0);
-      has_deferred = false;
-      for (std::size_t g = 0; g < n; ++g)
-        {
-          const std::size_t a   = groups[g].first_particle;
-          std::size_t       end = a + BondBlocks<dim>::width;
-          for (unsigned int q = groups[g].first_block; q < groups[g + 1].first_block; ++q)
-            end = std::max<std::size_t>(end, a + block[q].offset + BondBlocks<dim>::width);
-          reach[g]               = static_cast<unsigned int>(end);
-          const std::size_t last = std::min(end, n_kernel);
-          deferred[g] =
-            (std::min(a, n_kernel) < last && ghosts_before[last] > ghosts_before[a]) ? 1 : 0;
-          has_deferred = has_deferred || deferred[g] != 0;
-        }
-    }
-  };
-
-  /**
-   * @brief The two passes of an ordinary state-based kernel in one sweep (StateSweep): pass 1
-   * over the groups in order, @p chunk groups at a time (`pass1(first, end)`), the particles
-   * whose pass-1 sums are complete made final in kernel order (`finish(first, end)`, kernel
-   * indices [first, end), each once, in order), and after each chunk pass 2
-   * (`pass2(first, end)`) of every group not deferred whose reach is final. Each pass runs its
-   * groups in order, so on a rank without ghosts every sum is taken in the order of the two
-   * separate passes (bitwise the same results); the deferred groups are left to the caller
-   * (after the exchange of the ghosts' states), which changes the order of the sums of pass 2
-   * at their particles. @p n_kernel is the number of kernel indices to finish (the field's
-   * extent).
-   */
-  template <int dim, typename Pass1, typename Finish, typename Pass2>
-  inline void
-  fused_state_passes(const BondBlocks<dim> &blocks,
-                     const StateSweep      &sweep,
-                     const std::size_t      n_kernel,
-                     const Pass1           &pass1,
-                     const Finish          &finish,
-                     const Pass2           &pass2)
-  {
-    const auto       &groups   = blocks.groups();
-    const std::size_t n_groups = groups.size() - 1;
-    std::size_t       g1 = 0, g2 = 0, final_end = 0;
-    while (g2 < n_groups)
-      {
-        if (g1 < n_groups)
-          {
-            const std::size_t e1 = std::min(g1 + StateSweep::chunk, n_groups);
-            pass1(g1, e1);
-            g1                      = e1;
-            const std::size_t end_k = g1 < n_groups ? groups[g1].first_particle : n_kernel;
-            finish(final_end, end_k);
-            final_end = end_k;
-          }
-        // Pass 2 of the groups whose neighbours are final, in runs of groups not deferred.
-        std::size_t e2 = g2;
-        while (e2 < g1 && (g1 == n_groups || sweep.reach[e2] <= final_end))
-          ++e2;
-        for (std::size_t g = g2; g < e2;)
-          {
-            if (sweep.deferred[g] != 0)
-              {
-                ++g;
-                continue;
-              }
-            std::size_t e = g + 1;
-            while (e < e2 && sweep.deferred[e] == 0)
-              ++e;
-            pass2(g, e);
-            g = e;
-          }
-        g2 = e2;
-      }
+                                                          critical_stretch);
   }
 
   /**
