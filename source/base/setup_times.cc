@@ -47,7 +47,7 @@ namespace perideal
     }
 
     std::string
-    summary(const MPI_Comm comm)
+    summary(const MPI_Comm comm, const std::string &title)
     {
       std::array<double, 2 * n_stages> largest{};
       const int                        ierr =
@@ -55,7 +55,7 @@ namespace perideal
       AssertThrowMPI(ierr);
       std::ostringstream line;
       line.precision(3);
-      line << "Set-up time [s], wall (CPU):";
+      line << title << " [s], wall (CPU):";
       const char *separator = " ";
       for (unsigned int s = 0; s < n_stages; ++s)
         if (largest[s] > 0.)

@@ -8,11 +8,11 @@
 #include <perideal/pd/antiplane_torsion.h>
 #include <perideal/pd/damage_model.h>
 #include <perideal/pd/lattice.h>
+#include <perideal/pd/lattice_dilation.h>
 
 #include <algorithm>
 #include <cmath>
 #include <sstream>
-#include <unordered_map>
 
 namespace perideal
 {
@@ -300,27 +300,20 @@ namespace perideal
     const Lattice<dim> lattice(dx);
     std::vector<Tensor<1, dim>> offsets = lattice.vectors(delta + dx);
     offsets.emplace_back();
-    // beta is evaluated once per lattice point (the offsets are lattice vectors, so x + offset
-    // is a lattice point too).
-    std::unordered_map<typename Lattice<dim>::Key, double, typename Lattice<dim>::KeyHash> beta_at;
-    const auto lattice_beta = [&](const Point<dim> &y) {
-      const auto key   = lattice.key(y);
-      const auto found = beta_at.find(key);
-      if (found != beta_at.end())
-        return found->second;
-      return beta_at[key] = method().particle_weight(snap_to_bounds(beta->value(y)));
-    };
+    // The file's beta: a lattice point is kept if the method's particle weight is positive at
+    // one of the offsets, a dilation of the points of positive weight computed by tiles (O(1)
+    // per point; beta is evaluated once per lattice point of the tiles a rank asks for and
+    // their halo, doc/benchmarks/performance/README.md "Set-up that scales").
+    LatticeDilation<dim> positive_weight(dx, offsets, [&](const Point<dim> &y) {
+      return method().particle_weight(snap_to_bounds(beta->value(y))) > 0.;
+    });
     // The disks of an adaptive region by their distance (a lattice scan at every conversion
     // would cost more than the run), the blending function at the offsets (not the constant 0).
     const bool file_blends  = blending_expression != "0";
     const auto in_pd_region = [&](const Point<dim> &x) {
       if (adaptive.enabled() && adaptive.within_reach(x, delta + dx))
         return true;
-      if (file_blends)
-        for (const auto &offset : offsets)
-          if (lattice_beta(x + offset) > 0.)
-            return true;
-      return false;
+      return file_blends && positive_weight(x);
     };
     // A growing region keeps the partition of its first bins (ParticleSystem).
     pd.particles().set_balance_by_particles(!adaptive.enabled());

@@ -115,6 +115,7 @@ namespace perideal
   FERegion<dim>::reweight(const WeightFunction &weight)
   {
     Assert(has_mesh() && fe_collection.size() == 2, ExcMessage("Call setup() first."));
+    const SetupTimes::Scope time(SetupStage::fe_assembly);
     distribute(weight);
   }
 

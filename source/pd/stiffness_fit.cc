@@ -92,7 +92,6 @@ namespace perideal
 
       explicit NormalEquations(const ParticleSystem<dim> &particles)
         : particles(particles)
-        , h_entries(particles.bonds().size())
         , free(particles.bonds().size(), 1)
         , fixed(particles.bonds().size(), 1.)
       {}
@@ -120,9 +119,8 @@ namespace perideal
       {
         if (!free[b])
           return 0.;
-        const std::size_t j   = particles.bonds().neighbor[b];
-        const auto       &h_b = h(b);
-        return change_of(h_b.data(), lambda.begin() + i * m, lambda.begin() + j * m);
+        const std::size_t j = particles.bonds().neighbor[b];
+        return scale(b) * change_of(h(b), lambda.begin() + i * m, lambda.begin() + j * m);
       }
 
       /// What a bond adds to the sums of its ends.
@@ -147,13 +145,15 @@ namespace perideal
               if (sum == Sum::squares && !free[b])
                 continue;
               const unsigned int j   = bonds.neighbor[b];
-              const auto        &h_b = h(b);
+              const double      *h_b = h(b);
+              const double       s_b = scale(b);
               const double       c   = sum == Sum::change ? change(i, b, *lambda) :
                                        sum == Sum::tensor ? (free[b] ? 1. : fixed[b]) :
                                                             1.;
               for (unsigned int k = 0; k < m; ++k)
                 {
-                  const double v = sum == Sum::squares ? h_b[k] * h_b[k] : c * h_b[k];
+                  const double v =
+                    sum == Sum::squares ? (s_b * h_b[k]) * (s_b * h_b[k]) : c * (s_b * h_b[k]);
                   dst.local_element(i * m + k) += v;
                   if (j < n_owned)
                     dst.local_element(j * m + k) += v;
@@ -181,9 +181,11 @@ namespace perideal
                 if (!free[b])
                   continue;
                 const unsigned int j        = bonds.neighbor[b];
-                const auto        &h_b      = h(b);
+                const double      *h_b      = h(b);
+                const double       s_b      = scale(b);
                 const double      *lambda_j = lambda + std::size_t(j) * m;
-                const double       c        = change_of(h_b.data(), lambda_i.data(), lambda_j);
+                // c h_b of the stored entries: s_b^2 (H . (lambda_i + lambda_j)) H.
+                const double c = s_b * s_b * change_of(h_b, lambda_i.data(), lambda_j);
                 for (unsigned int k = 0; k < m; ++k)
                   sum_i[k] += c * h_b[k];
                 if (j < n_owned)
@@ -197,15 +199,31 @@ namespace perideal
       }
 
       const ParticleSystem<dim> &particles;
-      /// The entries h_b of each bond (stored: forming them from the bond's direction in each
-      /// product with the operator took 1.5 times as long).
-      std::vector<typename Voigt<dim>::Entries> h_entries;
+      /**
+       * The entries h_b = s_b H of each bond (stored: forming them from the bond's direction in
+       * each product with the operator took 1.5 times as long). On a lattice without
+       * perturbation, H is that of the bond's lattice vector, one table entry per vector
+       * (by_vector), and s_b the bond's own factor (scales): 10 B per bond instead of 168, and
+       * the table stays in the cache. Otherwise every bond has its own H = h_b (s_b = 1).
+       */
+      ///@{
+      bool                       by_vector = false;
+      std::vector<double>        table;
+      std::vector<std::uint16_t> vector_of;
+      std::vector<double>        scales;
+      ///@}
 
-      /// The entries h_b of bond @p b.
-      const typename Voigt<dim>::Entries &
+      /// H of bond @p b (m entries).
+      const double *
       h(const std::size_t b) const
       {
-        return h_entries[b];
+        return table.data() + (by_vector ? std::size_t(vector_of[b]) : b) * m;
+      }
+      /// s_b of bond @p b.
+      double
+      scale(const std::size_t b) const
+      {
+        return by_vector ? scales[b] : 1.;
       }
       double regularization = 0.;
       /// Whether a bond's factor is fitted (1) or held at a bound (0; the bound in fixed).
@@ -241,11 +259,11 @@ namespace perideal
         for (unsigned int i = 0; i < n_owned; ++i)
           if (redo(i))
             std::fill_n(inverses.begin() + std::size_t(i) * m * m, m * m, 0.);
-        const auto add = [&](const unsigned int i, const double *h_b) {
+        const auto add = [&](const unsigned int i, const double *h_b, const double s_b) {
           double *block = inverses.data() + std::size_t(i) * m * m;
           for (unsigned int p = 0; p < m; ++p)
             for (unsigned int q = 0; q <= p; ++q)
-              block[p * m + q] += h_b[p] * h_b[q];
+              block[p * m + q] += (s_b * h_b[p]) * (s_b * h_b[q]);
         };
         for (unsigned int i = 0; i < n_owned; ++i)
           for (unsigned int b = bonds.row_start[i]; b < bonds.row_start[i + 1]; ++b)
@@ -253,9 +271,9 @@ namespace perideal
               {
                 const unsigned int j = bonds.neighbor[b];
                 if (redo(i))
-                  add(i, equations.h(b).data());
+                  add(i, equations.h(b), equations.scale(b));
                 if (j < n_owned && redo(j))
-                  add(j, equations.h(b).data());
+                  add(j, equations.h(b), equations.scale(b));
               }
         for (unsigned int i = 0; i < n_owned; ++i)
           if (redo(i))
@@ -317,6 +335,96 @@ namespace perideal
     };
   } // namespace
 
+  namespace
+  {
+    /**
+     * @brief The entries h_b of the bonds of @p particles (NormalEquations::table): by lattice
+     * vector if the particles sit on an unperturbed lattice, else per bond.
+     */
+    template <int dim>
+    void
+    set_bond_tensors(const ParticleSystem<dim>   &particles,
+                     const BondStiffnessLaw<dim> &law,
+                     const double                 unit,
+                     NormalEquations<dim>        &equations)
+    {
+      using V                        = Voigt<dim>;
+      constexpr unsigned int m       = V::unique;
+      const BondList        &bonds   = particles.bonds();
+      const auto            &x       = particles.positions();
+      const auto            &volume  = particles.volumes();
+      const unsigned int     n_owned = particles.n_owned();
+      const double           dx      = particles.lattice().spacing();
+      // The lattice vectors of the bonds, numbered in a box of (2 reach + 1)^dim vectors.
+      const long       reach = static_cast<long>(std::ceil(particles.search_radius() / dx)) + 1;
+      const long       width = 2 * reach + 1;
+      std::vector<int> number;
+      bool             by_vector = particles.lattice().offset_bound() == 0. && dx > 0.;
+      if (by_vector)
+        {
+          std::size_t size = 1;
+          for (unsigned int d = 0; d < dim; ++d)
+            size *= width;
+          number.assign(size, -1);
+          equations.vector_of.resize(bonds.size());
+          equations.scales.resize(bonds.size());
+        }
+      for (unsigned int i = 0; i < n_owned && by_vector; ++i)
+        for (unsigned int b = bonds.row_start[i]; b < bonds.row_start[i + 1]; ++b)
+          {
+            const unsigned int j  = bonds.neighbor[b];
+            const auto         xi = x[j] - x[i];
+            // The bond's lattice vector n (xi = n dx up to round-off).
+            std::size_t    slot = 0, stride = 1;
+            Tensor<1, dim> lattice_vector;
+            for (unsigned int d = 0; d < dim; ++d)
+              {
+                const long n = std::lround(xi[d] / dx);
+                if (std::abs(xi[d] - n * dx) > 1e-6 * dx || std::abs(n) > reach)
+                  by_vector = false;
+                slot += (n + reach) * stride;
+                stride *= width;
+                lattice_vector[d] = n * dx;
+              }
+            if (!by_vector)
+              break;
+            if (number[slot] < 0)
+              {
+                if (equations.table.size() / m > std::numeric_limits<std::uint16_t>::max())
+                  {
+                    by_vector = false;
+                    break;
+                  }
+                double axial, shear;
+                law(lattice_vector, axial, shear);
+                number[slot] = equations.table.size() / m;
+                const auto h = V::bond_tensor(lattice_vector / lattice_vector.norm(), axial, shear);
+                equations.table.insert(equations.table.end(), h.begin(), h.end());
+              }
+            equations.vector_of[b] = number[slot];
+            equations.scales[b]    = bonds.volume_factor(b) * volume[i] * volume[j] / unit;
+          }
+      // The same choice on every rank (the same round-off whatever the rank count).
+      by_vector = Utilities::MPI::min(by_vector ? 1 : 0, particles.get_communicator()) == 1;
+      equations.by_vector = by_vector;
+      if (by_vector)
+        return;
+      equations.vector_of.clear();
+      equations.scales.clear();
+      equations.table.assign(bonds.size() * m, 0.);
+      for (unsigned int i = 0; i < n_owned; ++i)
+        for (unsigned int b = bonds.row_start[i]; b < bonds.row_start[i + 1]; ++b)
+          {
+            double               axial, shear;
+            const Tensor<1, dim> xi = x[bonds.neighbor[b]] - x[i];
+            law(xi, axial, shear);
+            const double k = bonds.volume_factor(b) * volume[i] * volume[bonds.neighbor[b]] / unit;
+            const auto   h = V::bond_tensor(xi / bonds.length[b], k * axial, k * shear);
+            std::copy(h.begin(), h.end(), equations.table.begin() + std::size_t(b) * m);
+          }
+    }
+  } // namespace
+
   template <int dim>
   StiffnessFitReport
   apply_stiffness_fit(ParticleSystem<dim>         &particles,
@@ -326,7 +434,6 @@ namespace perideal
     using V                        = Voigt<dim>;
     constexpr unsigned int m       = V::unique;
     BondList              &bonds   = particles.bonds();
-    const auto            &x       = particles.positions();
     const auto            &volume  = particles.volumes();
     const unsigned int     n_owned = particles.n_owned();
     const MPI_Comm         comm    = particles.get_communicator();
@@ -363,16 +470,7 @@ namespace perideal
     AssertThrow(interior[0] > 0., ExcInternalError());
 
     NormalEquations<dim> equations(particles);
-    for (unsigned int i = 0; i < n_owned; ++i)
-      for (unsigned int b = bonds.row_start[i]; b < bonds.row_start[i + 1]; ++b)
-        {
-          double               axial, shear;
-          const Tensor<1, dim> xi = x[bonds.neighbor[b]] - x[i];
-          law(xi, axial, shear);
-          const double k = bonds.volume_factor(b) * volume[i] * volume[bonds.neighbor[b]] / unit;
-          equations.h_entries[b] =
-            V::bond_tensor((x[bonds.neighbor[b]] - x[i]) / bonds.length[b], k * axial, k * shear);
-        }
+    set_bond_tensors(particles, law, unit, equations);
 
     // The right-hand side, the interior's D V_i minus the particles' with the factors without
     // multipliers; with @p lambda, the particles' deviation after the fit. Returns the largest

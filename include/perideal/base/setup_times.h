@@ -60,11 +60,11 @@ namespace perideal
 
     /**
      * @brief The line of the run summary: each stage's total wall time and CPU time so far
-     * [s], the largest over the ranks of @p comm, the stages that took no time left out.
-     * Collective.
+     * [s], the largest over the ranks of @p comm, the stages that took no time left out,
+     * after @p title. Collective.
      */
     std::string
-    summary(const MPI_Comm comm);
+    summary(const MPI_Comm comm, const std::string &title = "Set-up time");
   } // namespace SetupTimes
 } // namespace perideal
 

@@ -6,6 +6,7 @@
 
 #include <perideal/base/parameter_utilities.h>
 #include <perideal/base/progress_reporter.h>
+#include <perideal/base/setup_times.h>
 #include <perideal/coupling/communication_volume.h>
 #include <perideal/coupling/solvers/explicit_dynamics.h>
 #include <perideal/coupling/solvers/run_control.h>
@@ -13,6 +14,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <ctime>
 #include <iomanip>
 #include <limits>
 #include <sstream>
@@ -106,8 +108,23 @@ namespace perideal
     const auto   kinetic_before = state.kinetic_energy();
     const auto   strain_before  = state.strain_energy();
     const double before         = kinetic_before.total + strain_before.fe + strain_before.particles;
+    // The cost of the check and of the conversion (the energies above belong to the check step).
+    const auto          start_wall = std::chrono::steady_clock::now();
+    const std::clock_t  start_cpu  = std::clock();
+    const std::uint64_t n_before   = state.pd().particles().n_global();
+    const auto          elapsed    = [&]() {
+      return std::make_pair(
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start_wall).count(),
+        double(std::clock() - start_cpu) / CLOCKS_PER_SEC);
+    };
     if (!state.adapt_regions(step, time))
-      return;
+      {
+        const auto [wall, cpu] = elapsed();
+        ++adaptive_cost.checks;
+        adaptive_cost.check_wall += wall;
+        adaptive_cost.check_cpu += cpu;
+        return;
+      }
     derive_from_regions(state);
     AssertThrow(state.time_step <= state.stable_dt,
                 ExcMessage("The conversion at t = " + ParameterUtilities::format_number(time) +
@@ -117,6 +134,13 @@ namespace perideal
                            ParameterUtilities::format_number(state.time_step) +
                            " s: lower <Time stepping/Safety factor> (or <Time step>)."));
     renew_forces(state, time);
+    {
+      const auto [wall, cpu] = elapsed();
+      ++adaptive_cost.conversions;
+      adaptive_cost.conversion_wall += wall;
+      adaptive_cost.conversion_cpu += cpu;
+      adaptive_cost.added += state.pd().particles().n_global() - n_before;
+    }
     const auto   kinetic = state.kinetic_energy();
     const auto   strain  = state.strain_energy();
     const double after   = kinetic.total + strain.fe + strain.particles;
@@ -128,6 +152,36 @@ namespace perideal
                   << strain.fe + strain.particles << "), change " << after - before
                   << " J, relative " << (before != 0. ? (after - before) / before : 0.)
                   << std::endl;
+  }
+
+  template <int dim>
+  std::string
+  ExplicitDynamics<dim>::adaptive_cost_summary(const CoupledState<dim> &state,
+                                               const double             loop_seconds) const
+  {
+    const AdaptiveCost &c              = adaptive_cost;
+    const double        conversion_cpu = Utilities::MPI::max(c.conversion_cpu, state.comm());
+    const double        check_cpu      = Utilities::MPI::max(c.check_cpu, state.comm());
+    // A step per particle: the loop without the checks and conversions over the particles
+    // summed over the steps.
+    const double step_wall =
+      c.particle_steps > 0. ? (loop_seconds - c.conversion_wall - c.check_wall) / c.particle_steps :
+                              0.;
+    std::ostringstream out;
+    out << "Adaptive region: " << c.conversions << " conversion" << (c.conversions == 1 ? "" : "s")
+        << " (+" << c.added << " particles), wall " << c.conversion_wall << " s (CPU "
+        << conversion_cpu << "), " << 100. * c.conversion_wall / loop_seconds
+        << " % of the time loop";
+    if (c.added > 0)
+      {
+        const double per_particle = c.conversion_wall / c.added;
+        out << "; per converted particle " << 1e6 * per_particle << " us against "
+            << 1e6 * step_wall << " us per step and particle ("
+            << (step_wall > 0. ? per_particle / step_wall : 0.) << " steps' worth)";
+      }
+    out << "; " << c.checks << " checks without conversion, wall " << c.check_wall << " s (CPU "
+        << check_cpu << ")";
+    return out.str();
   }
 
   template <int dim>
@@ -415,6 +469,7 @@ namespace perideal
         if (data.write_statistics)
           state.fe_support.equ(-1., state.residual);
         run.write(data);
+        adaptive_cost.particle_steps += state.pd().particles().n_global();
         if (check_regions)
           adapt_regions(state, step, data.time);
         progress.update(step, data.time);
@@ -432,6 +487,16 @@ namespace perideal
         if (n_bonds > 0)
           state.log() << "bond updates per second: "
                       << double(n_bonds) * (n_steps - start.step) / seconds << std::endl;
+      }
+    if (state.has_adaptive_region())
+      {
+        const std::string line = adaptive_cost_summary(state, seconds);
+        // The stages of the set-up and of every conversion together: less the set-up's line,
+        // where the conversions' time goes.
+        const std::string stages =
+          SetupTimes::summary(state.comm(), "Set-up stages with the conversions");
+        if (state.is_root())
+          state.log() << line << "\n" << stages << std::endl;
       }
     // What a step exchanges between the ranks (read from the patterns, after the loop): the
     // particles' ghost update in compute_acceleration(), the FE ghost update in advance(), the

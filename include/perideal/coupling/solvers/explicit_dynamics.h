@@ -6,6 +6,8 @@
 
 #include <perideal/coupling/solvers/solver.h>
 
+#include <cstdint>
+#include <string>
 #include <vector>
 
 namespace perideal
@@ -139,6 +141,40 @@ namespace perideal
     ParticleVector nodal_force;
     /// The stable steps of the FE region and of the particles [s].
     double fe_dt = 0., pd_dt = 0.;
+
+    /**
+     * What the adaptive region cost during run() (its summary with <Output/Progress>): the wall
+     * time on this rank and the CPU time of the process (std::clock()) of the checks that
+     * converted (the whole of adapt_regions(): proposals, rebuild, masses, forces) and of those
+     * that did not, the particles the conversions added, and the particles summed over the
+     * steps (the work of the steps).
+     */
+    struct AdaptiveCost
+    {
+      /// Conversions: their number, wall and CPU time [s], the particles they added.
+      ///@{
+      unsigned int  conversions     = 0;
+      double        conversion_wall = 0., conversion_cpu = 0.;
+      std::uint64_t added = 0;
+      ///@}
+      /// Checks without a conversion: their number, wall and CPU time [s].
+      ///@{
+      unsigned int checks     = 0;
+      double       check_wall = 0., check_cpu = 0.;
+      ///@}
+      /// The number of particles summed over the steps.
+      double particle_steps = 0.;
+    };
+    /// The adaptive region's cost so far.
+    AdaptiveCost adaptive_cost;
+
+    /**
+     * @brief The summary line of the adaptive region's cost (collective; the CPU times the
+     * largest over the ranks): the conversions' wall and CPU time and share of the time loop's
+     * @p loop_seconds, per converted particle against a step per particle.
+     */
+    std::string
+    adaptive_cost_summary(const CoupledState<dim> &state, const double loop_seconds) const;
   };
 } // namespace perideal
 
