@@ -11,6 +11,7 @@
 
 #include <perideal/base/parameter_utilities.h>
 #include <perideal/base/setup_times.h>
+#include <perideal/base/tie_break.h>
 #include <perideal/coupling/transfer_operator.h>
 
 #include <algorithm>
@@ -71,24 +72,10 @@ namespace perideal
     }
 
     /**
-     * @brief The fixed direction of the rule that gives a particle on cell faces to one cell:
-     * the cell the particle would move into along it. No component is zero and no two are
-     * equal, so it is parallel to no face of an axis-aligned mesh nor to a diagonal plane.
-     */
-    template <int dim>
-    Tensor<1, dim>
-    face_rule_direction()
-    {
-      Tensor<1, dim> v;
-      for (unsigned int d = 0; d < dim; ++d)
-        v[d] = 1. + 0.1 * std::sqrt(2.) * (d + 1);
-      return v;
-    }
-
-    /**
      * @brief Where the point at @p reference of @p cell lies: -1 strictly inside the cell (no
      * reference coordinate within @p tolerance of 0 or 1), 1 on the cell's boundary and inside
-     * the cell once moved by a small step along face_rule_direction(), 0 on the boundary and
+     * the cell once moved by a small step along tie_break_direction() (the direction that
+     * PreCrack::cuts() uses for a bond's end on a crack's plane), 0 on the boundary and
      * outside after that step (or moving along the boundary).
      */
     template <int dim>
@@ -108,7 +95,7 @@ namespace perideal
         jacobian +=
           outer_product(cell->vertex(v),
                         GeometryInfo<dim>::d_linear_shape_function_gradient(reference, v));
-      const Tensor<1, dim> step = invert(jacobian) * face_rule_direction<dim>();
+      const Tensor<1, dim> step = invert(jacobian) * tie_break_direction<dim>();
       for (unsigned int d = 0; d < dim; ++d)
         if ((reference[d] < tolerance && !(step[d] > 0.)) ||
             (reference[d] > 1. - tolerance && !(step[d] < 0.)))
@@ -212,7 +199,7 @@ namespace perideal
      * @brief The rule that gives each particle to one cell, the same on every partition: of
      * the cells that hold a particle (@p components, from locate_candidates()), a cell that holds
      * it strictly inside keeps it; of cells that hold it on their boundary (on a face, an edge, a
-     * vertex, or a slit's face), the one it moves into along face_rule_direction() keeps it, ties
+     * vertex, or a slit's face), the one it moves into along tie_break_direction() keeps it, ties
      * (none or several such cells, e.g. a particle on the mesh's boundary) to the least CellId.
      * Decided on the particle's rank from the candidates the cells' ranks send (two some-to-some
      * messages). Returns whether each component keeps its particle; sets @p found (one entry per

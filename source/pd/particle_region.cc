@@ -45,6 +45,17 @@ namespace perideal
           for (unsigned int v = 0; v < dim; ++v)
             crack.vertices[v] =
               ParameterUtilities::parse_point<dim>(vertices[v], "Pre-cracks/Cracks");
+          // A segment of zero length or a parallelogram of zero area has no plane to cut by.
+          const Tensor<1, dim> e1   = crack.vertices[1] - crack.vertices[0];
+          double               size = e1.norm();
+          if constexpr (dim == 3)
+            size = cross_product_3d(e1, crack.vertices[2] - crack.vertices[0]).norm();
+          AssertThrow(size > 0.,
+                      ExcMessage(
+                        "The crack <" + item + "> in <Pre-cracks/Cracks> is degenerate (" +
+                        (dim == 2 ? "its two ends coincide" : "its three corners lie on one line") +
+                        "): give a segment of positive length (2D) or a "
+                        "parallelogram of positive area (3D)."));
           cracks.push_back(crack);
         }
       return cracks;

@@ -9,6 +9,7 @@
 
 #include <perideal/base/cell_list.h>
 #include <perideal/base/setup_times.h>
+#include <perideal/base/tie_break.h>
 #include <perideal/pd/particle_system.h>
 
 #include <algorithm>
@@ -21,40 +22,94 @@ namespace perideal
 {
   using namespace dealii;
 
-  template <>
-  bool
-  PreCrack<2>::cuts(const Point<2> &x, const Point<2> &y) const
+  namespace
   {
-    const Tensor<1, 2> r     = y - x;
-    const Tensor<1, 2> s     = vertices[1] - vertices[0];
-    const double       denom = r[0] * s[1] - r[1] * s[0];
-    if (std::abs(denom) <= 1e-14 * r.norm() * s.norm())
-      return false; // parallel: a bond along the crack line does not cross it
-    const Tensor<1, 2> q = vertices[0] - x;
-    const double       t = (q[0] * s[1] - q[1] * s[0]) / denom;
-    const double       u = (q[0] * r[1] - q[1] * r[0]) / denom;
-    return t >= 0. && t <= 1. && u >= 0. && u <= 1.;
-  }
+    /**
+     * @brief The unit normal of a crack's line (2D: the segment turned by +90 degrees) or plane
+     * (3D: e1 x e2 of its edges).
+     */
+    Tensor<1, 2>
+    crack_normal(const std::array<Point<2>, 2> &vertices)
+    {
+      const Tensor<1, 2> s = vertices[1] - vertices[0];
+      const Tensor<1, 2> n({-s[1], s[0]});
+      return n / n.norm();
+    }
 
-  template <>
+    Tensor<1, 3>
+    crack_normal(const std::array<Point<3>, 3> &vertices)
+    {
+      const Tensor<1, 3> n = cross_product_3d(vertices[1] - vertices[0], vertices[2] - vertices[0]);
+      return n / n.norm();
+    }
+
+    /**
+     * @brief How far the point @p p of a crack's line inside the segment lies from its nearer
+     * end [m] (negative outside).
+     */
+    double
+    depth_inside(const std::array<Point<2>, 2> &vertices, const Point<2> &p)
+    {
+      const Tensor<1, 2> s      = vertices[1] - vertices[0];
+      const double       length = s.norm();
+      const double       along  = (p - vertices[0]) * s / length;
+      return std::min(along, length - along);
+    }
+
+    /**
+     * @brief How far the point @p p of a crack's plane inside the parallelogram lies from its
+     * nearest edge [m] (negative outside): with p - a = α e1 + β e2, the edges α = 0 and 1 lie
+     * α |e1 x e2| / |e2| and (1 - α) |e1 x e2| / |e2| away, the edges β = 0 and 1 likewise.
+     */
+    double
+    depth_inside(const std::array<Point<3>, 3> &vertices, const Point<3> &p)
+    {
+      const Tensor<1, 3> e1 = vertices[1] - vertices[0];
+      const Tensor<1, 3> e2 = vertices[2] - vertices[0];
+      const Tensor<1, 3> q  = p - vertices[0];
+      // Solve q = α e1 + β e2 in the least-squares sense (exact in the plane).
+      const double g11 = e1 * e1, g12 = e1 * e2, g22 = e2 * e2;
+      const double det   = g11 * g22 - g12 * g12;
+      const double alpha = ((q * e1) * g22 - (q * e2) * g12) / det;
+      const double beta  = ((q * e2) * g11 - (q * e1) * g12) / det;
+      const double area  = cross_product_3d(e1, e2).norm();
+      const double h1 = area / std::sqrt(g22), h2 = area / std::sqrt(g11);
+      return std::min({alpha * h1, (1. - alpha) * h1, beta * h2, (1. - beta) * h2});
+    }
+  } // namespace
+
+  template <int dim>
   bool
-  PreCrack<3>::cuts(const Point<3> &x, const Point<3> &y) const
+  PreCrack<dim>::cuts(const Point<dim> &x_given, const Point<dim> &y_given) const
   {
-    const Tensor<1, 3> e1 = vertices[1] - vertices[0];
-    const Tensor<1, 3> e2 = vertices[2] - vertices[0];
-    const Tensor<1, 3> n  = cross_product_3d(e1, e2);
-    const double       dx = (x - vertices[0]) * n;
-    const double       dy = (y - vertices[0]) * n;
-    if (dx * dy > 0. || dx == dy)
+    // The ends in lexicographic order, so that cuts(x, y) and cuts(y, x) compute the same.
+    bool swap = false;
+    for (unsigned int d = 0; d < dim; ++d)
+      if (x_given[d] != y_given[d])
+        {
+          swap = y_given[d] < x_given[d];
+          break;
+        }
+    const Point<dim> &x = swap ? y_given : x_given;
+    const Point<dim> &y = swap ? x_given : y_given;
+
+    const double         tolerance = relative_tolerance * x.distance(y);
+    const Tensor<1, dim> n         = crack_normal(vertices);
+    const double         dx        = (x - vertices[0]) * n;
+    const double         dy        = (y - vertices[0]) * n;
+    // An end within the tolerance of the plane is on the side tie_break_direction() points
+    // into (of +n if the plane holds the direction, a case of measure zero).
+    const int  on_plane = tie_break_direction<dim>() * n >= 0. ? 1 : -1;
+    const auto side     = [&](const double distance) {
+      return std::abs(distance) <= tolerance ? on_plane : (distance > 0. ? 1 : -1);
+    };
+    if (side(dx) == side(dy))
       return false;
-    const Point<3>     p = x + (dx / (dx - dy)) * (y - x);
-    const Tensor<1, 3> q = p - vertices[0];
-    // Solve q = a e1 + b e2 in the least-squares sense (exact in the plane).
-    const double g11 = e1 * e1, g12 = e1 * e2, g22 = e2 * e2;
-    const double det = g11 * g22 - g12 * g12;
-    const double a   = ((q * e1) * g22 - (q * e2) * g12) / det;
-    const double b   = ((q * e2) * g11 - (q * e1) * g12) / det;
-    return a >= 0. && a <= 1. && b >= 0. && b <= 1.;
+    // The crossing point: an end on the plane, projected onto it, or the intersection.
+    const Point<dim> p = std::abs(dx) <= tolerance ? x - dx * n :
+                         std::abs(dy) <= tolerance ? y - dy * n :
+                                                     x + (dx / (dx - dy)) * (y - x);
+    return depth_inside(vertices, p) > tolerance;
   }
 
   template <int dim>

@@ -8,7 +8,7 @@
 //     tractions +-S = 12000 on the top and bottom faces) at the paper's dx = 0.01 in four load
 //     steps. By LEFM the energy release rate at S = 12000 is 1.9 < G_IIIc, but the PD crack tips
 //     are critical (seed note: the largest bond slope 1.26 r_c): bonds break beyond both tips,
-//     and the growth arrests. Verdicts: bonds broke beyond the pre-crack (366 cut), fewer than
+//     and the growth arrests. Verdicts: bonds broke beyond the pre-crack (354 cut), fewer than
 //     60 (the benchmark: 10), and the damaged particles stay within |x| < 0.1 + 2 delta of the
 //     centre (the tips moved less than two horizons; a crack that ran would cut the bar).
 //  2. Growth to separation (cracked_bar_grips.prm, half length a = 0.2, the grips raised to

@@ -5,8 +5,8 @@
 // restarted from it ends with the numbers of the run that did not stop. Three runs, each with bonds
 // or an FE region in its state:
 //  - explicit dynamics with bond breaking: the PMB plate of app-solid/plate_2d_pmb pulled by its
-//    grips, a pre-crack and a critical stretch of 1e-3 (the grips start at 10 m/s: 3588 bonds
-//    are broken after step K = 5 of 80, 3740 from step 9 on);
+//    grips, a pre-crack and a critical stretch of 1e-3 (the grips start at 10 m/s: 3570 bonds
+//    are broken after step K = 5 of 80, 3726 at the end);
 //  - a static run with load steps and bond breaking: app-solid/coupled_static_crack_2d (FE and
 //    PD) with its grips moved twice as far in 10 load steps (the crack grows from step 5; K = 7);
 //  - a coupled explicit run: app-solid/coupled_wave_2d (FE and PD, a wave through the overlap);

@@ -18,9 +18,11 @@ of a peak to P_PD is the peak over the LEFM of the body actually modelled.
 The pre-crack cuts the bonds whose crossing of its line lies before its end. A notch tip midway
 between two particle columns (x = 20 mm in full_pd.prm) is a tie: the mirror pairs of bonds
 (x_t - d, -/+y) -- (x_t + d, +/-y) cross the line exactly at the tip (6 bonds for m = 3, 10 for
-m = 4), and round-off decides which of them the pre-crack cuts (measured: all, none or some,
-mirror-asymmetric, depending on dx and m). Run the triples with the tip moved off the tie by a
-small fraction of dx (the tables of the README: -0.01 dx, the ties intact, and +0.001 dx, cut);
+m = 4). Round-off used to decide which of them the pre-crack cut (measured: all, none or some,
+mirror-asymmetric, depending on dx and m); since the pre-crack rule (doc/theory/models.md,
+"Pre-cracks") they stay intact, as with the tip at x_t - 0.001 dx. The triples move the tip off
+the tie by a small fraction of dx (the tables of the README: -0.001 dx, the ties intact, and
++0.001 dx, cut);
 each step of the triple then cuts exactly one column (18 bonds for m = 3, 40 for m = 4).
 The compliance itself is printed, to compare with fe_check.py's FE compliance of the geometry.
 
