@@ -7,6 +7,8 @@
 #include <deal.II/base/point.h>
 #include <deal.II/base/tensor.h>
 
+#include <perideal/pd/lattice.h>
+
 #include <array>
 #include <cstdint>
 #include <functional>
@@ -64,19 +66,8 @@ namespace perideal
   private:
     using Coordinates = std::array<long, dim>;
 
-    /// A hash of tile coordinates.
-    struct CoordinatesHash
-    {
-      /// The hash of @p c.
-      std::size_t
-      operator()(const Coordinates &c) const
-      {
-        std::size_t h = 0;
-        for (const long k : c)
-          h = h * 1000003u ^ std::hash<long>()(k);
-        return h;
-      }
-    };
+    /// A hash of tile coordinates (the lattice keys' hash: the same type).
+    using CoordinatesHash = typename Lattice<dim>::KeyHash;
 
     /// One tile: the predicate per point (0 not evaluated, 1 false, 2 true) and the answer.
     struct Tile
