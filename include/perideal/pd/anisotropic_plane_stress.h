@@ -207,7 +207,7 @@ namespace perideal
     std::vector<double> k0, g;
     /// B_i of the owned and ghost particles.
     std::vector<double> B;
-    /// The kernel's data, defined in anisotropic_plane_stress.cc.
+    /// The kernel's data, defined in the kernel header anisotropic_plane_stress_kernel.h.
     struct Kernel;
     std::unique_ptr<Kernel> kernel;
 
