@@ -16,7 +16,7 @@
 // perturbed one (epsilon = 0.3, the mean of four cuts a quarter dx apart).
 // State-based models (antiplane state based, LPS), whose energy is not a sum of bond energies:
 // a rigid cleave through the kernel with breaking (mode III, mode I), on a box other than the
-// calibration's; m = 2, 3, 4 in 2D, 2 and 3 in 3D.
+// calibration's; m = 2, 3, 4 in 2D and 3D.
 // Beside each, the continuum calibration's G / G_c, the error the lattice calibration removes.
 #include <perideal/pd/antiplane_bond_based.h>
 #include <perideal/pd/antiplane_state_based.h>
@@ -314,7 +314,7 @@ main(int argc, char **argv)
                                                     {3.015});
   check_cleave<3, perideal::AntiplaneStateBased<3>>("antiplane state based, alpha = 0.1",
                                                     sb,
-                                                    {2.015, 3.015});
+                                                    {2.015, 3.015, 4.015});
   check_cleave<2, perideal::LinearPeridynamicSolid<2>>("LPS, nu = 0.3", lps, {2.015, 3.015, 4.015});
-  check_cleave<3, perideal::LinearPeridynamicSolid<3>>("LPS, nu = 0.3", lps, {2.015, 3.015});
+  check_cleave<3, perideal::LinearPeridynamicSolid<3>>("LPS, nu = 0.3", lps, {2.015, 3.015, 4.015});
 }
