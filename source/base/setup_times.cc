@@ -19,6 +19,9 @@ namespace perideal
 
       /// The totals of this process [s]: wall time, then CPU time.
       std::array<double, 2 * n_stages> totals{};
+      /// The scopes of each stage open now: only the outermost adds its time (FERegion::
+      /// reweight() times its assemble_matrices() too, which counted twice before).
+      std::array<unsigned int, n_stages> open_scopes{};
 
       const char *
       name(const unsigned int stage)
@@ -37,11 +40,15 @@ namespace perideal
       : stage(stage)
       , start(std::chrono::steady_clock::now())
       , start_cpu(std::clock())
-    {}
+    {
+      ++open_scopes[static_cast<unsigned int>(stage)];
+    }
 
     Scope::~Scope()
     {
       const auto s = static_cast<unsigned int>(stage);
+      if (--open_scopes[s] > 0)
+        return;
       totals[s] += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
       totals[n_stages + s] += double(std::clock() - start_cpu) / CLOCKS_PER_SEC;
     }

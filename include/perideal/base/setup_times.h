@@ -39,7 +39,8 @@ namespace perideal
     /**
      * @brief Adds the wall time and the CPU time of the process (std::clock(): robust to other
      * processes on the same core) between its construction and its destruction to @p stage's
-     * totals (nested scopes of different stages count in both).
+     * totals (nested scopes of different stages count in both; a scope inside one of the same
+     * stage adds nothing, the outer one counts its time once).
      */
     class Scope
     {
