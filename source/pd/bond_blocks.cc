@@ -43,33 +43,37 @@ namespace perideal
           return lattice[a][d] < lattice[b][d];
       return false;
     });
-    // Kernel slots: the particles in that order, each lattice line cut into windows of width
-    // points aligned on the global lattice (first coordinate a multiple of width), and each
-    // window starting a new group. A group then holds the same lattice points on any number of
-    // ranks (those of them that are local), and so every particle receives its bonds'
-    // contributions in the same order: the forces are the same to the last bit on any
-    // partition (doc/architecture/06_force_kernels.md, "The same sums on any partition"). The
-    // slots no particle holds are empty lanes.
+    // Kernel slots: the particles in that order, in windows of width consecutive points of the
+    // global lattice box (its linear index, the first coordinate fastest, divided by width),
+    // each window a group of its own. A group then holds the same lattice points on any number of
+    // ranks (those of them that are local), so every particle receives its bonds'
+    // contributions in the same order and its force is the same to the last bit on any
+    // partition (doc/architecture/06_force_kernels.md, "The same sums on any partition").
+    // Where the local particles fill the box the slots are the dense order (no empty slot); the
+    // slots of absent points in a window are empty lanes, and absent windows are skipped.
+    std::array<unsigned long long, dim> stride;
+    for (unsigned int d = 0; d < dim; ++d)
+      stride[d] = d == 0 ? 1ull : stride[d - 1] * particles.lattice().n_points(d - 1);
+    const auto linear_index = [&](const std::array<long, dim> &p) {
+      unsigned long long index = 0;
+      for (unsigned int d = 0; d < dim; ++d)
+        index += static_cast<unsigned long long>(p[d]) * stride[d];
+      return index;
+    };
     kernel_index.assign(n_local, 0);
     std::size_t slot = 0;
     for (unsigned int k = 0; k < n_local; ++k)
       {
-        const auto &p       = lattice[order[k]];
-        const long  residue = ((p[0] % long(width)) + long(width)) % long(width);
-        const auto  window  = [&](const std::array<long, dim> &q) {
-          std::array<long, dim> w = q;
-          w[0]                    = (q[0] - ((q[0] % long(width)) + long(width)) % long(width));
-          return w;
-        };
+        const unsigned long long index = linear_index(lattice[order[k]]);
         if (k == 0)
-          slot = residue;
+          slot = index % width;
         else
           {
-            const auto &previous = lattice[order[k - 1]];
-            if (window(previous) == window(p))
-              slot += p[0] - previous[0];
+            const unsigned long long previous = linear_index(lattice[order[k - 1]]);
+            if (previous / width == index / width)
+              slot += index - previous;
             else
-              slot = (slot / width + 1) * width + residue;
+              slot = (slot / width + 1) * width + index % width;
           }
         kernel_index[order[k]] = slot;
       }
