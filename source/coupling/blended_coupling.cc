@@ -1,6 +1,7 @@
 // ---------------------------------------------------------------------
 // PeriDeal: energy blending of the FE region and the particles in the overlap.
 // ---------------------------------------------------------------------
+#include <perideal/base/exact_sum.h>
 #include <perideal/base/parameter_utilities.h>
 #include <perideal/coupling/blended_coupling.h>
 
@@ -242,7 +243,7 @@ namespace perideal
     z_prescribed      = z;
     current_fe_load   = &f_fe;
     current_pd_load   = &f_pd;
-    const auto result = relaxation->solve(z, z_force.l2_norm());
+    const auto result = relaxation->solve(z, exact_l2_norm(z_force));
     static_solver->from_unknowns(z, U, u);
     return result.iterations;
   }

@@ -4,6 +4,7 @@
 #include <deal.II/base/mpi.h>
 #include <deal.II/fe/mapping_q1.h>
 
+#include <perideal/base/exact_sum.h>
 #include <perideal/base/parameter_utilities.h>
 #include <perideal/coupling/schwarz_coupling.h>
 
@@ -392,11 +393,13 @@ namespace perideal
     // relaxation works with the model's forces).
     if (!pd_relaxation)
       pd_solver->assemble(*regions.material, conditions);
+    // Exact sums (ExactSum): the norms decide the stop and Aitken's factor, which amplifies a
+    // difference in their last bits, so they must not depend on the partition.
     const auto dot = [comm](const std::vector<double> &v, const std::vector<double> &w) {
-      double sum = 0.;
+      ExactSum sum;
       for (std::size_t k = 0; k < v.size(); ++k)
-        sum += v[k] * w[k];
-      return Utilities::MPI::sum(sum, comm);
+        sum.add(v[k] * w[k]);
+      return ExactSum::global_sums({sum}, comm)[0];
     };
     pd_force_scale = 0.;
     std::vector<double> history;
@@ -489,9 +492,9 @@ namespace perideal
       {
         pd_residual(z, z_work);
         pd_solver->clear_prescribed(z_work);
-        pd_force_scale = z_work.l2_norm();
+        pd_force_scale = exact_l2_norm(z_work);
       }
-    pd_relaxation->solve(z, std::max(z_force.l2_norm(), pd_force_scale));
+    pd_relaxation->solve(z, std::max(exact_l2_norm(z_force), pd_force_scale));
     pd_solver->from_unknowns(z, no_U, u);
   }
 

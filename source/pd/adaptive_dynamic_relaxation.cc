@@ -3,6 +3,7 @@
 // ---------------------------------------------------------------------
 #include <deal.II/base/exceptions.h>
 
+#include <perideal/base/exact_sum.h>
 #include <perideal/base/parameter_utilities.h>
 #include <perideal/base/problem_settings.h>
 #include <perideal/pd/adaptive_dynamic_relaxation.h>
@@ -22,7 +23,7 @@ namespace perideal
     : operations(operations)
     , lambda(density)
     , settings(settings)
-    , round_off_force(1e-12 * settings.length_scale * density.l2_norm())
+    , round_off_force(1e-12 * settings.length_scale * exact_l2_norm(density))
     , communicator(comm)
   {}
 
@@ -32,8 +33,18 @@ namespace perideal
                                                 ParticleVector            &density)
   {
     for (std::size_t k = 0; k < bound.size(); ++k)
-      // An isolated particle (no bond) still gets a positive density.
-      density.local_element(k) = bound[k] > 0. ? 0.25 * safety * bound[k] : 1.;
+      {
+        // An isolated particle (no bond) still gets a positive density.
+        const double value = bound[k] > 0. ? 0.25 * safety * bound[k] : 1.;
+        // Rounded up to 9 significant bits (at most 0.2 % more): the bound is summed from the
+        // entries of a matrix assembled on the ranks, so its last bits depend on the partition
+        // (differences of 1e-14 measured), and the relaxation would amplify them. The rounded
+        // value is the same on any number of ranks unless the bound lies within 1e-14 of one of
+        // the 512 points of its binary octave (probability about 1e-11 per unknown).
+        int          exponent;
+        const double fraction    = std::frexp(value, &exponent);
+        density.local_element(k) = std::ldexp(std::ceil(std::ldexp(fraction, 9)), exponent - 9);
+      }
   }
 
   AdaptiveDynamicRelaxation::Result
@@ -47,7 +58,9 @@ namespace perideal
 
     operations.prescribe_displacement(u);
     operations.residual(u, force);
-    const double initial_norm = force.l2_norm();
+    // Every global sum below is exact (ExactSum), so the iterations are the same on any number
+    // of ranks when the forces are (doc/architecture/08_solvers.md).
+    const double initial_norm = exact_l2_norm(force);
     const double scale        = std::max(external_norm, initial_norm);
     Result       result;
     if (scale <= round_off_force)
@@ -69,7 +82,7 @@ namespace perideal
         operations.prescribe_displacement(u);
         previous_force.swap(force);
         operations.residual(u, force);
-        residual = force.l2_norm() / scale;
+        residual = exact_l2_norm(force) / scale;
         AssertThrow(std::isfinite(residual),
                     ExcMessage("Adaptive dynamic relaxation diverged at iteration " +
                                std::to_string(n) +
@@ -84,7 +97,7 @@ namespace perideal
 
         // Damping from the local Rayleigh quotient with the diagonal stiffness estimate, over
         // the moving components (prescribed ones have v = 0 and no stiffness estimate).
-        double local[2] = {0., 0.};
+        std::vector<ExactSum> local(2);
         for (std::size_t k = 0; k < n_values; ++k)
           {
             const double uk = u.local_element(k), vk = v.local_element(k);
@@ -92,15 +105,12 @@ namespace perideal
               {
                 const double K = -(force.local_element(k) - previous_force.local_element(k)) /
                                  (lambda.local_element(k) * vk);
-                local[0] += uk * K * uk;
-                local[1] += uk * uk;
+                local[0].add(uk * K * uk);
+                local[1].add(uk * uk);
               }
           }
-        double global[2];
-        Utilities::MPI::sum(ArrayView<const double>(local, 2),
-                            communicator,
-                            ArrayView<double>(global, 2));
-        double c = 0.;
+        const std::vector<double> global = ExactSum::global_sums(std::move(local), communicator);
+        double                    c      = 0.;
         if (global[0] > 0. && global[1] > 0.)
           c = 2. * std::sqrt(global[0] / global[1]);
         if (c > 2.)

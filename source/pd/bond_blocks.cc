@@ -43,9 +43,41 @@ namespace perideal
           return lattice[a][d] < lattice[b][d];
       return false;
     });
+    // Kernel slots: the particles in that order, in windows of width consecutive points of the
+    // global lattice box (its linear index, the first coordinate fastest, divided by width),
+    // each window a group of its own. A group then holds the same lattice points on any number of
+    // ranks (those of them that are local), so every particle receives its bonds'
+    // contributions in the same order and its force is the same to the last bit on any
+    // partition (doc/architecture/06_force_kernels.md, "The same sums on any partition").
+    // Where the local particles fill the box the slots are the dense order (no empty slot); the
+    // slots of absent points in a window are empty lanes, and absent windows are skipped.
+    std::array<unsigned long long, dim> stride;
+    for (unsigned int d = 0; d < dim; ++d)
+      stride[d] = d == 0 ? 1ull : stride[d - 1] * particles.lattice().n_points(d - 1);
+    const auto linear_index = [&](const std::array<long, dim> &p) {
+      unsigned long long index = 0;
+      for (unsigned int d = 0; d < dim; ++d)
+        index += static_cast<unsigned long long>(p[d]) * stride[d];
+      return index;
+    };
     kernel_index.assign(n_local, 0);
+    std::size_t slot = 0;
     for (unsigned int k = 0; k < n_local; ++k)
-      kernel_index[order[k]] = k;
+      {
+        const unsigned long long index = linear_index(lattice[order[k]]);
+        if (k == 0)
+          slot = index % width;
+        else
+          {
+            const unsigned long long previous = linear_index(lattice[order[k - 1]]);
+            if (previous / width == index / width)
+              slot += index - previous;
+            else
+              slot = (slot / width + 1) * width + index % width;
+          }
+        kernel_index[order[k]] = slot;
+      }
+    n_slots = n_local == 0 ? 0 : slot + 1;
 
     // Every bond is placed at its end with the lower kernel index (so offsets are positive and
     // a bond and its reverse share one class), even if that end is a ghost: the kernels add
@@ -87,7 +119,7 @@ namespace perideal
     const auto lower_end = [&](const unsigned int i, const unsigned int b) {
       return std::min(kernel_index[i], kernel_index[bonds.neighbor[b]]);
     };
-    const std::size_t        n_groups = (std::size_t(n_local) + width - 1) / width;
+    const std::size_t        n_groups = (n_slots + width - 1) / width;
     std::vector<std::size_t> group_start(n_groups + 1, 0);
     for (unsigned int i = 0; i < n_owned; ++i)
       for (unsigned int b = bonds.row_start[i]; b < bonds.row_start[i + 1]; ++b)
@@ -162,7 +194,7 @@ namespace perideal
     // Components of a field a multiple of 64 bytes but never close to a multiple of 4 KiB
     // apart: a load whose address matches an older store's in the low 12 bits waits for it
     // ("4K aliasing"), which made the kernel 25 times slower for unlucky particle counts.
-    field_stride = (std::size_t(n_local) + width - 1) / width * width + 2 * width;
+    field_stride = (n_slots + width - 1) / width * width + 2 * width;
     field_stride += (168 - field_stride % 512 + 512) % 512;
     // The lanes' own reference bonds on a perturbed lattice (from the lane's particle, the end
     // of lower kernel index, to its neighbour, like the class's lattice vector): the kernels
@@ -176,17 +208,20 @@ namespace perideal
         reinit_field(reference_position, dim);
         for (unsigned int d = 0; d < dim; ++d)
           {
-            double *x     = component(reference_position, d);
-            double  x_max = 0.;
+            double           *x     = component(reference_position, d);
+            double            x_max = 0.;
+            std::vector<bool> held(field_stride, false);
             for (unsigned int i = 0; i < n_local; ++i)
               {
-                x[kernel_index[i]] = positions[i][d];
-                x_max              = std::max(x_max, std::abs(positions[i][d]));
+                x[kernel_index[i]]    = positions[i][d];
+                held[kernel_index[i]] = true;
+                x_max                 = std::max(x_max, std::abs(positions[i][d]));
               }
             // Entries no particle holds (the lanes without a bond read them): beyond the body,
             // one spacing apart, so that no lane's vector is zero.
-            for (std::size_t k = n_local; k + width < field_stride; ++k)
-              x[k] = x_max + double(k + 1) * dx;
+            for (std::size_t k = 0; k + width < field_stride; ++k)
+              if (!held[k])
+                x[k] = x_max + double(k + 1) * dx;
           }
         const std::size_t n_lanes = lane_bond.size();
         lane_inverse_length.resize_fast(n_lanes);

@@ -320,8 +320,10 @@ namespace perideal
                   double            *values) const;
 
   private:
-    unsigned int              n_owned = 0, n_local = 0;
-    std::size_t               field_stride = 0;
+    unsigned int n_owned = 0, n_local = 0;
+    std::size_t  field_stride = 0;
+    /// Kernel slots: the largest kernel index plus one (the windows leave empty slots).
+    std::size_t               n_slots = 0;
     std::vector<unsigned int> kernel_index;
     std::vector<Group>        group_list;
     std::vector<Block>        block_list;
