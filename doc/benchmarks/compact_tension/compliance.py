@@ -2,6 +2,7 @@
 """Benchmark compact_tension: the LEFM load of the PD specimen itself, from its compliance.
 
 usage: compliance.py MINUS ZERO PLUS [MINUS ZERO PLUS ...] [--peaks RUN... [--plot FILE]]
+       compliance.py --table OUTPUT.md --plot FILE
 
 Each triple is three runs of full_pd.prm (or a variant) that stop after the first event
 (<Solver/Control/Maximum events> = 1) with the pre-crack's end at a - dx, a and a + dx (one
@@ -29,6 +30,8 @@ The compliance itself is printed, to compare with fe_check.py's FE compliance of
 --peaks RUN...: runs of the same specimens (dx and m of a triple; the notch as the triple's
 middle run) whose peak load is compared with ASTM's and with P_PD; --plot FILE draws both ratios
 against the horizon delta, one line per m and failure law (the convergence plot of the README).
+--table OUTPUT.md: the plot from the peak table of an earlier output of this script (the rows
+of compact_tension_lefm_runs.md), without the runs.
 """
 import math
 import sys
@@ -50,12 +53,51 @@ def law_of(prm):
     return f"softening n = {float(n):g}, N = {int(teeth)}"
 
 
+def table_rows(path):
+    """The peak rows (m, law, delta, peak/ASTM, peak/P_PD) of an earlier output's peak table."""
+    rows = []
+    for line in open(path):
+        cells = [c.strip() for c in line.strip().strip("|").split("|")]
+        if len(cells) != 9 or not cells[1].replace(".", "", 1).isdigit():
+            continue
+        dx, delta = float(cells[1]), float(cells[2])
+        # m to the 0.005 of the horizon factors (delta is printed to 1 um).
+        rows.append((round(round(delta / dx / 0.005) * 0.005, 3), cells[3], delta * 1e-3,
+                     float(cells[7]), float(cells[8])))
+    return rows
+
+
+def plot_rows(rows, plot):
+    import matplotlib
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+    fig, ax = plt.subplots(figsize=(9.5, 4.8))
+    ax.set_prop_cycle(color=[plt.cm.tab20(2 * k % 20 + 2 * k // 20) for k in range(20)])
+    for m, law in sorted({(row[0], row[1]) for row in rows}):
+        group = sorted((row for row in rows if row[:2] == (m, law)), key=lambda row: row[2])
+        d = [row[2] * 1e3 for row in group]
+        line, = ax.plot(d, [row[4] for row in group], "o-", label=f"m = {m}, {law}: / P_PD")
+        ax.plot(d, [row[3] for row in group], "^:", color=line.get_color(),
+                label=f"m = {m}, {law}: / ASTM")
+    ax.axhline(1, color="k", lw=0.8)
+    ax.axhspan(0.95, 1.05, color="0.9")
+    ax.set_xlabel("horizon delta [mm]")
+    ax.set_ylabel("peak load / LEFM load")
+    ax.set_title("Compact tension, all-PD, G_c on the lattice, tie-free notch")
+    ax.legend(fontsize=7, loc="center left", bbox_to_anchor=(1.01, 0.5))
+    fig.tight_layout()
+    fig.savefig(plot, dpi=110)
+
+
 def main():
     args = sys.argv[1:]
     peaks, plot = [], None
     if "--plot" in args:
         plot = args[args.index("--plot") + 1]
         del args[args.index("--plot"):args.index("--plot") + 2]
+    if "--table" in args and plot:
+        plot_rows(table_rows(args[args.index("--table") + 1]), plot)
+        return
     if "--peaks" in args:
         peaks = args[args.index("--peaks") + 1:]
         args = args[:args.index("--peaks")]
@@ -94,25 +136,7 @@ def main():
               f"{len(r['load']) - 1} | {r['load'][1]:.2f} | {r['peak']:.2f} ({k}) | "
               f"{rows[-1][3]:.4f} | {rows[-1][4]:.4f} |")
     if plot:
-        import matplotlib
-        matplotlib.use("Agg")
-        import matplotlib.pyplot as plt
-        fig, ax = plt.subplots(figsize=(9.5, 4.8))
-        ax.set_prop_cycle(color=[plt.cm.tab20(2 * k % 20 + 2 * k // 20) for k in range(20)])
-        for m, law in sorted({(row[0], row[1]) for row in rows}):
-            group = sorted((row for row in rows if row[:2] == (m, law)), key=lambda row: row[2])
-            d = [row[2] * 1e3 for row in group]
-            line, = ax.plot(d, [row[4] for row in group], "o-", label=f"m = {m}, {law}: / P_PD")
-            ax.plot(d, [row[3] for row in group], "^:", color=line.get_color(),
-                    label=f"m = {m}, {law}: / ASTM")
-        ax.axhline(1, color="k", lw=0.8)
-        ax.axhspan(0.95, 1.05, color="0.9")
-        ax.set_xlabel("horizon delta [mm]")
-        ax.set_ylabel("peak load / LEFM load")
-        ax.set_title("Compact tension, all-PD, G_c on the lattice, tie-free notch")
-        ax.legend(fontsize=7, loc="center left", bbox_to_anchor=(1.01, 0.5))
-        fig.tight_layout()
-        fig.savefig(plot, dpi=110)
+        plot_rows(rows, plot)
 
 
 if __name__ == "__main__":
