@@ -104,6 +104,20 @@ namespace perideal
   }
 
   void
+  CheckpointWriter::add_totals(const std::string &name, const std::vector<double> &totals)
+  {
+    const bool        root = Utilities::MPI::this_mpi_process(comm) == 0;
+    std::vector<char> data;
+    if (root)
+      append_bytes(data, totals.data(), totals.size());
+    add_records(name,
+                1,
+                totals.size() * sizeof(double),
+                root ? std::vector<std::uint64_t>{0} : std::vector<std::uint64_t>{},
+                std::move(data));
+  }
+
+  void
   CheckpointWriter::add_bytes(const std::string &name, std::vector<char> data)
   {
     Section section;
@@ -325,6 +339,15 @@ namespace perideal
         r = end;
       }
     return data;
+  }
+
+  std::vector<double>
+  CheckpointReader::read_totals(const std::string &name, const std::size_t n)
+  {
+    const std::vector<char> data = read_records(name, n * sizeof(double), {0});
+    std::vector<double>     totals(n);
+    std::memcpy(totals.data(), data.data(), data.size());
+    return totals;
   }
 
   std::vector<char>

@@ -161,6 +161,8 @@ namespace perideal
     if (!temperature.active())
       return;
     temperature.connect(pd, fe, exchange);
+    if (temperature.two_way())
+      set_coupling_numbers();
     // With a two-way coupling the temperature the mechanics reads holds the heating of its
     // present deformation (ThermoelasticHeating::predict()).
     state().set_temperature([this](const double time) {
@@ -168,6 +170,49 @@ namespace perideal
         heating.predict();
       temperature.update(time);
     });
+  }
+
+  template <int dim>
+  void
+  CoupledProblem<dim>::set_coupling_numbers()
+  {
+    // The heat's smallest capacity rho c at the particles and in the FE region: the largest
+    // coupling number.
+    double particle_capacity = std::numeric_limits<double>::max(),
+           fe_capacity       = std::numeric_limits<double>::max();
+    for (unsigned int k = 1; k < physics.size(); ++k)
+      if (const Physics<dim> &heat = *physics[k]; heat.layout.has_temperature())
+        {
+          if (heat.pd.has_body())
+            {
+              const auto &material = heat.pd.material();
+              const auto  inertia  = material.inertia_densities(heat.pd.density());
+              const auto  scales = material.inertia_scales(heat.pd.particles(), heat.pd.density());
+              for (unsigned int c = 0; c < heat.layout.n_components(); ++c)
+                if (heat.layout.kind(c) == ComponentKind::temperature)
+                  {
+                    double smallest = scales.empty() ? 1. : std::numeric_limits<double>::max();
+                    for (const double scale : scales)
+                      smallest = std::min(smallest, scale);
+                    particle_capacity = std::min(particle_capacity, inertia[c] * smallest);
+                  }
+            }
+          if (heat.fe.has_mesh())
+            fe_capacity =
+              std::min(fe_capacity, heat.fe.get_density() * heat.fe.physics().mass_factor());
+        }
+    particle_capacity = Utilities::MPI::min(particle_capacity, comm);
+    // delta = T_0 beta : alpha / (rho c), beta : alpha = alpha : C : alpha of the model's plane.
+    const double T0 = temperature.absolute_reference_temperature();
+    if (pd.has_body() && particle_capacity < std::numeric_limits<double>::max())
+      {
+        const auto alpha = pd.material().thermal_expansion();
+        state().particle_coupling_number =
+          T0 * (alpha * (pd.material().elasticity_tensor() * alpha)) / particle_capacity;
+      }
+    if (fe.has_mesh() && fe.has_thermal_strain() &&
+        fe_capacity < std::numeric_limits<double>::max())
+      state().fe_coupling_number = T0 * fe.physics().thermoelastic_coupling_modulus() / fe_capacity;
   }
 
   template void
@@ -178,6 +223,10 @@ namespace perideal
   CoupledProblem<2>::check_two_way(ParameterHandler &) const;
   template void
   CoupledProblem<3>::check_two_way(ParameterHandler &) const;
+  template void
+  CoupledProblem<2>::set_coupling_numbers();
+  template void
+  CoupledProblem<3>::set_coupling_numbers();
   template void
   CoupledProblem<2>::connect_temperature();
   template void

@@ -61,18 +61,9 @@ namespace perideal
     // predicted before the heat's step, so it is stored rather than derived at the restart.
     if (has_temperature())
       {
-        const bool        on_particles = held_temperature_change.size() > 0;
-        std::vector<char> held;
-        if (is_root())
-          {
-            const double values[2] = {on_particles ? 1. : 0., held_thermal_energy};
-            append_bytes(held, values, 2);
-          }
-        writer.add_records(prefix + "held temperature",
-                           1,
-                           2 * sizeof(double),
-                           is_root() ? std::vector<std::uint64_t>{0} : std::vector<std::uint64_t>{},
-                           std::move(held));
+        const bool on_particles = held_temperature_change.size() > 0;
+        writer.add_totals(prefix + "held temperature",
+                          {on_particles ? 1. : 0., held_thermal_energy});
         if (on_particles)
           pd().save_particle_records(writer,
                                      prefix + "held particle temperature",
@@ -125,11 +116,8 @@ namespace perideal
     U.update_ghost_values();
     if (has_temperature())
       {
-        const std::vector<char> held =
-          reader.read_records(prefix + "held temperature", 2 * sizeof(double), {0});
-        double values[2];
-        std::memcpy(values, held.data(), sizeof(values));
-        held_thermal_energy = values[1];
+        const std::vector<double> values = reader.read_totals(prefix + "held temperature", 2);
+        held_thermal_energy              = values[1];
         if (values[0] != 0.)
           {
             pd().particles().reinit_vector(held_temperature_change, 1);
@@ -186,6 +174,19 @@ namespace perideal
     kept.history.clear();
     if (pd().has_body() && pd().material().n_bond_history_values() > 0)
       kept.history = pd().material().bond_history(pd().particles());
+    // The temperature the work of the next step starts from (what save() writes of it).
+    if (has_temperature())
+      {
+        kept.held_temperature_change.reinit(held_temperature_change.get_partitioner());
+        if (held_temperature_change.size() > 0)
+          std::copy(held_temperature_change.begin(),
+                    held_temperature_change.begin() +
+                      held_temperature_change.get_partitioner()->locally_owned_size() +
+                      held_temperature_change.get_partitioner()->n_ghost_indices(),
+                    kept.held_temperature_change.begin());
+        copy_with_layout(kept.held_thermal_load, held_thermal_load);
+        kept.held_thermal_energy = held_thermal_energy;
+      }
   }
 
   template <int dim>
@@ -204,6 +205,18 @@ namespace perideal
         *value = *sum++;
     if (!kept.history.empty())
       pd().material().set_bond_history(pd().particles(), kept.history);
+    if (has_temperature())
+      {
+        held_temperature_change.reinit(kept.held_temperature_change.get_partitioner());
+        if (kept.held_temperature_change.size() > 0)
+          std::copy(kept.held_temperature_change.begin(),
+                    kept.held_temperature_change.begin() +
+                      kept.held_temperature_change.get_partitioner()->locally_owned_size() +
+                      kept.held_temperature_change.get_partitioner()->n_ghost_indices(),
+                    held_temperature_change.begin());
+        copy_with_layout(held_thermal_load, kept.held_thermal_load);
+        held_thermal_energy = kept.held_thermal_energy;
+      }
     // The bonds broken since keep() are intact again: not broken for the other physics either.
     if (broken_bond_record != nullptr)
       broken_bond_record->clear();

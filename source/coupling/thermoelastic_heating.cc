@@ -5,8 +5,6 @@
 
 #include <perideal/coupling/thermoelastic_heating.h>
 
-#include <cstring>
-
 namespace perideal
 {
   using namespace dealii;
@@ -186,17 +184,8 @@ namespace perideal
     pd->save_particle_records(writer, prefix + "particle measure", {}, 0, {&previous_particles});
     if (previous_fe.size() > 0)
       heat_state->fe().save_dof_values(writer, prefix + "FE measure", {&previous_fe});
-    // The heat so far, once (rank 0's record).
-    const double      total = heat();
-    std::vector<char> data;
-    if (heat_state->is_root())
-      append_bytes(data, &total, 1);
-    writer.add_records(prefix + "heat",
-                       1,
-                       sizeof(double),
-                       heat_state->is_root() ? std::vector<std::uint64_t>{0} :
-                                               std::vector<std::uint64_t>{},
-                       std::move(data));
+    // The heat so far, once.
+    writer.add_totals(prefix + "heat", {heat()});
   }
 
   template <int dim>
@@ -207,10 +196,7 @@ namespace perideal
     pd->load_particle_records(reader, prefix + "particle measure", {}, 0, {&previous_particles});
     if (previous_fe.size() > 0)
       heat_state->fe().load_dof_values(reader, prefix + "FE measure", {&previous_fe});
-    const std::vector<char> data = reader.read_records(prefix + "heat", sizeof(double), {0});
-    double                  total;
-    std::memcpy(&total, data.data(), sizeof(double));
-    local_heat = heat_state->is_root() ? total : 0.;
+    local_heat = heat_state->is_root() ? reader.read_totals(prefix + "heat", 1)[0] : 0.;
   }
 
   template <int dim>

@@ -18,7 +18,8 @@
 //    dof values of both (K = 6);
 //  - two way: the coupled run with a thermal expansion of 1e-8 /K on both sides and the
 //    thermoelastic heating (<Temperature/Coupling> = two way, T_0 = 300 K: with this plate's
-//    rho c of 1 J/(m^3 K) a coupling T_0 beta^2 / (rho c M) of about 0.04), so the checkpoint
+//    rho c of 1 J/(m^3 K) a coupling number T_0 beta : alpha / (rho c) of 0.018, which lowers
+//    the stable step by 2 sqrt(1.018); thermoelastic_02 runs alpha = 1e-5), so the checkpoint
 //    also holds the measure the next step heats from, the heat so far and the temperature the
 //    mechanics' last force evaluation saw (K = 6).
 // A checkpoint of the mechanics alone read by the problem with the heat, and the reverse, is

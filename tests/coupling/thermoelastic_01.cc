@@ -474,13 +474,20 @@ main(int argc, char **argv)
         times.push_back(s.time);
       const auto exact       = exact_amplitude(times, alpha, own_M);
       const auto exact_plain = exact_amplitude(times, 0., own_M);
+      // The uncoupled run against the mode's equations at its own times: the two-way coupling
+      // takes shorter steps (doc/theory/thermoelasticity.md, "The stable time step").
+      std::vector<double> plain_times;
+      for (const auto &s : plain)
+        plain_times.push_back(s.time);
+      const auto exact_own = exact_amplitude(plain_times, 0., own_M);
       double     error = 0., error_plain = 0., effect = 0.;
       for (std::size_t n = 0; n < coupled.size(); ++n)
         {
-          error       = std::max(error, std::abs(coupled[n].amplitude - exact[n]));
-          effect      = std::max(effect, std::abs(exact[n] - exact_plain[n]));
-          error_plain = std::max(error_plain, std::abs(plain[n].amplitude - exact_plain[n]));
+          error  = std::max(error, std::abs(coupled[n].amplitude - exact[n]));
+          effect = std::max(effect, std::abs(exact[n] - exact_plain[n]));
         }
+      for (std::size_t n = 0; n < plain.size(); ++n)
+        error_plain = std::max(error_plain, std::abs(plain[n].amplitude - exact_own[n]));
       // The particles alone are held in layers a horizon thick beyond the ends, which also
       // conduct and heat: their error is first order in delta / L (doc/theory/thermoelasticity.md).
       const double tolerance = v == Variant::pd ? 0.06 : 0.01;

@@ -50,6 +50,14 @@ namespace perideal
                 const std::vector<std::uint64_t> &indices,
                 std::vector<char>                 data);
 
+    /**
+     * @brief The section @p name of one record, @p totals written by rank 0 (values the same on
+     * every rank, or rank 0's totals of sums over the ranks): CheckpointReader::read_totals()
+     * gives them to every rank.
+     */
+    void
+    add_totals(const std::string &name, const std::vector<double> &totals);
+
     /// The section @p name: this rank's @p data (may be empty), in rank order.
     void
     add_bytes(const std::string &name, std::vector<char> data);
@@ -121,6 +129,13 @@ namespace perideal
     read_records(const std::string                &name,
                  const std::uint64_t               width,
                  const std::vector<std::uint64_t> &indices);
+
+    /**
+     * @brief The @p n values that CheckpointWriter::add_totals() wrote into the section @p name
+     * (checked against the file), on every rank. Not collective.
+     */
+    std::vector<double>
+    read_totals(const std::string &name, const std::size_t n);
 
     /// The whole section @p name (of either kind). Not collective.
     std::vector<char>

@@ -241,6 +241,15 @@ namespace perideal
     connect_temperature();
 
     /**
+     * @brief A two-way coupling: the coupling numbers delta = T_0 beta : alpha / (rho c) of the
+     * particles' model and of the FE elasticity with the heat's smallest capacity
+     * (CoupledState::particle_coupling_number, fe_coupling_number), which lower the mechanics'
+     * stable step (doc/theory/thermoelasticity.md, "The stable time step").
+     */
+    void
+    set_coupling_numbers();
+
+    /**
      * @brief The sub-steps of the physics @p k of <Physics/List> within a step of the first
      * physics: the fewest whose step is at most the one its solver chose (the safety factor
      * times its stable step); their length goes to its CoupledState::time_step and to

@@ -294,7 +294,8 @@ namespace perideal
 
     /**
      * @brief Keep in memory what save() writes of this state (its stored parts and sums, the
-     * bond histories of its model), for restore_kept(): a quasi-static run keeps each converged
+     * bond histories of its model, the held temperature of hold_temperature()), for
+     * restore_kept(): a quasi-static run keeps each converged
      * load step (Checkpoint::keep()). The bond states are the bond list's, which the physics
      * share: Checkpoint keeps them once.
      */
@@ -595,6 +596,14 @@ namespace perideal
     ///@{
     double stable_dt = 0., time_step = 0.;
     ///@}
+    /// The coupling numbers delta = T_0 beta : alpha / (rho c) of a two-way thermoelastic
+    /// coupling (<Temperature/Coupling> = two way) at the particles and in the FE region, which
+    /// lower the stable explicit step to 1 / (2 sqrt(1 + delta)) of the mechanics' own
+    /// (doc/theory/thermoelasticity.md, "The stable time step"; set by CoupledProblem before the
+    /// solver's set-up); 0 without it.
+    ///@{
+    double particle_coupling_number = 0., fe_coupling_number = 0.;
+    ///@}
     /// The change at the conversions of the adaptive region so far (summed) [J]: of the kinetic
     /// plus strain energy, or of a temperature's stored_heat() (the interpolation of the old FE
     /// field into the new particles), which the heat balance takes out.
@@ -637,7 +646,8 @@ namespace perideal
     ///@}
 
   private:
-    /// What keep() keeps: copies of the stored parts, of the sums and of the bond histories.
+    /// What keep() keeps: copies of the stored parts, of the sums, of the bond histories and of
+    /// the held temperature (hold_temperature()).
     struct Kept
     {
       std::vector<ParticleVector> particle_vectors;
@@ -645,6 +655,9 @@ namespace perideal
       std::vector<FEVector>       fe_vectors;
       std::vector<double>         sums;
       std::vector<double>         history;
+      ParticleVector              held_temperature_change;
+      FEVector                    held_thermal_load;
+      double                      held_thermal_energy = 0.;
     };
     /// The copy of the last keep().
     Kept kept;

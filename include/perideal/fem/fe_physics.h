@@ -158,6 +158,17 @@ namespace perideal
                                std::vector<double>             &measure) const;
 
     /**
+     * @brief The thermoelastic coupling modulus beta : alpha [Pa/K^2] of the deformation that
+     * cell_thermoelastic_measure() measures (in 2D beta_2D : alpha_2D of the planar assumption):
+     * with T_0 / (rho c) of a two-way coupled heat it is the coupling number delta by which the
+     * adiabatic stiffness exceeds the isothermal one, C_ad <= (1 + delta) C, which lowers the
+     * stable explicit step (doc/theory/thermoelasticity.md, "The stable time step"). Zero by
+     * default.
+     */
+    virtual double
+    thermoelastic_coupling_modulus() const;
+
+    /**
      * @brief The postprocessor of the output when a temperature change is set: the derived
      * quantities of postprocessor() from the mechanical strain, with the temperature change
      * @p delta_T at the points of a cell. postprocessor() by default (no thermal strain).
@@ -269,6 +280,13 @@ namespace perideal
                                              std::vector<double> &measure) const
   {
     std::fill(measure.begin(), measure.end(), 0.);
+  }
+
+  template <int dim>
+  double
+  FEPhysics<dim>::thermoelastic_coupling_modulus() const
+  {
+    return 0.;
   }
 
   template <int dim>

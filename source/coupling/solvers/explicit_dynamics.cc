@@ -34,9 +34,28 @@ namespace perideal
                            ParameterUtilities::format_number(state.settings().damping) +
                            ", but the field of this problem is a temperature (first order in "
                            "time, no velocity to damp): accepted value 0."));
+    // A two-way thermoelastic coupling: the step the user fixed is checked against the coupled
+    // system's limit, naming the coupling number (doc/theory/thermoelasticity.md).
+    const double coupling = std::max(state.particle_coupling_number, state.fe_coupling_number);
+    AssertThrow(coupling == 0. || state.settings().time_step <= state.stable_dt,
+                ExcMessage("The parameter <Time stepping/Time step> = " +
+                           ParameterUtilities::format_number(state.settings().time_step) +
+                           " s exceeds the stable limit " +
+                           ParameterUtilities::format_number(state.stable_dt) +
+                           " s of the two-way thermoelastic coupling (<Temperature/Coupling> = "
+                           "two way, coupling number T_0 beta : alpha / (rho c) = " +
+                           ParameterUtilities::format_number(coupling) +
+                           ": the adiabatic stiffness is 1 + that of the isothermal one); "
+                           "accepted: 0 (automatic) or a value up to the limit."));
     state.time_step = ParameterUtilities::choose_time_step(state.settings().time_step,
                                                            state.settings().safety_factor,
                                                            state.stable_dt);
+    if (state.is_root() && coupling > 0.)
+      state.log() << "Two-way thermoelastic coupling: coupling number "
+                  << state.particle_coupling_number << " (particles), " << state.fe_coupling_number
+                  << " (FE); the mechanics' stable step is 1 / (2 sqrt(1 + coupling number)) of "
+                     "the isothermal one"
+                  << std::endl;
     if (state.is_root())
       {
         state.log() << "Stable time step:";
@@ -78,6 +97,15 @@ namespace perideal
     // The stable step: the smaller of the two regions'.
     fe_dt = state.fe().stable_time_step(&state.mass);
     pd_dt = state.pd().stable_time_step();
+    // A two-way thermoelastic coupling stiffens the mechanics within its step to the adiabatic
+    // stiffness, at most 1 + delta times the isothermal one, and the conduction the heat adds
+    // after the step lags the acceleration: velocity Verlet of the split is stable for
+    // dt omega_ad <= 1, half its own limit (doc/theory/thermoelasticity.md, "The stable time
+    // step").
+    if (state.particle_coupling_number > 0.)
+      pd_dt /= 2. * std::sqrt(1. + state.particle_coupling_number);
+    if (state.fe_coupling_number > 0.)
+      fe_dt /= 2. * std::sqrt(1. + state.fe_coupling_number);
     // A convection h (T_inf - T) / d adds h / d to the bound B of its layer's particles:
     // dt <= 2 rho c / (B + h / d) >= 1 / (1 / dt_B + h / (2 rho c d)) (conservative; rho c the
     // smallest of the particles, MaterialModel::inertia_scales()).

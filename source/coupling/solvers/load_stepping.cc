@@ -271,14 +271,11 @@ namespace perideal
                   state.start_work();
                   state.advance_other_physics(0, 0., 0., true);
                 });
-    // A restart holds the temperature of the load factor reached, which the work of the
-    // temperature in the next step starts from (derived, not the checkpoint's: a step that did
-    // not converge writes the kept state, whose held temperature is not kept; one way only).
+    // A restart takes the temperature of the load factor reached (the checkpoint held the one
+    // the work of the temperature in the next step starts from, the kept one after a step that
+    // did not converge).
     if (checkpoint.restarting())
-      {
-        state.update_temperature(start.time * settings.end_time);
-        state.hold_temperature();
-      }
+      state.update_temperature(start.time * settings.end_time);
     // Without cutting, step k applies k/N; with cutting the load factor advances by increment.
     const double nominal   = 1. / n_steps;
     double       increment = nominal, reached = start.time;

@@ -283,6 +283,13 @@ namespace perideal
   }
 
   template <int dim>
+  double
+  LinearElasticity<dim>::thermoelastic_coupling_modulus() const
+  {
+    return thermal_stress * planar_alpha;
+  }
+
+  template <int dim>
   void
   LinearElasticity<dim>::cell_thermoelastic_measure(const FEValues<dim> &fe_values,
                                                     const types::material_id,

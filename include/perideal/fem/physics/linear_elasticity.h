@@ -86,6 +86,10 @@ namespace perideal
                                const dealii::Vector<double>    &cell_values,
                                std::vector<double>             &measure) const override;
 
+    /// @brief (C : alpha_2D) : alpha_2D, the coupling modulus of the planar assumption.
+    double
+    thermoelastic_coupling_modulus() const override;
+
     /// @brief Strain, stress, stress_zz (2D) and von Mises stress.
     std::unique_ptr<dealii::DataPostprocessor<dim>>
     postprocessor() const override;
