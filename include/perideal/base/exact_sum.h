@@ -25,9 +25,9 @@ namespace perideal
    * the relaxation's adaptive damping amplifies that difference until the iterations stop
    * elsewhere (doc/architecture/02_conventions.md, "The same numbers on any number of ranks").
    *
-   * Cost: about 20 instructions per term without a branch on the data (callgrind: 24 per term
-   * against 4 for a plain sum of squares, doc/architecture/02_conventions.md); the reduction is
-   * one MPI_Allreduce of 71 words per sum. Not meant for the force kernels. Non-finite terms
+   * Cost: no branch on the data; callgrind counts 47 instructions per term against 4 for a
+   * plain sum of squares (doc/architecture/02_conventions.md); the reduction is one
+   * MPI_Allreduce of 71 words per sum. Not meant for the force kernels. Non-finite terms
    * make value() return NaN.
    */
   class ExactSum
