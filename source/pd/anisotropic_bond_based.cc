@@ -252,20 +252,8 @@ namespace perideal
   AnisotropicBondBased<dim>::set_target(const SymmetricTensor<4, dim> &C_input,
                                         const std::string             &what)
   {
-    double scale = 0.;
-    for (unsigned int i = 0; i < dim; ++i)
-      for (unsigned int j = 0; j < dim; ++j)
-        for (unsigned int k = 0; k < dim; ++k)
-          for (unsigned int l = 0; l < dim; ++l)
-            scale = std::max(scale, std::abs(C_input[i][j][k][l]));
-    const double       tolerance = 1e-8 * scale;
-    std::ostringstream violated;
-    for (const auto &relation : am::cauchy_relations(C_input))
-      if (std::abs(relation.difference) > tolerance)
-        violated << " " << relation.relation << " is off by "
-                 << ParameterUtilities::format_number(relation.difference) << " Pa ("
-                 << ParameterUtilities::format_number(relation.difference / scale)
-                 << " of the largest constant);";
+    const double      tolerance = 1e-8 * am::largest_component(C_input);
+    const std::string violated  = am::cauchy_violations(C_input);
     const std::string accepted =
       dim == 3 ? "constants with C66 = C12, C44 = C23, C55 = C13, C56 = C14, C46 = C25, C45 = C36 "
                  "(global axes, relative tolerance 1e-8)" :
@@ -276,16 +264,16 @@ namespace perideal
         "plane stress' (<Material/Model> = anisotropic plane stress), whose reduced stiffness "
         "need not satisfy the 2D relation" :
         "";
-    AssertThrow(violated.str().empty() || symmetrize,
+    AssertThrow(violated.empty() || symmetrize,
                 ExcMessage("The " + what + " of <" + section + "> (" + material.summary() +
                            (dim == 3 ? ") violate" : ") violates") +
                            " Cauchy's relations, which bond-based peridynamics "
                            "imposes:" +
-                           violated.str() + " accepted: " + accepted + ", or <" + section +
+                           violated + " accepted: " + accepted + ", or <" + section +
                            "/Cauchy relations> = symmetrize" + alternative + "."));
     C = am::completely_symmetric_part(C_input);
     symmetrization_report.clear();
-    if (!violated.str().empty())
+    if (!violated.empty())
       {
         const auto         C_sym       = am::to_tensor<dim>(C);
         const unsigned int pair3[6][2] = {{0, 0}, {1, 1}, {2, 2}, {1, 2}, {0, 2}, {0, 1}};
@@ -293,7 +281,7 @@ namespace perideal
         const unsigned int voigt2[3]   = {1, 2, 6};
         const unsigned int n_voigt     = dim == 3 ? 6 : 3;
         std::ostringstream report;
-        report << "Cauchy relations violated (" << violated.str()
+        report << "Cauchy relations violated (" << violated
                << ") and symmetrized; changed constants (global axes):";
         for (unsigned int I = 0; I < n_voigt; ++I)
           for (unsigned int J = I; J < n_voigt; ++J)

@@ -5,11 +5,13 @@
 #include <deal.II/base/numbers.h>
 #include <deal.II/base/point.h>
 
+#include <perideal/base/parameter_utilities.h>
 #include <perideal/pd/anisotropic_micromodulus.h>
 
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <sstream>
 
 namespace perideal
 {
@@ -188,6 +190,34 @@ namespace perideal
                 {"C56 = C14", C[0][2][0][1] - C[0][0][1][2]},
                 {"C46 = C25", C[1][2][0][1] - C[1][1][0][2]},
                 {"C45 = C36", C[1][2][0][2] - C[2][2][0][1]}};
+    }
+
+    template <int dim>
+    double
+    largest_component(const SymmetricTensor<4, dim> &C)
+    {
+      double largest = 0.;
+      for (unsigned int i = 0; i < dim; ++i)
+        for (unsigned int j = 0; j < dim; ++j)
+          for (unsigned int k = 0; k < dim; ++k)
+            for (unsigned int l = 0; l < dim; ++l)
+              largest = std::max(largest, std::abs(C[i][j][k][l]));
+      return largest;
+    }
+
+    template <int dim>
+    std::string
+    cauchy_violations(const SymmetricTensor<4, dim> &C)
+    {
+      const double       scale = largest_component(C);
+      std::ostringstream violated;
+      for (const auto &relation : cauchy_relations(C))
+        if (std::abs(relation.difference) > 1e-8 * scale)
+          violated << " " << relation.relation << " is off by "
+                   << ParameterUtilities::format_number(relation.difference) << " Pa ("
+                   << ParameterUtilities::format_number(relation.difference / scale)
+                   << " of the largest constant);";
+      return violated.str();
     }
 
     template <int dim>
@@ -379,6 +409,8 @@ namespace perideal
   template ComponentsOf<dim>       completely_symmetric_part<dim>(const SymmetricTensor<4, dim> &); \
   template SymmetricTensor<4, dim> to_tensor<dim>(const ComponentsOf<dim> &);                       \
   template std::vector<CauchyRelation> cauchy_relations<dim>(const SymmetricTensor<4, dim> &);      \
+  template double                      largest_component<dim>(const SymmetricTensor<4, dim> &);     \
+  template std::string                 cauchy_violations<dim>(const SymmetricTensor<4, dim> &);     \
   template double      directional_modulus<dim>(const ComponentsOf<dim> &, const Tensor<1, dim> &); \
   template double      mean_directional_modulus<dim>(const ComponentsOf<dim> &);                    \
   template Family<dim> interior_family<dim>(const ParticleSystem<dim> &);                           \

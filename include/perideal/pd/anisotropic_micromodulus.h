@@ -95,6 +95,21 @@ namespace perideal
     std::vector<CauchyRelation>
     cauchy_relations(const dealii::SymmetricTensor<4, dim> &C);
 
+    /// The largest |C_ijkl| of @p C.
+    template <int dim>
+    double
+    largest_component(const dealii::SymmetricTensor<4, dim> &C);
+
+    /**
+     * @brief The relations of cauchy_relations() that @p C violates by more than 1e-8 of its
+     * largest component, for an error message: " <relation> is off by <difference> Pa (<the
+     * difference over the largest component> of the largest constant);" each, empty if @p C
+     * satisfies them all.
+     */
+    template <int dim>
+    std::string
+    cauchy_violations(const dealii::SymmetricTensor<4, dim> &C);
+
     /**
      * @brief The directional modulus c(n) = Lambda_ijkl n_i n_j n_k n_l of the unit vector @p n.
      */
