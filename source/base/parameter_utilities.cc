@@ -347,16 +347,19 @@ namespace perideal
     }
 
     double
-    choose_time_step(const double requested, const double safety_factor, const double stable_dt)
+    choose_time_step(const double       requested,
+                     const double       safety_factor,
+                     const double       stable_dt,
+                     const std::string &limited_by)
     {
       if (requested <= 0.)
         return safety_factor * stable_dt;
       AssertThrow(requested <= stable_dt,
-                  dealii::ExcMessage(
-                    "The parameter <Time stepping/Time step> = " + format_number(requested) +
-                    " s exceeds the stable limit " + format_number(stable_dt) +
-                    " s of this discretization; accepted: 0 (automatic) or a "
-                    "value up to the limit."));
+                  dealii::ExcMessage("The parameter <Time stepping/Time step> = " +
+                                     format_number(requested) + " s exceeds the stable limit " +
+                                     format_number(stable_dt) + " s of " + limited_by +
+                                     "; accepted: 0 (automatic) or a "
+                                     "value up to the limit."));
       return requested;
     }
 

@@ -153,6 +153,22 @@ namespace perideal
         to.reinit(from, true);
       to = from;
     }
+
+    /**
+     * @p to = @p from, owned and ghost entries as they are (the held temperature's ghosts are
+     * set without the vector's ghost state), in @p from's layout.
+     */
+    void
+    copy_local_entries(LinearAlgebra::distributed::Vector<double>       &to,
+                       const LinearAlgebra::distributed::Vector<double> &from)
+    {
+      to.reinit(from.get_partitioner());
+      if (from.size() > 0)
+        std::copy(from.begin(),
+                  from.begin() + from.get_partitioner()->locally_owned_size() +
+                    from.get_partitioner()->n_ghost_indices(),
+                  to.begin());
+    }
   } // namespace
 
   template <int dim>
@@ -177,13 +193,7 @@ namespace perideal
     // The temperature the work of the next step starts from (what save() writes of it).
     if (has_temperature())
       {
-        kept.held_temperature_change.reinit(held_temperature_change.get_partitioner());
-        if (held_temperature_change.size() > 0)
-          std::copy(held_temperature_change.begin(),
-                    held_temperature_change.begin() +
-                      held_temperature_change.get_partitioner()->locally_owned_size() +
-                      held_temperature_change.get_partitioner()->n_ghost_indices(),
-                    kept.held_temperature_change.begin());
+        copy_local_entries(kept.held_temperature_change, held_temperature_change);
         copy_with_layout(kept.held_thermal_load, held_thermal_load);
         kept.held_thermal_energy = held_thermal_energy;
       }
@@ -207,13 +217,7 @@ namespace perideal
       pd().material().set_bond_history(pd().particles(), kept.history);
     if (has_temperature())
       {
-        held_temperature_change.reinit(kept.held_temperature_change.get_partitioner());
-        if (kept.held_temperature_change.size() > 0)
-          std::copy(kept.held_temperature_change.begin(),
-                    kept.held_temperature_change.begin() +
-                      kept.held_temperature_change.get_partitioner()->locally_owned_size() +
-                      kept.held_temperature_change.get_partitioner()->n_ghost_indices(),
-                    held_temperature_change.begin());
+        copy_local_entries(held_temperature_change, kept.held_temperature_change);
         copy_with_layout(held_thermal_load, kept.held_thermal_load);
         held_thermal_energy = kept.held_thermal_energy;
       }

@@ -160,11 +160,14 @@ namespace perideal
 
     /**
      * @brief The time step of an explicit run: @p requested if it is positive (refused, naming
-     * <Time stepping/Time step>, if above @p stable_dt), else @p safety_factor times
-     * @p stable_dt.
+     * <Time stepping/Time step>, if above @p stable_dt, "the stable limit ... s of"
+     * @p limited_by), else @p safety_factor times @p stable_dt.
      */
     double
-    choose_time_step(const double requested, const double safety_factor, const double stable_dt);
+    choose_time_step(const double       requested,
+                     const double       safety_factor,
+                     const double       stable_dt,
+                     const std::string &limited_by = "this discretization");
 
     /**
      * @brief The number of equal steps, none longer than @p dt, that reach @p end_time (at least

@@ -34,22 +34,19 @@ namespace perideal
                            ParameterUtilities::format_number(state.settings().damping) +
                            ", but the field of this problem is a temperature (first order in "
                            "time, no velocity to damp): accepted value 0."));
-    // A two-way thermoelastic coupling: the step the user fixed is checked against the coupled
-    // system's limit, naming the coupling number (doc/theory/thermoelasticity.md).
+    // A two-way thermoelastic coupling: a step the user fixed above the coupled system's limit is
+    // refused naming the coupling number (doc/theory/thermoelasticity.md).
     const double coupling = std::max(state.particle_coupling_number, state.fe_coupling_number);
-    AssertThrow(coupling == 0. || state.settings().time_step <= state.stable_dt,
-                ExcMessage("The parameter <Time stepping/Time step> = " +
-                           ParameterUtilities::format_number(state.settings().time_step) +
-                           " s exceeds the stable limit " +
-                           ParameterUtilities::format_number(state.stable_dt) +
-                           " s of the two-way thermoelastic coupling (<Temperature/Coupling> = "
-                           "two way, coupling number T_0 beta : alpha / (rho c) = " +
-                           ParameterUtilities::format_number(coupling) +
-                           ": the adiabatic stiffness is 1 + that of the isothermal one); "
-                           "accepted: 0 (automatic) or a value up to the limit."));
-    state.time_step = ParameterUtilities::choose_time_step(state.settings().time_step,
-                                                           state.settings().safety_factor,
-                                                           state.stable_dt);
+    state.time_step       = ParameterUtilities::choose_time_step(
+      state.settings().time_step,
+      state.settings().safety_factor,
+      state.stable_dt,
+      coupling == 0. ?
+              "this discretization" :
+              "the two-way thermoelastic coupling (<Temperature/Coupling> = two way, coupling number "
+              "T_0 beta : alpha / (rho c) = " +
+          ParameterUtilities::format_number(coupling) +
+          ": the adiabatic stiffness is 1 + that of the isothermal one)");
     if (state.is_root() && coupling > 0.)
       state.log() << "Two-way thermoelastic coupling: coupling number "
                   << state.particle_coupling_number << " (particles), " << state.fe_coupling_number
