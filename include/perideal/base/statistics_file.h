@@ -105,20 +105,25 @@ namespace perideal
     std::ofstream file;
   };
   /**
-   * @brief @p value as the nearest multiple of @p unit (unchanged for @p unit <= 0): a printed
-   * number to the accuracy of the solution, free of the round-off or solver residual that
-   * changes with the summation order.
+   * @brief @p value as the nearest multiple of the power of ten at or above @p unit (unchanged
+   * for @p unit <= 0): a printed number to the accuracy of the solution, free of the round-off
+   * or solver residual that changes with the summation order. A power of ten, so that the
+   * digits kept are the value's own (50 N to a unit of 2.6e-4 N prints as 50, not as the
+   * nearest multiple of 2.6e-4, 50.00013).
    */
   inline double
   to_accuracy(const double value, const double unit)
   {
-    return unit > 0. ? unit * std::round(value / unit) : value;
+    if (!(unit > 0.))
+      return value;
+    const double decade = std::pow(10., std::ceil(std::log10(unit)));
+    return decade * std::round(value / decade);
   }
 
   /**
    * @brief Print @p values separated by spaces (with the stream's format), the components
    * below 1e-10 of their Euclidean norm, or below @p accuracy (absolute), as 0, the others
-   * as the nearest multiple of @p accuracy (if given): in printed
+   * to @p accuracy (to_accuracy(), if given): in printed
    * summaries, a component that vanishes by symmetry is then 0 on every number of ranks, build
    * and machine, not a round-off value, or a solver's residual, that changes with the summation
    * order.

@@ -101,9 +101,13 @@ namespace perideal
         const double scale = state.fe_force_scale();
         imbalance          = norm(balanced, nullptr);
         balance            = largest > 1e-10 * scale ? imbalance / largest : 0.;
-        // A thermal strain loads the body from within: the forces involved are those of the
-        // internal-force scale too (a free expansion has no reaction but round-off).
-        floor = accuracy * (state.has_temperature() ? std::max(largest, scale) : largest);
+        // The round-off and the solver's error of a nodal force are relative to the internal
+        // forces that sum to it (a backward-stable solve leaves |b - K U| of order eps |K| |U|),
+        // not to the net load: the floor is relative to the internal-force scale too. A rigid
+        // motion (no load, round-off reactions), a thermal strain (a free expansion) and a body
+        // cut almost through (a small load on large internal forces) print the same on every
+        // number of ranks.
+        floor = accuracy * std::max(largest, scale);
         for (unsigned int c = 0; c < nc; ++c)
           if (layout.kind(c) != ComponentKind::rotation)
             statistics.add_value("applied_load_" + layout.name(c), applied[c]);
