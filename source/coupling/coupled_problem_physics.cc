@@ -146,14 +146,13 @@ namespace perideal
     if (temperature.two_way())
       for (unsigned int k = 1; k < physics.size(); ++k)
         if (physics[k]->layout.has_temperature())
-          {
-            heating.connect(pd, fe, state().u, state().U, temperature, physics[k]->state());
-            temperature.add_changes(heating.particle_change(), heating.fe_change());
-          }
+          heating.connect(pd, fe, state().u, state().U, temperature, physics[k]->state());
+    // A two-way coupling advances the heat inside the mechanics' step (the adiabatic split).
     state().set_other_physics(
       [this](const unsigned int step, const double time, const double dt, const bool with_energy) {
         advance_other_physics(step, time, dt, with_energy);
-      });
+      },
+      heating.active());
     state().set_broken_bond_record(exchange.record());
   }
 
@@ -167,9 +166,14 @@ namespace perideal
     if (field.settings.solver_type == SolverType::static_linear)
       field.state().time_step = step_length;
     // The largest step of at most its own (the safety factor times its stable step) that
-    // divides the first physics' step, as its run takes it.
-    const auto n = static_cast<unsigned int>(
+    // divides the first physics' step, as its run takes it. The heat of a two-way coupling takes
+    // an even number: its conduction over the step, (I - h C^-1 L)^n, is then a positive map
+    // (every mode's factor in [0, 1]), which the adiabatic split needs to be stable
+    // (doc/theory/thermoelasticity.md, "The stable time step").
+    auto n = static_cast<unsigned int>(
       std::max(1., std::ceil(step_length / field.state().time_step * (1. - 1e-12))));
+    if (temperature.two_way() && field.layout.has_temperature())
+      n += n % 2;
     field.state().time_step = step_length / n;
     sub_steps[k - 1]        = field.state().time_step;
     if (is_root && field.settings.solver_type == SolverType::static_linear)
@@ -188,14 +192,9 @@ namespace perideal
   {
     // What the first physics broke in its step is broken for the others before theirs.
     exchange.share_broken_bonds(pd.particles().bonds());
-    // The heating of the step the first physics took (from its measure at the start).
-    if (heating.active())
-      {
-        if (step == 0)
-          heating.start();
-        else
-          heating.heat_step(dt);
-      }
+    // A two-way coupling: the measure the first step heats from.
+    if (heating.active() && step == 0)
+      heating.start();
     for (unsigned int k = 1; k < physics.size(); ++k)
       {
         Physics<dim> &field = *physics[k];
@@ -211,9 +210,13 @@ namespace perideal
         const double length = dt / n;
         if (resume_other_physics)
           field.solver().resume_state(field.state(), time);
-        // The heating of the step, from its start (forward Euler takes the rates there).
+        // A two-way coupling: the adiabatic phase (the heating of the step at the mechanics' end
+        // configuration, at once), then the conduction from the renewed rates.
         if (heating.active() && field.layout.has_temperature())
-          field.solver().renew_sources(field.state(), time);
+          {
+            heating.heat_step();
+            field.solver().renew_rates(field.state(), time);
+          }
         for (unsigned int s = 0; s < n; ++s)
           field.solver().advance(field.state(),
                                  time + s * length,

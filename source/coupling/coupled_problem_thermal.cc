@@ -163,13 +163,7 @@ namespace perideal
     temperature.connect(pd, fe, exchange);
     if (temperature.two_way())
       set_coupling_numbers();
-    // With a two-way coupling the temperature the mechanics reads holds the heating of its
-    // present deformation (ThermoelasticHeating::predict()).
-    state().set_temperature([this](const double time) {
-      if (heating.active())
-        heating.predict();
-      temperature.update(time);
-    });
+    state().set_temperature([this](const double time) { temperature.update(time); });
   }
 
   template <int dim>

@@ -159,9 +159,18 @@ namespace perideal
   template <int dim>
   void
   CoupledState<dim>::set_other_physics(
-    std::function<void(unsigned int, double, double, bool)> advance)
+    std::function<void(unsigned int, double, double, bool)> advance,
+    const bool                                              within_step)
   {
-    advance_physics = std::move(advance);
+    advance_physics     = std::move(advance);
+    physics_within_step = within_step;
+  }
+
+  template <int dim>
+  bool
+  CoupledState<dim>::other_physics_within_step() const
+  {
+    return physics_within_step;
   }
 
   template <int dim>
@@ -375,6 +384,13 @@ namespace perideal
     for (unsigned int k = 0; k < fe_convection.locally_owned_size(); ++k)
       heat += fe_load.local_element(k) - fe_convection.local_element(k) * U.local_element(k);
     local_heat_in += dt * heat;
+  }
+
+  template <int dim>
+  void
+  CoupledState<dim>::add_heat_in(const double heat)
+  {
+    local_heat_in += heat;
   }
 
   template <int dim>

@@ -57,8 +57,8 @@ namespace perideal
     pd().save_bond_histories(writer, prefix + "bond histories");
     fe().save_dof_values(writer, prefix + "FE", parts.fe_vectors);
     // The temperature the next step's work of the temperature change starts from
-    // (hold_temperature()): that of the last force evaluation, which a two-way coupling
-    // predicted before the heat's step, so it is stored rather than derived at the restart.
+    // (hold_temperature()): that of the last force evaluation, stored rather than derived at
+    // the restart.
     if (has_temperature())
       {
         const bool on_particles = held_temperature_change.size() > 0;

@@ -192,15 +192,6 @@ namespace perideal
 
   template <int dim>
   void
-  TemperatureSource<dim>::add_changes(const ParticleVector &particle_change,
-                                      const FEVector       &fe_change)
-  {
-    particle_changes = &particle_change;
-    fe_changes       = fe_change.size() > 0 ? &fe_change : nullptr;
-  }
-
-  template <int dim>
-  void
   TemperatureSource<dim>::update(const double time)
   {
     if (source == Kind::heat)
@@ -211,9 +202,6 @@ namespace perideal
             if (heat_temperature.size() != quantity.fe->size())
               quantity.region->initialize_vector(heat_temperature);
             heat_temperature.copy_locally_owned_data_from(*quantity.fe);
-            if (fe_changes != nullptr)
-              for (unsigned int k = 0; k < heat_temperature.locally_owned_size(); ++k)
-                heat_temperature.local_element(k) += fe_changes->local_element(k);
             heat_temperature.update_ghost_values();
           }
       }
@@ -233,8 +221,7 @@ namespace perideal
         const unsigned int nc       = quantity.layout.n_components();
         for (unsigned int i = 0; i < particles->n_owned(); ++i)
           delta_T.local_element(i) =
-            quantity.particles->local_element(i * nc + quantity.component) - reference +
-            (particle_changes != nullptr ? particle_changes->local_element(i) : 0.);
+            quantity.particles->local_element(i * nc + quantity.component) - reference;
         delta_T.update_ghost_values();
       }
   }

@@ -29,15 +29,10 @@ namespace perideal
     for (unsigned int c = layout.n_components(); c-- > 0;)
       if (layout.kind(c) == ComponentKind::temperature)
         component = c;
-    if (heat.pd().particles().n_global() > 0)
-      heat.pd().particles().reinit_vector(heat.physics_source, layout.n_components());
-    heat.pd().particles().reinit_vector(particle_temperature_change, 1);
     if (heat.fe().n_dofs() > 0)
       {
-        heat.fe().initialize_vector(heat.fe_physics_source);
         heat.fe().initialize_vector(previous_fe);
         heat.fe().initialize_vector(present_fe);
-        heat.fe().initialize_vector(fe_temperature_change);
         heat.fe().initialize_vector(fe_heating);
         heat.pd().particles().reinit_vector(slaved_heating, layout.n_components());
       }
@@ -91,7 +86,7 @@ namespace perideal
 
   template <int dim>
   void
-  ThermoelasticHeating<dim>::predict()
+  ThermoelasticHeating<dim>::heat_step()
   {
     measure(present_particles, present_fe);
     const double       T0 = temperature->absolute_reference_temperature();
@@ -99,80 +94,52 @@ namespace perideal
     using Motion          = typename CoupledState<dim>::Motion;
     const auto  &motion   = heat_state->motion();
     const auto  &volume   = heat_state->pd().particles().volumes();
-    const auto  &mass     = heat_state->particle_mass;
+    const auto  &capacity = heat_state->particle_mass;
     const double ratio    = heat_state->inertia_ratio()[component];
+    auto        &T        = heat_state->u;
+    double       heat = 0., stored = 0.;
+    // The particles that move by their own rate take their heat; the heat of the step is
+    // -T_0 times the measure's change in all (the slaved particles' through their FE dofs).
     for (std::size_t i = 0; i < present_particles.size(); ++i)
-      particle_temperature_change.local_element(i) =
-        motion[i * nc + component] == Motion::moves ?
-          -T0 * (present_particles[i] - previous_particles[i]) * volume[i] / (mass[i] * ratio) :
-          0.;
-    if (fe_temperature_change.size() > 0)
+      {
+        const double heating = -T0 * (present_particles[i] - previous_particles[i]) * volume[i];
+        heat += heating;
+        if (motion[i * nc + component] == Motion::moves)
+          {
+            T.local_element(i * nc + component) += heating / (capacity[i] * ratio);
+            stored += heating;
+          }
+      }
+    T.update_ghost_values();
+    if (present_fe.size() > 0)
       {
         // The heat the step brings the FE dofs: their own, and that of the particles slaved to
         // them (P^T, as the explicit step adds their forces), over their capacities.
         fe_heating.equ(-T0, present_fe);
         fe_heating.add(T0, previous_fe);
+        for (unsigned int k = 0; k < fe_heating.locally_owned_size(); ++k)
+          heat += fe_heating.local_element(k);
         if (heat_state->any_particle_slaved())
           {
             slaved_heating = 0.;
             for (std::size_t i = 0; i < present_particles.size(); ++i)
-              slaved_heating.local_element(i * nc + component) =
-                -T0 * (present_particles[i] - previous_particles[i]) * volume[i];
+              if (motion[i * nc + component] == Motion::slaved)
+                slaved_heating.local_element(i * nc + component) =
+                  -T0 * (present_particles[i] - previous_particles[i]) * volume[i];
             heat_state->method().add_particle_forces(slaved_heating, fe_heating);
           }
         const auto &mask = heat_state->fe().prescribed_mask();
         for (unsigned int k = 0; k < fe_heating.locally_owned_size(); ++k)
-          fe_temperature_change.local_element(k) =
-            mask[k] ? 0. : fe_heating.local_element(k) / heat_state->mass.local_element(k);
-        fe_temperature_change.update_ghost_values();
-        // The particles slaved to the heat's FE field take its change there.
-        if (heat_state->any_particle_slaved())
-          {
-            heat_state->method().interpolate_to_particles(fe_temperature_change, slaved_heating);
-            for (std::size_t i = 0; i < present_particles.size(); ++i)
-              if (motion[i * nc + component] == Motion::slaved)
-                particle_temperature_change.local_element(i) =
-                  slaved_heating.local_element(i * nc + component);
-          }
-      }
-    particle_temperature_change.update_ghost_values();
-  }
-
-  template <int dim>
-  const ParticleVector &
-  ThermoelasticHeating<dim>::particle_change() const
-  {
-    return particle_temperature_change;
-  }
-
-  template <int dim>
-  const FEVector &
-  ThermoelasticHeating<dim>::fe_change() const
-  {
-    return fe_temperature_change;
-  }
-
-  template <int dim>
-  void
-  ThermoelasticHeating<dim>::heat_step(const double dt)
-  {
-    const double       T0     = temperature->absolute_reference_temperature();
-    const unsigned int nc     = heat_state->layout().n_components();
-    const auto        &volume = heat_state->pd().particles().volumes();
-    double             heat   = 0.;
-    for (std::size_t i = 0; i < present_particles.size(); ++i)
-      {
-        const double change = present_particles[i] - previous_particles[i];
-        heat_state->physics_source.local_element(i * nc + component) = -T0 * change / dt;
-        heat -= T0 * change * volume[i];
-      }
-    for (unsigned int k = 0; k < present_fe.locally_owned_size(); ++k)
-      {
-        const double change = present_fe.local_element(k) - previous_fe.local_element(k);
-        heat_state->fe_physics_source.local_element(k) = -T0 * change / dt;
-        heat -= T0 * change;
+          if (!mask[k])
+            {
+              heat_state->U.local_element(k) +=
+                fe_heating.local_element(k) / heat_state->mass.local_element(k);
+              stored += fe_heating.local_element(k);
+            }
+        heat_state->U.update_ghost_values();
       }
     local_heat += heat;
+    heat_state->add_heat_in(stored);
     previous_particles = present_particles;
     previous_fe        = present_fe;
   }

@@ -190,7 +190,8 @@ end
             if (step > 0)
               result.heat_steps.push_back({time, dt, state.pd().particles().bonds().intact});
             advance(step, time, dt, e);
-          });
+          },
+          state.other_physics_within_step());
       }
     deallog.push("run");
     problem.run();

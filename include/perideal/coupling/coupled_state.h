@@ -142,6 +142,11 @@ namespace perideal
     void
     accumulate_heat(const double dt);
 
+    /// Add @p heat [J] (this rank's part) to heat_in(): heat another physics put into the
+    /// state's temperature directly (the adiabatic heating of a two-way coupling).
+    void
+    add_heat_in(const double heat);
+
     /// The heat in through the conditions since start_work(), summed over the ranks [J].
     double
     heat_in() const;
@@ -468,10 +473,19 @@ namespace perideal
     /**
      * @brief Runs with several physics (<Physics/List>), set by CoupledProblem on the first
      * physics' state: @p advance advances the other physics over a step by operator splitting
-     * (advance_other_physics()).
+     * (advance_other_physics()): after the step of the first physics, or, @p within_step, inside
+     * an explicit step of it, once its displacements reached the step's end and before its forces
+     * there are computed (the adiabatic split of a two-way thermoelastic coupling,
+     * ThermoelasticHeating).
      */
     void
-    set_other_physics(std::function<void(unsigned int, double, double, bool)> advance);
+    set_other_physics(std::function<void(unsigned int, double, double, bool)> advance,
+                      const bool                                              within_step);
+
+    /// Whether the explicit solver advances the other physics inside its step
+    /// (set_other_physics()).
+    bool
+    other_physics_within_step() const;
 
     /// The hook of set_other_physics() (empty without one; a test may wrap it).
     const std::function<void(unsigned int, double, double, bool)> &
@@ -598,7 +612,7 @@ namespace perideal
     ///@}
     /// The coupling numbers delta = T_0 beta : alpha / (rho c) of a two-way thermoelastic
     /// coupling (<Temperature/Coupling> = two way) at the particles and in the FE region, which
-    /// lower the stable explicit step to 1 / (2 sqrt(1 + delta)) of the mechanics' own
+    /// lower the stable explicit step to 1 / sqrt(1 + delta) of the mechanics' own
     /// (doc/theory/thermoelasticity.md, "The stable time step"; set by CoupledProblem before the
     /// solver's set-up); 0 without it.
     ///@{
@@ -629,15 +643,6 @@ namespace perideal
     ///@{
     FEVector thermal_load;
     double   thermal_energy = 0.;
-    ///@}
-    /// A source from another physics, held over a step of the first physics (the thermoelastic
-    /// heating of <Temperature/Coupling> = two way, ThermoelasticHeating): its density at the
-    /// particles (laid out like u) [W/m^3] and its load on the FE dofs [W], which an explicit
-    /// step adds to the applied loads (so the heat balance counts it as heat in). Empty for
-    /// none.
-    ///@{
-    ParticleVector physics_source;
-    FEVector       fe_physics_source;
     ///@}
     /// Quasi-static runs: the particles' strain energy at the last equilibrium (the method's
     /// equilibrium_forces(), set by equilibrium_state()) [J], for a physics of <Physics/List>
@@ -710,7 +715,8 @@ namespace perideal
     std::function<bool(unsigned int, double)>               adaptation;
     unsigned int                                            check_interval = 0;
     std::function<void(unsigned int, double, double, bool)> advance_physics;
-    std::vector<unsigned int>                              *broken_bond_record = nullptr;
+    bool                                                    physics_within_step = false;
+    std::vector<unsigned int>                              *broken_bond_record  = nullptr;
     // The hook of set_temperature(), whether the FE thermal load is assembled, and the applied
     // plus thermal FE loads of fe_equation_load().
     std::function<void(double)> temperature_update;

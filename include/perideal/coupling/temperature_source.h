@@ -86,15 +86,6 @@ namespace perideal
     connect(ParticleRegion<dim> &pd, FERegion<dim> &fe, const PhysicsExchange<dim> &exchange);
 
     /**
-     * @brief Add @p particle_change (per local particle) and @p fe_change (the heat's FE dofs) to
-     * the heat's temperature that update() hands the mechanics: the change the two-way heating
-     * of the present step will make (ThermoelasticHeating::predict()). The vectors must outlive
-     * this object; Source = heat only.
-     */
-    void
-    add_changes(const ParticleVector &particle_change, const FEVector &fe_change);
-
-    /**
      * @brief Delta T of the particles at time @p time (ghosts included) and the time the FE
      * region's Delta T is evaluated at.
      */
@@ -148,8 +139,6 @@ namespace perideal
     /// mechanics' points (built again when the points change) with those points.
     ///@{
     FEVector                                           heat_temperature;
-    const ParticleVector                              *particle_changes = nullptr;
-    const FEVector                                    *fe_changes       = nullptr;
     mutable std::unique_ptr<dealii::hp::FEValues<dim>> heat_values;
     mutable std::vector<dealii::Point<dim>>            heat_points;
     ///@}

@@ -17,27 +17,24 @@
 namespace perideal
 {
   /**
-   * @brief The heat source -T_0 beta : d eps/dt of the mechanics' deformation in the heat
-   * physics (<Temperature/Coupling> = two way; doc/theory/thermoelasticity.md).
+   * @brief The heating -T_0 beta : d eps/dt of the mechanics' deformation in the heat physics
+   * (<Temperature/Coupling> = two way; doc/theory/thermoelasticity.md).
    *
-   * The mechanics' thermoelastic measure m = beta : eps is taken at the end of each of its
-   * steps: at the particles from the model (MaterialModel::thermoelastic_measure(), a density
-   * per particle), in the FE region integrated against the heat's shape functions at the
-   * quadrature points of the thermal load (FERegion::thermoelastic_measure(),
-   * TemperatureSource::add_at_heat_points()), so that the FE source is the transpose of the
-   * coupling that the thermal load applies. Over the step of length dt that took the measure
-   * from m_n to m_{n+1}, the heat's CoupledState::physics_source is -T_0 (m_{n+1} - m_n) / dt:
-   * the heat's sub-steps add -T_0 (m_{n+1} - m_n) in all, so that the entropy
-   * sum (C_i T_i / T_0) + sum m (in weighted volume) of an insulated body is kept to round-off.
+   * The mechanics' thermoelastic measure m = beta : eps is taken at the particles from the model
+   * (MaterialModel::thermoelastic_measure(), a density per particle) and in the FE region
+   * integrated against the heat's shape functions at the quadrature points of the thermal load
+   * (FERegion::thermoelastic_measure(), TemperatureSource::add_at_heat_points()), so that the FE
+   * heating is the transpose of the coupling that the thermal load applies.
    *
-   * The mechanics does not wait for the heat to see that heating: at each of its force
-   * evaluations (CoupledState::update_temperature()) predict() takes the measure of the present
-   * deformation and the temperature change the heating of the step will make, -T_0 (m - m_n)
-   * V / C at the heat's free particles and dofs (C their heat capacities), which
-   * TemperatureSource adds to the heat's temperature it hands the mechanics. So the thermal
-   * force at t_{n+1} is that of the adiabatic temperature of u_{n+1}: the coupling is a stiffness
-   * of the step, not one lagging a step behind (which made a PD bar unstable in the adiabatic
-   * limit: a lagging stiffness is a negative damping); only the conduction lags.
+   * The step is the adiabatic split of Armero and Simo (1992): within the mechanics' step, once
+   * its displacements reached u_{n+1} and before its forces there are computed, heat_step()
+   * changes the heat's temperature at constant entropy by the heating of the step, -T_0 (m_{n+1}
+   * - m_n) V / C at the heat's free particles and dofs (C their heat capacities; the particles
+   * slaved to the FE dofs through P^T, as the explicit step adds their forces), all at once; then
+   * the heat conducts over the step at that configuration, and the mechanics' forces at u_{n+1}
+   * read the temperature of t_{n+1}. So nothing of the coupling lags a step behind: the entropy
+   * sum (C_i T_i / T_0) + sum m (in weighted volume) of an insulated body is kept to round-off,
+   * and the step is stable up to velocity Verlet's limit at the adiabatic frequency.
    */
   template <int dim>
   class ThermoelasticHeating
@@ -67,30 +64,15 @@ namespace perideal
     start();
 
     /**
-     * @brief The measure of the mechanics' present deformation (the displacement of a force
-     * evaluation) and the temperature change its heating will make: particle_change() and
-     * fe_change().
+     * @brief The adiabatic phase of a step of the mechanics (its displacements at the step's end,
+     * before its forces there): the measure of the present deformation, and the heat's
+     * temperature changed by its heating since the last step, -T_0 (m_{n+1} - m_n) V / C at the
+     * heat's free particles and FE dofs (ghost values updated; the heat's balance counts it as
+     * heat in, CoupledState::add_heat_in()). The present measure becomes the previous one. The
+     * heat's rates are to be renewed after it (Solver::renew_rates()).
      */
     void
-    predict();
-
-    /// The temperature change of the last predict() at the local particles (ghosts included;
-    /// one value per particle) and on the heat's FE dofs (ghost values current).
-    ///@{
-    const ParticleVector &
-    particle_change() const;
-
-    const FEVector &
-    fe_change() const;
-    ///@}
-
-    /**
-     * @brief The heat's source over a step of length @p dt of the mechanics, from the measure
-     * of its last predict() (at the step's end): -T_0 (m_{n+1} - m_n) / dt into the heat's
-     * physics_source and fe_physics_source; the present measure becomes the previous one.
-     */
-    void
-    heat_step(const double dt);
+    heat_step();
 
     /**
      * @brief Write the measure the next step heats from (particles and the heat's FE dofs) and
@@ -131,13 +113,8 @@ namespace perideal
     std::vector<double> previous_particles, present_particles;
     FEVector            previous_fe, present_fe;
     ///@}
-    /// The temperature changes of predict().
-    ///@{
-    ParticleVector particle_temperature_change;
-    FEVector       fe_temperature_change;
-    ///@}
-    /// predict()'s work vectors: the heat of the step on the FE dofs, the heat of the particles
-    /// slaved to them (and then their temperature change).
+    /// heat_step()'s work vectors: the heat of the step on the FE dofs, the heat of the particles
+    /// slaved to them.
     ///@{
     FEVector       fe_heating;
     ParticleVector slaved_heating;

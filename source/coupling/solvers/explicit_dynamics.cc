@@ -50,7 +50,7 @@ namespace perideal
     if (state.is_root() && coupling > 0.)
       state.log() << "Two-way thermoelastic coupling: coupling number "
                   << state.particle_coupling_number << " (particles), " << state.fe_coupling_number
-                  << " (FE); the mechanics' stable step is 1 / (2 sqrt(1 + coupling number)) of "
+                  << " (FE); the mechanics' stable step is 1 / sqrt(1 + coupling number) of "
                      "the isothermal one"
                   << std::endl;
     if (state.is_root())
@@ -95,14 +95,13 @@ namespace perideal
     fe_dt = state.fe().stable_time_step(&state.mass);
     pd_dt = state.pd().stable_time_step();
     // A two-way thermoelastic coupling stiffens the mechanics within its step to the adiabatic
-    // stiffness, at most 1 + delta times the isothermal one, and the conduction the heat adds
-    // after the step lags the acceleration: velocity Verlet of the split is stable for
-    // dt omega_ad <= 1, half its own limit (doc/theory/thermoelasticity.md, "The stable time
-    // step").
+    // stiffness, at most 1 + delta times the isothermal one: the adiabatic split is stable up to
+    // velocity Verlet's limit at the adiabatic frequency (doc/theory/thermoelasticity.md, "The
+    // stable time step").
     if (state.particle_coupling_number > 0.)
-      pd_dt /= 2. * std::sqrt(1. + state.particle_coupling_number);
+      pd_dt /= std::sqrt(1. + state.particle_coupling_number);
     if (state.fe_coupling_number > 0.)
-      fe_dt /= 2. * std::sqrt(1. + state.fe_coupling_number);
+      fe_dt /= std::sqrt(1. + state.fe_coupling_number);
     // A convection h (T_inf - T) / d adds h / d to the bound B of its layer's particles:
     // dt <= 2 rho c / (B + h / d) >= 1 / (1 / dt_B + h / (2 rho c d)) (conservative; rho c the
     // smallest of the particles, MaterialModel::inertia_scales()).
@@ -229,9 +228,9 @@ namespace perideal
 
   template <int dim>
   void
-  ExplicitDynamics<dim>::renew_sources(CoupledState<dim> &state, const double time)
+  ExplicitDynamics<dim>::renew_rates(CoupledState<dim> &state, const double time)
   {
-    // A temperature (the only field a source of another physics reaches) has no damping.
+    // A temperature (the only field another physics changes) has no damping.
     compute_acceleration(state, time, false);
   }
 
@@ -256,19 +255,14 @@ namespace perideal
     state.accumulate_dissipated_energy();
     if (heated)
       state.accumulate_temperature_jump();
-    // The applied forces (zero since the set-up if there are none), with a source from another
-    // physics.
-    const bool source = state.physics_source.size() > 0;
-    const bool loads  = pd.boundary_conditions().has_loads() || source;
+    // The applied forces (zero since the set-up if there are none).
+    const bool loads = pd.boundary_conditions().has_loads();
     if (loads)
       {
         state.external_force = 0.;
         pd.boundary_conditions().add_loads(time, state.external_force);
         if (pd.boundary_conditions().has_convection())
           pd.boundary_conditions().add_convection(time, &state.u, state.external_force);
-        if (source)
-          for (std::size_t k = 0; k < state.motion().size(); ++k)
-            state.external_force.local_element(k) += state.physics_source.local_element(k);
       }
     // Particles: a = f V / m on the components that move by it (one pass, no branches); the
     // nodal forces f V only if some particle is slaved to the FE field (zero otherwise).
@@ -299,8 +293,6 @@ namespace perideal
     // dofs do not move by it, and the work their supports do is that of K U - f_th - P^T f (the
     // part of R they balance).
     fe.assemble_load(time, state.f_ext);
-    if (state.fe_physics_source.size() > 0)
-      state.f_ext += state.fe_physics_source;
     fe.stiffness_matrix().vmult(state.residual, state.U);
     state.residual.sadd(-1., 1., state.fe_equation_load());
     state.method().add_particle_forces(nodal_force, state.residual);
@@ -435,6 +427,18 @@ namespace perideal
     fe.prescribe(time + dt, U, V);
     conditions.prescribe_displacement(time + dt, u);
     U.update_ghost_values();
+    // The adiabatic split of a two-way thermoelastic coupling: the other physics advance at the
+    // step's end configuration (the slaved particles' displacements from the FE field), and the
+    // forces there read their temperature of the step's end.
+    if (state.other_physics_within_step())
+      {
+        state.method().interpolate_to_particles(U, u);
+        u.update_ghost_values();
+        state.advance_other_physics(static_cast<unsigned int>(std::lround(time / dt)) + 1,
+                                    time,
+                                    dt,
+                                    with_energy);
+      }
 
     compute_acceleration(state, time + dt, with_energy);
     if (state.settings().damping > 0.)
@@ -486,10 +490,11 @@ namespace perideal
                 (step - 1) * dt,
                 dt,
                 data.write_statistics || data.write_fields || check_regions);
-        state.advance_other_physics(step,
-                                    (step - 1) * dt,
-                                    dt,
-                                    data.write_statistics || data.write_fields);
+        if (!state.other_physics_within_step())
+          state.advance_other_physics(step,
+                                      (step - 1) * dt,
+                                      dt,
+                                      data.write_statistics || data.write_fields);
 
         if (data.write_statistics)
           state.fe_support.equ(-1., state.residual);

@@ -51,7 +51,7 @@ namespace perideal
 
   template <int dim>
   void
-  Solver<dim>::renew_sources(CoupledState<dim> &, const double)
+  Solver<dim>::renew_rates(CoupledState<dim> &, const double)
   {
     AssertThrow(false,
                 dealii::ExcMessage("This <Solver/Type> cannot take the heating of "

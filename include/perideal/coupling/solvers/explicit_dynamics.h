@@ -71,10 +71,10 @@ namespace perideal
     void
     renew_regions(CoupledState<dim> &state, const double time) override;
 
-    /// The accelerations (the rates of a temperature) at @p time with the new source: forward
+    /// The accelerations (the rates of a temperature) at @p time of the changed field: forward
     /// Euler takes the rate at the step's start.
     void
-    renew_sources(CoupledState<dim> &state, const double time) override;
+    renew_rates(CoupledState<dim> &state, const double time) override;
 
   private:
     /**

@@ -89,12 +89,12 @@ namespace perideal
     renew_regions(CoupledState<dim> &state, const double time);
 
     /**
-     * @brief Operator splitting, after CoupledState::physics_source of @p state was set anew
-     * for the step that starts at @p time (the heating of a two-way coupling): the rates the
-     * step starts from, with that source. Refused by default; the explicit solver provides it.
+     * @brief Operator splitting, after another physics changed the field of @p state at @p time
+     * (the adiabatic heating of a two-way coupling, ThermoelasticHeating::heat_step()): the rates
+     * the step starts from. Refused by default; the explicit solver provides it.
      */
     virtual void
-    renew_sources(CoupledState<dim> &state, const double time);
+    renew_rates(CoupledState<dim> &state, const double time);
   };
 
   /// The solver of <Solver/Type> = @p type and, for quasi-static runs, <Solver/Control> =
