@@ -64,7 +64,11 @@ sed -e "s|set Directory *= .*|set Directory  = $results/k_field_sb|" k_field.prm
 sed -e "s|set Directory *= .*|set Directory  = $results/k_field_bb|" \
   -e "s|set Model *= antiplane state based|set Model           = antiplane bond based|" \
   -e "s|Linear solver = cg amg|Linear solver = direct|" k_field.prm > "$results/k_field_bb.prm"
-runs+=(k_field_sb k_field_bb)
+# without the surface correction (the pre-crack's faces as a grown crack's), K from 1.1 K_IIIc
+sed -e "s|set Directory *= .*|set Directory  = $results/k_field_sb_nosc|" \
+  -e "s|set Body            = body|set Body            = body\n  set Surface correction = false|" \
+  -e "s|0.8+0.5\*t|1.1+0.5*t|" k_field.prm > "$results/k_field_sb_nosc.prm"
+runs+=(k_field_sb k_field_bb k_field_sb_nosc)
 for run in "${runs[@]}"; do
   echo "== $run"
   mpirun -np 2 "$solver" "$results/$run.prm" > "$results/$run.log" 2>&1 || {
