@@ -28,19 +28,25 @@ namespace perideal
     const unsigned int n_owned = particles.n_owned();
 
     // The family volume sum_j chi V_j and the cut sums 1/2 sum_j |xi . e_a| E_ij of every owned
-    // particle (a bond between two owned particles is listed once: both ends take it).
+    // particle (a bond between two owned particles is listed once: both ends take it). E_ij
+    // without the blended coupling's energy weight (beta_i + beta_j)/2, which the models'
+    // coefficients carry: the lattice's energy, not the share the coupling gives the particles
+    // (with it, the particles in the coupling's overlap counted as if their lattice dissipated
+    // less, and the factor depended on where the PD zone ends).
     std::vector<double>                  family(n_owned, 0.);
     std::vector<std::array<double, dim>> cut(n_owned, std::array<double, dim>{});
     for (unsigned int i = 0; i < n_owned; ++i)
       for (unsigned int b = bonds.row_start[i]; b < bonds.row_start[i + 1]; ++b)
         {
-          const unsigned int j = bonds.neighbor[b];
+          const unsigned int j    = bonds.neighbor[b];
+          const double       beta = particles.bond_energy_weight(i, j);
           family[i] += bonds.volume_factor(b) * volume[j];
           if (j < n_owned)
             family[j] += bonds.volume_factor(b) * volume[i];
           for (unsigned int a = 0; a < dim; ++a)
             {
-              const double share = 0.5 * std::abs(x[j][a] - x[i][a]) * bond_energy[b];
+              const double share =
+                beta > 0. ? 0.5 * std::abs(x[j][a] - x[i][a]) * bond_energy[b] / beta : 0.;
               cut[i][a] += share;
               if (j < n_owned)
                 cut[j][a] += share;
@@ -53,11 +59,12 @@ namespace perideal
     const double complete = std::accumulate(weight.begin(), weight.end(), 0.);
     // Interior: the particle, its neighbours and theirs have nearly complete families, so that
     // the particle's bonds join particles with complete families (and the surface factors of
-    // the interior).
+    // the interior), and an energy weight above zero (every bond counted has one to divide by).
+    const auto    &energy_weight = particles.energy_weights();
     ParticleVector flag;
     particles.reinit_vector(flag, 1);
     for (unsigned int i = 0; i < n_owned; ++i)
-      flag.local_element(i) = family[i] >= 0.8 * complete ? 1. : 0.;
+      flag.local_element(i) = family[i] >= 0.8 * complete && energy_weight[i] > 0. ? 1. : 0.;
     std::vector<double> spread(n_owned);
     for (unsigned int round = 0; round < 2; ++round)
       {

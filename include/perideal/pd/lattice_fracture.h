@@ -24,7 +24,11 @@ namespace perideal
    * the cuts. Interior: the particle, its neighbours and their neighbours have at least 0.8 of a
    * complete family's volume (ParticleSystem::lattice_family()), so that its bonds join
    * particles with complete families and the surface factors of the interior; this leaves out
-   * about 2.4 horizons along the boundary. Collective; throws if no particle is interior.
+   * about 2.4 horizons along the boundary. In a blended FE-PD coupling E_ij is taken without
+   * the coupling's energy weight (ParticleSystem::bond_energy_weight(), which @p bond_energy
+   * carries: the models' pair coefficients include it), and the interior particles are those
+   * of energy weight above zero: the energy of the lattice, the same as without coupling.
+   * Collective; throws if no particle is interior.
    */
   template <int dim>
   double
