@@ -99,7 +99,11 @@ namespace perideal
     auto        &T        = heat_state->u;
     double       heat = 0., stored = 0.;
     // The particles that move by their own rate take their heat; the heat of the step is
-    // -T_0 times the measure's change in all (the slaved particles' through their FE dofs).
+    // -T_0 times the measure's change in all (the slaved particles' through their FE dofs, from
+    // slaved_heating).
+    const bool to_fe = present_fe.size() > 0 && heat_state->any_particle_slaved();
+    if (to_fe)
+      slaved_heating = 0.;
     for (std::size_t i = 0; i < present_particles.size(); ++i)
       {
         const double heating = -T0 * (present_particles[i] - previous_particles[i]) * volume[i];
@@ -109,6 +113,8 @@ namespace perideal
             T.local_element(i * nc + component) += heating / (capacity[i] * ratio);
             stored += heating;
           }
+        else if (to_fe && motion[i * nc + component] == Motion::slaved)
+          slaved_heating.local_element(i * nc + component) = heating;
       }
     T.update_ghost_values();
     if (present_fe.size() > 0)
@@ -119,15 +125,8 @@ namespace perideal
         fe_heating.add(T0, previous_fe);
         for (unsigned int k = 0; k < fe_heating.locally_owned_size(); ++k)
           heat += fe_heating.local_element(k);
-        if (heat_state->any_particle_slaved())
-          {
-            slaved_heating = 0.;
-            for (std::size_t i = 0; i < present_particles.size(); ++i)
-              if (motion[i * nc + component] == Motion::slaved)
-                slaved_heating.local_element(i * nc + component) =
-                  -T0 * (present_particles[i] - previous_particles[i]) * volume[i];
-            heat_state->method().add_particle_forces(slaved_heating, fe_heating);
-          }
+        if (to_fe)
+          heat_state->method().add_particle_forces(slaved_heating, fe_heating);
         const auto &mask = heat_state->fe().prescribed_mask();
         for (unsigned int k = 0; k < fe_heating.locally_owned_size(); ++k)
           if (!mask[k])

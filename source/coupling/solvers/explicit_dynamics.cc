@@ -212,6 +212,7 @@ namespace perideal
   void
   ExplicitDynamics<dim>::renew_forces(CoupledState<dim> &state, const double time)
   {
+    slave_particles(state);
     compute_acceleration(state, time, true);
     if (state.settings().damping > 0.)
       add_damping(state);
@@ -231,7 +232,16 @@ namespace perideal
   ExplicitDynamics<dim>::renew_rates(CoupledState<dim> &state, const double time)
   {
     // A temperature (the only field another physics changes) has no damping.
+    slave_particles(state);
     compute_acceleration(state, time, false);
+  }
+
+  template <int dim>
+  void
+  ExplicitDynamics<dim>::slave_particles(CoupledState<dim> &state) const
+  {
+    state.method().interpolate_to_particles(state.U, state.u);
+    state.u.update_ghost_values();
   }
 
   template <int dim>
@@ -241,8 +251,6 @@ namespace perideal
                                               const bool         with_energy)
   {
     auto &pd = state.pd();
-    state.method().interpolate_to_particles(state.U, state.u);
-    state.u.update_ghost_values();
     state.update_temperature(time);
     // A changed temperature does work at the present displacements: the energy at it against
     // the energy at the temperature before, both with the bonds left after this evaluation.
@@ -379,7 +387,7 @@ namespace perideal
     // coupling takes the initial deformation's measure.
     state.apply_initial_conditions();
     state.U.update_ghost_values();
-    state.method().interpolate_to_particles(state.U, state.u);
+    slave_particles(state);
     state.advance_other_physics(0, 0., 0., true);
     compute_acceleration(state, 0., true);
     set_first_order_rates(state);
@@ -427,18 +435,14 @@ namespace perideal
     fe.prescribe(time + dt, U, V);
     conditions.prescribe_displacement(time + dt, u);
     U.update_ghost_values();
+    slave_particles(state);
     // The adiabatic split of a two-way thermoelastic coupling: the other physics advance at the
-    // step's end configuration (the slaved particles' displacements from the FE field), and the
-    // forces there read their temperature of the step's end.
+    // step's end configuration, and the forces there read their temperature of the step's end.
     if (state.other_physics_within_step())
-      {
-        state.method().interpolate_to_particles(U, u);
-        u.update_ghost_values();
-        state.advance_other_physics(static_cast<unsigned int>(std::lround(time / dt)) + 1,
-                                    time,
-                                    dt,
-                                    with_energy);
-      }
+      state.advance_other_physics(static_cast<unsigned int>(std::lround(time / dt)) + 1,
+                                  time,
+                                  dt,
+                                  with_energy);
 
     compute_acceleration(state, time + dt, with_energy);
     if (state.settings().damping > 0.)
@@ -529,7 +533,7 @@ namespace perideal
           state.log() << line << "\n" << stages << std::endl;
       }
     // What a step exchanges between the ranks (read from the patterns, after the loop): the
-    // particles' ghost update in compute_acceleration(), the FE ghost update in advance(), the
+    // particles' ghost update in slave_particles(), the FE ghost update in advance(), the
     // stiffness product and the method's transfer.
     if (Utilities::MPI::n_mpi_processes(state.comm()) > 1)
       {

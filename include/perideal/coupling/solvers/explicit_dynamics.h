@@ -100,9 +100,17 @@ namespace perideal
     renew_forces(CoupledState<dim> &state, const double time);
 
     /**
-     * @brief Forces and accelerations of both regions at @p time (the method's P U into the
-     * particles slaved to the FE field first); the particles' energy density only if @p
-     * with_energy.
+     * @brief The particles slaved to the FE field from it (the method's P U), ghost values
+     * updated: before every compute_acceleration(), and before another physics reads the
+     * displacements inside a step.
+     */
+    void
+    slave_particles(CoupledState<dim> &state) const;
+
+    /**
+     * @brief Forces and accelerations of both regions at @p time, at the present displacements
+     * (the slaved particles' set by slave_particles()); the particles' energy density only if
+     * @p with_energy.
      */
     void
     compute_acceleration(CoupledState<dim> &state, const double time, const bool with_energy);
