@@ -18,6 +18,9 @@ the least-squares line through the tip and the crack path, from the notch direct
                      beside the damage maps of the mid-thickness layer and of a face layer;
   pd_zone.png        the particles (the PD zone) over time: their number and their footprint in
                      the x-y plane at four times (adaptive runs; constant for all-PD);
+  fe_stress.png      (coupled runs) the FE von Mises stress of the cells that cut the
+                     mid-thickness plane, where FE remains, with the damage of the mid-thickness
+                     particle layer on top, at four times;
   energies.png       as the 2D script.
 It checks that every HDF5 file of particles.xdmf (and of solution.xdmf, the FE field, if there)
 loads with h5py and holds the datasets the XDMF file names.
@@ -39,6 +42,8 @@ sys.path.insert(0, os.path.join(here, "..", "kalthoff_winkler"))
 from particle_series import read_particles, read_series  # noqa: E402
 from postprocess import (lattice_spacing, measure_crack, new_damage, plot_damage,  # noqa: E402
                          plot_energies, read_statistics)
+from matplotlib.collections import PolyCollection  # noqa: E402
+from matplotlib.colors import Normalize  # noqa: E402
 
 import matplotlib  # noqa: E402
 
@@ -82,6 +87,64 @@ def measure_layers(nodes, new, tip, dx, threshold):
         result.append((z, measure_crack(plane, new[mask], tip, dx, threshold, +1.0),
                        measure_crack(plane, new[mask], lower_tip, dx, threshold, -1.0)))
     return result
+
+
+def fe_mid_layer(path):
+    """(footprints, von Mises) of the FE cells of one output file that cut the mid-thickness
+    plane: each hexahedron's x-y outline (the extruded mesh's cells are prisms through z, so the
+    outline is its four distinct corners in x-y, in cyclic order) and the mean of its corners'
+    von Mises stress."""
+    with h5py.File(path, "r") as f:
+        nodes = np.array(f["nodes"])
+        cells = np.array(f["cells"]).astype(np.int64)
+        mises = np.array(f["von_mises_stress"])[:, 0]
+    z_mid = 0.5 * (nodes[:, 2].min() + nodes[:, 2].max())
+    z = nodes[cells, 2]
+    cut = (z.min(axis=1) <= z_mid) & (z.max(axis=1) > z_mid)
+    footprints = []
+    for cell in cells[cut]:
+        corners = np.unique(np.round(nodes[cell, :2] / 1e-9).astype(np.int64), axis=0) * 1e-9
+        centre = corners.mean(axis=0)
+        order = np.argsort(np.arctan2(corners[:, 1] - centre[1], corners[:, 0] - centre[0]))
+        footprints.append(corners[order])
+    return footprints, mises[cells[cut]].mean(axis=1)
+
+
+def plot_fe_stress(directory, series, out, n_panels=4):
+    """The FE von Mises stress in the mid-thickness plane where FE remains, with the damage of the
+    middle particle layer on top (its extent is the PD zone), at n_panels output times."""
+    fe_series = read_series(directory, "solution")
+    picks = np.unique(np.linspace(0, len(fe_series) - 1, n_panels).round().astype(int))
+    layers = [fe_mid_layer(fe_series[k][1]) for k in picks]
+    limit = max(np.percentile(v, 99) for _, v in layers)
+    fig, axes = plt.subplots(1, len(picks), figsize=(2.6 * len(picks) + 2.2, 5.4), sharey=True,
+                             layout="constrained")
+    for ax, k, (footprints, mises) in zip(np.atleast_1d(axes), picks, layers):
+        time, path = series[k]
+        nodes, damage = read_particles(path, dim=3)
+        dx = lattice_spacing(nodes)
+        zs, index = layers_of(nodes, dx)
+        mid = index == len(zs) // 2
+        ax.add_collection(PolyCollection([f * 1e3 for f in footprints], array=mises,
+                                         cmap="viridis", norm=Normalize(0.0, limit),
+                                         edgecolors="none"))
+        ax.scatter(nodes[mid, 0] * 1e3, nodes[mid, 1] * 1e3, c=damage[mid], cmap="hot_r",
+                   vmin=0.0, vmax=1.0, s=(72.0 * dx * 1e3 * 5.4 / 200.0) ** 2, marker="s",
+                   linewidths=0)
+        ax.set_xlim(0, 100)
+        ax.set_ylim(-100, 100)
+        ax.set_aspect("equal")
+        ax.set_title("t = %.0f us, %d particles" % (time * 1e6, len(nodes)), fontsize=8)
+        ax.set_xlabel("x [mm]")
+    np.atleast_1d(axes)[0].set_ylabel("y [mm]")
+    fig.colorbar(plt.cm.ScalarMappable(Normalize(0.0, limit * 1e-6), "viridis"), ax=axes,
+                 shrink=0.6, label="FE von Mises stress [MPa]")
+    fig.colorbar(plt.cm.ScalarMappable(Normalize(0.0, 1.0), "hot_r"), ax=axes, shrink=0.6,
+                 label="particle damage index")
+    fig.suptitle("Mid-thickness plane: FE stress where FE remains, the middle particle layer "
+                 "(the PD zone) with its damage", fontsize=8)
+    fig.savefig(out, dpi=150)
+    plt.close(fig)
 
 
 def middle(values):
@@ -227,6 +290,9 @@ def main():
     fig.tight_layout()
     fig.savefig(out("pd_zone.png"), dpi=120)
     plt.close(fig)
+
+    if os.path.exists(out("solution.xdmf")):
+        plot_fe_stress(args.results, series, out("fe_stress.png"))
 
     print("results: %s (t_end = %.3g us, dx = %.3g mm, %d layers, %d output times, particles "
           "%d at the start, %d at the end)" % (args.results, time * 1e6, dx * 1e3, len(zs),
