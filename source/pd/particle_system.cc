@@ -17,6 +17,7 @@
 #include <limits>
 #include <numeric>
 #include <optional>
+#include <random>
 
 namespace perideal
 {
@@ -131,7 +132,7 @@ namespace perideal
                                 const std::function<bool(const Point<dim> &)> &in_body,
                                 const std::vector<PreCrack<dim>>              &pre_cracks,
                                 const std::function<bool(const Point<dim> &)> &no_fail,
-                                const std::function<void(std::uint64_t)>      &placed)
+                                const std::function<void(std::uint64_t)>      &counted)
   {
     std::optional<SetupTimes::Scope> lattice_time(SetupStage::lattice);
     if (resident_before == 0)
@@ -148,6 +149,29 @@ namespace perideal
     // Two perturbed particles are at most 2 a sqrt(dim) closer than their lattice points, a the
     // half-width of the offsets, so the bins widen by that much.
     const double bin_minimum = search_radius() + 2. * grid.offset_bound() * std::sqrt(double(dim));
+
+    // The particle count before anything per particle or per bin takes memory, for @p counted
+    // (a memory warning): the share of the box's lattice points in the body, from a sample of
+    // 20 000 of them drawn alike on every rank (relative standard error sqrt((1 - f) / (f n)):
+    // 0.7 % for a body filling half its box, 2 % for a tenth).
+    if (counted)
+      {
+        double n_box = 1.;
+        for (unsigned int d = 0; d < dim; ++d)
+          n_box *= grid.n_points(d);
+        std::mt19937_64              random(1);
+        constexpr unsigned int       n_samples = 20000;
+        unsigned int                 n_in_body = 0;
+        typename Lattice<dim>::Index index;
+        for (unsigned int k = 0; n_box > 0. && k < n_samples; ++k)
+          {
+            for (unsigned int d = 0; d < dim; ++d)
+              index[d] =
+                std::uniform_int_distribution<unsigned int>(0, grid.n_points(d) - 1)(random);
+            n_in_body += in_body(grid.point(index)) ? 1 : 0;
+          }
+        counted(static_cast<std::uint64_t>(std::llround(n_box * n_in_body / n_samples)));
+      }
 
     // Background bins, identical on every rank.
     std::array<unsigned int, dim> n_bins;
@@ -303,8 +327,6 @@ namespace perideal
                            ") for the index type of this deal.II build; use a deal.II configured "
                            "with DEAL_II_WITH_64BIT_INDICES=ON."));
     n_global_particles = n_total;
-    if (placed)
-      placed(n_total);
 
     for (auto &first : first_of_cell)
       first += n_before;

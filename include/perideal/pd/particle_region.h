@@ -213,9 +213,10 @@ namespace perideal
                    const bool                with_geometry);
 
     /**
-     * @brief Once generate() has placed @p n_particles particles, before their bonds take
-     * memory: warn (MemoryEstimate::warning()) if the bonds, half an interior particle's family
-     * per particle, would not fit in the memory the nodes of the run have available. Collective.
+     * @brief Once generate() has estimated the particles, @p n_particles, before anything per
+     * particle takes memory: warn (MemoryEstimate::warning()) if the bonds, half an interior
+     * particle's family per particle, would not fit in the memory the nodes of the run have
+     * available. Collective.
      */
     void
     warn_if_bonds_exceed_memory(const std::uint64_t n_particles) const;

@@ -218,9 +218,10 @@ namespace perideal
     /**
      * @brief Fill the lattice points of @p box that satisfy @p in_body, distribute them, import
      * ghosts and find the bonds; bonds that cross a pre-crack start broken, bonds with an end
-     * in @p no_fail (if given) never break. @p placed (if given) is called on every rank with the
-     * number of particles once they are placed, before the bonds take memory (ParticleRegion
-     * warns there when the bonds would not fit).
+     * in @p no_fail (if given) never break. @p counted (if given) is called on every rank with an
+     * estimate of the number of particles (from a sample of the box's lattice points) before
+     * anything per particle or per background bin takes memory (ParticleRegion warns there when
+     * the bonds would not fit).
      */
     void
     generate(const Settings                                        &settings,
@@ -228,7 +229,7 @@ namespace perideal
              const std::function<bool(const dealii::Point<dim> &)> &in_body,
              const std::vector<PreCrack<dim>>                      &pre_cracks,
              const std::function<bool(const dealii::Point<dim> &)> &no_fail = {},
-             const std::function<void(std::uint64_t)>              &placed  = {});
+             const std::function<void(std::uint64_t)>              &counted = {});
 
     /**
      * @brief Whether generate() weights the partition of new background bins by the particles
