@@ -534,7 +534,9 @@ namespace perideal
                                    "), which acts on the FE field only. Nothing was converted; "
                                    "the run stops here. Move the condition away from the crack "
                                    "path, reduce <Coupling/Adaptive region/Core radius> or <Ramp "
-                                   "width>, or give the particles that condition (<" +
+                                   "width>, keep the seeds of the criterion 'principal strain' "
+                                   "off it (<Coupling/Adaptive region/Strain region>), or give "
+                                   "the particles that condition (<" +
                                    section +
                                    "Boundary conditions>) inside a PD zone of <Coupling/Blending "
                                    "function>."));
