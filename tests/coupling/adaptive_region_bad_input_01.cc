@@ -4,9 +4,9 @@
 // entry and the accepted values, when the file is read or at the set-up (before any output): a
 // check interval of zero, thresholds outside their ranges, a strain region that does not parse,
 // a ramp narrower than a horizon, a damage distance not inside the core, a lead distance beyond
-// the core less the damage distance, initial seeds outside the body or without a criterion, the event-by-event
-// control and implicit time steps (explicit steps and quasi-static load steps convert),
-// checkpoints, no damage model, no FE mesh, an initial disk that reaches an FE boundary
+// the core less the damage distance, initial seeds outside the body or without a criterion, the
+// event-by-event control and implicit time steps (explicit steps and quasi-static load steps
+// convert), checkpoints, no damage model, no FE mesh, an initial disk that reaches an FE boundary
 // condition. A PD zone that would reach an FE boundary condition during the run
 // stops the run at that check, before anything is converted: the statistics end with the row of
 // the step before the check's conversion, the log with the message.
