@@ -78,7 +78,25 @@ namespace perideal
                       "0.5",
                       Patterns::Double(),
                       "Criterion 'principal strain': the fraction of the critical stretch of "
-                      "<Material/Damage model> above which an FE cell is converted, in (0, 1].");
+                      "<Material/Damage model> above which an FE cell is converted, in (0, 1]. "
+                      "The critical stretch is the bonds' elastic limit, the stretch at which "
+                      "they leave the linear law: where a brittle bond breaks, and where a "
+                      "softening bond starts to soften (the log's 'Critical stretch'). For "
+                      "<Material/Model> = timoshenko bond based with <Failure law> = softening "
+                      "it is the axial limit s_0: sigma_t / E with a <Tensile strength>, "
+                      "otherwise the s_0 that G_0 and k give; the bonds carry their full force "
+                      "up to it and dissipate G_0 only well beyond it. With the fraction 1 a "
+                      "cell converts when the bond along its largest principal strain reaches "
+                      "s_0 (in a uniform strain the largest stretch of a bond is that strain); "
+                      "a fraction below 1 converts the cells before their bonds soften.");
+    prm.declare_entry("Strain region",
+                      "1",
+                      Patterns::Anything(),
+                      "Criterion 'principal strain': where FE cells may be converted, a function "
+                      "of x, y (z) that is > 0 there (the centre of the cell counts); '1': "
+                      "everywhere. It keeps the PD zone away from a strain concentration that the "
+                      "PD model would not change, such as the edge of an FE boundary condition "
+                      "(a disk that would reach one stops the run).");
     prm.declare_entry("Damage threshold",
                       "0.3",
                       Patterns::Double(),
@@ -150,6 +168,9 @@ namespace perideal
     strain_fraction = prm.get_double("Strain fraction");
     if (!(strain_fraction > 0. && strain_fraction <= 1.))
       refuse("Strain fraction", "in (0, 1]");
+    strain_region    = ParameterUtilities::make_function<dim>(prm.get("Strain region"),
+                                                           1,
+                                                           section + "Strain region");
     damage_threshold = prm.get_double("Damage threshold");
     if (!(damage_threshold > 0. && damage_threshold < 1.))
       refuse("Damage threshold", "in (0, 1)");
@@ -343,7 +364,8 @@ namespace perideal
                   measure = eigenvalues(strain[0])[0];
                 }
               // A cell already inside the PD-only zone of a disk needs no other.
-              if (measure > limit && beta(values.quadrature_point(0)) < 1.)
+              if (measure > limit && beta(values.quadrature_point(0)) < 1. &&
+                  strain_region->value(values.quadrature_point(0)) > 0.)
                 flag(values.quadrature_point(0));
             }
       }
@@ -512,7 +534,9 @@ namespace perideal
                                    "), which acts on the FE field only. Nothing was converted; "
                                    "the run stops here. Move the condition away from the crack "
                                    "path, reduce <Coupling/Adaptive region/Core radius> or <Ramp "
-                                   "width>, or give the particles that condition (<" +
+                                   "width>, keep the seeds of the criterion 'principal strain' "
+                                   "off it (<Coupling/Adaptive region/Strain region>), or give "
+                                   "the particles that condition (<" +
                                    section +
                                    "Boundary conditions>) inside a PD zone of <Coupling/Blending "
                                    "function>."));

@@ -194,10 +194,6 @@ namespace perideal
                                        "(its particles and FE space are not rebuilt by a "
                                        "restart); set <Output/Checkpoint interval> and "
                                        "<Output/Checkpoint time interval> to off."));
-        AssertThrow(pd.material().n_bond_history_values() == 0,
-                    ExcMessage(entry + ": <Material/Model> = <" + prm.get({"Material"}, "Model") +
-                               "> keeps histories per bond, which a conversion does not carry "
-                               "over yet; use brittle bonds or the criterion none."));
       }
     parse_other_physics(prm);
     parse_thermal_strain(prm);

@@ -1,6 +1,7 @@
 // ---------------------------------------------------------------------
 // PeriDeal: the conversion of FE cells into particles when the adaptive PD region grows.
 // ---------------------------------------------------------------------
+#include <deal.II/base/mpi.h>
 #include <deal.II/lac/vector.h>
 
 #include <perideal/base/parameter_utilities.h>
@@ -9,9 +10,11 @@
 #include <perideal/pd/damage_model.h>
 #include <perideal/pd/lattice.h>
 
+#include <algorithm>
+#include <cstdint>
 #include <map>
-#include <set>
 #include <sstream>
+#include <string>
 #include <unordered_map>
 #include <utility>
 
@@ -116,6 +119,115 @@ namespace perideal
           }
     }
 
+    /**
+     * The state of the bonds that a conversion carries over, kept by the lattice points of the
+     * two ends (the smaller key first: a row lists a bond between two owned particles from the
+     * end of smaller local index, which the regeneration may change; the histories do not
+     * depend on the bond's direction): whether it is broken, and its values of the model's bond
+     * histories (MaterialModel::bond_history()). Built from the owned rows, so each rank keeps
+     * the bonds of its own particles (a particle keeps its rank in a conversion, the particles
+     * are not balanced in an adaptive run, CoupledProblem::setup_particles()).
+     */
+    template <int dim>
+    class CarriedBonds
+    {
+    public:
+      /// The bonds of @p ps's owned rows and their histories under @p model.
+      CarriedBonds(const ParticleSystem<dim> &ps,
+                   const MaterialModel<dim>  &model,
+                   const Lattice<dim>        &lattice)
+        : n_values(model.n_bond_history_values())
+      {
+        const auto               &x      = ps.positions();
+        const auto               &bonds  = ps.bonds();
+        const std::vector<double> values = model.bond_history(ps);
+        for (unsigned int i = 0; i < ps.n_owned(); ++i)
+          for (unsigned int b = bonds.row_start[i]; b < bonds.row_start[i + 1]; ++b)
+            {
+              Record &record = records[pair(lattice, x[i], x[bonds.neighbor[b]])];
+              record.broken  = bonds.intact[b] == 0;
+              record.offset  = history.size();
+              history.insert(history.end(),
+                             values.begin() + std::size_t(b) * n_values,
+                             values.begin() + std::size_t(b + 1) * n_values);
+              n_shares += bond_shares(ps, b);
+            }
+      }
+
+      /**
+       * Give the bonds of @p ps (regenerated, @p model initialized on it) that existed before
+       * their state: break those that were broken and set their history values; the other
+       * (new) bonds keep the model's initial histories. Every bond that existed before must
+       * exist again, on the same rank (a particle's row lists all its bonds within the horizon):
+       * checked over all ranks. Collective.
+       */
+      void
+      restore(ParticleSystem<dim> &ps, MaterialModel<dim> &model, const Lattice<dim> &lattice) const
+      {
+        const auto         &y     = ps.positions();
+        auto               &bonds = ps.bonds();
+        std::vector<double> values;
+        if (n_values > 0)
+          {
+            values = model.bond_history(ps);
+            AssertThrow(values.size() == std::size_t(bonds.size()) * n_values,
+                        ExcInternalError("The bond histories do not match the bond list."));
+          }
+        std::uint64_t matched = 0;
+        for (unsigned int i = 0; i < ps.n_owned(); ++i)
+          for (unsigned int b = bonds.row_start[i]; b < bonds.row_start[i + 1]; ++b)
+            {
+              const auto found = records.find(pair(lattice, y[i], y[bonds.neighbor[b]]));
+              if (found == records.end())
+                continue;
+              matched += bond_shares(ps, b);
+              if (found->second.broken && bonds.intact[b] != 0)
+                bonds.break_bond(b);
+              std::copy(history.begin() + found->second.offset,
+                        history.begin() + found->second.offset + n_values,
+                        values.begin() + std::size_t(b) * n_values);
+            }
+        const MPI_Comm comm = ps.get_communicator();
+        AssertThrow(Utilities::MPI::sum(matched, comm) == Utilities::MPI::sum(n_shares, comm),
+                    ExcInternalError("A conversion lost bonds: " +
+                                     std::to_string(Utilities::MPI::sum(n_shares, comm) / 2) +
+                                     " bonds before, of which " +
+                                     std::to_string(Utilities::MPI::sum(matched, comm) / 2) +
+                                     " are bonds of the regenerated particles."));
+        if (n_values > 0)
+          model.set_bond_history(ps, values);
+      }
+
+    private:
+      using Key = typename Lattice<dim>::Key;
+      /// A bond's state: broken or not, and where its history values start in #history.
+      struct Record
+      {
+        bool        broken = false;
+        std::size_t offset = 0;
+      };
+
+      /// The key of the bond between @p a and @p b, the smaller lattice point first.
+      static std::pair<Key, Key>
+      pair(const Lattice<dim> &lattice, const Point<dim> &a, const Point<dim> &b)
+      {
+        return std::minmax(lattice.key(a), lattice.key(b));
+      }
+
+      /// Twice bond @p b's share in sums over unique bonds (ParticleSystem::bond_share()).
+      static std::uint64_t
+      bond_shares(const ParticleSystem<dim> &ps, const std::size_t b)
+      {
+        return ps.neighbor_is_owned(b) ? 2 : 1;
+      }
+
+      unsigned int                          n_values;
+      std::map<std::pair<Key, Key>, Record> records;
+      std::vector<double>                   history;
+      /// Twice the number of carried bonds over the ranks' shares (this rank's part).
+      std::uint64_t n_shares = 0;
+    };
+
     /// Put the carried unknowns into @p field's state, set up on the new regions.
     template <int dim>
     void
@@ -154,7 +266,6 @@ namespace perideal
   bool
   CoupledProblem<dim>::convert_regions(const unsigned int step, const double time)
   {
-    using Key = typename Lattice<dim>::Key;
     // Particles are matched by their lattice point across the regeneration.
     const Lattice<dim> lattice(pd.discretization().spacing);
     std::ostringstream when;
@@ -174,6 +285,9 @@ namespace perideal
                                         k == 0 ? "" :
                                                  Physics<dim>::section(physics[k]->name) + "/");
 
+    if (conversion_observer)
+      conversion_observer(false);
+
     // The bonds the first physics broke since the other physics last advanced are recorded by
     // their index in the bond list, which the rebuild renumbers: share them now, while the
     // indices hold (a quasi-static run converts after its load step, before the other physics
@@ -183,8 +297,8 @@ namespace perideal
     // What carries over, before anything changes: per physics the unknowns of the free
     // particles by lattice point (the others are slaved to the FE field and take it again) and
     // the FE dof values of each owned cell with unknowns (the mesh and its partition stay); the
-    // broken bonds once (a particle keeps its rank: ParticleSystem's bins do not depend on
-    // which lattice points exist); the heat stored by the other physics.
+    // bonds once, broken or not and their histories (a particle keeps its rank: ParticleSystem's
+    // bins do not depend on which lattice points exist); the heat stored by the other physics.
     auto                          &ps = pd.particles();
     std::vector<CarriedState<dim>> carried;
     std::vector<double>            stored_before;
@@ -194,34 +308,19 @@ namespace perideal
         stored_before.push_back(field->layout.has_temperature() ? field->state().stored_heat() :
                                                                   0.);
       }
-    std::set<std::pair<Key, Key>> broken;
-    {
-      const auto &x     = ps.positions();
-      const auto &bonds = ps.bonds();
-      for (unsigned int i = 0; i < ps.n_owned(); ++i)
-        for (unsigned int b = bonds.row_start[i]; b < bonds.row_start[i + 1]; ++b)
-          if (bonds.intact[b] == 0)
-            broken.emplace(lattice.key(x[i]), lattice.key(x[bonds.neighbor[b]]));
-    }
-    const unsigned int n_particles_before = ps.n_global();
-    const auto         n_dofs_before      = fe.n_dofs();
+    const CarriedBonds<dim> carried_bonds(ps, pd.material(), lattice);
+    const unsigned int      n_particles_before = ps.n_global();
+    const auto              n_dofs_before      = fe.n_dofs();
 
     // The particles of the grown region, with every physics' unknowns from its FE field as it
-    // was or their own (free particles); the kept broken bonds.
+    // was or their own (free particles); the kept bonds' states and histories (the new bonds
+    // start at the model's initial histories, which setup_particles() gave every bond).
     adaptive.add_seeds(seeds);
     setup_particles(false);
     precrack_damage = damage_index(ps);
     for (unsigned int k = 0; k < physics.size(); ++k)
       carry_to_particles(*physics[k], lattice, carried[k]);
-    {
-      const auto &y     = ps.positions();
-      auto       &bonds = ps.bonds();
-      for (unsigned int i = 0; i < ps.n_owned(); ++i)
-        for (unsigned int b = bonds.row_start[i]; b < bonds.row_start[i + 1]; ++b)
-          if (bonds.intact[b] != 0 &&
-              broken.count({lattice.key(y[i]), lattice.key(y[bonds.neighbor[b]])}))
-            bonds.break_bond(b);
-    }
+    carried_bonds.restore(ps, pd.material(), lattice);
 
     // Per physics, in the order of the set-up: its model on the new particles (the first
     // physics' in setup_particles()), the FE space without the cells that became PD only, the
@@ -266,9 +365,20 @@ namespace perideal
           log << "  stored heat before " << stored_before[k] << " J, after "
               << stored_before[k] + change << " J, change " << change << " J" << std::endl;
       }
+    if (conversion_observer)
+      conversion_observer(true);
     return true;
   }
 
+  template <int dim>
+  void
+  CoupledProblem<dim>::observe_conversions(std::function<void(bool after)> observer)
+  {
+    conversion_observer = std::move(observer);
+  }
+
+  template void CoupledProblem<2>::observe_conversions(std::function<void(bool)>);
+  template void CoupledProblem<3>::observe_conversions(std::function<void(bool)>);
   template bool
   CoupledProblem<2>::convert_regions(const unsigned int, const double);
   template bool

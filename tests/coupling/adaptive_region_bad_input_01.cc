@@ -2,11 +2,11 @@
 // Bad input of the adaptive PD region (<Coupling/Adaptive region>), on the strip of
 // adaptive_region_01: a valid file is accepted; each bad case stops with a message naming the
 // entry and the accepted values, when the file is read or at the set-up (before any output): a
-// check interval of zero, thresholds outside their ranges, a ramp narrower than a horizon, a
-// damage distance not inside the core, a lead distance beyond the core less the damage
-// distance, initial seeds outside the body or without a criterion, the event-by-event
-// control and implicit time steps (explicit steps and quasi-static load steps convert),
-// checkpoints, no damage model, no FE mesh, an initial disk that reaches an FE boundary
+// check interval of zero, thresholds outside their ranges, a strain region that does not parse,
+// a ramp narrower than a horizon, a damage distance not inside the core, a lead distance beyond
+// the core less the damage distance, initial seeds outside the body or without a criterion, the
+// event-by-event control and implicit time steps (explicit steps and quasi-static load steps
+// convert), checkpoints, no damage model, no FE mesh, an initial disk that reaches an FE boundary
 // condition. A PD zone that would reach an FE boundary condition during the run
 // stops the run at that check, before anything is converted: the statistics end with the row of
 // the step before the check's conversion, the log with the message.
@@ -80,6 +80,7 @@ main(int argc, char **argv)
   run_case("valid input", "");
   run_case("check interval 0", adaptive("    set Check interval = 0\n"));
   run_case("strain fraction 0", adaptive("    set Strain fraction = 0\n"));
+  run_case("strain region that does not parse", adaptive("    set Strain region = x +\n"));
   run_case("damage threshold 1", adaptive("    set Damage threshold = 1\n"));
   run_case("ramp narrower than a horizon", adaptive("    set Ramp width = 0.002\n"));
   run_case("damage distance outside the core",

@@ -1,11 +1,13 @@
 #!/usr/bin/env bash
 # Nooru-Mohamed double-edge-notched concrete under shear then tension (load path 4b) with
 # Timoshenko-beam bonds (seed 003, sec. 3.2): builds PeriDeal if needed, runs the all-PD case
-# (full_pd.prm) and the coupled case (coupled.prm: PD in the band of the cracks, FE elsewhere)
-# side by side, one rank each pinned to its own core (their wall times compare), and
+# (full_pd.prm) and the coupled case with the adaptive PD region (coupled_adaptive.prm) side by
+# side, one rank each pinned to its own core (their wall times compare), then the coupled case
+# with the fixed band (coupled.prm: PD in the band of the cracks, FE elsewhere), and
 # post-processes them (postprocess.py: checks, the force-displacement curves and the crack
-# paths, nooru_mohamed_force_displacement.png and nooru_mohamed_cracks.png beside this script).
-# Each run takes about three minutes on one core of the development machine.
+# paths, nooru_mohamed_force_displacement.png, nooru_mohamed_cracks.png and
+# nooru_mohamed_adaptive_region.png beside this script).
+# Each run takes one to three minutes on one core of the development machine.
 #
 # Usage: run.sh   (from anywhere; results in <top>/results/nooru_mohamed)
 # Environment: PERIDEAL_BUILD_DIR (default <top>/build), PYTHON (default /usr/bin/python3).
@@ -24,20 +26,24 @@ mkdir -p "$results"
 cd "$top"
 [ -f meshes/nooru_mohamed_2d.msh ] || "$python" "$here/make_mesh.py"
 
-core=0
-for name in full_pd coupled; do
-  taskset -c $core /usr/bin/time -f "$name: wall %e s" -o "$results/$name.time" \
-    "$build/bin/perideal-solid" "doc/benchmarks/nooru_mohamed/$name.prm" > "$results/$name.log" &
-  core=$(( (core + 1) % $(nproc) ))
-done
+# All-PD and the adaptive coupled run side by side, then the fixed band's coupled run.
+run() {
+  taskset -c "$2" /usr/bin/time -f "$1: wall %e s, peak memory %M kB" -o "$results/$1.time" \
+    "$build/bin/perideal-solid" "doc/benchmarks/nooru_mohamed/$1.prm" > "$results/$1.log"
+}
+second=$(( 1 % $(nproc) ))
+run full_pd 0 &
+run coupled_adaptive $second &
 wait
-cat "$results/full_pd.time" "$results/coupled.time"
+run coupled 0
+cat "$results/full_pd.time" "$results/coupled_adaptive.time" "$results/coupled.time"
 "$python" - "$results" <<'PY'
 import sys
 t = {}
-for name in ("full_pd", "coupled"):
-    t[name] = float(open(f"{sys.argv[1]}/{name}.time").read().split()[-2])
-print(f"wall time coupled / all-PD: {t['coupled'] / t['full_pd']:.2f}")
+for name in ("full_pd", "coupled_adaptive", "coupled"):
+    t[name] = float(open(f"{sys.argv[1]}/{name}.time").read().split()[2])
+print(f"wall time coupled_adaptive / all-PD (side by side): {t['coupled_adaptive'] / t['full_pd']:.2f}")
+print(f"wall time coupled / all-PD (one after the other): {t['coupled'] / t['full_pd']:.2f}")
 PY
 "$python" "$here/postprocess.py" "$results" --plot "$results/nooru_mohamed"
 cp "$results"/nooru_mohamed_*.png "$here/"

@@ -4,6 +4,7 @@
 #ifndef perideal_coupling_adaptive_region_h
 #define perideal_coupling_adaptive_region_h
 
+#include <deal.II/base/function_parser.h>
 #include <deal.II/base/parameter_handler.h>
 #include <deal.II/base/point.h>
 
@@ -11,6 +12,7 @@
 #include <perideal/coupling/coupled_state.h>
 
 #include <functional>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -27,7 +29,8 @@ namespace perideal
    * steps the criterion proposes seeds (collective, the same on every rank):
    * - principal strain: the centre of each FE cell with unknowns whose largest principal strain
    *   at the centre (the slope |grad w| of a scalar field) exceeds <Strain fraction> times the
-   *   critical stretch of the particles' damage model;
+   *   critical stretch of the particles' damage model (the bonds' elastic limit: where a brittle
+   *   bond breaks, where a softening bond starts to soften), where <Strain region> > 0;
    * - damage: each particle whose damage from the bonds broken during the run (its damage
    *   index less that of the pre-cracks) is >= <Damage threshold> and that lies within <Damage
    *   distance> of the edge of the PD-only zone (a point of the body at that distance or half of
@@ -163,6 +166,8 @@ namespace perideal
     Criterion    criterion       = Criterion::none;
     unsigned int interval        = 10;
     double       strain_fraction = 0.5, damage_threshold = 0.5, damage_distance = 0.;
+    /// <Strain region>: the criterion 'principal strain' flags cells only where it is > 0.
+    std::shared_ptr<dealii::FunctionParser<dim>> strain_region;
     /// <Lead distance> [m].
     double                          lead_distance = 0.;
     SeedShape                       shape         = SeedShape::ball;

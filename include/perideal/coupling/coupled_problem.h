@@ -124,6 +124,15 @@ namespace perideal
     void
     stop_after_step(const unsigned int step);
 
+    /**
+     * @brief Call @p observer on every rank just before (with false) and just after (with true)
+     * each conversion of the adaptive PD region, when the particles and their bond histories
+     * (particles(), material()) are those of either side: what the tests of a conversion compare.
+     * Before run().
+     */
+    void
+    observe_conversions(std::function<void(bool after)> observer);
+
     /// Run the solver with the postprocessors (which create the output directory and files).
     void
     run();
@@ -322,6 +331,8 @@ namespace perideal
     std::string               blending_expression;
     /// <Coupling/Adaptive region>: where the PD region grows during an explicit run.
     AdaptiveRegion<dim> adaptive;
+    /// observe_conversions().
+    std::function<void(bool)> conversion_observer;
     /// The damage index of each owned particle with only the pre-cracks' bonds broken (runs
     /// with an adaptive region).
     std::vector<double>                          precrack_damage;
