@@ -124,9 +124,14 @@ namespace perideal
      * two ends (the smaller key first: a row lists a bond between two owned particles from the
      * end of smaller local index, which the regeneration may change; the histories do not
      * depend on the bond's direction): whether it is broken, and its values of the model's bond
-     * histories (MaterialModel::bond_history()). Built from the owned rows, so each rank keeps
-     * the bonds of its own particles (a particle keeps its rank in a conversion, the particles
-     * are not balanced in an adaptive run, CoupledProblem::setup_particles()).
+     * histories (MaterialModel::bond_history()). Only the bonds whose state differs from a new
+     * bond's are kept, the broken ones and those with a history value other than 0 (a bond that
+     * has not softened; a set-up starts every bond there): the others take that state from the
+     * regeneration, and the map stays as small as the damage (a map of every bond would cost
+     * about 100 B per bond of the PD zone at each conversion). Built from the owned rows, so
+     * each rank keeps the bonds of its own particles (a particle keeps its rank in a
+     * conversion, the particles are not balanced in an adaptive run,
+     * CoupledProblem::setup_particles()).
      */
     template <int dim>
     class CarriedBonds
@@ -144,22 +149,25 @@ namespace perideal
         for (unsigned int i = 0; i < ps.n_owned(); ++i)
           for (unsigned int b = bonds.row_start[i]; b < bonds.row_start[i + 1]; ++b)
             {
+              const auto first  = values.begin() + std::size_t(b) * n_values;
+              const bool broken = bonds.intact[b] == 0;
+              if (!broken &&
+                  std::all_of(first, first + n_values, [](const double v) { return v == 0.; }))
+                continue;
               Record &record = records[pair(lattice, x[i], x[bonds.neighbor[b]])];
-              record.broken  = bonds.intact[b] == 0;
+              record.broken  = broken;
               record.offset  = history.size();
-              history.insert(history.end(),
-                             values.begin() + std::size_t(b) * n_values,
-                             values.begin() + std::size_t(b + 1) * n_values);
+              history.insert(history.end(), first, first + n_values);
               n_shares += bond_shares(ps, b);
             }
       }
 
       /**
-       * Give the bonds of @p ps (regenerated, @p model initialized on it) that existed before
-       * their state: break those that were broken and set their history values; the other
-       * (new) bonds keep the model's initial histories. Every bond that existed before must
-       * exist again, on the same rank (a particle's row lists all its bonds within the horizon):
-       * checked over all ranks. Collective.
+       * Give the kept bonds of @p ps (regenerated, @p model initialized on it) their state:
+       * break those that were broken and set their history values; the other bonds keep the
+       * initial histories of the set-up. Every kept bond must exist again, on the same rank (a
+       * particle's row lists all its bonds within the horizon): checked over all ranks.
+       * Collective.
        */
       void
       restore(ParticleSystem<dim> &ps, MaterialModel<dim> &model, const Lattice<dim> &lattice) const
@@ -191,9 +199,9 @@ namespace perideal
         AssertThrow(Utilities::MPI::sum(matched, comm) == Utilities::MPI::sum(n_shares, comm),
                     ExcInternalError("A conversion lost bonds: " +
                                      std::to_string(Utilities::MPI::sum(n_shares, comm) / 2) +
-                                     " bonds before, of which " +
+                                     " broken or softened bonds before, of which " +
                                      std::to_string(Utilities::MPI::sum(matched, comm) / 2) +
-                                     " are bonds of the regenerated particles."));
+                                     " are found again."));
         if (n_values > 0)
           model.set_bond_history(ps, values);
       }
@@ -224,7 +232,7 @@ namespace perideal
       unsigned int                          n_values;
       std::map<std::pair<Key, Key>, Record> records;
       std::vector<double>                   history;
-      /// Twice the number of carried bonds over the ranks' shares (this rank's part).
+      /// Twice the number of kept bonds over the ranks' shares (this rank's part).
       std::uint64_t n_shares = 0;
     };
 
