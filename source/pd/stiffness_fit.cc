@@ -14,6 +14,9 @@
 #include <cmath>
 #include <limits>
 #include <sstream>
+#include <string>
+#include <unordered_map>
+
 
 namespace perideal
 {
@@ -161,9 +164,104 @@ namespace perideal
             }
       }
 
-      /// (K + rho I) src: per row, the particle's multipliers and sums kept in local arrays.
+      /// (K + rho I) src.
       void
       vmult(ParticleVector &dst, const ParticleVector &src) const
+      {
+        if (n_classes > 0)
+          vmult_by_class(dst, src);
+        else
+          vmult_by_bond(dst, src);
+      }
+
+      /**
+       * (K + rho I) src on an unperturbed lattice, by classes of bonds (a lattice vector and its
+       * opposite share a class and H): the projections p_ci = H_c . lambda_i of every particle
+       * on every class (dense products over blocks of particles), c_b = s_b^2 (p_ci + p_cj) per
+       * free bond summed into t_ci and t_cj class by class (one class's p and t stay in the
+       * cache), and the sums t_ci H_c per particle: 2 m n_classes multiply-adds per particle
+       * and 4 per bond instead of 3 m per bond.
+       */
+      void
+      vmult_by_class(ParticleVector &dst, const ParticleVector &src) const
+      {
+        src.update_ghost_values();
+        const unsigned int     n_owned = particles.n_owned();
+        const std::size_t      n_local = particles.n_local();
+        const unsigned int     k_c     = n_classes;
+        const double          *lambda  = src.begin();
+        double                *sums    = dst.begin();
+        constexpr unsigned int block   = tile;
+        constexpr unsigned int lanes   = 8;
+        const std::size_t      n_tiles = (n_local + block - 1) / block;
+        projections.resize(n_tiles * k_c * block);
+        totals.assign(n_tiles * k_c * block, 0.);
+        std::array<double, m * block> transposed;
+        for (std::size_t first = 0; first < n_local; first += block)
+          {
+            const unsigned int size = std::min<std::size_t>(block, n_local - first);
+            for (unsigned int i = 0; i < size; ++i)
+              for (unsigned int k = 0; k < m; ++k)
+                transposed[k * block + i] = lambda[(first + i) * m + k];
+            for (unsigned int c = 0; c < k_c; ++c)
+              {
+                const double *h_c = class_table.data() + std::size_t(c) * m;
+                double       *p_c = projections.data() + first * k_c + c * block;
+                for (unsigned int i0 = 0; i0 < size; i0 += lanes)
+                  {
+                    double p[lanes] = {};
+                    for (unsigned int k = 0; k < m; ++k)
+                      {
+                        const double  h = h_c[k];
+                        const double *l = transposed.data() + k * block + i0;
+                        for (unsigned int u = 0; u < lanes; ++u)
+                          p[u] += h * l[u];
+                      }
+                    std::copy_n(p, std::min(lanes, size - i0), p_c + i0);
+                  }
+              }
+          }
+        for (unsigned int c = 0; c < k_c; ++c)
+          {
+            const double *p_c = projections.data() + c * block;
+            double       *t_c = totals.data() + c * block;
+            for (std::size_t e = class_start[c]; e < class_start[c + 1]; ++e)
+              {
+                const ClassBond &bond = class_bonds[e];
+                const double     t    = bond.scale2 * (p_c[bond.i] + p_c[bond.j]);
+                t_c[bond.i] += t;
+                t_c[bond.j] += t;
+              }
+          }
+        for (std::size_t first = 0; first < n_owned; first += block)
+          {
+            const unsigned int size = std::min<std::size_t>(block, n_owned - first);
+            for (unsigned int i0 = 0; i0 < size; i0 += lanes)
+              for (unsigned int k = 0; k < m; ++k)
+                {
+                  double s[lanes];
+                  for (unsigned int u = 0; u < lanes; ++u)
+                    s[u] = regularization * lambda[(first + std::min(i0 + u, size - 1)) * m + k];
+                  for (unsigned int c = 0; c < k_c; ++c)
+                    {
+                      const double  h = class_table[std::size_t(c) * m + k];
+                      const double *t = totals.data() + first * k_c + c * block + i0;
+                      for (unsigned int u = 0; u < lanes; ++u)
+                        s[u] += h * t[u];
+                    }
+                  std::copy_n(s, lanes, transposed.data() + k * block + i0);
+                }
+            for (unsigned int i = 0; i < size; ++i)
+              for (unsigned int k = 0; k < m; ++k)
+                sums[(first + i) * m + k] = transposed[k * block + i];
+          }
+        src.zero_out_ghost_values();
+      }
+
+      /// (K + rho I) src by bond: per row, the particle's multipliers and sums kept in local
+      /// arrays.
+      void
+      vmult_by_bond(ParticleVector &dst, const ParticleVector &src) const
       {
         src.update_ghost_values();
         const BondList    &bonds   = particles.bonds();
@@ -225,6 +323,94 @@ namespace perideal
       {
         return by_vector ? scales[b] : 1.;
       }
+      /**
+       * The classes of vmult_by_class() (n_classes = 0: not used): H of class c at
+       * class_table[c m], its transpose (entry k of class c at class_table_t[k n_classes + c]),
+       * the class of each bond, and the work arrays of the products (projections of the local
+       * particles, totals of the owned ones).
+       */
+      ///@{
+      unsigned int                n_classes = 0;
+      std::vector<double>         class_table;
+      std::vector<std::uint16_t>  class_of_bond;
+      mutable std::vector<double> projections, totals;
+      ///@}
+
+      /// A free bond of vmult_by_class(): its ends and s_b^2.
+      struct ClassBond
+      {
+        unsigned int i, j;
+        double       scale2;
+      };
+      /// The free bonds by class (those of class c from class_start[c]), in the bond order.
+      std::vector<ClassBond>   class_bonds;
+      std::vector<std::size_t> class_start;
+
+      /// The particles of vmult_by_class()'s work arrays in tiles of this many, a tile's values
+      /// class by class.
+      static constexpr unsigned int tile = 64;
+      /// The place of particle @p i in a class's values of vmult_by_class()'s work arrays.
+      unsigned int
+      slot(const unsigned int i) const
+      {
+        return (i / tile) * n_classes * tile + i % tile;
+      }
+
+      /// Sort the free bonds into their classes (after free changed).
+      void
+      sort_free_bonds()
+      {
+        if (n_classes == 0)
+          return;
+        const BondList    &bonds   = particles.bonds();
+        const unsigned int n_owned = particles.n_owned();
+        class_start.assign(n_classes + 1, 0);
+        for (std::size_t b = 0; b < class_of_bond.size(); ++b)
+          if (free[b])
+            ++class_start[class_of_bond[b] + 1];
+        for (unsigned int c = 0; c < n_classes; ++c)
+          class_start[c + 1] += class_start[c];
+        class_bonds.resize(class_start[n_classes]);
+        std::vector<std::size_t> next(class_start.begin(), class_start.end() - 1);
+        for (unsigned int i = 0; i < n_owned; ++i)
+          for (unsigned int b = bonds.row_start[i]; b < bonds.row_start[i + 1]; ++b)
+            if (free[b])
+              {
+                const unsigned int j = bonds.neighbor[b];
+                // A ghost end gets its sum in a slot that is not read.
+                class_bonds[next[class_of_bond[b]]++] = {slot(i), slot(j), scales[b] * scales[b]};
+              }
+      }
+
+      /// Group the lattice vectors' entries of the table into classes of equal H (a vector and
+      /// its opposite), for vmult_by_class().
+      void
+      set_classes()
+      {
+        const unsigned int         n_vectors = table.size() / m;
+        std::vector<std::uint16_t> class_of_vector(n_vectors);
+        for (unsigned int v = 0; v < n_vectors; ++v)
+          {
+            unsigned int c = 0;
+            for (; c < n_classes; ++c)
+              if (std::equal(table.begin() + v * m,
+                             table.begin() + (v + 1) * m,
+                             class_table.begin() + c * m))
+                break;
+            if (c == n_classes)
+              {
+                class_table.insert(class_table.end(),
+                                   table.begin() + v * m,
+                                   table.begin() + (v + 1) * m);
+                ++n_classes;
+              }
+            class_of_vector[v] = c;
+          }
+        class_of_bond.resize(vector_of.size());
+        for (std::size_t b = 0; b < vector_of.size(); ++b)
+          class_of_bond[b] = class_of_vector[vector_of[b]];
+      }
+
       double regularization = 0.;
       /// Whether a bond's factor is fitted (1) or held at a bound (0; the bound in fixed).
       std::vector<std::uint8_t> free;
@@ -233,11 +419,17 @@ namespace perideal
 
     /**
      * @brief The block-Jacobi preconditioner of the normal equations: per owned particle the
-     * inverse of its diagonal block rho I + sum over its free bonds of h_b h_b^T (m^2 doubles
-     * per particle, from the block's Cholesky factor). The multipliers of a particle are
-     * strongly coupled (every h_b touches all of them): the point-Jacobi preconditioner needed
-     * four times the iterations. The inverse is applied as a dense product, column by column
-     * (the triangular solves of the factor are chains of dependent operations, 3 times slower).
+     * inverse of its diagonal block rho I + sum over its free bonds of h_b h_b^T (from the
+     * block's Cholesky factor). The multipliers of a particle are strongly coupled (every h_b
+     * touches all of them): the point-Jacobi preconditioner needed four times the iterations.
+     * The inverse is applied as a dense product, column by column (the triangular solves of the
+     * factor are chains of dependent operations, 3 times slower).
+     *
+     * On an unperturbed lattice (NormalEquations::n_classes > 0) a block is sum_c w_ic H_c H_c^T
+     * with w_ic the sum of s_b^2 over the particle's free bonds of class c: particles with the
+     * same weights bit for bit (the interior, and the particles of a face at the same depth)
+     * share one inverse, found by their weights. Otherwise every particle has its own, m^2
+     * doubles.
      */
     template <int dim>
     class BlockJacobi
@@ -246,15 +438,146 @@ namespace perideal
       static constexpr unsigned int m = Voigt<dim>::unique;
 
       /// The inverses of the blocks of the free bonds of @p equations: of every owned particle,
-      /// or (@p changed) of those marked, whose bonds changed since the last call.
+      /// or (@p changed, by bond only) of those marked, whose bonds changed since the last call.
       void
       reinit(const NormalEquations<dim> &equations, const std::vector<std::uint8_t> *changed)
+      {
+        if (equations.n_classes > 0)
+          reinit_by_class(equations);
+        else
+          reinit_by_bond(equations, changed);
+      }
+
+      /// dst = the blocks' inverses times src (owned entries).
+      void
+      vmult(ParticleVector &dst, const ParticleVector &src) const
+      {
+        const unsigned int n = block_of.size();
+        for (unsigned int i = 0; i < n; ++i)
+          {
+            const double         *inverse = inverses.data() + std::size_t(block_of[i]) * m * m;
+            const double         *x       = src.begin() + std::size_t(i) * m;
+            double               *y       = dst.begin() + std::size_t(i) * m;
+            std::array<double, m> sum{};
+            for (unsigned int c = 0; c < m; ++c)
+              for (unsigned int p = 0; p < m; ++p)
+                sum[p] += inverse[c * m + p] * x[c];
+            std::copy(sum.begin(), sum.end(), y);
+          }
+      }
+
+    private:
+      /// The inverses (m^2 doubles each) and the one of each owned particle.
+      std::vector<double>       inverses;
+      std::vector<unsigned int> block_of;
+      /// By class: the inverses' weights w_ic, as bytes, and their inverse's number.
+      std::unordered_map<std::string, unsigned int> known;
+
+      /// Overwrite @p block, the lower triangle of a block less rho I (entry (p, q), q <= p,
+      /// at p m + q), by its inverse, all of it.
+      static void
+      invert(double *block, const double regularization)
+      {
+        // Cholesky L L^T of the block, then its inverse column by column.
+        std::array<double, m * m> l{};
+        for (unsigned int p = 0; p < m; ++p)
+          for (unsigned int q = 0; q <= p; ++q)
+            {
+              double s = block[p * m + q] + (p == q ? regularization : 0.);
+              for (unsigned int r = 0; r < q; ++r)
+                s -= l[p * m + r] * l[q * m + r];
+              l[p * m + q] = p == q ? std::sqrt(s) : s / l[q * m + q];
+            }
+        for (unsigned int c = 0; c < m; ++c)
+          {
+            std::array<double, m> y;
+            for (unsigned int p = 0; p < m; ++p)
+              {
+                double s = p == c ? 1. : 0.;
+                for (unsigned int r = 0; r < p; ++r)
+                  s -= l[p * m + r] * y[r];
+                y[p] = s / l[p * m + p];
+              }
+            for (unsigned int p = m; p-- > 0;)
+              {
+                double s = y[p];
+                for (unsigned int r = p + 1; r < m; ++r)
+                  s -= l[r * m + p] * y[r];
+                y[p] = s / l[p * m + p];
+              }
+            for (unsigned int p = 0; p < m; ++p)
+              block[c * m + p] = y[p];
+          }
+      }
+
+      /// The blocks by class: every particle's weights, a new inverse for weights not met
+      /// before (the inverses of earlier rounds are kept: a particle whose held bonds changed
+      /// may find its new weights among them).
+      void
+      reinit_by_class(const NormalEquations<dim> &equations)
+      {
+        const BondList     &bonds   = equations.particles.bonds();
+        const unsigned int  n_owned = equations.particles.n_owned();
+        const unsigned int  k_c     = equations.n_classes;
+        std::vector<double> weights(std::size_t(n_owned) * k_c, 0.);
+        for (unsigned int i = 0; i < n_owned; ++i)
+          for (unsigned int b = bonds.row_start[i]; b < bonds.row_start[i + 1]; ++b)
+            if (equations.free[b])
+              {
+                const unsigned int j  = bonds.neighbor[b];
+                const unsigned int c  = equations.class_of_bond[b];
+                const double       s2 = equations.scales[b] * equations.scales[b];
+                weights[std::size_t(i) * k_c + c] += s2;
+                if (j < n_owned)
+                  weights[std::size_t(j) * k_c + c] += s2;
+              }
+        // The weights to 36 bits (a relative change below 1e-11 of the blocks, nothing to the
+        // preconditioner): s_b is formed from the bond's length, whose last bits depend on
+        // where the bond lies, and exact weights would make most particles' blocks differ.
+        for (double &w : weights)
+          if (w != 0.)
+            {
+              int          exponent;
+              const double fraction = std::frexp(w, &exponent);
+              w = std::ldexp(std::round(std::ldexp(fraction, 36)), exponent - 36);
+            }
+        block_of.resize(n_owned);
+        for (unsigned int i = 0; i < n_owned; ++i)
+          {
+            const double *w = weights.data() + std::size_t(i) * k_c;
+            const auto    found =
+              known.emplace(std::string(reinterpret_cast<const char *>(w), k_c * sizeof(double)),
+                            inverses.size() / (m * m));
+            block_of[i] = found.first->second;
+            if (!found.second)
+              continue;
+            inverses.resize(inverses.size() + m * m, 0.);
+            double *block = inverses.data() + inverses.size() - m * m;
+            for (unsigned int c = 0; c < k_c; ++c)
+              if (w[c] != 0.)
+                {
+                  const double *h = equations.class_table.data() + std::size_t(c) * m;
+                  for (unsigned int p = 0; p < m; ++p)
+                    for (unsigned int q = 0; q <= p; ++q)
+                      block[p * m + q] += w[c] * (h[p] * h[q]);
+                }
+            invert(block, equations.regularization);
+          }
+      }
+
+      /// The blocks of every owned particle (or of those marked in @p changed) from their
+      /// bonds' h_b.
+      void
+      reinit_by_bond(const NormalEquations<dim>      &equations,
+                     const std::vector<std::uint8_t> *changed)
       {
         const ParticleSystem<dim> &particles = equations.particles;
         const BondList            &bonds     = particles.bonds();
         const unsigned int         n_owned   = particles.n_owned();
         const auto redo = [&](const unsigned int i) { return !changed || (*changed)[i]; };
-        // The blocks' lower triangles, entry (p, q), q <= p, at p m + q.
+        block_of.resize(n_owned);
+        for (unsigned int i = 0; i < n_owned; ++i)
+          block_of[i] = i;
         inverses.resize(std::size_t(n_owned) * m * m);
         for (unsigned int i = 0; i < n_owned; ++i)
           if (redo(i))
@@ -277,61 +600,8 @@ namespace perideal
               }
         for (unsigned int i = 0; i < n_owned; ++i)
           if (redo(i))
-            {
-              double *block = inverses.data() + std::size_t(i) * m * m;
-              // Cholesky L L^T of the block, then its inverse column by column.
-              std::array<double, m * m> l{};
-              for (unsigned int p = 0; p < m; ++p)
-                for (unsigned int q = 0; q <= p; ++q)
-                  {
-                    double s = block[p * m + q] + (p == q ? equations.regularization : 0.);
-                    for (unsigned int r = 0; r < q; ++r)
-                      s -= l[p * m + r] * l[q * m + r];
-                    l[p * m + q] = p == q ? std::sqrt(s) : s / l[q * m + q];
-                  }
-              for (unsigned int c = 0; c < m; ++c)
-                {
-                  std::array<double, m> y;
-                  for (unsigned int p = 0; p < m; ++p)
-                    {
-                      double s = p == c ? 1. : 0.;
-                      for (unsigned int r = 0; r < p; ++r)
-                        s -= l[p * m + r] * y[r];
-                      y[p] = s / l[p * m + p];
-                    }
-                  for (unsigned int p = m; p-- > 0;)
-                    {
-                      double s = y[p];
-                      for (unsigned int r = p + 1; r < m; ++r)
-                        s -= l[r * m + p] * y[r];
-                      y[p] = s / l[p * m + p];
-                    }
-                  for (unsigned int p = 0; p < m; ++p)
-                    block[c * m + p] = y[p];
-                }
-            }
+            invert(inverses.data() + std::size_t(i) * m * m, equations.regularization);
       }
-
-      /// dst = the blocks' inverses times src (owned entries).
-      void
-      vmult(ParticleVector &dst, const ParticleVector &src) const
-      {
-        const unsigned int n = inverses.size() / (m * m);
-        for (unsigned int i = 0; i < n; ++i)
-          {
-            const double         *inverse = inverses.data() + std::size_t(i) * m * m;
-            const double         *x       = src.begin() + std::size_t(i) * m;
-            double               *y       = dst.begin() + std::size_t(i) * m;
-            std::array<double, m> sum{};
-            for (unsigned int c = 0; c < m; ++c)
-              for (unsigned int p = 0; p < m; ++p)
-                sum[p] += inverse[c * m + p] * x[c];
-            std::copy(sum.begin(), sum.end(), y);
-          }
-      }
-
-    private:
-      std::vector<double> inverses;
     };
   } // namespace
 
@@ -408,7 +678,10 @@ namespace perideal
       by_vector = Utilities::MPI::min(by_vector ? 1 : 0, particles.get_communicator()) == 1;
       equations.by_vector = by_vector;
       if (by_vector)
-        return;
+        {
+          equations.set_classes();
+          return;
+        }
       equations.vector_of.clear();
       equations.scales.clear();
       equations.table.assign(bonds.size() * m, 0.);
@@ -523,6 +796,7 @@ namespace perideal
             if (round > 0)
               deviation(nullptr);
             preconditioner.reinit(equations, round == 0 ? nullptr : &changed);
+            equations.sort_free_bonds();
           }
         // Warm start: each round begins from the last round's multipliers.
         const double             target = 1e-10 * rhs.l2_norm();
