@@ -1,11 +1,15 @@
 // ---------------------------------------------------------------------
 // PeriDeal: the normal equations of the stiffness fit: the bond entries, the operator.
 // ---------------------------------------------------------------------
+#include <deal.II/base/mpi.h>
+
 #include <perideal/pd/stiffness_fit_equations.h>
 
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstdint>
+#include <limits>
 #include <string>
 
 namespace perideal::stiffness_fit
@@ -85,7 +89,7 @@ namespace perideal::stiffness_fit
     const std::size_t      n_tiles = (n_local + block - 1) / block;
     projections.resize(n_tiles * k_c * block);
     totals.assign(n_tiles * k_c * block, 0.);
-    std::array<double, m * block> transposed;
+    std::array<double, m * block> transposed{};
     for (std::size_t first = 0; first < n_local; first += block)
       {
         const unsigned int size = std::min<std::size_t>(block, n_local - first);
@@ -232,6 +236,16 @@ namespace perideal::stiffness_fit
             ++n_classes;
           }
         class_of_vector[v] = c;
+      }
+    // The places of slot() are unsigned int: more than 2^32 / n_classes local particles on a
+    // rank (7 * 10^7 in 3D) keep the products by bond, on every rank alike.
+    const bool too_many = std::uint64_t(particles.n_local() + tile) * n_classes >=
+                          std::numeric_limits<unsigned int>::max();
+    if (dealii::Utilities::MPI::max(too_many ? 1 : 0, particles.get_communicator()) == 1)
+      {
+        n_classes = 0;
+        class_table.clear();
+        return;
       }
     class_of_bond.resize(vector_of.size());
     for (std::size_t b = 0; b < vector_of.size(); ++b)
