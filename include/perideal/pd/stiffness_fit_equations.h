@@ -45,7 +45,7 @@ namespace perideal::stiffness_fit
 
   /**
    * @brief The normal equations of the fit, (K + rho I) lambda with K lambda = sum over the
-   * free bonds of h_b (h_b . (lambda_i + lambda_j)); Voigt<dim>::unique multipliers per owned
+   * free bonds of h_b (h_b . (lambda_i + lambda_j)); Voigt::unique multipliers per owned
    * particle.
    */
   template <int dim>
@@ -175,11 +175,16 @@ namespace perideal::stiffness_fit
     /// A free bond of vmult_by_class(): its ends and s_b^2.
     struct ClassBond
     {
-      unsigned int i, j;
-      double       scale2;
+      /// The slot() of the bond's row.
+      unsigned int i;
+      /// The slot() of the bond's other end.
+      unsigned int j;
+      /// s_b^2.
+      double scale2;
     };
     /// The free bonds by class (those of class c from class_start[c]), in the bond order.
-    std::vector<ClassBond>   class_bonds;
+    std::vector<ClassBond> class_bonds;
+    /// Where each class's bonds begin in class_bonds (n_classes + 1 entries).
     std::vector<std::size_t> class_start;
 
     /// The particles of vmult_by_class()'s work arrays in tiles of this many, a tile's values
@@ -205,7 +210,8 @@ namespace perideal::stiffness_fit
     double regularization = 0.;
     /// Whether a bond's factor is fitted (1) or held at a bound (0; the bound in fixed).
     std::vector<std::uint8_t> free;
-    std::vector<double>       fixed;
+    /// The bound of a held bond.
+    std::vector<double> fixed;
   };
 
   /**
