@@ -8,6 +8,7 @@
 #include <deal.II/lac/solver_control.h>
 
 #include <perideal/pd/stiffness_fit.h>
+#include <perideal/pd/stiffness_fit_equations.h>
 
 #include <algorithm>
 #include <array>
@@ -38,305 +39,10 @@ namespace perideal
     /// rho relative to the mean diagonal of the normal equations.
     constexpr double relative_regularization = 1e-2;
 
-    /// Voigt notation: the strain (e_11, e_22, 2 e_12) in 2D, (e_11, e_22, e_33, 2 e_23,
-    /// 2 e_13, 2 e_12) in 3D; a symmetric Voigt matrix stored by its upper triangle.
-    template <int dim>
-    struct Voigt
-    {
-      static constexpr unsigned int n      = dim == 2 ? 3 : 6;
-      static constexpr unsigned int unique = n * (n + 1) / 2;
-      using Entries                        = std::array<double, unique>;
+    using stiffness_fit::BlockJacobi;
+    using stiffness_fit::NormalEquations;
+    using stiffness_fit::Voigt;
 
-      /// The upper triangle of H = axial a a^T + shear sum_k r_k^T r_k for the direction
-      /// @p v: a.e = n.e.n and r_k.e = (e.n)_k.
-      static Entries
-      bond_tensor(const Tensor<1, dim> &v, const double axial, const double shear)
-      {
-        std::array<double, n> a{}, r[dim]{};
-        if constexpr (dim == 2)
-          {
-            a    = {{v[0] * v[0], v[1] * v[1], v[0] * v[1]}};
-            r[0] = {{v[0], 0., 0.5 * v[1]}};
-            r[1] = {{0., v[1], 0.5 * v[0]}};
-          }
-        else
-          {
-            a    = {{v[0] * v[0], v[1] * v[1], v[2] * v[2], v[1] * v[2], v[0] * v[2], v[0] * v[1]}};
-            r[0] = {{v[0], 0., 0., 0., 0.5 * v[2], 0.5 * v[1]}};
-            r[1] = {{0., v[1], 0., 0.5 * v[2], 0., 0.5 * v[0]}};
-            r[2] = {{0., 0., v[2], 0.5 * v[1], 0.5 * v[0], 0.}};
-          }
-        Entries      h;
-        unsigned int k = 0;
-        for (unsigned int p = 0; p < n; ++p)
-          for (unsigned int q = p; q < n; ++q, ++k)
-            {
-              h[k] = axial * a[p] * a[q];
-              for (unsigned int d = 0; d < dim; ++d)
-                h[k] += shear * r[d][p] * r[d][q];
-            }
-        return h;
-      }
-    };
-
-    /**
-     * @brief The normal equations of the fit, (K + rho I) lambda with K lambda = sum over the
-     * free bonds of h_b (h_b . (lambda_i + lambda_j)); Voigt<dim>::unique multipliers per owned
-     * particle.
-     */
-    template <int dim>
-    class NormalEquations
-    {
-    public:
-      static constexpr unsigned int m = Voigt<dim>::unique;
-
-      explicit NormalEquations(const ParticleSystem<dim> &particles)
-        : particles(particles)
-        , free(particles.bonds().size(), 1)
-        , fixed(particles.bonds().size(), 1.)
-      {}
-
-      /// h_b . (lambda_i + lambda_j) in four partial sums: independent chains of additions that
-      /// the compiler vectorizes (one sum is a chain of m dependent additions, the bottleneck
-      /// of the fit's operator).
-      static double
-      change_of(const double *h_b, const double *lambda_i, const double *lambda_j)
-      {
-        double       s[4] = {0., 0., 0., 0.};
-        unsigned int k    = 0;
-        for (; k + 4 <= m; k += 4)
-          for (unsigned int l = 0; l < 4; ++l)
-            s[l] += h_b[k + l] * (lambda_i[k + l] + lambda_j[k + l]);
-        for (; k < m; ++k)
-          s[0] += h_b[k] * (lambda_i[k] + lambda_j[k]);
-        return (s[0] + s[1]) + (s[2] + s[3]);
-      }
-
-      /// G_b - 1 of bond @p b in row @p i (0 for a bond held at a bound); ghost values of
-      /// @p lambda current.
-      double
-      change(const unsigned int i, const std::size_t b, const ParticleVector &lambda) const
-      {
-        if (!free[b])
-          return 0.;
-        const std::size_t j = particles.bonds().neighbor[b];
-        return scale(b) * change_of(h(b), lambda.begin() + i * m, lambda.begin() + j * m);
-      }
-
-      /// What a bond adds to the sums of its ends.
-      enum class Sum
-      {
-        /// c_b h_b with c_b = G_b - 1 of the multipliers (K lambda).
-        change,
-        /// G_b h_b without multipliers (1, or the bound of a held bond): the particles' D V.
-        tensor,
-        /// The squares of the entries of h_b of the free bonds (K's diagonal).
-        squares
-      };
-
-      void
-      add_bond_sums(ParticleVector &dst, const Sum sum, const ParticleVector *lambda) const
-      {
-        const BondList    &bonds   = particles.bonds();
-        const unsigned int n_owned = particles.n_owned();
-        for (unsigned int i = 0; i < n_owned; ++i)
-          for (unsigned int b = bonds.row_start[i]; b < bonds.row_start[i + 1]; ++b)
-            {
-              if (sum == Sum::squares && !free[b])
-                continue;
-              const unsigned int j   = bonds.neighbor[b];
-              const double      *h_b = h(b);
-              const double       s_b = scale(b);
-              const double       c   = sum == Sum::change ? change(i, b, *lambda) :
-                                       sum == Sum::tensor ? (free[b] ? 1. : fixed[b]) :
-                                                            1.;
-              for (unsigned int k = 0; k < m; ++k)
-                {
-                  const double v =
-                    sum == Sum::squares ? (s_b * h_b[k]) * (s_b * h_b[k]) : c * (s_b * h_b[k]);
-                  dst.local_element(i * m + k) += v;
-                  if (j < n_owned)
-                    dst.local_element(j * m + k) += v;
-                }
-            }
-      }
-
-      /// (K + rho I) src: per row, the particle's multipliers and sums kept in local arrays.
-      void
-      vmult(ParticleVector &dst, const ParticleVector &src) const
-      {
-        src.update_ghost_values();
-        const BondList    &bonds   = particles.bonds();
-        const unsigned int n_owned = particles.n_owned();
-        const double      *lambda  = src.begin();
-        double            *sums    = dst.begin();
-        for (unsigned int c = 0; c < n_owned * m; ++c)
-          sums[c] = regularization * lambda[c];
-        for (unsigned int i = 0; i < n_owned; ++i)
-          {
-            std::array<double, m> lambda_i, sum_i{};
-            std::copy_n(lambda + i * m, m, lambda_i.begin());
-            for (unsigned int b = bonds.row_start[i]; b < bonds.row_start[i + 1]; ++b)
-              {
-                if (!free[b])
-                  continue;
-                const unsigned int j        = bonds.neighbor[b];
-                const double      *h_b      = h(b);
-                const double       s_b      = scale(b);
-                const double      *lambda_j = lambda + std::size_t(j) * m;
-                // c h_b of the stored entries: s_b^2 (H . (lambda_i + lambda_j)) H.
-                const double c = s_b * s_b * change_of(h_b, lambda_i.data(), lambda_j);
-                for (unsigned int k = 0; k < m; ++k)
-                  sum_i[k] += c * h_b[k];
-                if (j < n_owned)
-                  for (unsigned int k = 0; k < m; ++k)
-                    sums[std::size_t(j) * m + k] += c * h_b[k];
-              }
-            for (unsigned int k = 0; k < m; ++k)
-              sums[i * m + k] += sum_i[k];
-          }
-        src.zero_out_ghost_values();
-      }
-
-      const ParticleSystem<dim> &particles;
-      /**
-       * The entries h_b = s_b H of each bond (stored: forming them from the bond's direction in
-       * each product with the operator took 1.5 times as long). On a lattice without
-       * perturbation, H is that of the bond's lattice vector, one table entry per vector
-       * (by_vector), and s_b the bond's own factor (scales): 10 B per bond instead of 168, and
-       * the table stays in the cache. Otherwise every bond has its own H = h_b (s_b = 1).
-       */
-      ///@{
-      bool                       by_vector = false;
-      std::vector<double>        table;
-      std::vector<std::uint16_t> vector_of;
-      std::vector<double>        scales;
-      ///@}
-
-      /// H of bond @p b (m entries).
-      const double *
-      h(const std::size_t b) const
-      {
-        return table.data() + (by_vector ? std::size_t(vector_of[b]) : b) * m;
-      }
-      /// s_b of bond @p b.
-      double
-      scale(const std::size_t b) const
-      {
-        return by_vector ? scales[b] : 1.;
-      }
-      double regularization = 0.;
-      /// Whether a bond's factor is fitted (1) or held at a bound (0; the bound in fixed).
-      std::vector<std::uint8_t> free;
-      std::vector<double>       fixed;
-    };
-
-    /**
-     * @brief The block-Jacobi preconditioner of the normal equations: per owned particle the
-     * inverse of its diagonal block rho I + sum over its free bonds of h_b h_b^T (m^2 doubles
-     * per particle, from the block's Cholesky factor). The multipliers of a particle are
-     * strongly coupled (every h_b touches all of them): the point-Jacobi preconditioner needed
-     * four times the iterations. The inverse is applied as a dense product, column by column
-     * (the triangular solves of the factor are chains of dependent operations, 3 times slower).
-     */
-    template <int dim>
-    class BlockJacobi
-    {
-    public:
-      static constexpr unsigned int m = Voigt<dim>::unique;
-
-      /// The inverses of the blocks of the free bonds of @p equations: of every owned particle,
-      /// or (@p changed) of those marked, whose bonds changed since the last call.
-      void
-      reinit(const NormalEquations<dim> &equations, const std::vector<std::uint8_t> *changed)
-      {
-        const ParticleSystem<dim> &particles = equations.particles;
-        const BondList            &bonds     = particles.bonds();
-        const unsigned int         n_owned   = particles.n_owned();
-        const auto redo = [&](const unsigned int i) { return !changed || (*changed)[i]; };
-        // The blocks' lower triangles, entry (p, q), q <= p, at p m + q.
-        inverses.resize(std::size_t(n_owned) * m * m);
-        for (unsigned int i = 0; i < n_owned; ++i)
-          if (redo(i))
-            std::fill_n(inverses.begin() + std::size_t(i) * m * m, m * m, 0.);
-        const auto add = [&](const unsigned int i, const double *h_b, const double s_b) {
-          double *block = inverses.data() + std::size_t(i) * m * m;
-          for (unsigned int p = 0; p < m; ++p)
-            for (unsigned int q = 0; q <= p; ++q)
-              block[p * m + q] += (s_b * h_b[p]) * (s_b * h_b[q]);
-        };
-        for (unsigned int i = 0; i < n_owned; ++i)
-          for (unsigned int b = bonds.row_start[i]; b < bonds.row_start[i + 1]; ++b)
-            if (equations.free[b])
-              {
-                const unsigned int j = bonds.neighbor[b];
-                if (redo(i))
-                  add(i, equations.h(b), equations.scale(b));
-                if (j < n_owned && redo(j))
-                  add(j, equations.h(b), equations.scale(b));
-              }
-        for (unsigned int i = 0; i < n_owned; ++i)
-          if (redo(i))
-            {
-              double *block = inverses.data() + std::size_t(i) * m * m;
-              // Cholesky L L^T of the block, then its inverse column by column.
-              std::array<double, m * m> l{};
-              for (unsigned int p = 0; p < m; ++p)
-                for (unsigned int q = 0; q <= p; ++q)
-                  {
-                    double s = block[p * m + q] + (p == q ? equations.regularization : 0.);
-                    for (unsigned int r = 0; r < q; ++r)
-                      s -= l[p * m + r] * l[q * m + r];
-                    l[p * m + q] = p == q ? std::sqrt(s) : s / l[q * m + q];
-                  }
-              for (unsigned int c = 0; c < m; ++c)
-                {
-                  std::array<double, m> y;
-                  for (unsigned int p = 0; p < m; ++p)
-                    {
-                      double s = p == c ? 1. : 0.;
-                      for (unsigned int r = 0; r < p; ++r)
-                        s -= l[p * m + r] * y[r];
-                      y[p] = s / l[p * m + p];
-                    }
-                  for (unsigned int p = m; p-- > 0;)
-                    {
-                      double s = y[p];
-                      for (unsigned int r = p + 1; r < m; ++r)
-                        s -= l[r * m + p] * y[r];
-                      y[p] = s / l[p * m + p];
-                    }
-                  for (unsigned int p = 0; p < m; ++p)
-                    block[c * m + p] = y[p];
-                }
-            }
-      }
-
-      /// dst = the blocks' inverses times src (owned entries).
-      void
-      vmult(ParticleVector &dst, const ParticleVector &src) const
-      {
-        const unsigned int n = inverses.size() / (m * m);
-        for (unsigned int i = 0; i < n; ++i)
-          {
-            const double         *inverse = inverses.data() + std::size_t(i) * m * m;
-            const double         *x       = src.begin() + std::size_t(i) * m;
-            double               *y       = dst.begin() + std::size_t(i) * m;
-            std::array<double, m> sum{};
-            for (unsigned int c = 0; c < m; ++c)
-              for (unsigned int p = 0; p < m; ++p)
-                sum[p] += inverse[c * m + p] * x[c];
-            std::copy(sum.begin(), sum.end(), y);
-          }
-      }
-
-    private:
-      std::vector<double> inverses;
-    };
-  } // namespace
-
-  namespace
-  {
     /**
      * @brief The entries h_b of the bonds of @p particles (NormalEquations::table): by lattice
      * vector if the particles sit on an unperturbed lattice, else per bond.
@@ -408,7 +114,10 @@ namespace perideal
       by_vector = Utilities::MPI::min(by_vector ? 1 : 0, particles.get_communicator()) == 1;
       equations.by_vector = by_vector;
       if (by_vector)
-        return;
+        {
+          equations.set_classes();
+          return;
+        }
       equations.vector_of.clear();
       equations.scales.clear();
       equations.table.assign(bonds.size() * m, 0.);
@@ -523,6 +232,7 @@ namespace perideal
             if (round > 0)
               deviation(nullptr);
             preconditioner.reinit(equations, round == 0 ? nullptr : &changed);
+            equations.sort_free_bonds();
           }
         // Warm start: each round begins from the last round's multipliers.
         const double             target = 1e-10 * rhs.l2_norm();
