@@ -109,6 +109,8 @@ namespace perideal
     {
       /// k = G chi V_i V_j per lane.
       const double *coefficient = nullptr;
+      /// The lane states (BondBlocks::state()), read only to prefetch them.
+      const std::uint8_t *state = nullptr;
       /// The class table (class_table(): TimoshenkoClass of the law's dimension).
       const void *classes = nullptr;
       double      C_N = 0., C_theta = 0., C_B = 0.;
@@ -196,6 +198,8 @@ namespace perideal
         // The pair coefficients stream from memory (8 B per lane, larger than the caches on
         // the benchmark lattices); without a prefetch each block waited for its line.
         __builtin_prefetch(p.coefficient + first_lane + prefetch_lanes);
+        if (first_lane % (8 * bond_simd::width) == 0)
+          __builtin_prefetch(p.state + first_lane + prefetch_lanes);
         const auto     &f  = frame(bond);
         const auto     &il = bond.inverse_length;
         const auto     &n  = f.n;
