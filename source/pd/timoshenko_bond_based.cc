@@ -50,8 +50,14 @@ namespace perideal
     template <int dim, typename Value>
     struct TimoshenkoFrame
     {
+      /// n = xi/|xi| and n/2.
+      ///@{
       Value n[dim], half_n[dim];
+      ///@}
+      /// 12 C_theta/|xi|^2, 6 C_theta/|xi| and C_B/|xi|.
+      ///@{
       Value shear, arm, bend;
+      ///@}
     };
 
     /// The TimoshenkoFrame of the reference bond @p xi, @p inverse_length with the bond
@@ -80,8 +86,11 @@ namespace perideal
     template <int dim>
     struct TimoshenkoClass : TimoshenkoFrame<dim, double>
     {
+      /// The lattice vector [m], its length [m] and inverse length [1/m] (BondClass).
+      ///@{
       std::array<double, dim> xi;
       double                  length, inverse_length;
+      ///@}
     };
 
     /// The TimoshenkoClass of every bond class of @p blocks, in the order of its classes().
