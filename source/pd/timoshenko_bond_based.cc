@@ -8,6 +8,8 @@
 
 #include <cmath>
 #include <limits>
+#include <type_traits>
+#include <vector>
 
 namespace perideal
 {
@@ -38,13 +40,89 @@ namespace perideal
     };
 
     /**
+     * @brief What the pair law reads of a bond's reference direction besides |xi| and 1/|xi|:
+     * n = xi/|xi|, n/2 (the mean rotation's factor ½ taken into the direction: exact) and the
+     * coefficients of the shear force 12 C_theta/|xi|^2, of the moment arm 6 C_theta/|xi| and of
+     * the bending moment C_B/|xi| per unit pair coefficient k, each rounded as the law has
+     * always formed it; Value double (a bond class) or bond_simd::Vector (the lanes of a
+     * perturbed lattice).
+     */
+    template <int dim, typename Value>
+    struct TimoshenkoFrame
+    {
+      /// n = xi/|xi| and n/2.
+      ///@{
+      Value n[dim], half_n[dim];
+      ///@}
+      /// 12 C_theta/|xi|^2, 6 C_theta/|xi| and C_B/|xi|.
+      ///@{
+      Value shear, arm, bend;
+      ///@}
+    };
+
+    /// The TimoshenkoFrame of the reference bond @p xi, @p inverse_length with the bond
+    /// stiffnesses @p C_theta, @p C_B.
+    template <int dim, typename Value, typename Xi>
+    DEAL_II_ALWAYS_INLINE inline TimoshenkoFrame<dim, Value>
+    make_frame(const Xi &xi, const Value &inverse_length, const double C_theta, const double C_B)
+    {
+      TimoshenkoFrame<dim, Value> f;
+      for (unsigned int d = 0; d < dim; ++d)
+        {
+          f.n[d]      = xi[d] * inverse_length;
+          f.half_n[d] = 0.5 * f.n[d];
+        }
+      f.shear = 12. * C_theta * inverse_length * inverse_length;
+      f.arm   = 6. * C_theta * inverse_length;
+      f.bend  = C_B * inverse_length;
+      return f;
+    }
+
+    /**
+     * @brief A bond class of the law's own class table (for_each_bond_block()): the members of
+     * the BondBlocks::BondClass and its TimoshenkoFrame, formed once per force evaluation
+     * instead of once per block.
+     */
+    template <int dim>
+    struct TimoshenkoClass : TimoshenkoFrame<dim, double>
+    {
+      /// The lattice vector [m], its length [m] and inverse length [1/m] (BondClass).
+      ///@{
+      std::array<double, dim> xi;
+      double                  length, inverse_length;
+      ///@}
+    };
+
+    /// The TimoshenkoClass of every bond class of @p blocks, in the order of its classes().
+    template <int dim>
+    std::vector<TimoshenkoClass<dim>>
+    class_table(const BondBlocks<dim> &blocks, const double C_theta, const double C_B)
+    {
+      std::vector<TimoshenkoClass<dim>> table(blocks.classes().size());
+      for (unsigned int i = 0; i < table.size(); ++i)
+        {
+          const auto &c = blocks.classes()[i];
+          static_cast<TimoshenkoFrame<dim, double> &>(table[i]) =
+            make_frame<dim, double>(c.xi, c.inverse_length, C_theta, C_B);
+          table[i].xi             = c.xi;
+          table[i].length         = c.length;
+          table[i].inverse_length = c.inverse_length;
+        }
+      return table;
+    }
+
+    /**
      * @brief The constants and per-lane arrays a TimoshenkoPairLaw reads.
      */
     struct TimoshenkoLawData
     {
       /// k = G chi V_i V_j per lane.
       const double *coefficient = nullptr;
-      double        C_N = 0., C_theta = 0., C_B = 0.;
+      /// The lane states (BondBlocks::state()), read only to prefetch them.
+      const std::uint8_t *state = nullptr;
+      /// The class table (class_table(): TimoshenkoClass of the law's dimension).
+      const void *classes = nullptr;
+      double      C_N = 0., C_theta = 0., C_B = 0.;
       /// 1/s_0, 1/gamma_0, 1/kappa_0 (0: that mode does not fail).
       double inverse_limit[3] = {0., 0., 0.};
       /// 1/s_0 of compression (s < 0): inverse_limit[0] but with a <Compressive strength>.
@@ -82,8 +160,19 @@ namespace perideal
       static constexpr unsigned int n_inputs     = dim + n_rot + (thermal ? 1 : 0);
       static constexpr unsigned int n_outputs    = dim + n_rot + (with_energy ? 1 : 0);
       static constexpr bool         breaks_bonds = true;
-      static constexpr bool         softens      = softening;
-      TimoshenkoLawData             p;
+      /// How far ahead strain() prefetches the pair coefficients: 16 blocks.
+      static constexpr std::size_t prefetch_lanes = 16 * bond_simd::width;
+      /// The strain's `stretch` is the square of the failure measure (for_each_bond_block()).
+      static constexpr bool squared_stretch = true;
+      static constexpr bool softens         = softening;
+      TimoshenkoLawData     p;
+
+      /// The class table of the loop (p.classes).
+      const TimoshenkoClass<dim> *
+      class_table() const
+      {
+        return static_cast<const TimoshenkoClass<dim> *>(p.classes);
+      }
 
       struct Side
       {};
@@ -93,20 +182,38 @@ namespace perideal
         return {};
       }
 
+      /// The frame of the reference bond @p bond: its class's (formed once per evaluation) on
+      /// a regular lattice, the lanes' own on a perturbed one.
       template <typename Bond>
-      BondStrain<dim>
-      strain(const Bond &bond,
-             const std::size_t /*first_lane*/,
-             const Vector *u_a,
-             const Vector *u_b) const
+      DEAL_II_ALWAYS_INLINE inline decltype(auto)
+      frame(const Bond &bond) const
       {
-        using Value = BondValue<Bond>;
+        if constexpr (std::is_same_v<Bond, TimoshenkoClass<dim>>)
+          return static_cast<const TimoshenkoFrame<dim, double> &>(bond);
+        else
+          return make_frame<dim, Vector>(bond.xi, bond.inverse_length, p.C_theta, p.C_B);
+      }
+
+      // strain() and pair() inlined into the loop whatever their size (GCC 12 outlined the
+      // strain of the regular lattice once it had the class table: a call per block, its
+      // arguments through memory).
+      template <typename Bond>
+      DEAL_II_ALWAYS_INLINE inline BondStrain<dim>
+      strain(const Bond       &bond,
+             const std::size_t first_lane,
+             const Vector     *u_a,
+             const Vector     *u_b) const
+      {
+        // The pair coefficients stream from memory (8 B per lane, larger than the caches on
+        // the benchmark lattices); without a prefetch each block waited for its line.
+        __builtin_prefetch(p.coefficient + first_lane + prefetch_lanes);
+        if (first_lane % (8 * bond_simd::width) == 0)
+          __builtin_prefetch(p.state + first_lane + prefetch_lanes);
+        const auto     &f  = frame(bond);
+        const auto     &il = bond.inverse_length;
+        const auto     &n  = f.n;
         BondStrain<dim> y;
-        const Value     il = bond.inverse_length;
-        Value           n[dim];
-        for (unsigned int d = 0; d < dim; ++d)
-          n[d] = bond.xi[d] * il;
-        Vector eta[dim];
+        Vector          eta[dim];
         y.s = 0.;
         for (unsigned int d = 0; d < dim; ++d)
           {
@@ -123,16 +230,17 @@ namespace perideal
           }
         else
           {
-            // gamma = (eta - (n . eta) n)/|xi| - (theta_a + theta_b) x n / 2.
-            Vector t[3], k[3];
+            // gamma = (eta - (n . eta) n)/|xi| - (theta_a + theta_b) x n / 2, the ½ in n/2.
+            const auto &h = f.half_n;
+            Vector      t[3], k[3];
             for (unsigned int d = 0; d < 3; ++d)
               {
-                t[d] = 0.5 * (u_a[3 + d] + u_b[3 + d]);
+                t[d] = u_a[3 + d] + u_b[3 + d];
                 k[d] = u_b[3 + d] - u_a[3 + d];
               }
-            const Vector tn[3] = {t[1] * n[2] - t[2] * n[1],
-                                  t[2] * n[0] - t[0] * n[2],
-                                  t[0] * n[1] - t[1] * n[0]};
+            const Vector tn[3] = {t[1] * h[2] - t[2] * h[1],
+                                  t[2] * h[0] - t[0] * h[2],
+                                  t[0] * h[1] - t[1] * h[0]};
             const Vector kn    = k[0] * n[0] + k[1] * n[1] + k[2] * n[2];
             for (unsigned int d = 0; d < 3; ++d)
               {
@@ -145,11 +253,14 @@ namespace perideal
         y.s *= il;
         if constexpr (thermal)
           y.s -= p.expansion * bond_temperature_change(u_a, u_b, dim + n_rot);
-        const Vector a  = axial_inverse_limit(y.s);
-        const Vector x2 = stdx::max(y.s * y.s * (a * a),
+        // (1/s_0)^2 of the sign of s.
+        Vector a2                 = p.inverse_limit[0] * p.inverse_limit[0];
+        stdx::where(y.s < 0., a2) = p.inverse_compression * p.inverse_compression;
+        const Vector x2           = stdx::max(y.s * y.s * a2,
                                     stdx::max(gamma2 * (p.inverse_limit[1] * p.inverse_limit[1]),
                                               kappa2 * (p.inverse_limit[2] * p.inverse_limit[2])));
-        y.stretch       = stdx::sqrt(x2);
+        // The square of the failure measure: the loop takes the root where it may break.
+        y.stretch = x2;
         return y;
       }
 
@@ -163,7 +274,7 @@ namespace perideal
       }
 
       template <typename Bond>
-      void
+      DEAL_II_ALWAYS_INLINE inline void
       pair(const Bond            &bond,
            const BondStrain<dim> &y,
            const Side &,
@@ -171,12 +282,9 @@ namespace perideal
            Vector          *to_a,
            Vector          *to_b) const
       {
-        using Value    = BondValue<Bond>;
-        const Value il = bond.inverse_length, l = bond.length;
-        Value       n[dim];
-        for (unsigned int d = 0; d < dim; ++d)
-          n[d] = bond.xi[d] * il;
-        Vector k = 0.;
+        const auto &f = frame(bond);
+        const auto &n = f.n;
+        Vector      k = 0.;
         stdx::where(lanes.active, k) =
           Vector(p.coefficient + lanes.first_lane, stdx::element_aligned);
         Vector k_s = k, k_g = k, k_b = k;
@@ -192,9 +300,9 @@ namespace perideal
         // f = p.C_N s n + 12 p.C_theta gamma / |xi|^2; m = 6 p.C_theta n x gamma / |xi| +- p.C_B
         // kappa / |xi|.
         const Vector axial = (p.C_N * k_s) * y.s;
-        const Vector shear = (12. * p.C_theta * il * il) * k_g;
-        const Vector arm   = (6. * p.C_theta * il) * k_g;
-        const Vector bend  = (p.C_B * il) * k_b;
+        const Vector shear = f.shear * k_g;
+        const Vector arm   = f.arm * k_g;
+        const Vector bend  = f.bend * k_b;
         if constexpr (dim == 2)
           {
             const Vector fg = shear * y.gamma[0];
@@ -229,7 +337,8 @@ namespace perideal
               b2 += y.kappa[d] * y.kappa[d];
             // w = p.C_N |xi| s^2 / 2 + 6 p.C_theta gamma^2 / |xi| + p.C_B kappa^2 / (2 |xi|), k w /
             // 2 per end.
-            const Vector e      = 0.25 * (axial * y.s * l + shear * g2 * l + bend * b2);
+            const Vector e =
+              0.25 * (axial * y.s * bond.length + shear * g2 * bond.length + bend * b2);
             to_a[n_outputs - 1] = e;
             to_b[n_outputs - 1] = e;
           }
@@ -396,6 +505,8 @@ namespace perideal
       }
     base.softening_parameter = softening;
     base.commit              = breaks;
+    const auto classes       = class_table(k.blocks, base.C_theta, base.C_B);
+    base.classes             = classes.data();
     base.expansion           = bond_expansion();
     if (breaks)
       k.largest_growth = 0.;
@@ -450,11 +561,13 @@ namespace perideal
   {
     Kernel                   &k = *kernel;
     TimoshenkoMeasureLaw<dim> law;
-    law.p.coefficient = k.lane_coefficient.data();
-    law.p.C_N         = bond_stiffness.normal;
-    law.p.C_theta     = bond_stiffness.shear;
-    law.p.C_B         = bond_stiffness.bending;
-    law.p.expansion   = bond_expansion();
+    law.p.coefficient  = k.lane_coefficient.data();
+    law.p.C_N          = bond_stiffness.normal;
+    law.p.C_theta      = bond_stiffness.shear;
+    law.p.C_B          = bond_stiffness.bending;
+    law.p.expansion    = bond_expansion();
+    const auto classes = class_table(k.blocks, law.p.C_theta, law.p.C_B);
+    law.p.classes      = classes.data();
     // The secant factors of softening bonds, as the forces take them.
     if (failure == FailureLaw::softening)
       law.p.factor[0] = k.factor[0].data();

@@ -36,6 +36,44 @@ namespace perideal
 
   namespace internal
   {
+    /// The bond classes a pair law reads (for_each_bond_block()): the blocks' classes, or the
+    /// law's own table if it has one (`law.class_table()`).
+    template <typename PairLaw, int dim, typename = void>
+    struct ClassTable
+    {
+      /// BondBlocks::classes() of @p blocks.
+      static const typename BondBlocks<dim>::BondClass *
+      get(const PairLaw &, const BondBlocks<dim> &blocks)
+      {
+        return blocks.classes().data();
+      }
+    };
+
+    /// The law's own class table.
+    template <typename PairLaw, int dim>
+    struct ClassTable<PairLaw,
+                      dim,
+                      std::void_t<decltype(std::declval<const PairLaw &>().class_table())>>
+    {
+      /// `law.class_table()` of @p law.
+      static auto
+      get(const PairLaw &law, const BondBlocks<dim> &)
+      {
+        return law.class_table();
+      }
+    };
+
+    /// Whether the `stretch` of a pair law's strain is the square of the measure that breaks a
+    /// bond (`PairLaw::squared_stretch`; false if the law does not say).
+    template <typename PairLaw, typename = void>
+    inline constexpr bool squared_stretch = false;
+
+    /// The law's `squared_stretch`.
+    template <typename PairLaw>
+    inline constexpr bool
+      squared_stretch<PairLaw, std::void_t<decltype(PairLaw::squared_stretch)>> =
+        PairLaw::squared_stretch;
+
     /// for_each_bond_block() with the reference bonds of the classes (@p lane_bonds false) or
     /// of the lanes (true: a perturbed lattice).
     template <bool lane_bonds, unsigned int n_components, int dim, typename PairLaw>
@@ -48,16 +86,21 @@ namespace perideal
                     const double                                   critical_stretch)
     {
       using namespace bond_simd;
-      using BondClass                                     = typename BondBlocks<dim>::BondClass;
       constexpr unsigned int                   n_outputs  = PairLaw::n_outputs;
       const std::size_t                        n_entries  = blocks.groups().size();
       const auto                              *groups     = blocks.groups().data();
       const auto                              *block_list = blocks.blocks().data();
-      const BondClass                         *classes    = blocks.classes().data();
-      const std::uint8_t                      *state      = blocks.state();
+      const auto                              *classes = ClassTable<PairLaw, dim>::get(law, blocks);
+      const std::uint8_t                      *state   = blocks.state();
       typename BondBlocks<dim>::LaneBondArrays lane_arrays{};
       if constexpr (lane_bonds)
         lane_arrays = blocks.lane_bond_arrays();
+      // A law whose strain holds the squared measure: the blocks where the squared measure
+      // exceeds the square of the threshold less a margin are tested with the measure itself
+      // (sqrt is monotone and correctly rounded: sqrt(x) > c implies x > c^2 > test).
+      constexpr bool squared = squared_stretch<PairLaw>;
+      const double   test =
+        squared ? critical_stretch * critical_stretch * (1. - 1e-6) : critical_stretch;
       const auto add_to = [](double *target, const Vector &value) {
         Vector sum(target, stdx::element_aligned);
         sum += value;
@@ -87,22 +130,25 @@ namespace perideal
               Vector u_b[n_components];
               for (unsigned int c = 0; c < n_components; ++c)
                 u_b[c].copy_from(u[c] + lanes.neighbour, stdx::element_aligned);
-              // The block's reference bonds: its class's lattice vector, or the lanes' own.
-              const auto bond = [&]() {
+              // The block's reference bonds: its class's lattice vector (the element of the
+              // class table itself, not a copy), or the lanes' own.
+              const auto &bond = [&]() -> decltype(auto) {
                 if constexpr (lane_bonds)
                   return BondBlocks<dim>::lane_bonds(lane_arrays,
                                                      x_a,
                                                      lanes.first_lane,
                                                      lanes.neighbour);
                 else
-                  return classes[block.bond_class];
+                  return (classes[block.bond_class]);
               }();
               const auto strain = law.strain(bond, lanes.first_lane, u_a, u_b);
               lanes.active      = intact_lanes(state + lanes.first_lane);
               if constexpr (PairLaw::breaks_bonds)
-                if (stdx::any_of(lanes.active && (strain.stretch > critical_stretch)))
+                if (stdx::any_of(lanes.active && (strain.stretch > test)))
                   {
-                    const Vector stretch = strain.stretch;
+                    Vector stretch = strain.stretch;
+                    if constexpr (squared)
+                      stretch = stdx::sqrt(stretch);
                     blocks.break_lanes(stretch, critical_stretch, q, bonds);
                     lanes.active = intact_lanes(state + lanes.first_lane);
                   }
@@ -138,7 +184,10 @@ namespace perideal
    *    (any type; per-lane arrays are read at first_lane = lanes.first_lane; with a
    *    bond_simd::Vector member `stretch` if it breaks bonds: intact breakable lanes whose
    *    stretch exceeds @p critical_stretch are broken in the lanes and in @p bonds,
-   *    BondBlocks::break_lanes(), before the pair is evaluated);
+   *    BondBlocks::break_lanes(), before the pair is evaluated; a law with
+   *    `static constexpr bool squared_stretch = true` gives the square of the measure instead,
+   *    and the loop takes the square root only in the rare blocks where the square comes
+   *    near the threshold's: the same bonds break);
    *  - `pair(bond, strain, side, lanes, to_a, to_b)`: the contributions to_a[k] and
    *    to_b[k] of the block's bonds to output k at the particle side and at the neighbour side
    *    (zero in lanes that are not lanes.active); per-lane arrays are read at lanes.first_lane,
@@ -147,7 +196,11 @@ namespace perideal
    * `bond` is the block's reference bond: its BondBlocks::BondClass (scalars: xi, length,
    * inverse_length) on a regular lattice, a BondBlocks::LaneBond (the same members, one value
    * per lane) on a perturbed one, so a law writes strain() and pair() as templates of the bond
-   * type (BondValue<Bond> is double or bond_simd::Vector). One branch per call picks the loop.
+   * type (BondValue<Bond> is double or bond_simd::Vector). A law may bring its own class
+   * table, `class_table()`: a pointer to one element per class of BondBlocks::classes(), in its
+   * order, with at least a BondClass's members (xi, length, inverse_length) and whatever
+   * constants the law forms once per class; the loop then hands the law these elements. One
+   * branch per call picks the loop.
    *
    * The loop adds to_b to the neighbours' entries at once and keeps the sums of to_a in
    * registers until the group ends. @p bonds and @p critical_stretch are read only if the law

@@ -65,6 +65,7 @@ namespace perideal
       if constexpr (Law::n_outputs > n_components)
         out[n_components] = blocks.component(w_field, 0);
       law.p.coefficient = lane_coefficient.data();
+      law.p.state       = blocks.state();
       if constexpr (Law::softens)
         {
           for (unsigned int m = 0; m < 3; ++m)
