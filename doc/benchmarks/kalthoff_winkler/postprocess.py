@@ -251,13 +251,19 @@ def plot_specimen(directory, series, base, out, n_panels=4):
         ax.set_aspect("equal")
         ax.set_title("t = %.0f us, %d particles" % (time * 1e6, len(nodes)), fontsize=8)
         ax.set_xlabel("x [mm]")
+    finish_specimen(fig, axes, limit, "Whole specimen: FE field where FE remains, particles (the "
+                    "PD zone) with their damage,\noutline of the FE part (black)", out)
+
+
+def finish_specimen(fig, axes, limit, title, out):
+    """The y label, the colour bars of the FE stress (0 to limit [Pa]) and of the particles'
+    damage, the title; writes the figure to out (plot_specimen(), and the 3D script's)."""
     np.atleast_1d(axes)[0].set_ylabel("y [mm]")
     fig.colorbar(plt.cm.ScalarMappable(Normalize(0.0, limit * 1e-6), "viridis"),
                  ax=axes, shrink=0.6, label="FE von Mises stress [MPa]")
     fig.colorbar(plt.cm.ScalarMappable(Normalize(0.0, 1.0), "hot_r"), ax=axes, shrink=0.6,
                  label="particle damage index")
-    fig.suptitle("Whole specimen: FE field where FE remains, particles (the PD zone) with "
-                 "their damage,\noutline of the FE part (black)", fontsize=8)
+    fig.suptitle(title, fontsize=8)
     fig.savefig(out, dpi=150)
     plt.close(fig)
 

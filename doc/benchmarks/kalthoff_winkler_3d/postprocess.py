@@ -40,8 +40,8 @@ here = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, os.path.join(here, ".."))
 sys.path.insert(0, os.path.join(here, "..", "kalthoff_winkler"))
 from particle_series import read_particles, read_series  # noqa: E402
-from postprocess import (lattice_spacing, measure_crack, new_damage, plot_damage,  # noqa: E402
-                         plot_energies, read_statistics)
+from postprocess import (finish_specimen, lattice_spacing, measure_crack,  # noqa: E402
+                         new_damage, plot_damage, plot_energies, read_statistics)
 from matplotlib.collections import PolyCollection  # noqa: E402
 from matplotlib.colors import Normalize  # noqa: E402
 
@@ -136,15 +136,8 @@ def plot_fe_stress(directory, series, out, n_panels=4):
         ax.set_aspect("equal")
         ax.set_title("t = %.0f us, %d particles" % (time * 1e6, len(nodes)), fontsize=8)
         ax.set_xlabel("x [mm]")
-    np.atleast_1d(axes)[0].set_ylabel("y [mm]")
-    fig.colorbar(plt.cm.ScalarMappable(Normalize(0.0, limit * 1e-6), "viridis"), ax=axes,
-                 shrink=0.6, label="FE von Mises stress [MPa]")
-    fig.colorbar(plt.cm.ScalarMappable(Normalize(0.0, 1.0), "hot_r"), ax=axes, shrink=0.6,
-                 label="particle damage index")
-    fig.suptitle("Mid-thickness plane: FE stress where FE remains, the middle particle layer "
-                 "(the PD zone) with its damage", fontsize=8)
-    fig.savefig(out, dpi=150)
-    plt.close(fig)
+    finish_specimen(fig, axes, limit, "Mid-thickness plane: FE stress where FE remains, the "
+                    "middle particle layer (the PD zone) with its damage", out)
 
 
 def middle(values):
