@@ -58,6 +58,8 @@ dx2=(-e "s|Lattice spacing = 1e-3|Lattice spacing = 2e-3|" -e "s|Upper corner = 
   -e "s|0\.019$|0.020|")
 dx05=(-e "s|Lattice spacing = 1e-3|Lattice spacing = 0.5e-3|" -e "s|Upper corner = 1e-3,|Upper corner = 0.5e-3,|"
   -e "s|0\.019$|0.0185|")
+dx04=(-e "s|Lattice spacing = 1e-3|Lattice spacing = 0.4e-3|" -e "s|Upper corner = 1e-3,|Upper corner = 0.4e-3,|"
+  -e "s|0\.019$|0.0184|")
 # dx = 1.5 mm: 50 mm is no multiple of it; the specimen [-9, 39] x [-24, 24] mm keeps the load
 # line at x = dx/2 and the notch tip midway between two particle columns (x = 19.5 mm): W =
 # 38.25 mm, a/W = 0.490.
@@ -106,6 +108,9 @@ variant full_pd m_4 "${m4[@]}" -e "$(notch 0.020 1 0 -0.01)" "${law[@]}"
 # Not in the default set (it ran 71 min on one rank and was stopped at event 687):
 variant full_pd dx_0.5mm_m_4 "${dx05[@]}" "${m4[@]}" -e "$(notch 0.020 0.5 0 -0.01)" "${law[@]}" \
  
+# Not in the default set either (2 ranks, 40 min for 224 events; README "Converging to LEFM"):
+variant full_pd dx_0.4mm_m_4 "${dx04[@]}" "${m4[@]}" -e "$(notch 0.020 0.4 0 -0.01)" "${law[@]}" \
+ 
 # The LEFM load of the PD specimen itself (compliance.py): the first event only (the elastic state,
 # brittle bonds: the law does not enter it), the notch's end at x_t + (s - 0.001) dx, s = -1, 0, 1
 # (one column of bonds fewer and more, the ties intact), for dx = 2, 1.5, 1, 0.5 mm and m = 3, 4.
@@ -152,7 +157,7 @@ finished() { for name in "$@"; do [ -f "results/$name/statistics.csv" ] && echo 
 some() { [ -n "$(finished "$@")" ]; }
 brittle_runs="brittle_dx_2mm_m_2 brittle_dx_1.5mm_m_2 brittle_m_2 brittle_dx_2mm brittle_dx_1.5mm"
 brittle_runs="$brittle_runs brittle_full_pd brittle_dx_0.5mm brittle_dx_2mm_m_4 brittle_dx_1.5mm_m_4 brittle_m_4"
-soft_runs="dx_2mm dx_1.5mm dx_1mm dx_0.5mm dx_2mm_m_4 dx_1.5mm_m_4 m_4 dx_0.5mm_m_4"
+soft_runs="dx_2mm dx_1.5mm dx_1mm dx_0.5mm dx_2mm_m_4 dx_1.5mm_m_4 m_4 dx_0.5mm_m_4 dx_0.4mm_m_4"
 if some brittle_dx_2mm brittle_full_pd brittle_dx_0.5mm brittle_m_2 brittle_m_4; then
   echo "== brittle bonds: convergence with dx (delta = 3.015 dx) and with m = delta/dx (dx = 1 mm)"
   /usr/bin/python3 postprocess.py $(finished brittle_dx_2mm brittle_full_pd brittle_dx_0.5mm) |
