@@ -105,6 +105,11 @@ namespace perideal
                 ExcMessage("<Solver/Control/Method> = sequentially linear needs <Solver/Type> = "
                            "static: it scales the linear solution of each event, which only the "
                            "linearized static solve gives."));
+    AssertThrow(control.method == LoadControl::load_steps ||
+                  (settings.checkpoint_interval == 0 && settings.checkpoint_time_interval == 0.),
+                ExcMessage("<Solver/Control/Method> = sequentially linear writes no checkpoints "
+                           "yet (its peak load is not stored): set <Output/Checkpoint interval> "
+                           "and <Output/Checkpoint time interval> to off."));
     pd.parse_parameters(prm);
     fe.parse_parameters(prm, pd.planar_assumption(), pd.discretization().thickness);
     // A polycrystal's grains are a particle feature: an FE region needs the homogenized

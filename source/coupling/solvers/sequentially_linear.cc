@@ -133,12 +133,10 @@ namespace perideal
                                Checkpoint<dim>     &checkpoint)
   {
     const auto &settings = state.settings();
-    AssertThrow(!checkpoint.restarting() && settings.checkpoint_interval == 0 &&
-                  settings.checkpoint_time_interval == 0.,
+    // The checkpoint intervals are refused when the parameters are read (CoupledProblem).
+    AssertThrow(!checkpoint.restarting(),
                 ExcMessage("<Solver/Control/Method> = sequentially linear writes no checkpoints "
-                           "yet (its peak load is not stored): set <Output/Checkpoint interval> "
-                           "and <Output/Checkpoint time interval> to 0 and run without "
-                           "--restart."));
+                           "yet (its peak load is not stored): run without --restart."));
     auto        &pd       = state.pd();
     auto        &ps       = pd.particles();
     const double infinity = std::numeric_limits<double>::infinity();
