@@ -110,6 +110,14 @@ namespace perideal
                 ExcMessage("<Solver/Control/Method> = sequentially linear writes no checkpoints "
                            "yet (its peak load is not stored): set <Output/Checkpoint interval> "
                            "and <Output/Checkpoint time interval> to off."));
+    AssertThrow(control.cut_threshold == 0 || control.method != LoadControl::load_steps ||
+                  settings.solver_type == SolverType::explicit_dynamics ||
+                  settings.solver_type == SolverType::implicit ||
+                  (settings.checkpoint_interval == 0 && settings.checkpoint_time_interval == 0.),
+                ExcMessage("Load steps cut by <Solver/Control/Cut above broken bonds> write no "
+                           "checkpoints yet (the current increment is not stored): set <Output/"
+                           "Checkpoint interval> and <Output/Checkpoint time interval> to off, or "
+                           "<Cut above broken bonds> to 0."));
     pd.parse_parameters(prm);
     fe.parse_parameters(prm, pd.planar_assumption(), pd.discretization().thickness);
     // A polycrystal's grains are a particle feature: an FE region needs the homogenized

@@ -252,12 +252,11 @@ namespace perideal
 
     // Cutting steps: the increment is not stored in checkpoints.
     const bool cutting = control.cut_threshold > 0;
-    AssertThrow(!cutting || (!checkpoint.restarting() && settings.checkpoint_interval == 0 &&
-                             settings.checkpoint_time_interval == 0.),
+    // The checkpoint intervals are refused when the parameters are read (CoupledProblem).
+    AssertThrow(!cutting || !checkpoint.restarting(),
                 ExcMessage("Load steps cut by <Solver/Control/Cut above broken bonds> write no "
-                           "checkpoints yet (the current increment is not stored): set <Output/"
-                           "Checkpoint interval> and <Output/Checkpoint time interval> to 0 and "
-                           "run without --restart, or set <Cut above broken bonds> to 0."));
+                           "checkpoints yet (the current increment is not stored): run without "
+                           "--restart, or set <Cut above broken bonds> to 0."));
 
     // What a restart must keep: the solver and its load steps (not its tolerance, iterations or
     // linear solver, which a restart after a step that did not converge may change).
