@@ -1,8 +1,8 @@
 #!/usr/bin/env python3
 """Benchmark compact_tension: the LEFM load of the PD specimen itself, from its compliance.
 
-usage: compliance.py MINUS ZERO PLUS [MINUS ZERO PLUS ...] [--peaks RUN... [--plot FILE]]
-       compliance.py --table OUTPUT.md --plot FILE
+usage: compliance.py MINUS ZERO PLUS [MINUS ZERO PLUS ...] [--peaks RUN... [--plot FILE [--law LAW]]]
+       compliance.py --table OUTPUT.md --plot FILE [--law LAW]
 
 Each triple is three runs of full_pd.prm (or a variant) that stop after the first event
 (<Solver/Control/Maximum events> = 1) with the pre-crack's end at a - dx, a and a + dx (one
@@ -32,6 +32,8 @@ middle run) whose peak load is compared with ASTM's and with P_PD; --plot FILE d
 against the horizon delta, one line per m and failure law (the convergence plot of the README).
 --table OUTPUT.md: the plot from the peak table of an earlier output of this script (the rows
 of compact_tension_lefm_runs.md), without the runs.
+--law LAW: plot only the runs of that failure law (as the tables print it, e.g. "softening n = 2,
+N = 8", the shipped law).
 """
 import math
 import sys
@@ -54,7 +56,8 @@ def law_of(prm):
 
 
 def table_rows(path):
-    """The peak rows (m, law, delta, peak/ASTM, peak/P_PD) of an earlier output's peak table."""
+    """The peak rows (m, law, delta, peak/ASTM, peak/P_PD, stopped) of an earlier output's peak
+    table; stopped: the run was stopped before its end, its peak the largest load so far."""
     rows = []
     for line in open(path):
         cells = [c.strip() for c in line.strip().strip("|").split("|")]
@@ -63,11 +66,12 @@ def table_rows(path):
         dx, delta = float(cells[1]), float(cells[2])
         # m to the 0.005 of the horizon factors (delta is printed to 1 um).
         rows.append((round(round(delta / dx / 0.005) * 0.005, 3), cells[3], delta * 1e-3,
-                     float(cells[7]), float(cells[8])))
+                     float(cells[7]), float(cells[8]), "stopped" in cells[4]))
     return rows
 
 
-def plot_rows(rows, plot):
+def plot_rows(rows, plot, law=None):
+    rows = [row for row in rows if law is None or row[1] == law]
     import matplotlib
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
@@ -79,11 +83,19 @@ def plot_rows(rows, plot):
         line, = ax.plot(d, [row[4] for row in group], "o-", label=f"m = {m}, {law}: / P_PD")
         ax.plot(d, [row[3] for row in group], "^:", color=line.get_color(),
                 label=f"m = {m}, {law}: / ASTM")
+        stopped = [row for row in group if len(row) > 5 and row[5]]
+        for row in stopped:
+            ax.plot([row[2] * 1e3] * 2, [row[4], row[3]], "o", mfc="none", ms=13,
+                    color=line.get_color())
     ax.axhline(1, color="k", lw=0.8)
     ax.axhspan(0.95, 1.05, color="0.9")
     ax.set_xlabel("horizon delta [mm]")
     ax.set_ylabel("peak load / LEFM load")
-    ax.set_title("Compact tension, all-PD, G_c on the lattice, tie-free notch")
+    ax.set_title("Compact tension, all-PD, G_c on the lattice, tie-free notch" +
+                 (f"\n{law}" if law else ""))
+    if any(len(row) > 5 and row[5] for row in rows):
+        ax.plot([], [], "o", mfc="none", ms=13, color="0.4",
+                label="run stopped: its largest load so far")
     ax.legend(fontsize=7, loc="center left", bbox_to_anchor=(1.01, 0.5))
     fig.tight_layout()
     fig.savefig(plot, dpi=110)
@@ -95,8 +107,12 @@ def main():
     if "--plot" in args:
         plot = args[args.index("--plot") + 1]
         del args[args.index("--plot"):args.index("--plot") + 2]
+    law = None
+    if "--law" in args:
+        law = args[args.index("--law") + 1]
+        del args[args.index("--law"):args.index("--law") + 2]
     if "--table" in args and plot:
-        plot_rows(table_rows(args[args.index("--table") + 1]), plot)
+        plot_rows(table_rows(args[args.index("--table") + 1]), plot, law)
         return
     if "--peaks" in args:
         peaks = args[args.index("--peaks") + 1:]
@@ -136,7 +152,7 @@ def main():
               f"{len(r['load']) - 1} | {r['load'][1]:.2f} | {r['peak']:.2f} ({k}) | "
               f"{rows[-1][3]:.4f} | {rows[-1][4]:.4f} |")
     if plot:
-        plot_rows(rows, plot)
+        plot_rows(rows, plot, law)
 
 
 if __name__ == "__main__":

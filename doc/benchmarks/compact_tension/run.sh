@@ -129,6 +129,11 @@ for m in 3 4; do
   done
   for dx in 2 1.5 1 0.5; do compliance="$compliance c_${dx}_${m}_-1 c_${dx}_${m}_0 c_${dx}_${m}_1"; done
 done
+# The triple of dx_0.4mm_m_4, outside the default set as that run is (CT_RUNS="c_0.4_4_-1 c_0.4_4_0
+# c_0.4_4_1"; compliance.py on them gives its P_PD).
+for s in -1 0 1; do
+  variant full_pd "c_0.4_4_$s" "${dx04[@]}" "${m4[@]}" -e "$(notch 0.020 0.4 $s -0.001)" "${brittle[@]}" "${one[@]}"
+done
 # The crack-tip toughness with softening bonds: k_field.prm with the shipped law.
 soft=(-e "s|^    set Fracture energy = 1000$|    set Fracture energy = 1000\n    set Fracture energy calibration = lattice\n    set Failure law     = linear softening\n    set Softening ratio = ${SOFT_RATIO:-2}\n    set Softening teeth = ${SOFT_TEETH:-8}|")
 variant k_field soft_k_field "${soft[@]}" -e "s|Maximum events           = 40|Maximum events           = 400|"
