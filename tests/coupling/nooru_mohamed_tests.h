@@ -1,9 +1,9 @@
 // The harness of the Nooru-Mohamed tests (nooru_mohamed_01: the benchmark's runs at full length,
-// nooru_mohamed_short: all-PD and the adaptive coupled run stopped soon after the peak): run one
-// of the benchmark's files (doc/benchmarks/nooru_mohamed) with overrides, without field output,
-// and measure what its postprocess.py checks. The files name their includes and meshes relative
-// to the repository's top directory, which the tests link into their working directory
-// (coupling_tests::link_top_directories()).
+// nooru_mohamed_short: all-PD and the adaptive coupled run at dx = 4 mm, stopped soon after the
+// peak): run one of the benchmark's files (doc/benchmarks/nooru_mohamed) with overrides, without
+// field output, and measure what its postprocess.py checks. The files name their includes and
+// meshes relative to the repository's top directory, which the tests link into their working
+// directory (coupling_tests::link_top_directories()).
 // Crack particles: the damage index of seed note 003, A14, with the axial softening factor of
 // each bond at the final displacement >= 0.3 (postprocess.py's measure; the code's own index
 // counts removed bonds only, and these bonds are removed at 1e-6 of their peak force, beyond
