@@ -120,15 +120,16 @@ namespace perideal
                       "10",
                       Patterns::Integer(1),
                       "Write a row of statistics.csv every this many steps.");
-    prm.declare_entry("Checkpoint interval",
-                      "off",
-                      Patterns::Anything(),
-                      "Write the complete state of the run (of every physics of <Physics/List> "
-                      "too) to <Directory>/checkpoint every this many steps: time steps "
-                      "(explicit) or load steps (quasi-static); off: not "
-                      "by steps. 'perideal-solid --restart FILE.prm' continues the run from it. "
-                      "With <Checkpoint time interval> too, a checkpoint is written when either "
-                      "is due. Never after the last step. Accepted: off or an integer >= 1.");
+    prm.declare_entry(
+      "Checkpoint interval",
+      "off",
+      Patterns::Anything(),
+      "Write the complete state of the run (of every physics of <Physics/List> too) to "
+      "<Directory>/checkpoint every this many steps: time steps (explicit), load steps "
+      "(quasi-static) or events (<Solver/Control/Method> = sequentially linear); off: not by "
+      "steps. 'perideal-solid --restart FILE.prm' continues the run from it. With <Checkpoint "
+      "time interval> too, a checkpoint is written when either is due. Never after the last "
+      "step. Accepted: off or an integer >= 1.");
     prm.declare_entry("Checkpoint time interval",
                       "off",
                       Patterns::Anything(),

@@ -106,10 +106,11 @@ namespace perideal
                            "static: it scales the linear solution of each event, which only the "
                            "linearized static solve gives."));
     AssertThrow(control.method == LoadControl::load_steps ||
-                  (settings.checkpoint_interval == 0 && settings.checkpoint_time_interval == 0.),
-                ExcMessage("<Solver/Control/Method> = sequentially linear writes no checkpoints "
-                           "yet (its peak load is not stored): set <Output/Checkpoint interval> "
-                           "and <Output/Checkpoint time interval> to off."));
+                  settings.checkpoint_time_interval == 0.,
+                ExcMessage("<Solver/Control/Method> = sequentially linear writes checkpoints by "
+                           "events, not by time (an event's load factor falls when a crack "
+                           "snaps back): set <Output/Checkpoint time interval> to off and "
+                           "<Output/Checkpoint interval> to the events between two."));
     AssertThrow(control.cut_threshold == 0 || control.method != LoadControl::load_steps ||
                   settings.solver_type == SolverType::explicit_dynamics ||
                   settings.solver_type == SolverType::implicit ||

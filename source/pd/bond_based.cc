@@ -477,6 +477,42 @@ namespace perideal
   }
 
   template <int dim>
+  unsigned int
+  BondBased<dim>::n_bond_history_values() const
+  {
+    return tooth.empty() ? 0 : 1;
+  }
+
+  template <int dim>
+  std::vector<double>
+  BondBased<dim>::bond_history(const ParticleSystem<dim> &) const
+  {
+    return std::vector<double>(tooth.begin(), tooth.end());
+  }
+
+  template <int dim>
+  void
+  BondBased<dim>::set_bond_history(const ParticleSystem<dim> &particles,
+                                   const std::vector<double> &values)
+  {
+    const std::size_t n_bonds = particles.bonds().size();
+    AssertThrow(values.size() == n_bond_history_values() * n_bonds,
+                ExcMessage("set_bond_history(): " + std::to_string(values.size()) + " values for " +
+                           std::to_string(n_bonds) + " bonds."));
+    if (tooth.empty())
+      return;
+    std::vector<double> mu(n_bonds);
+    for (std::size_t b = 0; b < n_bonds; ++b)
+      {
+        tooth[b] = static_cast<std::uint8_t>(values[b]);
+        mu[b]    = context.softening.secant_factor(tooth[b]);
+      }
+    kernel->blocks.to_lanes(mu, kernel->lane_coefficient);
+    for (std::size_t l = 0; l < kernel->lane_coefficient.size(); ++l)
+      kernel->lane_coefficient[l] *= kernel->intact_coefficient[l];
+  }
+
+  template <int dim>
   SymmetricTensor<4, dim>
   BondBased<dim>::elasticity_tensor() const
   {

@@ -111,15 +111,20 @@ namespace restart_tests
             result.T.insert(result.T.end(),
                             field->begin(),
                             field->begin() + field->locally_owned_size());
-        // "Time step: dt s, steps: N", "Static solve: n unknowns (...), N load step(s)" or
-        // "Adaptive dynamic relaxation: n unknowns (...), N load step(s)" (rank 0 prints).
+        // "Sequentially linear control: N events, ..." (the summary of a run that ended), "Time
+        // step: dt s, steps: N", "Static solve: n unknowns (...), N load step(s)" or "Adaptive
+        // dynamic relaxation: n unknowns (...), N load step(s)" (rank 0 prints).
         const std::string text = log.str();
         if (Utilities::MPI::this_mpi_process(comm) == 0)
-          for (const std::string key :
-               {"Time step:", "Static solve:", "Adaptive dynamic relaxation:"})
+          for (const std::string key : {"Sequentially linear control:",
+                                        "Time step:",
+                                        "Static solve:",
+                                        "Adaptive dynamic relaxation:"})
             if (text.find(key) != std::string::npos)
               {
-                result.n_steps = std::lround(coupling_tests::numbers_of(text, key).back());
+                const auto numbers = coupling_tests::numbers_of(text, key);
+                result.n_steps =
+                  std::lround(key[0] == 'S' && key[1] == 'e' ? numbers.front() : numbers.back());
                 break;
               }
       }

@@ -103,6 +103,19 @@ namespace perideal
                   const ParticleVector &u,
                   const std::size_t     b) override;
 
+    /// With softening 1 (the tooth of each bond), 0 without.
+    unsigned int
+    n_bond_history_values() const override;
+
+    /// The tooth of each bond with softening, empty without.
+    std::vector<double>
+    bond_history(const ParticleSystem<dim> &particles) const override;
+
+    /// The teeth of a checkpoint, and the pair coefficients mu_t k of the kernel's lanes.
+    void
+    set_bond_history(const ParticleSystem<dim> &particles,
+                     const std::vector<double> &values) override;
+
     /**
      * @brief Gershgorin bound (see MaterialModel::stiffness_bound()); defined in
      * source/pd/bond_based_linearization.cc.

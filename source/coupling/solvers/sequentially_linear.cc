@@ -132,22 +132,31 @@ namespace perideal
                                Postprocessors<dim> &postprocessors,
                                Checkpoint<dim>     &checkpoint)
   {
-    const auto &settings = state.settings();
-    // The checkpoint intervals are refused when the parameters are read (CoupledProblem).
-    AssertThrow(!checkpoint.restarting(),
-                ExcMessage("<Solver/Control/Method> = sequentially linear writes no checkpoints "
-                           "yet (its peak load is not stored): run without --restart."));
+    const auto  &settings = state.settings();
     auto        &pd       = state.pd();
     auto        &ps       = pd.particles();
     const double infinity = std::numeric_limits<double>::infinity();
     const auto   number   = [](const double x) { return ParameterUtilities::format_number(x); };
     this->conditions_at(state, settings.end_time);
 
-    RunControl<dim> run(state, postprocessors, checkpoint, true);
-    run.start("sequentially linear", this->control.max_events, [&]() { state.start_work(); });
+    // The peak so far, which decides the end of the run: a part of the checkpoints.
     double       peak = 0., peak_factor = 0.;
     unsigned int peak_event = 0;
-    for (unsigned int event = 1;; ++event)
+    checkpoint.add_part(
+      "sequentially linear peak = load, load factor, event",
+      [&](CheckpointWriter &writer) {
+        writer.add_totals("sequentially linear/peak", {peak, peak_factor, double(peak_event)});
+      },
+      [&](CheckpointReader &reader) {
+        const auto values = reader.read_totals("sequentially linear/peak", 3);
+        peak              = values[0];
+        peak_factor       = values[1];
+        peak_event        = static_cast<unsigned int>(values[2]);
+      });
+    RunControl<dim>   run(state, postprocessors, checkpoint, true);
+    const RunPosition start =
+      run.start("sequentially linear", this->control.max_events, [&]() { state.start_work(); });
+    for (unsigned int event = start.step + 1;; ++event)
       {
         // The linear solution at load factor 1 with the bonds broken so far.
         this->apply_load_factor(state, 1.);
@@ -219,7 +228,7 @@ namespace perideal
           state.log() << "Event " << event << ": load factor " << factor << ", load " << values.load
                       << " N, " << values.broken_bonds << " broken bonds, " << iterations
                       << " CG iterations" << std::endl;
-        // Fields after the last event only (no checkpoints: run.checkpoint() is not called).
+        // Fields after the last event only.
         StepData data     = run.plan(event, factor, !reason.empty());
         data.write_fields = data.final_row;
         data.iterations   = iterations;
@@ -239,6 +248,9 @@ namespace perideal
         // dissipated).
         break_bonds(state, limit);
         state.accumulate_dissipated_energy();
+        // The checkpoint of the event holds its broken bonds: a restart solves the next one.
+        if (run.checkpoint(data))
+          return;
       }
   }
 

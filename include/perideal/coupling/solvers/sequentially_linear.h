@@ -38,9 +38,15 @@ namespace perideal
    * events>; the log says which. A solve that does not converge stops the run with its last
    * iterate written (LoadStepping::write_last_iterate()).
    *
+   * Checkpoints every <Output/Checkpoint interval> events hold the state after the event's
+   * bonds have broken and the peak so far (load, load factor and event: a part of the
+   * checkpoint, Checkpoint::add_part()); --restart continues with the next event, bit for bit
+   * on the same number of ranks.
+   *
    * Refused before any work: another <Solver/Type>, a model whose bonds do not break by the
    * stretch of a displacement field (only 'bond based' and 'linear peridynamic solid'), no
-   * damage model, checkpoints and --restart (the peak load is not stored).
+   * damage model, <Output/Checkpoint time interval> (an event's load factor is no time: it
+   * falls when a crack snaps back).
    */
   template <int dim>
   class SequentiallyLinear : public LoadStepping<dim>
