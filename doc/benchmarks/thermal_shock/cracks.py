@@ -10,7 +10,10 @@ cracks are counted:
 - a damaged particle has damage > --threshold (default 0.3, README.md "Crack measure": the two
   particle rows along an open straight crack lose about 40 % of their bonds, the rows beyond
   them 20 % and less, so 0.3 marks the crack's two faces and not its halo);
-- every particle belongs to its nearest edge (ties to the long edges); per edge, the damaged
+- every particle belongs to its nearest edge (ties to the long edges) of those --edges names
+  (default all four sides of the particles' bounding box; a segment or a PD band names only
+  the quenched sides, e.g. `--edges bottom` for quench_strength.prm, whose other sides are the
+  segment's cut ends and the band's inner side); per edge, the damaged
   particles that are connected (8 neighbours on the grid) to the edge's own particle row form
   the edge's damage; the others are interior damage (a crack that starts inside);
 - the depth profile: per column along the edge (one lattice column), the deepest such particle;
@@ -19,7 +22,8 @@ cracks are counted:
   damage shallower than the horizon is the skin the surface layer loses, not a crack the
   nonlocal model resolves); its position is its deepest column, its length that depth (normal
   to the edge, to the particle centre: plus dx/2 to the edge itself);
-- spacing: the mean distance between neighbouring cracks along the long edges.
+- spacing: the mean distance between neighbouring cracks along the long edges (bottom and top,
+  those of them --edges names); the count per long edge is their mean over those edges.
 
 Writes <out>/cracks.csv (one row per crack), <out>/history.csv (per run and output time: the
 cracks per long edge, their mean and largest length, the interior clusters), the figures
@@ -101,10 +105,14 @@ def label(mask):
     return labels, current
 
 
-def measure(nodes, damage, dx, threshold, min_depth_cells):
+EDGES = ["bottom", "top", "left", "right"]
+
+
+def measure(nodes, damage, dx, threshold, min_depth_cells, order=EDGES):
     """Cracks per edge of one snapshot: a dict edge -> list of (position [m], length [m]), and
     the number of damaged clusters that do not reach an edge. A crack's deepest particle lies at
-    least @p min_depth_cells full cells below the edge's particle row."""
+    least @p min_depth_cells full cells below the edge's particle row. @p order: the edges that
+    are the body's (of bottom, top, left, right; the particles belong to the nearest of them)."""
     idx = np.floor(nodes / dx + 1e-9).astype(int)
     nx, ny = idx[:, 0].max() + 1, idx[:, 1].max() + 1
     grid = np.zeros((nx, ny), dtype=bool)
@@ -114,7 +122,6 @@ def measure(nodes, damage, dx, threshold, min_depth_cells):
     i, j = np.meshgrid(np.arange(nx), np.arange(ny), indexing="ij")
     # Depth (in cells) from each edge and the nearest edge (long edges win ties).
     depths = {"bottom": j, "top": ny - 1 - j, "left": i, "right": nx - 1 - i}
-    order = ["bottom", "top", "left", "right"]
     stack = np.stack([depths[e] for e in order])
     nearest = np.argmin(stack, axis=0)
     result, interior = {}, 0
@@ -202,7 +209,15 @@ def main():
     ap.add_argument("--end-time", type=float, default=0.4, help="<Time stepping/End time> [s]")
     ap.add_argument("--method", default="all-PD", help="the method's name in the titles")
     ap.add_argument("--prefix", default="", help="put before the figures' file names")
+    ap.add_argument("--edges", default=",".join(EDGES),
+                    help="the sides of the particles' bounding box that are edges of the body, "
+                    "of bottom, top, left, right (a segment or band: the quenched ones only)")
     args = ap.parse_args()
+    edges = [e.strip() for e in args.edges.split(",") if e.strip()]
+    if not edges or any(e not in EDGES for e in edges):
+        ap.error(f"--edges takes some of {', '.join(EDGES)}, not '{args.edges}'")
+    long_names = [e for e in ("bottom", "top") if e in edges]
+    n_long_edges = max(1, len(long_names))
     dx = args.dx
     min_depth = args.min_depth if args.min_depth is not None else args.horizon_factor * dx
     # The deepest damaged particle of a crack sits (profile + 1/2) dx from the edge.
@@ -221,13 +236,14 @@ def main():
         # The cracks' history: count and lengths along the long edges at each output time.
         for time, h5 in mech:
             x, d = read(h5, ["nodes", "damage"])
-            c, inside = measure(x, d[:, 0], dx, args.threshold, min_cells)
-            lens = [l for _, l in c["bottom"] + c["top"]]
+            c, inside = measure(x, d[:, 0], dx, args.threshold, min_cells, edges)
+            lens = [l for e in long_names for _, l in c[e]]
             history.append(dict(T0=t0, t_ms=1e3 * time * args.end_time, count_long_mean=
-                                0.5 * len(lens), mean_length_mm=1e3 * np.mean(lens) if lens else 0.,
+                                len(lens) / n_long_edges, mean_length_mm=1e3 * np.mean(lens) if lens else 0.,
                                 max_length_mm=1e3 * max(lens) if lens else 0., interior=inside))
         nodes, damage = read(mech[-1][1], ["nodes", "damage"])
-        cracks, interior = measure(nodes, damage[:, 0], dx, args.threshold, min_cells)
+        cracks, interior = measure(nodes, damage[:, 0], dx, args.threshold, min_cells, edges)
+        cracks = {e: cracks.get(e, []) for e in EDGES}
         stats = np.genfromtxt(os.path.join(res, "statistics.csv"), delimiter=",", names=True)
         broken = int(stats["broken_bonds"][-1])
         t_end = mech[-1][0] * args.end_time
@@ -235,9 +251,9 @@ def main():
         # The particles (the PD zone and its halo): at the end and the most at any output time.
         counts = [(mech_t * args.end_time, read(h5, ["nodes"])[0].shape[0]) for mech_t, h5 in mech]
         zone.append((t0, counts))
-        long_edges = cracks["bottom"] + cracks["top"]
+        long_edges = [c for e in long_names for c in cracks[e]]
         spacings = []
-        for e in ("bottom", "top"):
+        for e in long_names:
             pos = sorted(p for p, _ in cracks[e])
             spacings += list(np.diff(pos))
         lengths = np.array([l for _, l in long_edges]) if long_edges else np.zeros(0)
@@ -245,7 +261,7 @@ def main():
         s = dict(T0=t0, dT=t0 - 20.0, t_end=t_end, broken=broken, interior=interior,
                  count_bottom=len(cracks["bottom"]), count_top=len(cracks["top"]),
                  count_left=len(cracks["left"]), count_right=len(cracks["right"]),
-                 count_long_mean=0.5 * len(long_edges),
+                 count_long_mean=len(long_edges) / n_long_edges,
                  spacing=float(np.mean(spacings)) if spacings else float("nan"),
                  mean_length=float(lengths.mean()) if lengths.size else 0.0,
                  max_length=float(lengths.max()) if lengths.size else 0.0,
@@ -253,7 +269,7 @@ def main():
                  wall=wall, rss=rss, peak=peak, cpu=cpu,
                  particles=max(c for _, c in counts))
         summary.append(s)
-        for e in ("bottom", "top", "left", "right"):
+        for e in edges:
             for p, l in cracks[e]:
                 rows.append(dict(T0=t0, edge=e, position_mm=1e3 * p, length_mm=1e3 * l))
 
@@ -321,7 +337,8 @@ def main():
     t0s = np.array([s["T0"] for s in summary])
     fig, axes = plt.subplots(1, 3, figsize=(12, 3.6))
     axes[0].plot(t0s, [s["count_long_mean"] for s in summary], "o-", label="PD, per long edge")
-    axes[0].set_ylabel("cracks per 50 mm edge")
+    axes[0].set_ylabel("cracks per 50 mm edge" if edges == EDGES else
+                       "cracks per long edge (of the segment)")
     axes[1].plot(t0s, [1e3 * s["spacing"] for s in summary], "o-", label="PD")
     axes[1].set_ylabel("mean crack spacing [mm]")
     axes[2].plot(t0s, [1e3 * s["mean_length"] for s in summary], "o-", label="PD mean")
@@ -331,8 +348,8 @@ def main():
         ax.set_xlabel("T0 [C] (water 20 C)")
         ax.grid(alpha=0.3)
         ax.legend(fontsize=8)
-    fig.suptitle("Alumina quench, all-PD (dx = %.2f mm): Jiang et al. 2012's counts not found, "
-                 "see README.md" % (1e3 * dx), fontsize=9)
+    fig.suptitle("Alumina quench, %s (dx = %.4g mm): Jiang et al. 2012's counts not found, "
+                 "see README.md" % (args.method, 1e3 * dx), fontsize=9)
     fig.tight_layout()
     fig.savefig(os.path.join(args.out, f"{args.prefix}cracks_vs_T0.png"), dpi=130)
     plt.close(fig)
