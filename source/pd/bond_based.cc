@@ -496,9 +496,7 @@ namespace perideal
                                    const std::vector<double> &values)
   {
     const std::size_t n_bonds = particles.bonds().size();
-    AssertThrow(values.size() == n_bond_history_values() * n_bonds,
-                ExcMessage("set_bond_history(): " + std::to_string(values.size()) + " values for " +
-                           std::to_string(n_bonds) + " bonds."));
+    AssertDimension(values.size(), n_bond_history_values() * n_bonds);
     if (tooth.empty())
       return;
     std::vector<double> mu(n_bonds);
