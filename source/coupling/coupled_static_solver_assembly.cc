@@ -3,6 +3,7 @@
 // and the forces of a state.
 // ---------------------------------------------------------------------
 #include <deal.II/base/mpi.h>
+#include <deal.II/base/symmetric_tensor.h>
 #include <deal.II/lac/dynamic_sparsity_pattern.h>
 #include <deal.II/lac/sparsity_tools.h>
 #include <deal.II/lac/trilinos_precondition.h>
@@ -246,7 +247,81 @@ namespace perideal
     for (std::size_t k = 0; k < n_local; ++k)
       solution.local_element(k) = z.begin()[k];
     from_unknowns(solution, U, u);
+    follow_neighbours_in_mechanisms(material, u);
     return iterations;
+  }
+
+  template <int dim>
+  void
+  CoupledStaticSolver<dim>::follow_neighbours_in_mechanisms(const MaterialModel<dim> &material,
+                                                            ParticleVector           &u) const
+  {
+    const FieldLayout &layout = material.field_layout();
+    if (n_components != dim || layout.kind(0) != ComponentKind::translation)
+      return;
+    // The projector onto the null space of each free particle's diagonal block of K, where
+    // the block has one (eigenvalues below 1e-10 of its largest: a single bond leaves
+    // round-off, two bonds at the lattice's angles leave 1e-2 and more).
+    const unsigned int                                   n_owned = particles->n_owned();
+    std::vector<std::pair<unsigned int, Tensor<2, dim>>> hanging;
+    for (unsigned int i = 0; i < n_owned; ++i)
+      {
+        bool free = true;
+        for (unsigned int c = 0; c < dim; ++c)
+          free = free && particle_z[i * dim + c] != numbers::invalid_dof_index &&
+                 !prescribed[particle_z[i * dim + c] - z_first];
+        if (!free)
+          continue;
+        SymmetricTensor<2, dim> block;
+        for (unsigned int c = 0; c < dim; ++c)
+          for (unsigned int d = c; d < dim; ++d)
+            block[c][d] = system_matrix.el(particle_z[i * dim + c], particle_z[i * dim + d]);
+        const auto eigen = eigenvectors(block); // descending
+        if (!(eigen[0].first > 0.) || eigen[dim - 1].first > 1e-10 * eigen[0].first)
+          continue;
+        Tensor<2, dim> projector;
+        for (unsigned int e = 1; e < dim; ++e)
+          if (eigen[e].first <= 1e-10 * eigen[0].first)
+            projector += outer_product(eigen[e].second, eigen[e].second);
+        hanging.emplace_back(i, projector);
+      }
+    if (Utilities::MPI::max(hanging.empty() ? 0u : 1u, comm) == 0)
+      return;
+
+    // The bonded neighbours' mean displacement (a row lists a bond between owned particles
+    // once, a bond to a ghost on both ranks: each end's rank sees it).
+    std::vector<unsigned int> slot(n_owned, numbers::invalid_unsigned_int);
+    for (std::size_t h = 0; h < hanging.size(); ++h)
+      slot[hanging[h].first] = h;
+    std::vector<Tensor<1, dim>> sum(hanging.size());
+    std::vector<unsigned int>   count(hanging.size(), 0);
+    const BondList             &bonds = particles->bonds();
+    for (unsigned int i = 0; i < n_owned; ++i)
+      for (unsigned int b = bonds.row_start[i]; b < bonds.row_start[i + 1]; ++b)
+        if (bonds.intact[b] != 0)
+          {
+            const unsigned int j = bonds.neighbor[b];
+            for (const auto [end, other] : {std::pair{i, j}, std::pair{j, i}})
+              if (end < n_owned && slot[end] != numbers::invalid_unsigned_int)
+                {
+                  for (unsigned int d = 0; d < dim; ++d)
+                    sum[slot[end]][d] += u.local_element(other * dim + d);
+                  ++count[slot[end]];
+                }
+          }
+    for (std::size_t h = 0; h < hanging.size(); ++h)
+      if (count[h] > 0)
+        {
+          const unsigned int i = hanging[h].first;
+          Tensor<1, dim>     own;
+          for (unsigned int d = 0; d < dim; ++d)
+            own[d] = u.local_element(i * dim + d);
+          const Tensor<1, dim> moved =
+            own + hanging[h].second * (sum[h] / static_cast<double>(count[h]) - own);
+          for (unsigned int d = 0; d < dim; ++d)
+            u.local_element(i * dim + d) = moved[d];
+        }
+    u.update_ghost_values();
   }
 
   template <int dim>

@@ -216,6 +216,20 @@ namespace perideal
     /// The index in z of the FE dof @p dof (owned by any rank).
     dealii::types::global_dof_index
     fe_to_z(const dealii::types::global_dof_index dof) const;
+    /**
+     * @brief Give each free particle's displacement in the directions its intact bonds leave
+     * without stiffness (a particle hanging on one bond, or on collinear or, in 3D, coplanar
+     * ones) the mean displacement of its bonded neighbours there, and renew the ghost values of
+     * @p u. Such a direction is a null vector of the positive semi-definite K (its diagonal block
+     * of the particle is singular there), so the solution of K z = F leaves it to the solver's
+     * round-off and the preconditioner, which moved one particle of the alumina quench by 2.3
+     * bond lengths; the bond's nonlinear stretch then broke it and released a spurious energy
+     * (doc/architecture/08_solvers.md). Moving the particle along the null vector changes
+     * neither K z nor any bond's linearized stretch. Only for a field of translations; a
+     * particle without intact bonds keeps its value (nothing depends on it).
+     */
+    void
+    follow_neighbours_in_mechanisms(const MaterialModel<dim> &material, ParticleVector &u) const;
     /// The particle displacements of owned particles as a Trilinos vector.
     void
     gather_particles(const ParticleVector &u, SolverVector &result) const;
