@@ -94,6 +94,14 @@ namespace perideal
               std::swap(applied_heat_factor[k], applied_work_factor[k]);
             }
       }
+    // The components whose load can do work: with internal work factor, and with applied work
+    // factor if a load acts (without loads external_force stays +0, so the others' load is
+    // 0 f + V 0 = +0 at every step and their trapezoids add exactly nothing).
+    const bool loads = conditions.has_loads();
+    work_components.clear();
+    for (std::size_t k = 0; k < component_motion.size(); ++k)
+      if (internal_work_factor[k] != 0. || (loads && applied_work_factor[k] != 0.))
+        work_components.push_back(k);
 
     for (ParticleVector *vec :
          {&u, &v, &a, &internal_force, &external_force, &previous_u, &previous_load})
@@ -330,17 +338,21 @@ namespace perideal
         }
     }
     {
+      // Only the components of work_components: the previous state of the others is not
+      // kept, except the displacement if the temperature's work reads it.
       double       *load_before = previous_load.begin(), *u_before = previous_u.begin();
       const double *u_now = u.begin(), *internal = internal_force.begin();
       const double *applied = external_force.begin(), *c_internal = internal_work_factor.data(),
                    *c_applied = applied_work_factor.data();
-      for (std::size_t k = 0; k < motion().size(); ++k)
+      for (const std::size_t k : work_components)
         {
           const double load = c_internal[k] * internal[k] + c_applied[k] * applied[k];
           work += 0.5 * (load_before[k] + load) * (u_now[k] - u_before[k]);
           load_before[k] = load;
           u_before[k]    = u_now[k];
         }
+      if (pd().material().temperature_change() != nullptr)
+        std::copy(u_now, u_now + motion().size(), u_before);
     }
     local_work = work;
   }

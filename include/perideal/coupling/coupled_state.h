@@ -98,7 +98,9 @@ namespace perideal
      * @brief Add the work of the loads from the previous state to the current one (trapezoidal
      * rule in the loads) and make the current state the previous one. The loads are fe_load on
      * the FE dofs and, on the particles, internal_work_factor f_int + applied_work_factor
-     * external_force.
+     * external_force. On the particles it passes over the components whose load can be
+     * nonzero only (the prescribed ones, all moving ones if a load acts); the previous
+     * displacement of the others is kept only if a temperature change strains the material.
      */
     void
     accumulate_work();
@@ -710,6 +712,9 @@ namespace perideal
     std::vector<double> inertia_ratios;
     std::vector<double> internal_work_factor, applied_work_factor;
     std::vector<double> internal_heat_factor, applied_heat_factor;
+    // The particle components whose load can do work (accumulate_work()): those with an
+    // internal work factor, and those with an applied one if a load acts.
+    std::vector<std::size_t> work_components;
 
     // The hooks of set_adaptive_region(), set_other_physics() and set_broken_bond_record().
     std::function<bool(unsigned int, double)>               adaptation;

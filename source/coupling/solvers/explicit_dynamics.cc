@@ -248,7 +248,8 @@ namespace perideal
   void
   ExplicitDynamics<dim>::compute_acceleration(CoupledState<dim> &state,
                                               const double       time,
-                                              const bool         with_energy)
+                                              const bool         with_energy,
+                                              const double       kick)
   {
     auto &pd = state.pd();
     state.update_temperature(time);
@@ -272,19 +273,29 @@ namespace perideal
         if (pd.boundary_conditions().has_convection())
           pd.boundary_conditions().add_convection(time, &state.u, state.external_force);
       }
-    // Particles: a = f V / m on the components that move by it (one pass, no branches); the
-    // nodal forces f V only if some particle is slaved to the FE field (zero otherwise).
+    // Particles: a = f V / m on the components that move by it, and v += kick a if asked (one
+    // pass, no branches); the nodal forces f V only if some particle is slaved to the FE field
+    // (zero otherwise).
     const std::size_t n        = state.motion().size();
     const double     *internal = state.internal_force.begin();
     const double     *applied  = state.external_force.begin();
     const double     *factor   = acceleration_factor.data();
-    double           *a        = state.a.begin();
+    double           *a = state.a.begin(), *v = state.v.begin();
+    const auto        accelerate = [&](const auto &force) {
+      if (kick > 0.)
+        for (std::size_t k = 0; k < n; ++k)
+          {
+            a[k] = force(k) * factor[k];
+            v[k] += kick * a[k];
+          }
+      else
+        for (std::size_t k = 0; k < n; ++k)
+          a[k] = force(k) * factor[k];
+    };
     if (loads)
-      for (std::size_t k = 0; k < n; ++k)
-        a[k] = (internal[k] + applied[k]) * factor[k];
+      accelerate([&](const std::size_t k) { return internal[k] + applied[k]; });
     else
-      for (std::size_t k = 0; k < n; ++k)
-        a[k] = internal[k] * factor[k];
+      accelerate([&](const std::size_t k) { return internal[k]; });
     auto &fe = state.fe();
     if (fe.n_dofs() == 0)
       return;
@@ -444,11 +455,16 @@ namespace perideal
                                   dt,
                                   with_energy);
 
-    compute_acceleration(state, time + dt, with_energy);
-    if (state.settings().damping > 0.)
-      add_damping(state);
+    // The closing half step of the particles' velocities in the pass of the acceleration if
+    // no damping changes the acceleration first.
+    const bool damped = state.settings().damping > 0.;
+    compute_acceleration(state, time + dt, with_energy, damped ? 0. : 0.5 * dt);
+    if (damped)
+      {
+        add_damping(state);
+        v.add(0.5 * dt, a);
+      }
     V.add(0.5 * dt, A);
-    v.add(0.5 * dt, a);
     set_first_order_rates(state);
     fe.prescribe(time + dt, U, V);
 

@@ -110,10 +110,15 @@ namespace perideal
     /**
      * @brief Forces and accelerations of both regions at @p time, at the present displacements
      * (the slaved particles' set by slave_particles()); the particles' energy density only if
-     * @p with_energy.
+     * @p with_energy. A positive @p kick also adds @p kick a to the particles' velocities in
+     * the pass that computes a (the closing half step of advance(), when no damping changes a
+     * before it).
      */
     void
-    compute_acceleration(CoupledState<dim> &state, const double time, const bool with_energy);
+    compute_acceleration(CoupledState<dim> &state,
+                         const double       time,
+                         const bool         with_energy,
+                         const double       kick = 0.);
 
     /**
      * @brief The mass-proportional damping of <Time stepping/Damping>: A -= c V on the free FE
