@@ -128,6 +128,7 @@ namespace perideal
         }
     system_matrix.compress(VectorOperation::add);
     linear_system.clear();
+    find_mechanisms(material);
     // A convection condition holds a temperature too (its h int phi_i phi_j is in K_FE).
     for (const auto &c : fe->conditions())
       n_held += c.convection ? 1. : 0.;
@@ -247,23 +248,23 @@ namespace perideal
     for (std::size_t k = 0; k < n_local; ++k)
       solution.local_element(k) = z.begin()[k];
     from_unknowns(solution, U, u);
-    follow_neighbours_in_mechanisms(material, u);
+    follow_neighbours_in_mechanisms(u);
     return iterations;
   }
 
   template <int dim>
   void
-  CoupledStaticSolver<dim>::follow_neighbours_in_mechanisms(const MaterialModel<dim> &material,
-                                                            ParticleVector           &u) const
+  CoupledStaticSolver<dim>::find_mechanisms(const MaterialModel<dim> &material)
   {
+    mechanisms.clear();
+    any_mechanism             = false;
     const FieldLayout &layout = material.field_layout();
     if (n_components != dim || layout.kind(0) != ComponentKind::translation)
       return;
     // The projector onto the null space of each free particle's diagonal block of K, where
     // the block has one (eigenvalues below 1e-10 of its largest: a single bond leaves
     // round-off, two bonds at the lattice's angles leave 1e-2 and more).
-    const unsigned int                                   n_owned = particles->n_owned();
-    std::vector<std::pair<unsigned int, Tensor<2, dim>>> hanging;
+    const unsigned int n_owned = particles->n_owned();
     for (unsigned int i = 0; i < n_owned; ++i)
       {
         bool free = true;
@@ -283,10 +284,19 @@ namespace perideal
         for (unsigned int e = 1; e < dim; ++e)
           if (eigen[e].first <= 1e-10 * eigen[0].first)
             projector += outer_product(eigen[e].second, eigen[e].second);
-        hanging.emplace_back(i, projector);
+        mechanisms.emplace_back(i, projector);
       }
-    if (Utilities::MPI::max(hanging.empty() ? 0u : 1u, comm) == 0)
+    any_mechanism = Utilities::MPI::max(mechanisms.empty() ? 0u : 1u, comm) != 0;
+  }
+
+  template <int dim>
+  void
+  CoupledStaticSolver<dim>::follow_neighbours_in_mechanisms(ParticleVector &u) const
+  {
+    if (!any_mechanism)
       return;
+    const unsigned int n_owned = particles->n_owned();
+    const auto        &hanging = mechanisms;
 
     // The bonded neighbours' mean displacement (a row lists a bond between owned particles
     // once, a bond to a ghost on both ranks: each end's rank sees it).

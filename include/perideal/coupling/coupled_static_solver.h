@@ -4,6 +4,8 @@
 #ifndef perideal_coupling_coupled_static_solver_h
 #define perideal_coupling_coupled_static_solver_h
 
+#include <deal.II/base/tensor.h>
+
 #include <perideal/base/linear_algebra.h>
 #include <perideal/coupling/transfer_operator.h>
 #include <perideal/fem/fe_region.h>
@@ -16,6 +18,7 @@
 #include <functional>
 #include <memory>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace perideal
@@ -217,19 +220,26 @@ namespace perideal
     dealii::types::global_dof_index
     fe_to_z(const dealii::types::global_dof_index dof) const;
     /**
-     * @brief Give each free particle's displacement in the directions its intact bonds leave
-     * without stiffness (a particle hanging on one bond, or on collinear or, in 3D, coplanar
-     * ones) the mean displacement of its bonded neighbours there, and renew the ghost values of
-     * @p u. Such a direction is a null vector of the positive semi-definite K (its diagonal block
-     * of the particle is singular there), so the solution of K z = F leaves it to the solver's
-     * round-off and the preconditioner, which moved one particle of the alumina quench by 2.3
-     * bond lengths; the bond's nonlinear stretch then broke it and released a spurious energy
-     * (doc/architecture/08_solvers.md). Moving the particle along the null vector changes
-     * neither K z nor any bond's linearized stretch. Only for a field of translations; a
-     * particle without intact bonds keeps its value (nothing depends on it).
+     * @brief Find the free particles whose intact bonds leave directions without stiffness (a
+     * particle hanging on one bond, or on collinear or, in 3D, coplanar ones) in the assembled K
+     * (its diagonal block of the particle is singular there): the projectors onto those
+     * directions, for follow_neighbours_in_mechanisms(). Only for a field of translations; called
+     * by assemble(), as K changes only there.
      */
     void
-    follow_neighbours_in_mechanisms(const MaterialModel<dim> &material, ParticleVector &u) const;
+    find_mechanisms(const MaterialModel<dim> &material);
+    /**
+     * @brief Give each particle find_mechanisms() found the mean displacement of its bonded
+     * neighbours in its directions without stiffness, and renew the ghost values of @p u. Such a
+     * direction is a null vector of the positive semi-definite K, so the solution of K z = F
+     * leaves it to the solver's round-off and the preconditioner, which moved one particle of the
+     * alumina quench by 2.3 bond lengths; the bond's nonlinear stretch then broke it and released
+     * a spurious energy (doc/architecture/08_solvers.md). Moving the particle along the null
+     * vector changes neither K z nor any bond's linearized stretch. A particle without intact
+     * bonds keeps its value (nothing depends on it).
+     */
+    void
+    follow_neighbours_in_mechanisms(ParticleVector &u) const;
     /// The particle displacements of owned particles as a Trilinos vector.
     void
     gather_particles(const ParticleVector &u, SolverVector &result) const;
@@ -256,6 +266,11 @@ namespace perideal
     double       prescribed_scale = 1.;
     SparseMatrix T, T_free, fe_part, G, system_matrix;
     SolverVector weights, offsets;
+    /// Per owned particle of find_mechanisms(): its index and the projector onto its directions
+    /// without stiffness in system_matrix.
+    std::vector<std::pair<unsigned int, dealii::Tensor<2, dim>>> mechanisms;
+    /// Whether any rank has such a particle.
+    bool any_mechanism = false;
     /// The factorization or preconditioner of system_matrix, built by the first solve after
     /// assemble().
     typename StaticSolver<dim>::LinearSystem linear_system;
