@@ -7,7 +7,9 @@
 # (all-PD), coupled = quench_coupled.prm (PD frame along the edges, FE core), adaptive =
 # quench_adaptive.prm (the PD region grows where the cracks run), strength =
 # quench_strength.prm (coupled at alumina's strength, delta = 0.087 mm: a 14.4 mm segment of one
-# quenched edge, PD band 2 mm deep, cracks.py with --dx 2.88e-5 --edges bottom). Each run writes
+# quenched edge, PD band 3 mm deep, cracks.py with --dx 2.88e-5 --edges bottom; about an hour
+# per run on one core, so these write a checkpoint after every load step: a stopped run goes on
+# with 'cd DIR && perideal-solid --restart quench_T<T0>.prm'). Each run writes
 # OUT_DIR/T<T0>/ (pd) or OUT_DIR/<method>/T<T0>/ (the others) with
 # {quench_T<T0>.prm,run.log,time.log,results/}; a run whose results/statistics.csv and run.log
 # summary exist already is not repeated (delete its folder to run it again). Runs one after the
@@ -33,6 +35,7 @@ mkdir -p "$OUT"
 for METHOD in $METHODS; do
   measure=""
   step=0.01
+  checkpoint=off
   case "$METHOD" in
     pd) input="$HERE/quench.prm"; base="$OUT"; end="${END_TIME:-0.4}"; label=all-PD; prefix="" ;;
     coupled) input="$HERE/quench_coupled.prm"; base="$OUT/coupled"; end="${END_TIME:-0.15}"
@@ -41,7 +44,7 @@ for METHOD in $METHODS; do
       label=adaptive; prefix=adaptive_ ;;
     strength) input="$HERE/quench_strength.prm"; base="$OUT/strength"; end="${END_TIME:-0.15}"
       label="coupled, PD at sigma_f"; prefix=strength_
-      measure="--dx 2.88e-5 --edges bottom"; step=0.005 ;;
+      measure="--dx 2.88e-5 --edges bottom"; step=0.005; checkpoint=1 ;;
     *) echo "run.sh: METHODS takes pd, coupled, adaptive, strength; not '$METHOD'" >&2; exit 1 ;;
   esac
   steps=$(/usr/bin/python3 -c "print(max(1, round($end / $step)))")
@@ -74,6 +77,9 @@ subsection Solver
 end
 subsection Time stepping
   set End time = $end
+end
+subsection Output
+  set Checkpoint interval = $checkpoint
 end
 PRM
     echo "$METHOD, T0 = $T0: running in $dir"
