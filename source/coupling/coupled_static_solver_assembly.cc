@@ -296,15 +296,14 @@ namespace perideal
     if (!any_mechanism)
       return;
     const unsigned int n_owned = particles->n_owned();
-    const auto        &hanging = mechanisms;
 
     // The bonded neighbours' mean displacement (a row lists a bond between owned particles
     // once, a bond to a ghost on both ranks: each end's rank sees it).
     std::vector<unsigned int> slot(n_owned, numbers::invalid_unsigned_int);
-    for (std::size_t h = 0; h < hanging.size(); ++h)
-      slot[hanging[h].first] = h;
-    std::vector<Tensor<1, dim>> sum(hanging.size());
-    std::vector<unsigned int>   count(hanging.size(), 0);
+    for (std::size_t h = 0; h < mechanisms.size(); ++h)
+      slot[mechanisms[h].first] = h;
+    std::vector<Tensor<1, dim>> sum(mechanisms.size());
+    std::vector<unsigned int>   count(mechanisms.size(), 0);
     const BondList             &bonds = particles->bonds();
     for (unsigned int i = 0; i < n_owned; ++i)
       for (unsigned int b = bonds.row_start[i]; b < bonds.row_start[i + 1]; ++b)
@@ -319,15 +318,15 @@ namespace perideal
                   ++count[slot[end]];
                 }
           }
-    for (std::size_t h = 0; h < hanging.size(); ++h)
+    for (std::size_t h = 0; h < mechanisms.size(); ++h)
       if (count[h] > 0)
         {
-          const unsigned int i = hanging[h].first;
+          const unsigned int i = mechanisms[h].first;
           Tensor<1, dim>     own;
           for (unsigned int d = 0; d < dim; ++d)
             own[d] = u.local_element(i * dim + d);
           const Tensor<1, dim> moved =
-            own + hanging[h].second * (sum[h] / static_cast<double>(count[h]) - own);
+            own + mechanisms[h].second * (sum[h] / static_cast<double>(count[h]) - own);
           for (unsigned int d = 0; d < dim; ++d)
             u.local_element(i * dim + d) = moved[d];
         }
