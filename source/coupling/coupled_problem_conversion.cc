@@ -16,6 +16,7 @@
 #include <sstream>
 #include <string>
 #include <unordered_map>
+#include <unordered_set>
 #include <utility>
 
 namespace perideal
@@ -181,11 +182,29 @@ namespace perideal
             AssertThrow(values.size() == std::size_t(bonds.size()) * n_values,
                         ExcInternalError("The bond histories do not match the bond list."));
           }
+        // A kept bond joins two particles that end kept bonds: the bonds of the others (most)
+        // are passed over without a lookup.
+        std::unordered_set<Key, typename Lattice<dim>::KeyHash> ends;
+        for (const auto &[ends_of_bond, record] : records)
+          {
+            ends.insert(ends_of_bond.first);
+            ends.insert(ends_of_bond.second);
+          }
+        std::vector<Key>  key(y.size());
+        std::vector<bool> is_end(y.size());
+        for (unsigned int i = 0; i < y.size(); ++i)
+          {
+            key[i]    = lattice.key(y[i]);
+            is_end[i] = ends.count(key[i]) > 0;
+          }
         std::uint64_t matched = 0;
         for (unsigned int i = 0; i < ps.n_owned(); ++i)
           for (unsigned int b = bonds.row_start[i]; b < bonds.row_start[i + 1]; ++b)
             {
-              const auto found = records.find(pair(lattice, y[i], y[bonds.neighbor[b]]));
+              const unsigned int j = bonds.neighbor[b];
+              if (!is_end[i] || !is_end[j])
+                continue;
+              const auto found = records.find(std::minmax(key[i], key[j]));
               if (found == records.end())
                 continue;
               matched += bond_shares(ps, b);

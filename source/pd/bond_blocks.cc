@@ -9,7 +9,6 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
-#include <map>
 #include <numeric>
 
 namespace perideal
@@ -93,26 +92,44 @@ namespace perideal
     };
 
     // Bond classes (lattice vectors), ranked with the first component slowest so that the
-    // neighbour ranges of consecutive blocks of a group are a lattice line apart.
-    std::map<std::array<long, dim>, unsigned int> class_of;
+    // neighbour ranges of consecutive blocks of a group are a lattice line apart: a dense table
+    // over the box [-reach, reach]^dim of the vectors, enumerated in that (lexicographic) order.
+    long reach = 0;
     for (unsigned int i = 0; i < n_owned; ++i)
       for (unsigned int b = bonds.row_start[i]; b < bonds.row_start[i + 1]; ++b)
-        class_of.emplace(lattice_vector(i, b), 0u);
+        for (const long q : lattice_vector(i, b))
+          reach = std::max(reach, std::abs(q));
+    const long  side       = 2 * reach + 1;
+    const auto  table_slot = [&](const std::array<long, dim> &q) {
+      std::size_t slot = 0;
+      for (unsigned int d = 0; d < dim; ++d)
+        slot = slot * side + (q[d] + reach);
+      return slot;
+    };
+    const unsigned int        none = numbers::invalid_unsigned_int;
+    std::vector<unsigned int> class_of(std::size_t(std::pow(side, dim)), none);
+    for (unsigned int i = 0; i < n_owned; ++i)
+      for (unsigned int b = bonds.row_start[i]; b < bonds.row_start[i + 1]; ++b)
+        class_of[table_slot(lattice_vector(i, b))] = 0;
     class_list.clear();
-    for (auto &[q, index] : class_of)
-      {
-        index = class_list.size();
-        BondClass c;
-        double    length2 = 0.;
-        for (unsigned int d = 0; d < dim; ++d)
-          {
-            c.xi[d] = q[d] * dx;
+    for (std::size_t slot = 0; slot < class_of.size(); ++slot)
+      if (class_of[slot] != none)
+        {
+          class_of[slot] = class_list.size();
+          BondClass   c;
+          double      length2 = 0.;
+          std::size_t rest    = slot;
+          for (unsigned int d = dim; d-- > 0;)
+            {
+              c.xi[d] = (long(rest % side) - reach) * dx;
+              rest /= side;
+            }
+          for (unsigned int d = 0; d < dim; ++d)
             length2 += c.xi[d] * c.xi[d];
-          }
-        c.length         = std::sqrt(length2);
-        c.inverse_length = 1. / c.length;
-        class_list.push_back(c);
-      }
+          c.length         = std::sqrt(length2);
+          c.inverse_length = 1. / c.length;
+          class_list.push_back(c);
+        }
 
     // The bonds bucketed by their group (the group of their end of lower kernel index): a
     // counting sort that holds one index per bond.
@@ -146,18 +163,22 @@ namespace perideal
     group_list.clear();
     block_list.clear();
     lane_bond.clear();
-    const unsigned int none = numbers::invalid_unsigned_int;
     for (std::size_t group = 0; group < n_groups; ++group)
       {
         if (group_start[group] == group_start[group + 1])
           continue;
         pairs.clear();
+        // A group's bonds are in the order of the rows (the counting sort ran over them in
+        // order), a row's in a run: the row of a bond is its predecessor's or found after it.
+        unsigned int i = 0;
         for (std::size_t k = group_start[group]; k < group_start[group + 1]; ++k)
           {
             const unsigned int b = by_group[k];
-            const unsigned int i = bonds.row_of(b);
+            if (k == group_start[group] || bonds.row_start[i + 1] <= b)
+              i = std::upper_bound(bonds.row_start.begin() + i, bonds.row_start.end(), b) -
+                  bonds.row_start.begin() - 1;
             const unsigned int j = bonds.neighbor[b];
-            pairs.push_back({class_of.at(lattice_vector(i, b)),
+            pairs.push_back({class_of[table_slot(lattice_vector(i, b))],
                              std::abs(int(kernel_index[j]) - int(kernel_index[i])),
                              lower_end(i, b) % width,
                              b});
@@ -266,12 +287,30 @@ namespace perideal
     const std::function<double(const unsigned int, const std::size_t)> &value,
     Array                                                              &per_lane) const
   {
+    // A lane's bond joins its particle (kernel index first + l) and the one offset further;
+    // its row is the end that is not its neighbour.
+    std::vector<unsigned int> particle_at(n_slots);
+    for (unsigned int i = 0; i < n_local; ++i)
+      particle_at[kernel_index[i]] = i;
     per_lane.resize_fast(lane_bond.size());
-    for (std::size_t l = 0; l < lane_bond.size(); ++l)
-      {
-        const unsigned int b = lane_bond[l];
-        per_lane[l] = (b == numbers::invalid_unsigned_int ? 0. : value(bonds.row_of(b), b));
-      }
+    for (std::size_t g = 0; g + 1 < group_list.size(); ++g)
+      for (std::size_t q = group_list[g].first_block; q < group_list[g + 1].first_block; ++q)
+        for (unsigned int l = 0; l < width; ++l)
+          {
+            const std::size_t  lane = q * width + l;
+            const unsigned int b    = lane_bond[lane];
+            if (b == numbers::invalid_unsigned_int)
+              {
+                per_lane[lane] = 0.;
+                continue;
+              }
+            const unsigned int near = particle_at[group_list[g].first_particle + l];
+            const unsigned int i =
+              bonds.neighbor[b] == near ?
+                particle_at[group_list[g].first_particle + l + block_list[q].offset] :
+                near;
+            per_lane[lane] = value(i, b);
+          }
   }
 
   template <int dim>

@@ -96,8 +96,8 @@ namespace perideal
 
     const double         tolerance = relative_tolerance * x.distance(y);
     const Tensor<1, dim> n         = crack_normal(vertices);
-    const double         dx        = (x - vertices[0]) * n;
-    const double         dy        = (y - vertices[0]) * n;
+    const double         dx        = plane_distance(x);
+    const double         dy        = plane_distance(y);
     // An end within the tolerance of the plane is on the side tie_break_direction() points
     // into (of +n if the plane holds the direction, a case of measure zero).
     const int  on_plane = tie_break_direction<dim>() * n >= 0. ? 1 : -1;
@@ -111,6 +111,13 @@ namespace perideal
                          std::abs(dy) <= tolerance ? y - dy * n :
                                                      x + (dx / (dx - dy)) * (y - x);
     return depth_inside(vertices, p) > tolerance;
+  }
+
+  template <int dim>
+  double
+  PreCrack<dim>::plane_distance(const Point<dim> &x) const
+  {
+    return (x - vertices[0]) * crack_normal(vertices);
   }
 
   template <int dim>
@@ -433,6 +440,19 @@ namespace perideal
     for (auto &j : found.neighbor)
       j = new_index[j];
 
+    // A bond whose ends lie on one side of a crack's plane, both farther from it than cuts()'s
+    // tolerance (relative_tolerance times the bond's length, at most the reach), is not cut:
+    // most bonds, rejected by the particles' distances from the plane, each computed once.
+    const double                     far = 2. * PreCrack<dim>::relative_tolerance * reach;
+    std::vector<std::vector<double>> plane_distance(pre_cracks.size());
+    for (unsigned int c = 0; c < pre_cracks.size(); ++c)
+      for (const Point<dim> &x : reference_positions)
+        plane_distance[c].push_back(pre_cracks[c].plane_distance(x));
+    const auto may_cut = [&](const unsigned int c, const unsigned int i, const unsigned int j) {
+      const double di = plane_distance[c][i], dj = plane_distance[c][j];
+      return !((di > far && dj > far) || (di < -far && dj < -far));
+    };
+
     // Per-bond data (the neighbours grew row by row: no spare capacity kept).
     found.neighbor.shrink_to_fit();
     const std::size_t n_bonds = found.neighbor.size();
@@ -446,8 +466,8 @@ namespace perideal
           const Point<dim> &xj = reference_positions[found.neighbor[b]];
           const double      r  = reference_positions[i].distance(xj);
           found.length[b]      = r;
-          for (const auto &crack : pre_cracks)
-            if (crack.cuts(reference_positions[i], xj))
+          for (unsigned int c = 0; c < pre_cracks.size(); ++c)
+            if (may_cut(c, i, found.neighbor[b]) && pre_cracks[c].cuts(reference_positions[i], xj))
               found.intact[b] = 0;
           if (found.intact[b] && no_fail && (no_fail(reference_positions[i]) || no_fail(xj)))
             found.intact[b] = 2;
