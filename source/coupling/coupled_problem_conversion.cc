@@ -248,9 +248,20 @@ namespace perideal
         return ps.neighbor_is_owned(b) ? 2 : 1;
       }
 
-      unsigned int                          n_values;
-      std::map<std::pair<Key, Key>, Record> records;
-      std::vector<double>                   history;
+      /// A hash of a bond's pair of keys.
+      struct PairHash
+      {
+        std::size_t
+        operator()(const std::pair<Key, Key> &keys) const
+        {
+          const typename Lattice<dim>::KeyHash hash;
+          return hash(keys.first) * 1000003u ^ hash(keys.second);
+        }
+      };
+
+      unsigned int                                              n_values;
+      std::unordered_map<std::pair<Key, Key>, Record, PairHash> records;
+      std::vector<double>                                       history;
       /// Twice the number of kept bonds over the ranks' shares (this rank's part).
       std::uint64_t n_shares = 0;
     };

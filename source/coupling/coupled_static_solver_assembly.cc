@@ -310,7 +310,7 @@ namespace perideal
         if (bonds.intact[b] != 0)
           {
             const unsigned int j = bonds.neighbor[b];
-            for (const auto [end, other] : {std::pair{i, j}, std::pair{j, i}})
+            for (const auto &[end, other] : {std::pair{i, j}, std::pair{j, i}})
               if (end < n_owned && slot[end] != numbers::invalid_unsigned_int)
                 {
                   for (unsigned int d = 0; d < dim; ++d)

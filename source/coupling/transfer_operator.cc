@@ -406,6 +406,11 @@ namespace perideal
         const unsigned int                   n_dofs     = fe_element.n_dofs_per_cell();
         std::vector<types::global_dof_index> dofs(n_dofs);
         const FieldLayout                   &fe_layout = fe.field_layout();
+        // The shape values at a point by base element (FESystem's shape_value() is its base
+        // element's): each computed once, not once per vector component.
+        std::vector<std::vector<double>> base_values(fe_element.n_base_elements());
+        for (unsigned int b = 0; b < base_values.size(); ++b)
+          base_values[b].resize(fe_element.base_element(b).n_dofs_per_cell());
         for (std::size_t c = 0; c < candidates.size(); ++c)
           {
             if (!keep[c])
@@ -438,10 +443,14 @@ namespace perideal
                                                                                       v));
                 inverse_transpose = transpose(invert(jacobian));
               }
+            for (unsigned int b = 0; b < base_values.size(); ++b)
+              for (unsigned int k = 0; k < base_values[b].size(); ++k)
+                base_values[b][k] = fe_element.base_element(b).shape_value(k, reference);
             for (unsigned int a = 0; a < n_dofs; ++a)
               {
                 const unsigned int fe_component = fe_element.system_to_component_index(a).first;
-                const double       value        = fe_element.shape_value(a, reference);
+                const auto        &base         = fe_element.system_to_base_index(a);
+                const double       value        = base_values[base.first.first][base.second];
                 if (value != 0.)
                   entries.push_back(
                     {particle * n_components + row_kinds.value[fe_component], dofs[a], value});

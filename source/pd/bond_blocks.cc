@@ -99,8 +99,8 @@ namespace perideal
       for (unsigned int b = bonds.row_start[i]; b < bonds.row_start[i + 1]; ++b)
         for (const long q : lattice_vector(i, b))
           reach = std::max(reach, std::abs(q));
-    const long  side       = 2 * reach + 1;
-    const auto  table_slot = [&](const std::array<long, dim> &q) {
+    const long side       = 2 * reach + 1;
+    const auto table_slot = [&](const std::array<long, dim> &q) {
       std::size_t slot = 0;
       for (unsigned int d = 0; d < dim; ++d)
         slot = slot * side + (q[d] + reach);

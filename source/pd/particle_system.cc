@@ -77,6 +77,15 @@ namespace perideal
       const double h1 = area / std::sqrt(g22), h2 = area / std::sqrt(g11);
       return std::min({alpha * h1, (1. - alpha) * h1, beta * h2, (1. - beta) * h2});
     }
+
+    /// The signed distance of @p x from @p crack's line (2D) or plane (3D) [m], positive on the
+    /// side of its normal: the distance PreCrack::cuts() takes the sides of a bond's ends from.
+    template <int dim>
+    double
+    plane_distance(const PreCrack<dim> &crack, const Point<dim> &x)
+    {
+      return (x - crack.vertices[0]) * crack_normal(crack.vertices);
+    }
   } // namespace
 
   template <int dim>
@@ -96,8 +105,8 @@ namespace perideal
 
     const double         tolerance = relative_tolerance * x.distance(y);
     const Tensor<1, dim> n         = crack_normal(vertices);
-    const double         dx        = plane_distance(x);
-    const double         dy        = plane_distance(y);
+    const double         dx        = plane_distance(*this, x);
+    const double         dy        = plane_distance(*this, y);
     // An end within the tolerance of the plane is on the side tie_break_direction() points
     // into (of +n if the plane holds the direction, a case of measure zero).
     const int  on_plane = tie_break_direction<dim>() * n >= 0. ? 1 : -1;
@@ -111,13 +120,6 @@ namespace perideal
                          std::abs(dy) <= tolerance ? y - dy * n :
                                                      x + (dx / (dx - dy)) * (y - x);
     return depth_inside(vertices, p) > tolerance;
-  }
-
-  template <int dim>
-  double
-  PreCrack<dim>::plane_distance(const Point<dim> &x) const
-  {
-    return (x - vertices[0]) * crack_normal(vertices);
   }
 
   template <int dim>
@@ -444,12 +446,12 @@ namespace perideal
     // tolerance (relative_tolerance times the bond's length, at most the reach), is not cut:
     // most bonds, rejected by the particles' distances from the plane, each computed once.
     const double                     far = 2. * PreCrack<dim>::relative_tolerance * reach;
-    std::vector<std::vector<double>> plane_distance(pre_cracks.size());
+    std::vector<std::vector<double>> distances(pre_cracks.size());
     for (unsigned int c = 0; c < pre_cracks.size(); ++c)
       for (const Point<dim> &x : reference_positions)
-        plane_distance[c].push_back(pre_cracks[c].plane_distance(x));
+        distances[c].push_back(plane_distance(pre_cracks[c], x));
     const auto may_cut = [&](const unsigned int c, const unsigned int i, const unsigned int j) {
-      const double di = plane_distance[c][i], dj = plane_distance[c][j];
+      const double di = distances[c][i], dj = distances[c][j];
       return !((di > far && dj > far) || (di < -far && dj < -far));
     };
 

@@ -38,11 +38,6 @@ namespace perideal
     bool
     cuts(const dealii::Point<dim> &x, const dealii::Point<dim> &y) const;
 
-    /// The signed distance of @p x from the crack's line (2D) or plane (3D) [m], positive on
-    /// the side of its normal: the distance cuts() takes its sides from.
-    double
-    plane_distance(const dealii::Point<dim> &x) const;
-
     /// The tolerance of cuts() relative to the bond's length: an end this close to the plane
     /// is on it, a crossing this close to the crack's boundary is on the boundary.
     static constexpr double relative_tolerance = 1e-9;
