@@ -93,17 +93,17 @@ namespace perideal
 
     // Bond classes (lattice vectors), ranked with the first component slowest so that the
     // neighbour ranges of consecutive blocks of a group are a lattice line apart: a dense table
-    // over the box [-reach, reach]^dim of the vectors, enumerated in that (lexicographic) order.
-    long reach = 0;
+    // over the box [-extent, extent]^dim of the vectors, enumerated in that (lexicographic) order.
+    long extent = 0;
     for (unsigned int i = 0; i < n_owned; ++i)
       for (unsigned int b = bonds.row_start[i]; b < bonds.row_start[i + 1]; ++b)
         for (const long q : lattice_vector(i, b))
-          reach = std::max(reach, std::abs(q));
-    const long side       = 2 * reach + 1;
+          extent = std::max(extent, std::abs(q));
+    const long side       = 2 * extent + 1;
     const auto table_slot = [&](const std::array<long, dim> &q) {
       std::size_t slot = 0;
       for (unsigned int d = 0; d < dim; ++d)
-        slot = slot * side + (q[d] + reach);
+        slot = slot * side + (q[d] + extent);
       return slot;
     };
     const unsigned int        none = numbers::invalid_unsigned_int;
@@ -121,7 +121,7 @@ namespace perideal
           std::size_t rest    = slot;
           for (unsigned int d = dim; d-- > 0;)
             {
-              c.xi[d] = (long(rest % side) - reach) * dx;
+              c.xi[d] = (long(rest % side) - extent) * dx;
               rest /= side;
             }
           for (unsigned int d = 0; d < dim; ++d)
