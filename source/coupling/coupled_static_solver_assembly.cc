@@ -12,6 +12,7 @@
 #include <perideal/coupling/matrix_rows.h>
 
 #include <algorithm>
+#include <numeric>
 
 
 namespace perideal
@@ -21,11 +22,13 @@ namespace perideal
   namespace
   {
     /// @p result = @p A^T diag(@p w) @p A, with rows and columns partitioned as @p owned (A's
-    /// columns): every local row r of A adds w_r a_r a_r^T, rows of other ranks sent by
-    /// compress(). Trilinos' transposed products (EpetraExt's Multiply with A transposed, with or
-    /// without an explicit transpose) corrupt the heap on two ranks for some partitions (the
-    /// coupled torsion of tests/coupling/torsion_edge_crack_02, the PD part of overlapping
-    /// Schwarz), so the product is summed here.
+    /// columns): row i of the result is sum_r w_r a_ri a_r over the local rows r of A that have
+    /// column i, summed row by row with a dense accumulator over the columns A touches
+    /// (Gustavson's product with A's transpose), rows of other ranks sent by compress().
+    /// Trilinos' transposed products (EpetraExt's Multiply with A transposed, with or without
+    /// an explicit transpose) corrupt the heap on two ranks for some partitions (the coupled
+    /// torsion of tests/coupling/torsion_edge_crack_02, the PD part of overlapping Schwarz), so
+    /// the product is summed here.
     void
     weighted_gram(const SparseMatrix &A,
                   const SolverVector &w,
@@ -33,35 +36,107 @@ namespace perideal
                   const MPI_Comm      comm,
                   SparseMatrix       &result)
     {
-      std::vector<types::global_dof_index> touched;
-      for_each_local_row(A, [&](const auto, const auto &columns, const double *) {
-        touched.insert(touched.end(), columns.begin(), columns.end());
+      // A's local rows in Epetra's compressed storage (columns numbered in A's column map),
+      // and each column's position among the columns A touches sorted by global index.
+      const Epetra_CrsMatrix &epetra    = A.trilinos_matrix();
+      int                    *row_start = nullptr, *column = nullptr;
+      double                 *value = nullptr;
+      AssertThrow(epetra.ExtractCrsDataPointers(row_start, column, value) == 0,
+                  ExcMessage("weighted_gram() needs a matrix in Epetra's optimized storage."));
+      const unsigned int                   n_rows    = epetra.NumMyRows();
+      const unsigned int                   n_columns = epetra.NumMyCols();
+      std::vector<types::global_dof_index> touched(n_columns);
+      for (unsigned int c = 0; c < n_columns; ++c)
+        touched[c] = TrilinosWrappers::global_column_index(epetra, c);
+      std::vector<unsigned int> sorted(n_columns);
+      std::iota(sorted.begin(), sorted.end(), 0u);
+      std::sort(sorted.begin(), sorted.end(), [&](const unsigned int a, const unsigned int b) {
+        return touched[a] < touched[b];
       });
-      std::sort(touched.begin(), touched.end());
-      touched.erase(std::unique(touched.begin(), touched.end()), touched.end());
-      IndexSet relevant(owned);
-      relevant.add_indices(touched.begin(), touched.end());
-      relevant.compress();
+      std::vector<unsigned int> position(n_columns);
+      for (unsigned int k = 0; k < n_columns; ++k)
+        position[sorted[k]] = k;
+      std::vector<double> weight(n_rows);
+      for (unsigned int r = 0; r < n_rows; ++r)
+        weight[r] = w[TrilinosWrappers::global_row_index(epetra, r)];
 
+      // A's transpose: for each column (sorted), the rows of A that have it and their entry.
+      std::vector<unsigned int> column_start(n_columns + 1, 0);
+      for (int k = 0; k < row_start[n_rows]; ++k)
+        ++column_start[position[column[k]] + 1];
+      std::partial_sum(column_start.begin(), column_start.end(), column_start.begin());
+      std::vector<unsigned int> transposed_row(row_start[n_rows]),
+        transposed_entry(row_start[n_rows]);
+      {
+        std::vector<unsigned int> next(column_start.begin(), column_start.end() - 1);
+        for (unsigned int r = 0; r < n_rows; ++r)
+          for (int k = row_start[r]; k < row_start[r + 1]; ++k)
+            {
+              const unsigned int t = next[position[column[k]]]++;
+              transposed_row[t]    = r;
+              transposed_entry[t]  = k;
+            }
+      }
+
+      // Row i (sorted) of the result: its columns (sorted) and, if @p sum, its values
+      // sum_r w_r a_ri a_r.
+      std::vector<double>                  accumulated(n_columns, 0.);
+      std::vector<unsigned char>           is_set(n_columns, 0);
+      std::vector<unsigned int>            row_columns;
+      std::vector<types::global_dof_index> global_columns;
+      std::vector<double>                  row_values;
+      const auto                           form_row = [&](const unsigned int i, const bool sum) {
+        row_columns.clear();
+        for (unsigned int t = column_start[i]; t < column_start[i + 1]; ++t)
+          {
+            const unsigned int r = transposed_row[t];
+            const double       f = weight[r] * value[transposed_entry[t]];
+            for (int k = row_start[r]; k < row_start[r + 1]; ++k)
+              {
+                const unsigned int c = position[column[k]];
+                if (!is_set[c])
+                  {
+                    is_set[c] = 1;
+                    row_columns.push_back(c);
+                  }
+                if (sum)
+                  accumulated[c] += f * value[k];
+              }
+          }
+        std::sort(row_columns.begin(), row_columns.end());
+        global_columns.resize(row_columns.size());
+        row_values.resize(row_columns.size());
+        for (std::size_t k = 0; k < row_columns.size(); ++k)
+          {
+            global_columns[k]           = touched[sorted[row_columns[k]]];
+            row_values[k]               = accumulated[row_columns[k]];
+            accumulated[row_columns[k]] = 0.;
+            is_set[row_columns[k]]      = 0;
+          }
+      };
+
+      IndexSet relevant(owned);
+      for (const auto index : touched)
+        relevant.add_index(index);
+      relevant.compress();
       DynamicSparsityPattern dsp(owned.size(), owned.size(), relevant);
-      for_each_local_row(A, [&](const auto, const auto &columns, const double *) {
-        for (const auto column : columns)
-          dsp.add_entries(column, columns.begin(), columns.end());
-      });
+      for (unsigned int i = 0; i < n_columns; ++i)
+        {
+          form_row(i, false);
+          dsp.add_entries(touched[sorted[i]], global_columns.begin(), global_columns.end(), true);
+        }
       SparsityTools::distribute_sparsity_pattern(dsp, owned, comm, relevant);
       result.reinit(owned, owned, dsp, comm);
-
-      std::vector<double> row_values;
-      for_each_local_row(A, [&](const auto row, const auto &columns, const double *values) {
-        const double weight = w[row];
-        row_values.resize(columns.size());
-        for (std::size_t k = 0; k < columns.size(); ++k)
-          {
-            for (std::size_t l = 0; l < columns.size(); ++l)
-              row_values[l] = weight * values[k] * values[l];
-            result.add(columns[k], columns.size(), columns.data(), row_values.data(), false);
-          }
-      });
+      for (unsigned int i = 0; i < n_columns; ++i)
+        {
+          form_row(i, true);
+          result.add(touched[sorted[i]],
+                     global_columns.size(),
+                     global_columns.data(),
+                     row_values.data(),
+                     false,
+                     true);
+        }
       result.compress(VectorOperation::add);
     }
   } // namespace
