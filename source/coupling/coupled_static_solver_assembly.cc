@@ -60,76 +60,87 @@ namespace perideal
       for (unsigned int r = 0; r < n_rows; ++r)
         weight[r] = w[TrilinosWrappers::global_row_index(epetra, r)];
 
-      // A's transpose: for each column (sorted), the rows of A that have it and their entry.
+      // A's columns as positions in the sorted order, and A's transpose: for each column
+      // (sorted), the rows of A that have it and their entry.
+      const unsigned int        n_entries = row_start[n_rows];
+      std::vector<unsigned int> entry_column(n_entries);
+      for (unsigned int k = 0; k < n_entries; ++k)
+        entry_column[k] = position[column[k]];
       std::vector<unsigned int> column_start(n_columns + 1, 0);
-      for (int k = 0; k < row_start[n_rows]; ++k)
-        ++column_start[position[column[k]] + 1];
+      for (const unsigned int c : entry_column)
+        ++column_start[c + 1];
       std::partial_sum(column_start.begin(), column_start.end(), column_start.begin());
-      std::vector<unsigned int> transposed_row(row_start[n_rows]),
-        transposed_entry(row_start[n_rows]);
+      std::vector<unsigned int> transposed_row(n_entries), transposed_entry(n_entries);
       {
         std::vector<unsigned int> next(column_start.begin(), column_start.end() - 1);
         for (unsigned int r = 0; r < n_rows; ++r)
           for (int k = row_start[r]; k < row_start[r + 1]; ++k)
             {
-              const unsigned int t = next[position[column[k]]]++;
+              const unsigned int t = next[entry_column[k]]++;
               transposed_row[t]    = r;
               transposed_entry[t]  = k;
             }
       }
 
-      // Row i (sorted) of the result: its columns (sorted) and, if @p sum, its values
-      // sum_r w_r a_ri a_r.
-      std::vector<double>                  accumulated(n_columns, 0.);
-      std::vector<unsigned char>           is_set(n_columns, 0);
-      std::vector<unsigned int>            row_columns;
-      std::vector<types::global_dof_index> global_columns;
-      std::vector<double>                  row_values;
-      const auto                           form_row = [&](const unsigned int i, const bool sum) {
-        row_columns.clear();
-        for (unsigned int t = column_start[i]; t < column_start[i + 1]; ++t)
-          {
-            const unsigned int r = transposed_row[t];
-            const double       f = weight[r] * value[transposed_entry[t]];
-            for (int k = row_start[r]; k < row_start[r + 1]; ++k)
-              {
-                const unsigned int c = position[column[k]];
-                if (!is_set[c])
-                  {
-                    is_set[c] = 1;
-                    row_columns.push_back(c);
-                  }
-                if (sum)
-                  accumulated[c] += f * value[k];
-              }
-          }
-        std::sort(row_columns.begin(), row_columns.end());
-        global_columns.resize(row_columns.size());
-        row_values.resize(row_columns.size());
-        for (std::size_t k = 0; k < row_columns.size(); ++k)
-          {
-            global_columns[k]           = touched[sorted[row_columns[k]]];
-            row_values[k]               = accumulated[row_columns[k]];
-            accumulated[row_columns[k]] = 0.;
-            is_set[row_columns[k]]      = 0;
-          }
-      };
-
+      // The sparsity: row i (sorted) of the result has the columns of the rows of A that have
+      // column i, kept (sorted, as positions) for the sum below.
       IndexSet relevant(owned);
       for (const auto index : touched)
         relevant.add_index(index);
       relevant.compress();
-      DynamicSparsityPattern dsp(owned.size(), owned.size(), relevant);
+      DynamicSparsityPattern               dsp(owned.size(), owned.size(), relevant);
+      std::vector<std::size_t>             pattern_start{0};
+      std::vector<unsigned int>            pattern;
+      std::vector<unsigned char>           is_set(n_columns, 0);
+      std::vector<types::global_dof_index> global_columns;
       for (unsigned int i = 0; i < n_columns; ++i)
         {
-          form_row(i, false);
+          const auto row_begin = pattern.size();
+          for (unsigned int t = column_start[i]; t < column_start[i + 1]; ++t)
+            {
+              const unsigned int r = transposed_row[t];
+              for (int k = row_start[r]; k < row_start[r + 1]; ++k)
+                if (!is_set[entry_column[k]])
+                  {
+                    is_set[entry_column[k]] = 1;
+                    pattern.push_back(entry_column[k]);
+                  }
+            }
+          std::sort(pattern.begin() + row_begin, pattern.end());
+          global_columns.clear();
+          for (auto c = pattern.begin() + row_begin; c != pattern.end(); ++c)
+            {
+              global_columns.push_back(touched[sorted[*c]]);
+              is_set[*c] = 0;
+            }
+          pattern_start.push_back(pattern.size());
           dsp.add_entries(touched[sorted[i]], global_columns.begin(), global_columns.end(), true);
         }
       SparsityTools::distribute_sparsity_pattern(dsp, owned, comm, relevant);
       result.reinit(owned, owned, dsp, comm);
+
+      // The values: row i is sum_r w_r a_ri a_r, summed in a dense accumulator over the
+      // columns and added to Trilinos once.
+      std::vector<double> accumulated(n_columns, 0.), row_values;
       for (unsigned int i = 0; i < n_columns; ++i)
         {
-          form_row(i, true);
+          for (unsigned int t = column_start[i]; t < column_start[i + 1]; ++t)
+            {
+              const unsigned int r = transposed_row[t];
+              const double       f = weight[r] * value[transposed_entry[t]];
+              for (int k = row_start[r]; k < row_start[r + 1]; ++k)
+                accumulated[entry_column[k]] += f * value[k];
+            }
+          global_columns.clear();
+          row_values.clear();
+          for (auto c = pattern.begin() + pattern_start[i];
+               c != pattern.begin() + pattern_start[i + 1];
+               ++c)
+            {
+              global_columns.push_back(touched[sorted[*c]]);
+              row_values.push_back(accumulated[*c]);
+              accumulated[*c] = 0.;
+            }
           result.add(touched[sorted[i]],
                      global_columns.size(),
                      global_columns.data(),
