@@ -37,25 +37,28 @@ namespace perideal
                   SparseMatrix       &result)
     {
       // A's local rows in Epetra's compressed storage (columns numbered in A's column map),
-      // and each column's position among the columns A touches sorted by global index.
+      // the global indices of A's columns sorted, and each column's position among them.
       const Epetra_CrsMatrix &epetra    = A.trilinos_matrix();
       int                    *row_start = nullptr, *column = nullptr;
       double                 *value = nullptr;
       AssertThrow(epetra.ExtractCrsDataPointers(row_start, column, value) == 0,
                   ExcMessage("weighted_gram() needs a matrix in Epetra's optimized storage."));
-      const unsigned int                   n_rows    = epetra.NumMyRows();
-      const unsigned int                   n_columns = epetra.NumMyCols();
-      std::vector<types::global_dof_index> touched(n_columns);
-      for (unsigned int c = 0; c < n_columns; ++c)
-        touched[c] = TrilinosWrappers::global_column_index(epetra, c);
-      std::vector<unsigned int> sorted(n_columns);
-      std::iota(sorted.begin(), sorted.end(), 0u);
-      std::sort(sorted.begin(), sorted.end(), [&](const unsigned int a, const unsigned int b) {
-        return touched[a] < touched[b];
-      });
+      const unsigned int        n_rows    = epetra.NumMyRows();
+      const unsigned int        n_columns = epetra.NumMyCols();
       std::vector<unsigned int> position(n_columns);
+      std::iota(position.begin(), position.end(), 0u);
+      std::sort(position.begin(), position.end(), [&](const unsigned int a, const unsigned int b) {
+        return TrilinosWrappers::global_column_index(epetra, a) <
+               TrilinosWrappers::global_column_index(epetra, b);
+      });
+      std::vector<types::global_dof_index> global_column(n_columns);
       for (unsigned int k = 0; k < n_columns; ++k)
-        position[sorted[k]] = k;
+        global_column[k] = TrilinosWrappers::global_column_index(epetra, position[k]);
+      {
+        const std::vector<unsigned int> sorted(position);
+        for (unsigned int k = 0; k < n_columns; ++k)
+          position[sorted[k]] = k;
+      }
       std::vector<double> weight(n_rows);
       for (unsigned int r = 0; r < n_rows; ++r)
         weight[r] = w[TrilinosWrappers::global_row_index(epetra, r)];
@@ -85,8 +88,7 @@ namespace perideal
       // The sparsity: row i (sorted) of the result has the columns of the rows of A that have
       // column i, kept (sorted, as positions) for the sum below.
       IndexSet relevant(owned);
-      for (const auto index : touched)
-        relevant.add_index(index);
+      relevant.add_indices(global_column.begin(), global_column.end());
       relevant.compress();
       DynamicSparsityPattern               dsp(owned.size(), owned.size(), relevant);
       std::vector<std::size_t>             pattern_start{0};
@@ -110,11 +112,11 @@ namespace perideal
           global_columns.clear();
           for (auto c = pattern.begin() + row_begin; c != pattern.end(); ++c)
             {
-              global_columns.push_back(touched[sorted[*c]]);
+              global_columns.push_back(global_column[*c]);
               is_set[*c] = 0;
             }
           pattern_start.push_back(pattern.size());
-          dsp.add_entries(touched[sorted[i]], global_columns.begin(), global_columns.end(), true);
+          dsp.add_entries(global_column[i], global_columns.begin(), global_columns.end(), true);
         }
       SparsityTools::distribute_sparsity_pattern(dsp, owned, comm, relevant);
       result.reinit(owned, owned, dsp, comm);
@@ -137,11 +139,11 @@ namespace perideal
                c != pattern.begin() + pattern_start[i + 1];
                ++c)
             {
-              global_columns.push_back(touched[sorted[*c]]);
+              global_columns.push_back(global_column[*c]);
               row_values.push_back(accumulated[*c]);
               accumulated[*c] = 0.;
             }
-          result.add(touched[sorted[i]],
+          result.add(global_column[i],
                      global_columns.size(),
                      global_columns.data(),
                      row_values.data(),
