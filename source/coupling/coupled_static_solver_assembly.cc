@@ -173,6 +173,8 @@ namespace perideal
     // K = E_f^T K_FE E_f + (G T_f)^T diag(w) (G T_f) + D on the free and s on the prescribed
     // diagonal, summed row by row (both parts have the rows of z).
     std::vector<double> diagonal(n_local, 0.);
+    // The factorization and the AMG hierarchy refer to the matrix: drop them before it changes.
+    linear_system.clear();
     {
       DynamicSparsityPattern dsp(z_owned.size(), z_owned.size(), z_owned);
       for (const SparseMatrix *part : {&fe_part, &pd_part})
@@ -215,7 +217,6 @@ namespace perideal
           n_held += 1.;
         }
     system_matrix.compress(VectorOperation::add);
-    linear_system.clear();
     find_mechanisms(material);
     // A convection condition holds a temperature too (its h int phi_i phi_j is in K_FE).
     for (const auto &c : fe->conditions())
