@@ -14,6 +14,7 @@
 
 #include <iostream>
 #include <map>
+#include <sstream>
 #include <string>
 #include <utility>
 #include <vector>
@@ -24,7 +25,8 @@ namespace
   print_usage()
   {
     std::cout
-      << "Usage: perideal-solid [--validate | --restart] FILE.prm\n"
+      << "Usage: perideal-solid [--restart] FILE.prm\n"
+         "       perideal-solid --validate FILE.prm [FILE.prm ...]\n"
          "       perideal-solid --print-parameters [2|3]\n"
          "       perideal-solid --version | --help\n"
          "       perideal-solid --print-parameter-reference 2|3\n"
@@ -32,10 +34,12 @@ namespace
          "(<Discretization/Body>),\n"
          "                        an FE mesh (<Finite elements>), or both joined through an "
          "overlap\n"
-         "  --validate FILE.prm   make every check of a run's set-up short of the solver's "
+         "  --validate FILE.prm ...\n"
+         "                        make every check of a run's set-up short of the solver's "
          "matrices\n"
-         "                        (entries, mesh, particles, model, coupling) and exit (0: "
-         "valid)\n"
+         "                        (entries, mesh, particles, model, coupling) for each file "
+         "in turn,\n"
+         "                        print its verdict and exit (0: every file valid)\n"
          "  --restart FILE.prm    continue the run of FILE.prm from its newest checkpoint\n"
          "                        (<Output/Directory>/checkpoint, written by <Output/"
          "Checkpoint interval>\n"
@@ -192,6 +196,58 @@ namespace
                                                       physics_conditions);
     perideal::write_parameter_reference(prm, dim, std::cout);
   }
+  /// Validate or run @p file in the dimension its <Dimension> entry names.
+  void
+  run(const std::string &file, const bool validate_only, const bool restart)
+  {
+    dealii::ParameterHandler dimension_only;
+    dimension_only.declare_entry("Dimension", "2", dealii::Patterns::Integer(2, 3), "");
+    perideal::ParameterUtilities::parse_partially(dimension_only, file);
+    if (dimension_only.get_integer("Dimension") == 2)
+      run<2>(file, validate_only, restart);
+    else
+      run<3>(file, validate_only, restart);
+  }
+
+  /**
+   * --validate: check each of @p files in turn (one process start for all of them), print
+   * "FILE: valid" or, on the error stream, "Error in FILE:" and what to fix; with more than one
+   * file, a count at the end. Returns whether every file is valid. The checks run on every rank
+   * alike, so a refusal leaves the ranks in step for the next file.
+   */
+  bool
+  validate_files(const std::vector<std::string> &files)
+  {
+    const bool   is_root = dealii::Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0;
+    unsigned int refused = 0;
+    for (const auto &file : files)
+      {
+        std::string error;
+        try
+          {
+            run(file, true, false);
+          }
+        catch (const dealii::ExceptionBase &exc)
+          {
+            std::ostringstream message;
+            exc.print_info(message);
+            error = message.str();
+          }
+        catch (const std::exception &exc)
+          {
+            error = exc.what();
+          }
+        if (!error.empty())
+          {
+            ++refused;
+            std::cerr << "\nError in " << file << ":\n" << error << std::endl;
+          }
+      }
+    if (files.size() > 1 && is_root)
+      std::cout << files.size() << " files: " << files.size() - refused << " valid, " << refused
+                << " refused" << std::endl;
+    return refused == 0;
+  }
 } // namespace
 
 int
@@ -239,25 +295,23 @@ main(int argc, char **argv)
             print_parameters<2>();
           return 0;
         }
-      const bool validate = (args[0] == "--validate"), restart = (args[0] == "--restart");
-      AssertThrow(!(validate || restart) || args.size() == 2,
-                  dealii::ExcMessage(args[0] + " takes exactly one parameter file."));
-      AssertThrow(validate || restart || (args.size() == 1 && args[0].rfind("-", 0) != 0),
+      if (args[0] == "--validate")
+        {
+          AssertThrow(args.size() >= 2,
+                      dealii::ExcMessage("--validate takes one or more parameter files."));
+          return validate_files({args.begin() + 1, args.end()}) ? 0 : 1;
+        }
+      const bool restart = (args[0] == "--restart");
+      AssertThrow(!restart || args.size() == 2,
+                  dealii::ExcMessage("--restart takes exactly one parameter file."));
+      AssertThrow(restart || (args.size() == 1 && args[0].rfind("-", 0) != 0),
                   dealii::ExcMessage("Unknown option or extra argument in <" + args[0] +
                                      (args.size() > 1 ? " " + args[1] : std::string()) +
                                      ">; perideal-solid --help lists the accepted ones."));
-      const std::string file = (validate || restart) ? args[1] : args[0];
-      // A run's log names the build first (a validation prints its verdict only).
-      if (!validate && is_root)
+      // A run's log names the build first.
+      if (is_root)
         std::cout << perideal::version_line() << std::endl;
-
-      dealii::ParameterHandler dimension_only;
-      dimension_only.declare_entry("Dimension", "2", dealii::Patterns::Integer(2, 3), "");
-      perideal::ParameterUtilities::parse_partially(dimension_only, file);
-      if (dimension_only.get_integer("Dimension") == 2)
-        run<2>(file, validate, restart);
-      else
-        run<3>(file, validate, restart);
+      run(restart ? args[1] : args[0], false, restart);
     }
   catch (const dealii::ExceptionBase &exc)
     {
