@@ -2,11 +2,11 @@
 // Short variant of the alumina quench (doc/benchmarks/thermal_shock: quench.prm, all-PD bond-based
 // PMB on its perturbed lattice, dx = 0.25 mm, delta = 3.015 dx, convection h = 5e4 W/(m^2 K) to
 // water at 20 degrees C on all edges): a 10 x 10 mm segment (the plate's 10 mm width, which sets
-// the cooling; its cooled skin is 0.3 mm deep at 10 ms), the first 10 ms of the cooling in 4 load steps (cut above 500 broken bonds, as in
-// the benchmark), from T0 = 300 and 600 degrees C, without output files. The benchmark's file is
-// named relative to the repository's top directory, which the test links into its working
-// directory ('doc'). Checked (the thermal_shock_subcritical / _supercritical app tests check the
-// critical dT itself):
+// the cooling; its cooled skin is 0.3 mm deep at 10 ms), the first 10 ms of the cooling in 4 load
+// steps (cut above 500 broken bonds, as in the benchmark), from T0 = 300 and 600 degrees C, without
+// output files. The benchmark's file is named relative to the repository's top directory, which the
+// test links into its working directory ('doc'). Checked (the thermal_shock_subcritical /
+// _supercritical app tests check the critical dT itself):
 //  - bonds break at both T0 (dT = 280 and 580 K, far above dT_c = 83.2 K);
 //  - more at the higher T0 (measured: 336 and 858), the damaged skin along the edges longer;
 //  - the damage stays at the quenched edges: every particle with a damage index > 0 lies within

@@ -48,7 +48,7 @@ namespace
 {
   constexpr double L = 0.1, H = 0.01, thickness = 1e-3;
   constexpr double E = 2.5e9, nu = 0.25, rho = 1000., c = 100., k = 5e6, T0 = 300.;
-  constexpr double U0     = 1e-5;
+  constexpr double U0 = 1e-5;
   // The conductivity of the adiabatic runs (the conduction left over one period is negligible);
   // only their samples need the energies and the thermoelastic measure.
   constexpr double adiabatic_conductivity = 1e-6;
@@ -437,10 +437,10 @@ end
     // The steps of the run (ExplicitDynamics::run()), each sampled at its end: the heat advances
     // inside the mechanics' step (the adiabatic split).
     std::vector<Sample> samples;
-    auto               &physics = *problem.get_physics()[0];
-    auto               &state   = physics.state();
-    double              dt      = state.time_step;
-    const unsigned int  n_steps = ParameterUtilities::equal_time_steps(end_time, dt);
+    auto               &physics   = *problem.get_physics()[0];
+    auto               &state     = physics.state();
+    double              dt        = state.time_step;
+    const unsigned int  n_steps   = ParameterUtilities::equal_time_steps(end_time, dt);
     const bool          adiabatic = conductivity == adiabatic_conductivity;
     const Projection    weights   = projection(problem, v);
     physics.solver().start_state(state);
