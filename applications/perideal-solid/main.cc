@@ -196,6 +196,7 @@ namespace
                                                       physics_conditions);
     perideal::write_parameter_reference(prm, dim, std::cout);
   }
+
   /// Validate or run @p file in the dimension its <Dimension> entry names.
   void
   run(const std::string &file, const bool validate_only, const bool restart)

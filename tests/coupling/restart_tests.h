@@ -17,10 +17,11 @@
 //    app-solid/coupled_adr_crack_2d (nu = 0.25 on both sides, the grips moved 2 x 6 um in 6
 //    load steps, relative residual 1e-10): the bonds soften from step 5 on; stopped after step 5,
 //    the last load step re-solved while the histories grow (until 2026-12-07 8 load steps to
-//    2 x 8 um, stopped after step 6: a third more ADR iterations, the same checks). Restarted on another number of ranks, ADR
-//    follows another round-off path to the same residual, so the displacements agree to the
-//    solver's accuracy, not to round-off: measured 4e-9 of the largest value, checked against
-//    1e-7 (1000 x the relative residual; the other runs 1e-10).
+//    2 x 8 um, stopped after step 6: a third more ADR iterations, the same checks). Restarted
+//    on another number of ranks, ADR follows another round-off path to the same residual, so
+//    the displacements agree to the solver's accuracy, not to round-off: measured 4e-9 of the
+//    largest value (with the 8 load steps), checked against 1e-7 (1000 x the relative residual;
+//    the other runs 1e-10).
 // On the same number of ranks the final particle and FE displacements must be equal bit for bit,
 // and statistics.csv and the XDMF records must be the same files (no row lost or repeated). On 2
 // ranks each run is also stopped on 1 rank and restarted on 2, and stopped on 2 and restarted on
