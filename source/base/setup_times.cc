@@ -31,7 +31,8 @@ namespace perideal
                                                     "surface correction",
                                                     "kernel blocks",
                                                     "transfer operator",
-                                                    "FE assembly"};
+                                                    "FE assembly",
+                                                    "stable time step"};
         return names[stage];
       }
     } // namespace

@@ -222,7 +222,8 @@ namespace perideal
   double
   FERegion<dim>::stable_time_step(const FEVector *mass_in) const
   {
-    const FEVector &m = mass_in ? *mass_in : mass;
+    const SetupTimes::Scope time(SetupStage::stable_time_step);
+    const FEVector         &m = mass_in ? *mass_in : mass;
     // Gershgorin: lambda_max(M^-1 K) <= max_i sum_j |K_ij| / m_i.
     const auto sums  = absolute_row_sums();
     double     bound = 0.;

@@ -1,6 +1,7 @@
 // ---------------------------------------------------------------------
 // PeriDeal: interface of peridynamic material models.
 // ---------------------------------------------------------------------
+#include <perideal/base/setup_times.h>
 #include <perideal/pd/material_model.h>
 
 #include <algorithm>
@@ -23,7 +24,9 @@ namespace perideal
   }
 
   void
-  LinearizedModel::add_row(const double weight, const std::vector<Entry> &row, const double offset)
+  LinearizedModel::add_row(const double                          weight,
+                           const dealii::ArrayView<const Entry> &row,
+                           const double                          offset)
   {
     entries.insert(entries.end(), row.begin(), row.end());
     row_start.push_back(entries.size());
@@ -84,7 +87,8 @@ namespace perideal
   MaterialModel<dim>::stable_time_step(const ParticleSystem<dim> &particles,
                                        const double               density) const
   {
-    std::vector<double> bound;
+    const SetupTimes::Scope time(SetupStage::stable_time_step);
+    std::vector<double>     bound;
     stiffness_bound(particles, bound);
     const std::vector<double> inertia = inertia_densities(density);
     const std::vector<double> scales  = inertia_scales(particles, density);

@@ -6,6 +6,7 @@
 #include <perideal/pd/timoshenko_kernel.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 
 namespace perideal
@@ -30,73 +31,75 @@ namespace perideal
     const auto        &C       = bond_stiffness;
     const unsigned int n_trans = dim;
     // Transverse unit vectors e (dim - 1 of them) and the rotation axes n x e of their shear.
-    std::vector<Tensor<1, dim>> e;
-    std::vector<Tensor<1, 3>>   axis;
+    std::array<Tensor<1, dim>, dim - 1> e;
+    std::array<Tensor<1, 3>, dim - 1>   axis;
     if constexpr (dim == 2)
       {
-        Tensor<1, dim> t;
-        t[0] = -n[1];
-        t[1] = n[0];
-        e.push_back(t);
-        Tensor<1, 3> z;
-        z[2] = 1.;
-        axis.push_back(z);
+        e[0][0]    = -n[1];
+        e[0][1]    = n[0];
+        axis[0][2] = 1.;
       }
     else
       {
         Tensor<1, 3> a;
         a[std::abs(n[0]) < 0.6 ? 0 : 1] = 1.;
-        const Tensor<1, 3> e1           = cross_product_3d(n, a) / cross_product_3d(n, a).norm();
-        const Tensor<1, 3> e2           = cross_product_3d(n, e1);
-        e                               = {e1, e2};
-        axis                            = {cross_product_3d(n, e1), cross_product_3d(n, e2)};
+        e[0]                            = cross_product_3d(n, a) / cross_product_3d(n, a).norm();
+        e[1]                            = cross_product_3d(n, e[0]);
+        axis[0]                         = cross_product_3d(n, e[0]);
+        axis[1]                         = cross_product_3d(n, e[1]);
       }
-    std::vector<Entry> entries;
-    entries.reserve(4 * dim);
+    // A row's entries (at most 2 (dim + rotations) = 4 dim, the shear rows), no allocation per
+    // bond: the stiffness bound of a 3D lattice forms its rows for millions of bonds.
+    std::array<Entry, 4 * dim> entries;
+    unsigned int               n_entries = 0;
+    const auto add = [&](const unsigned int p, const unsigned int c, const double g) {
+      entries[n_entries++] = {p, c, g};
+    };
+    const auto emit_row = [&](const double weight, const unsigned int mode, const double offset) {
+      emit(weight, ArrayView<const Entry>(entries.data(), n_entries), mode, offset);
+      n_entries = 0;
+    };
     // Stretch: n . (u_j - u_i), weight k C_N / |xi|, offset the thermal extension.
     for (unsigned int d = 0; d < dim; ++d)
       {
-        entries.push_back({i, d, -n[d]});
-        entries.push_back({j, d, n[d]});
+        add(i, d, -n[d]);
+        add(j, d, n[d]);
       }
     const ParticleVector *delta_T = this->temperature_change();
-    emit(k * C.normal / r,
-         entries,
-         0u,
-         delta_T != nullptr ?
-           bond_expansion() * 0.5 * (delta_T->local_element(i) + delta_T->local_element(j)) * r :
-           0.);
+    emit_row(k * C.normal / r,
+             0u,
+             delta_T != nullptr ? bond_expansion() * 0.5 *
+                                    (delta_T->local_element(i) + delta_T->local_element(j)) * r :
+                                  0.);
     // Shear strains: e . (u_j - u_i) / |xi| - (n x e) . (theta_i + theta_j) / 2, weight
     // 12 k C_theta / |xi|.
     if (C.shear != 0.)
       for (unsigned int a = 0; a < e.size(); ++a)
         {
-          entries.clear();
           for (unsigned int d = 0; d < dim; ++d)
             {
-              entries.push_back({i, d, -e[a][d] / r});
-              entries.push_back({j, d, e[a][d] / r});
+              add(i, d, -e[a][d] / r);
+              add(j, d, e[a][d] / r);
             }
           for (unsigned int q = 0; q < Kernel::n_components - n_trans; ++q)
             {
               const double g = -0.5 * axis[a][dim == 2 ? 2 : q];
-              entries.push_back({i, n_trans + q, g});
-              entries.push_back({j, n_trans + q, g});
+              add(i, n_trans + q, g);
+              add(j, n_trans + q, g);
             }
-          emit(12. * k * C.shear / r, entries, 1u, 0.);
+          emit_row(12. * k * C.shear / r, 1u, 0.);
         }
     // Bending rotations: e . (theta_j - theta_i) (2D: rz_j - rz_i), weight k C_B / |xi|.
     if (C.bending != 0.)
       for (unsigned int a = 0; a < (dim == 2 ? 1 : 2); ++a)
         {
-          entries.clear();
           for (unsigned int q = 0; q < Kernel::n_components - n_trans; ++q)
             {
               const double g = (dim == 2 ? 1. : e[a][q]);
-              entries.push_back({i, n_trans + q, -g});
-              entries.push_back({j, n_trans + q, g});
+              add(i, n_trans + q, -g);
+              add(j, n_trans + q, g);
             }
-          emit(k * C.bending / r, entries, 2u, 0.);
+          emit_row(k * C.bending / r, 2u, 0.);
         }
   }
 
@@ -149,10 +152,6 @@ namespace perideal
     const BondList    &bonds   = particles.bonds();
     const unsigned int n_owned = particles.n_owned(), nc = Kernel::n_components;
     const double       ratio = std::sqrt(inertia_factor) * spacing; // sqrt(J / rho)
-    const auto         scale = [&](const unsigned int c, const unsigned int e) {
-      const bool rc = c >= unsigned(dim), re = e >= unsigned(dim);
-      return rc == re ? 1. : (rc ? ratio : 1. / ratio);
-    };
     per_particle.assign(std::size_t(n_owned) * nc, 0.);
     for (unsigned int i = 0; i < n_owned; ++i)
       for (std::size_t b = bonds.row_start[i]; b < bonds.row_start[i + 1]; ++b)
@@ -161,18 +160,24 @@ namespace perideal
                     i,
                     b,
                     [&](const double w, const auto &entries, unsigned int, double) {
+                      // sum_e |g_e| sqrt(rho_c / rho_e) from the sums over the translations and
+                      // over the rotations: sqrt(J / rho) = ratio between the two.
+                      double translations = 0., rotations = 0.;
+                      for (const auto &other : entries)
+                        (other.component < unsigned(dim) ? translations : rotations) +=
+                          std::abs(other.coefficient);
+                      const double of_translation = translations + rotations / ratio,
+                                   of_rotation    = rotations + ratio * translations;
                       for (const auto &entry : entries)
                         if (entry.particle < n_owned)
-                          {
-                            double sum = 0.;
-                            for (const auto &other : entries)
-                              sum += std::abs(other.coefficient) *
-                                     scale(entry.component, other.component);
-                            per_particle[entry.particle * nc + entry.component] +=
-                              w * std::abs(entry.coefficient) * sum /
-                              particles.volumes()[entry.particle];
-                          }
+                          per_particle[entry.particle * nc + entry.component] +=
+                            w * std::abs(entry.coefficient) *
+                            (entry.component < unsigned(dim) ? of_translation : of_rotation);
                     });
+    // The sums are forces per volume of the particle.
+    for (unsigned int i = 0; i < n_owned; ++i)
+      for (unsigned int c = 0; c < nc; ++c)
+        per_particle[i * nc + c] /= particles.volumes()[i];
   }
 
   template <int dim>

@@ -31,6 +31,9 @@ namespace perideal
     transfer_operator,
     /// The FE region's mesh, dofs and matrices (FERegion).
     fe_assembly,
+    /// The stable time steps' stiffness bounds (MaterialModel::stable_time_step(),
+    /// FERegion::stable_time_step()).
+    stable_time_step,
     n_stages
   };
 

@@ -4,6 +4,7 @@
 #ifndef perideal_pd_material_model_h
 #define perideal_pd_material_model_h
 
+#include <deal.II/base/array_view.h>
 #include <deal.II/base/parameter_handler.h>
 #include <deal.II/base/symmetric_tensor.h>
 
@@ -146,7 +147,9 @@ namespace perideal
      * @brief Append a row of weight @p weight and offset @p offset with the entries @p entries.
      */
     void
-    add_row(const double weight, const std::vector<Entry> &entries, const double offset = 0.);
+    add_row(const double                          weight,
+            const dealii::ArrayView<const Entry> &entries,
+            const double                          offset = 0.);
 
     /**
      * @brief The number of unknowns per particle (the columns of a particle).
