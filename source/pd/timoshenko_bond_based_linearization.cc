@@ -43,12 +43,13 @@ namespace perideal
       {
         Tensor<1, 3> a;
         a[std::abs(n[0]) < 0.6 ? 0 : 1] = 1.;
-        e[0]                            = cross_product_3d(n, a) / cross_product_3d(n, a).norm();
+        const Tensor<1, 3> normal_to_a  = cross_product_3d(n, a);
+        e[0]                            = normal_to_a / normal_to_a.norm();
         e[1]                            = cross_product_3d(n, e[0]);
-        axis[0]                         = cross_product_3d(n, e[0]);
+        axis[0]                         = e[1]; // n x e[0]
         axis[1]                         = cross_product_3d(n, e[1]);
       }
-    // A row's entries (at most 2 (dim + rotations) = 4 dim, the shear rows), no allocation per
+    // A row's entries (at most 2 (dim + rotations) <= 4 dim, the shear rows), no allocation per
     // bond: the stiffness bound of a 3D lattice forms its rows for millions of bonds.
     std::array<Entry, 4 * dim> entries;
     unsigned int               n_entries = 0;
