@@ -8,6 +8,7 @@
 #include <filesystem>
 #include <fstream>
 #include <memory>
+#include <numeric>
 
 #include <boost/serialization/string.hpp>
 #include <boost/serialization/utility.hpp>
@@ -51,25 +52,30 @@ namespace perideal
   void
   ParticleOutput<dim>::set_points(const std::vector<dealii::Point<dim>> &points)
   {
-    this->points = points;
+    // Flat, as the HDF5 nodes are laid out (write() moves them there).
+    coordinates.clear();
+    coordinates.reserve(dim * points.size());
+    for (const auto &point : points)
+      for (unsigned int d = 0; d < dim; ++d)
+        coordinates.push_back(point[d]);
   }
 
 
 
   template <int dim>
   void
-  ParticleOutput<dim>::add_scalar_field(const std::string &name, const std::vector<double> &values)
+  ParticleOutput<dim>::add_scalar_field(const std::string &name, std::vector<double> values)
   {
-    add_vector_field(name, 1, values);
+    add_vector_field(name, 1, std::move(values));
   }
 
 
 
   template <int dim>
   void
-  ParticleOutput<dim>::add_vector_field(const std::string         &name,
-                                        const unsigned int         n_components,
-                                        const std::vector<double> &values)
+  ParticleOutput<dim>::add_vector_field(const std::string  &name,
+                                        const unsigned int  n_components,
+                                        std::vector<double> values)
   {
     AssertThrow(n_components >= 1 && n_components <= dim + 3,
                 dealii::ExcMessage("The field <" + name + "> has " + std::to_string(n_components) +
@@ -79,16 +85,7 @@ namespace perideal
     for (const auto &field : fields)
       AssertThrow(field.name != name,
                   dealii::ExcMessage("The output field <" + name + "> was added twice."));
-    fields.push_back(Field{name, n_components, values});
-  }
-
-
-
-  template <int dim>
-  void
-  ParticleOutput<dim>::clear_fields()
-  {
-    fields.clear();
+    fields.push_back(Field{name, n_components, std::move(values)});
   }
 
 
@@ -122,14 +119,15 @@ namespace perideal
 
   template <int dim>
   void
-  ParticleOutput<dim>::build_patches()
+  ParticleOutput<dim>::name_data_sets()
   {
     // Check the sizes now, when the number of points is final.
+    const std::size_t n_points = coordinates.size() / dim;
     for (const auto &field : fields)
-      AssertThrow(field.values.size() == field.n_components * points.size(),
+      AssertThrow(field.values.size() == field.n_components * n_points,
                   dealii::ExcMessage("The output field <" + field.name + "> has " +
                                      std::to_string(field.values.size()) +
-                                     " values, but there are " + std::to_string(points.size()) +
+                                     " values, but there are " + std::to_string(n_points) +
                                      " points with " + std::to_string(field.n_components) +
                                      " components each."));
 
@@ -154,23 +152,31 @@ namespace perideal
           for (unsigned int c = 0; c < field.n_components; ++c)
             dataset_names.push_back(field.name + "_" + std::to_string(c));
       }
-
-    const unsigned int n_rows = dataset_names.size();
 #ifdef DEBUG
     // The writers are collective: all ranks need the same fields.
+    const unsigned int n_rows = dataset_names.size();
     Assert(dealii::Utilities::MPI::min(n_rows, comm) == dealii::Utilities::MPI::max(n_rows, comm),
            dealii::ExcMessage("All ranks must add the same output fields "
                               "before ParticleOutput::write()."));
 #endif
+  }
+
+
+
+  template <int dim>
+  void
+  ParticleOutput<dim>::build_patches()
+  {
     patches.clear();
-    patches.resize(points.size());
-    for (unsigned int p = 0; p < points.size(); ++p)
+    patches.resize(coordinates.size() / dim);
+    for (unsigned int p = 0; p < patches.size(); ++p)
       {
-        auto &patch                = patches[p];
-        patch.vertices[0]          = points[p];
+        auto &patch = patches[p];
+        for (unsigned int d = 0; d < dim; ++d)
+          patch.vertices[0][d] = coordinates[dim * p + d];
         patch.patch_index          = p;
         patch.points_are_available = false;
-        patch.data.reinit(n_rows, 1);
+        patch.data.reinit(dataset_names.size(), 1);
         unsigned int row = 0;
         for (const auto &field : fields)
           for (unsigned int c = 0; c < field.n_components; ++c, ++row)
@@ -214,12 +220,18 @@ namespace perideal
   void
   ParticleOutput<dim>::write(const unsigned int step, const double time)
   {
-    build_patches();
-
+    name_data_sets();
+    if (vtu_enabled)
+      {
+        build_patches();
+        write_vtu_files(step, time);
+        patches = {};
+      }
+    // Moves the coordinates and the fields' values into its data sets.
     if (hdf5_xdmf_enabled)
       write_hdf5_xdmf(step, time);
-    if (vtu_enabled)
-      write_vtu_files(step, time);
+    coordinates = {};
+    fields.clear();
   }
 
 
@@ -228,49 +240,44 @@ namespace perideal
   void
   ParticleOutput<dim>::write_hdf5_xdmf(const unsigned int step, const double time)
   {
-    // The patches keep their values in single precision (deal.II 9.4's Patch::data): the
-    // filter takes the nodes from patches without values and the values from #fields, so that
-    // the data sets (declared double, XDMF Precision="8") hold the doubles themselves.
-    const auto fill_filter = [this](dealii::DataOutBase::DataOutFilter &filter) {
-      std::vector<dealii::DataOutBase::Patch<0, dim>> nodes(patches.size());
-      for (unsigned int p = 0; p < patches.size(); ++p)
-        {
-          nodes[p].vertices[0]          = patches[p].vertices[0];
-          nodes[p].patch_index          = p;
-          nodes[p].points_are_available = false;
-        }
-      dealii::DataOutBase::write_filtered_data(nodes, {}, {}, filter);
-
-      dealii::Table<2, double> values(dataset_names.size(), points.size());
-      unsigned int             row = 0;
-      for (const auto &field : fields)
-        for (unsigned int c = 0; c < field.n_components; ++c, ++row)
-          for (unsigned int p = 0; p < points.size(); ++p)
-            values(row, p) = field.values[p * field.n_components + c];
-      // The data sets of build_patches(): a field of dim components as one vector, the others
-      // by component.
-      row = 0;
-      for (const auto &field : fields)
-        if (field.n_components == dim)
+    // The values in double precision from #fields (the patches keep single precision, deal.II
+    // 9.4's Patch::data), moved where the layout is the same; one node and one vertex cell per
+    // particle, coincident ones not merged (two particles at the same position are still two).
+    const unsigned int n_points = coordinates.size() / dim;
+    HDF5StepData<dim>  data;
+    data.cell_dim = 0;
+    data.nodes    = std::move(coordinates);
+    data.cells.resize(n_points);
+    std::iota(data.cells.begin(), data.cells.end(), 0U);
+    // The data sets of name_data_sets(): a field of dim components as one vector (three values
+    // per node: a 2D vector's third is zero), the others by component.
+    using DataSet    = typename HDF5StepData<dim>::DataSet;
+    unsigned int row = 0;
+    for (auto &field : fields)
+      {
+        if (field.n_components == 1 || (field.n_components == dim && dim == 3))
+          data.data_sets.push_back(
+            DataSet{dataset_names[row], field.n_components, std::move(field.values)});
+        else if (field.n_components == dim)
           {
-            filter.write_data_set(field.name, dim, row, values);
-            row += dim;
+            DataSet set{field.name, 3, std::vector<double>(3 * n_points)};
+            for (unsigned int p = 0; p < n_points; ++p)
+              for (unsigned int d = 0; d < dim; ++d)
+                set.values[3 * p + d] = field.values[dim * p + d];
+            data.data_sets.push_back(std::move(set));
           }
         else
-          for (unsigned int c = 0; c < field.n_components; ++c, ++row)
-            filter.write_data_set(dataset_names[row], 1, row, values);
-    };
-    // Do not merge coincident vertices: two particles at the same position are still two.
-    write_hdf5_xdmf_step(*this,
-                         !patches.empty(),
-                         false,
-                         comm,
-                         directory,
-                         base_name,
-                         step,
-                         time,
-                         xdmf_entries,
-                         fill_filter);
+          for (unsigned int c = 0; c < field.n_components; ++c)
+            {
+              DataSet set{dataset_names[row + c], 1, std::vector<double>(n_points)};
+              for (unsigned int p = 0; p < n_points; ++p)
+                set.values[p] = field.values[field.n_components * p + c];
+              data.data_sets.push_back(std::move(set));
+            }
+        row += field.n_components;
+        field.values = {};
+      }
+    write_hdf5_xdmf_step(std::move(data), comm, directory, base_name, step, time, xdmf_entries);
   }
 
 

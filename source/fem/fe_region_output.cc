@@ -18,6 +18,19 @@ namespace perideal
 {
   using namespace dealii;
 
+  namespace
+  {
+    // DataOut with the names and vector ranges of its point data in reach of
+    // merged_step_data() (deal.II keeps them for its own writers).
+    template <int dim>
+    class FieldDataOut : public DataOut<dim>
+    {
+    public:
+      using DataOut<dim>::get_dataset_names;
+      using DataOut<dim>::get_nonscalar_data_ranges;
+    };
+  } // namespace
+
   template <int dim>
   std::vector<double>
   FERegion<dim>::section_integrals(const FEVector &u) const
@@ -71,8 +84,8 @@ namespace perideal
       return;
     // With a thermal strain, the stress of the mechanical strain and the temperature change
     // (without, point_temperature_change() is empty: the physics' postprocessor()).
-    const auto   derived = physics_model->thermal_postprocessor(point_temperature_change(time));
-    DataOut<dim> data_out;
+    const auto derived = physics_model->thermal_postprocessor(point_temperature_change(time));
+    FieldDataOut<dim> data_out;
     data_out.attach_dof_handler(dof_handler);
     // Only the locally owned cells that carry FE unknowns (not the FE_Nothing ones).
     using CellIterator       = typename Triangulation<dim>::cell_iterator;
@@ -113,9 +126,9 @@ namespace perideal
     data_out.add_data_vector(u, names, DataOut<dim>::type_dof_data, interpretation);
     data_out.add_data_vector(u, *derived);
     data_out.build_patches();
-    write_hdf5_xdmf_step(data_out,
-                         !data_out.get_patches().empty(),
-                         true,
+    write_hdf5_xdmf_step(merged_step_data(data_out.get_patches(),
+                                          data_out.get_dataset_names(),
+                                          data_out.get_nonscalar_data_ranges()),
                          comm,
                          directory,
                          base_name,

@@ -133,8 +133,6 @@ namespace
           p[d] = 0.5 * i / (1 << d);
         points.push_back(p);
       }
-    output.set_points(points);
-
     for (unsigned int step = 0; step < 2; ++step)
       {
         std::vector<double> damage, displacement, extra;
@@ -148,7 +146,8 @@ namespace
             for (unsigned int c = 0; c < dim + 1; ++c)
               extra.push_back((c + 1.) * i);
           }
-        output.clear_fields();
+        // write() consumes the points and the fields: both again for each step.
+        output.set_points(points);
         output.add_scalar_field("damage", damage);
         output.add_vector_field("displacement", dim, displacement);
         output.add_vector_field("extra", dim + 1, extra);
@@ -242,7 +241,6 @@ namespace
     perideal::ParticleOutput<3> output(MPI_COMM_WORLD, dir, "no_particles", true, true);
     for (unsigned int step = 0; step < 2; ++step)
       {
-        output.clear_fields();
         output.add_scalar_field("damage", {});
         output.add_vector_field("displacement", 3, {});
         output.write(step, 1e-6 * step);

@@ -7,46 +7,100 @@
 #include <deal.II/base/data_out_base.h>
 #include <deal.II/base/mpi.h>
 
-#include <functional>
 #include <string>
+#include <tuple>
 #include <vector>
 
 namespace perideal
 {
   /**
-   * @brief Write the patches of @p data as `<directory>/<base_name>_<step>.h5` (parallel HDF5,
-   * collective) and rewrite `<directory>/<base_name>.xdmf`, which lists @p entries plus this
-   * step (appended to @p entries).
+   * @brief One rank's share of an output step, laid out as its HDF5 data sets: the nodes, the
+   * cells over them and the point data.
+   */
+  template <int spacedim>
+  struct HDF5StepData
+  {
+    /**
+     * @brief A point data set: #width values per node (1 for a scalar, 3 for a vector, as
+     * XDMF wants them: a 2D vector has a zero third component).
+     */
+    struct DataSet
+    {
+      std::string         name;
+      unsigned int        width;
+      std::vector<double> values;
+    };
+
+    /**
+     * @brief The dimension of the cells: 0 for points (XDMF "Polyvertex", one node per cell),
+     * 2 for quadrilaterals, 3 for hexahedra.
+     */
+    unsigned int cell_dim = 0;
+
+    /**
+     * @brief The coordinates, spacedim per node.
+     */
+    std::vector<double> nodes;
+
+    /**
+     * @brief The nodes of each cell (2^cell_dim per cell, in XDMF's order), numbered on this
+     * rank from zero.
+     */
+    std::vector<unsigned int> cells;
+
+    std::vector<DataSet> data_sets;
+
+    unsigned int
+    n_nodes() const
+    {
+      return nodes.size() / spacedim;
+    }
+  };
+
+  /**
+   * @brief The step data of @p patches (one subdivision per patch, as DataOut::build_patches()
+   * makes by default), with coincident vertices merged into one node;
+   * a node takes its values from the last patch that has it (for fields that jump between
+   * cells, such as a stress, one of the cells' values). The point data's rows are named by
+   * @p names; the ranges of @p vectors become one data set each, every other row a scalar one
+   * (the arguments of DataOutBase::write_filtered_data()).
    *
-   * deal.II 9.4 cannot write parallel HDF5 if a rank has no patches:
-   * DataOutBase::write_hdf5_parallel() asserts patches.size() > 0 in debug mode, and in release
-   * mode H5Dwrite() fails on that rank ("no output buffer") because write_filtered_data() leaves
-   * its filter empty, so the collective data set calls do not match either. Only the ranks with
-   * patches (@p has_patches) therefore write, on a sub-communicator, and the XDMF entry is
-   * broadcast to all ranks so that the record stays complete whichever rank writes first. If no
-   * rank has patches the step is left out.
-   *
-   * @p merge_vertices merges coincident vertices (right for a mesh, wrong for particles).
-   * `<step>` is zero-padded to five digits. Collective on @p comm.
-   *
-   * @p fill_filter, if given, fills the filter instead of
-   * DataOutInterface::write_filtered_data() (which takes the values from the patches, stored
-   * in single precision by deal.II 9.4): ParticleOutput passes its values in double precision.
-   * The data sets are written as doubles either way (XDMF Precision="8").
+   * This is what DataOutBase::DataOutFilter does for the same patches, node for node, without
+   * its ordered maps: deal.II 9.4's filter reads a `std::map` per point and data set, which took
+   * 9 % of an adaptive 3D run.
    */
   template <int dim, int spacedim>
+  HDF5StepData<spacedim>
+  merged_step_data(
+    const std::vector<dealii::DataOutBase::Patch<dim, spacedim>> &patches,
+    const std::vector<std::string>                               &names,
+    const std::vector<std::tuple<unsigned int,
+                                 unsigned int,
+                                 std::string,
+                                 dealii::DataComponentInterpretation::DataComponentInterpretation>>
+      &vectors);
+
+  /**
+   * @brief Write @p data (consumed: its cells are renumbered in place) as
+   * `<directory>/<base_name>_<step>.h5` (parallel HDF5, collective, one file for all ranks:
+   * `nodes`, `cells` and one data set per name, doubles except the cells' unsigned node numbers)
+   * and rewrite `<directory>/<base_name>.xdmf` (rank 0), which lists
+   * @p entries plus this step (appended to @p entries on every rank). A rank without nodes takes
+   * part in the collective writes without data. If no rank has nodes the step is left out.
+   *
+   * The layout is deal.II's (DataOutBase::write_hdf5_parallel() and XDMFEntry): ParaView opens
+   * the `.xdmf` file with its XDMF reader. `<step>` is zero-padded to five digits. All ranks
+   * must pass the same data set names and widths. Collective on @p comm.
+   */
+  template <int spacedim>
   void
-  write_hdf5_xdmf_step(
-    const dealii::DataOutInterface<dim, spacedim>                   &data,
-    const bool                                                       has_patches,
-    const bool                                                       merge_vertices,
-    const MPI_Comm                                                   comm,
-    const std::string                                               &directory,
-    const std::string                                               &base_name,
-    const unsigned int                                               step,
-    const double                                                     time,
-    std::vector<dealii::XDMFEntry>                                  &entries,
-    const std::function<void(dealii::DataOutBase::DataOutFilter &)> &fill_filter = {});
+  write_hdf5_xdmf_step(HDF5StepData<spacedim>        &&data,
+                       const MPI_Comm                  comm,
+                       const std::string              &directory,
+                       const std::string              &base_name,
+                       const unsigned int              step,
+                       const double                    time,
+                       std::vector<dealii::XDMFEntry> &entries);
 } // namespace perideal
 
 #endif

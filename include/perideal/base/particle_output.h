@@ -15,18 +15,18 @@ namespace perideal
   /**
    * Writes point (particle) data that ParaView can open.
    *
-   * Every locally owned particle becomes one vertex patch
-   * (dealii::DataOutBase::Patch<0,dim>) that carries the values of all fields
-   * added since the last clear_fields(). write() produces, depending on the
+   * Every locally owned particle becomes one node (HDF5) or one vertex patch
+   * (dealii::DataOutBase::Patch<0,dim>, VTU) that carries the values of all fields
+   * added since the last write(). write() produces, depending on the
    * flags given to the constructor,
    *
    * - HDF5 + XDMF: `<directory>/<base_name>_<step>.h5` (one file per step,
    *   written collectively with parallel HDF5) and `<directory>/<base_name>.xdmf`
    *   which is rewritten at every step and lists all steps written so far.
    *   ParaView opens the `.xdmf` file ("XDMF Reader", Polyvertex topology).
-   *   Only the ranks that own particles take part in the HDF5 write (deal.II
-   *   9.4 fails on ranks without patches); if no rank owns a particle, the
-   *   step is left out of the HDF5/XDMF output.
+   *   A rank without particles takes part without data; if no rank owns a
+   *   particle, the step is left out of the HDF5/XDMF output. The values are
+   *   the fields' doubles.
    * - VTU: `<directory>/<base_name>_<step>.0.vtu` (one file per step, written
    *   with MPI I/O, one piece per rank that owns particles), a `.pvtu` record
    *   per step and `<directory>/<base_name>.pvd` listing all steps written so
@@ -41,8 +41,12 @@ namespace perideal
    * All functions except the accessors are collective on the communicator in
    * the sense that every rank must add the same fields (same names, same
    * number of components, same order) before calling write(), also ranks that
-   * own no particle. Values are stored as single-precision floats in the
-   * output (dealii::DataOutBase::Patch uses `float` data).
+   * own no particle. The VTU files store single-precision floats
+   * (dealii::DataOutBase::Patch uses `float` data).
+   *
+   * write() consumes the points and the fields (they move into the HDF5 data
+   * sets) and keeps no patches: between two outputs the writer holds only its
+   * records, and each step sets its points and adds its fields again.
    */
   template <int dim>
   class ParticleOutput : public dealii::DataOutInterface<0, dim>
@@ -74,7 +78,7 @@ namespace perideal
      * @brief Add a scalar field with one value per point of set_points().
      */
     void
-    add_scalar_field(const std::string &name, const std::vector<double> &values);
+    add_scalar_field(const std::string &name, std::vector<double> values);
 
     /**
      * @brief Add a field with @p n_components values per point, stored
@@ -85,19 +89,14 @@ namespace perideal
      * (a one-component field keeps its plain name).
      */
     void
-    add_vector_field(const std::string         &name,
-                     const unsigned int         n_components,
-                     const std::vector<double> &values);
+    add_vector_field(const std::string  &name,
+                     const unsigned int  n_components,
+                     std::vector<double> values);
 
     /**
-     * @brief Remove all fields added so far (the points are kept).
-     */
-    void
-    clear_fields();
-
-    /**
-     * @brief Write the points and the current fields as output step @p step
-     * at time @p time, and update the `.xdmf` and `.pvd` records. Collective.
+     * @brief Write the points and the fields added since the last write() as
+     * output step @p step at time @p time, and update the `.xdmf` and `.pvd`
+     * records; then forget the points and fields. Collective.
      */
     void
     write(const unsigned int step, const double time);
@@ -136,7 +135,8 @@ namespace perideal
 
   protected:
     /**
-     * @brief The patches (one vertex per point) built by the last write().
+     * @brief The patches (one vertex per point) of the VTU file being written (empty
+     * otherwise).
      */
     const std::vector<dealii::DataOutBase::Patch<0, dim>> &
     get_patches() const override;
@@ -169,8 +169,14 @@ namespace perideal
     };
 
     /**
-     * @brief Fill #patches, #dataset_names and #vector_ranges from #points
-     * and #fields.
+     * @brief Check the sizes of #fields against #coordinates and fill #dataset_names and
+     * #vector_ranges.
+     */
+    void
+    name_data_sets();
+
+    /**
+     * @brief Fill #patches from #coordinates and #fields (for the VTU output).
      */
     void
     build_patches();
@@ -194,8 +200,11 @@ namespace perideal
     bool        hdf5_xdmf_enabled;
     bool        vtu_enabled;
 
-    std::vector<dealii::Point<dim>> points;
-    std::vector<Field>              fields;
+    /**
+     * The points of set_points(), dim coordinates each.
+     */
+    std::vector<double> coordinates;
+    std::vector<Field>  fields;
 
     std::vector<dealii::DataOutBase::Patch<0, dim>> patches;
     std::vector<std::string>                        dataset_names;

@@ -39,10 +39,6 @@ namespace perideal
         const auto        &ps      = state.pd().particles();
         const unsigned int n_owned = ps.n_owned(), nc = state.n_components();
         const auto        &x = ps.positions();
-        // The particles slaved to the FE field move with it: show its velocity there.
-        ParticleVector velocity(state.v);
-        state.method().interpolate_to_particles(state.V, velocity);
-        writer->clear_fields();
         writer->set_points(std::vector<Point<dim>>(x.begin(), x.begin() + n_owned));
         // The fields of each group of components (output_names()): displacement, velocity and
         // force_density of the translations; rotation, angular_velocity, moment_density of the
@@ -66,22 +62,28 @@ namespace perideal
             else
               group->components.push_back(c);
           }
-        for (const auto &group : groups)
-          if (!group.components.empty())
-            {
-              const auto values = [&](const ParticleVector &vector) {
-                std::vector<double> result;
-                result.reserve(std::size_t(n_owned) * group.components.size());
-                for (unsigned int i = 0; i < n_owned; ++i)
-                  for (const unsigned int c : group.components)
-                    result.push_back(vector.local_element(i * nc + c));
-                return result;
-              };
-              const unsigned int n = group.components.size();
-              writer->add_vector_field(group.names[0], n, values(state.u));
-              writer->add_vector_field(group.names[1], n, values(velocity));
-              writer->add_vector_field(group.names[2], n, values(state.internal_force));
-            }
+        {
+          // The particles slaved to the FE field move with it: show its velocity there (released
+          // before the write, whose peak memory it would raise).
+          ParticleVector velocity(state.v);
+          state.method().interpolate_to_particles(state.V, velocity);
+          for (const auto &group : groups)
+            if (!group.components.empty())
+              {
+                const auto values = [&](const ParticleVector &vector) {
+                  std::vector<double> result;
+                  result.reserve(std::size_t(n_owned) * group.components.size());
+                  for (unsigned int i = 0; i < n_owned; ++i)
+                    for (const unsigned int c : group.components)
+                      result.push_back(vector.local_element(i * nc + c));
+                  return result;
+                };
+                const unsigned int n = group.components.size();
+                writer->add_vector_field(group.names[0], n, values(state.u));
+                writer->add_vector_field(group.names[1], n, values(velocity));
+                writer->add_vector_field(group.names[2], n, values(state.internal_force));
+              }
+        }
         state.u.update_ghost_values();
         for (const auto &field : state.pd().material().derived_fields(ps, state.u))
           writer->add_vector_field(field.name, field.n_components, field.values);
