@@ -21,13 +21,24 @@ namespace perideal
   struct HDF5StepData
   {
     /**
-     * @brief A point data set: #width values per node (1 for a scalar, 3 for a vector, as
-     * XDMF wants them: a 2D vector has a zero third component).
+     * @brief A point data set.
      */
     struct DataSet
     {
-      std::string         name;
-      unsigned int        width;
+      /**
+       * @brief The data set's name in the file and the XDMF record.
+       */
+      std::string name;
+
+      /**
+       * @brief Values per node: 1 for a scalar, 3 for a vector (as XDMF wants them: a 2D
+       * vector has a zero third component).
+       */
+      unsigned int width;
+
+      /**
+       * @brief The values, `width` per node.
+       */
       std::vector<double> values;
     };
 
@@ -48,8 +59,14 @@ namespace perideal
      */
     std::vector<unsigned int> cells;
 
+    /**
+     * @brief The point data, in the order of the file.
+     */
     std::vector<DataSet> data_sets;
 
+    /**
+     * @brief The number of nodes on this rank.
+     */
     unsigned int
     n_nodes() const
     {
