@@ -59,14 +59,9 @@ namespace perideal
 
   template <int dim, int spacedim>
   HDF5StepData<spacedim>
-  merged_step_data(
-    const std::vector<dealii::DataOutBase::Patch<dim, spacedim>> &patches,
-    const std::vector<std::string>                               &names,
-    const std::vector<std::tuple<unsigned int,
-                                 unsigned int,
-                                 std::string,
-                                 dealii::DataComponentInterpretation::DataComponentInterpretation>>
-      &vectors)
+  merged_step_data(const std::vector<dealii::DataOutBase::Patch<dim, spacedim>> &patches,
+                   const std::vector<std::string>                               &names,
+                   const NonscalarDataRanges                                    &vectors)
   {
     HDF5StepData<spacedim> result;
     result.cell_dim = dim;
@@ -237,38 +232,19 @@ namespace perideal
       }
   }
 
-  template HDF5StepData<2>
-  merged_step_data(
-    const std::vector<dealii::DataOutBase::Patch<2, 2>> &,
-    const std::vector<std::string> &,
-    const std::vector<std::tuple<unsigned int,
-                                 unsigned int,
-                                 std::string,
-                                 dealii::DataComponentInterpretation::DataComponentInterpretation>>
-      &);
-  template HDF5StepData<3>
-  merged_step_data(
-    const std::vector<dealii::DataOutBase::Patch<3, 3>> &,
-    const std::vector<std::string> &,
-    const std::vector<std::tuple<unsigned int,
-                                 unsigned int,
-                                 std::string,
-                                 dealii::DataComponentInterpretation::DataComponentInterpretation>>
-      &);
-  template void
-  write_hdf5_xdmf_step(HDF5StepData<2> &&,
-                       const MPI_Comm,
-                       const std::string &,
-                       const std::string &,
-                       const unsigned int,
-                       const double,
-                       std::vector<dealii::XDMFEntry> &);
-  template void
-  write_hdf5_xdmf_step(HDF5StepData<3> &&,
-                       const MPI_Comm,
-                       const std::string &,
-                       const std::string &,
-                       const unsigned int,
-                       const double,
-                       std::vector<dealii::XDMFEntry> &);
+#define PERIDEAL_INSTANTIATE(dim)                              \
+  template HDF5StepData<dim> merged_step_data(                 \
+    const std::vector<dealii::DataOutBase::Patch<dim, dim>> &, \
+    const std::vector<std::string> &,                          \
+    const NonscalarDataRanges &);                              \
+  template void write_hdf5_xdmf_step(HDF5StepData<dim> &&,     \
+                                     const MPI_Comm,           \
+                                     const std::string &,      \
+                                     const std::string &,      \
+                                     const unsigned int,       \
+                                     const double,             \
+                                     std::vector<dealii::XDMFEntry> &);
+  PERIDEAL_INSTANTIATE(2)
+  PERIDEAL_INSTANTIATE(3)
+#undef PERIDEAL_INSTANTIATE
 } // namespace perideal

@@ -75,6 +75,16 @@ namespace perideal
   };
 
   /**
+   * @brief The vector-valued ranges of the rows of a DataOut's point data (first row, last
+   * row, name, interpretation), as DataOutInterface::get_nonscalar_data_ranges() gives them.
+   */
+  using NonscalarDataRanges =
+    std::vector<std::tuple<unsigned int,
+                           unsigned int,
+                           std::string,
+                           dealii::DataComponentInterpretation::DataComponentInterpretation>>;
+
+  /**
    * @brief The step data of @p patches (one subdivision per patch, as DataOut::build_patches()
    * makes by default), with coincident vertices merged into one node;
    * a node takes its values from the last patch that has it (for fields that jump between
@@ -88,14 +98,9 @@ namespace perideal
    */
   template <int dim, int spacedim>
   HDF5StepData<spacedim>
-  merged_step_data(
-    const std::vector<dealii::DataOutBase::Patch<dim, spacedim>> &patches,
-    const std::vector<std::string>                               &names,
-    const std::vector<std::tuple<unsigned int,
-                                 unsigned int,
-                                 std::string,
-                                 dealii::DataComponentInterpretation::DataComponentInterpretation>>
-      &vectors);
+  merged_step_data(const std::vector<dealii::DataOutBase::Patch<dim, spacedim>> &patches,
+                   const std::vector<std::string>                               &names,
+                   const NonscalarDataRanges                                    &vectors);
 
   /**
    * @brief Write @p data (consumed: its cells are renumbered in place) as
